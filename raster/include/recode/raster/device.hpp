@@ -1,0 +1,61 @@
+#pragma once
+// The seam between the RECODE algorithm and a depth/stencil machine: a small subset of
+// OpenGL's per-fragment pipeline, expressed as plain commands. Every back end (the CPU
+// reference, OSMesa, a future CUDA/Vulkan device) implements this interface, so the same
+// command stream runs on all of them. The exact semantics are in docs/rasterization.md.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "recode/raster/state.hpp"
+
+namespace recode::raster {
+
+// A vertex in GL window coordinates: x right, y up, pixel (i, j) has its centre at
+// (i + 0.5, j + 0.5), depth z in [0, 1]. x and y are expected on the 1/256-pixel grid
+// (see snapToSubpixel); a device snaps them to that grid itself with round-half-to-even.
+struct WindowVertex {
+  float x = 0.0f;
+  float y = 0.0f;
+  float z = 0.0f;
+};
+
+class DepthStencilDevice {
+ public:
+  virtual ~DepthStencilDevice() = default;
+
+  [[nodiscard]] virtual int width() const = 0;
+  [[nodiscard]] virtual int height() const = 0;
+
+  // Drawing, clears and read-backs are all limited to the scissor rectangle (half-open,
+  // in pixels). The default is the whole framebuffer; a rectangle is clamped to it.
+  virtual void setScissor(const PixelRect& rect) = 0;
+
+  // Clear depth (quantised like fragment depth) / stencil inside the scissor.
+  virtual void clearDepth(double depth) = 0;
+  virtual void clearStencil(std::uint8_t value) = 0;
+
+  virtual void setDepthFunc(CompareFunc func) = 0;
+  virtual void setDepthWriteMask(bool write) = 0;
+
+  virtual void setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) = 0;
+  virtual void setStencilOps(Face face, const StencilOps& ops) = 0;  // face Front, Back or Both
+  virtual void setStencilWriteMask(std::uint8_t mask) = 0;
+
+  virtual void setCullMode(CullMode mode) = 0;
+
+  // Draws indexed triangles (three indices each). Throws std::invalid_argument for an index
+  // out of range, an index count that is not a multiple of three, or a vertex that is not
+  // finite, lies beyond kMaxWindowCoordinate, or has z outside [0, 1].
+  virtual void drawTriangles(std::span<const WindowVertex> vertices,
+                             std::span<const std::uint32_t> indices) = 0;
+
+  // Read-backs over a rectangle (clamped to the framebuffer, not to the scissor), row-major,
+  // rows from the bottom (y = rect.y0) up, as glReadPixels returns them. Depth values are
+  // 24-bit unsigned normalised integers in [0, 2^24 - 1].
+  [[nodiscard]] virtual std::vector<std::uint8_t> readStencil(const PixelRect& rect) const = 0;
+  [[nodiscard]] virtual std::vector<std::uint32_t> readDepth(const PixelRect& rect) const = 0;
+};
+
+}  // namespace recode::raster

@@ -1,0 +1,72 @@
+#pragma once
+// Plain state types of the depth/stencil machine, shared by every device and by the
+// command-stream format. Names follow OpenGL's so that a back end maps them one to one.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace recode::raster {
+
+// Framebuffer limits. 16384 matches common GL MAX_VIEWPORT_DIMS; vertices may lie outside
+// the framebuffer (a guard band) up to kMaxWindowCoordinate pixels from the origin, which
+// keeps 24.8 fixed point and float snapping exact and the 64-bit edge functions far from
+// overflow (|products| < 2^49).
+inline constexpr int kMaxFramebufferSize = 16384;
+inline constexpr float kMaxWindowCoordinate = 32768.0f;
+
+inline constexpr int kSubpixelBits = 8;
+inline constexpr int kSubpixelOne = 1 << kSubpixelBits;  // 256 sub-pixel steps per pixel
+inline constexpr std::uint32_t kDepthMax = (1u << 24) - 1u;  // 24-bit unorm depth
+
+enum class CompareFunc : std::uint8_t { Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always };
+
+enum class StencilOp : std::uint8_t { Keep, Zero, Replace, Incr, IncrWrap, Decr, DecrWrap, Invert };
+
+enum class Face : std::uint8_t { Front, Back, Both };
+
+enum class CullMode : std::uint8_t { None, Front, Back };
+
+struct StencilOps {
+  StencilOp stencilFail = StencilOp::Keep;
+  StencilOp depthFail = StencilOp::Keep;
+  StencilOp depthPass = StencilOp::Keep;
+
+  friend bool operator==(const StencilOps&, const StencilOps&) = default;
+};
+
+// A half-open pixel rectangle [x0, x1) x [y0, y1) in GL window coordinates (y up).
+struct PixelRect {
+  int x0 = 0;
+  int y0 = 0;
+  int x1 = 0;
+  int y1 = 0;
+
+  [[nodiscard]] int width() const { return x1 > x0 ? x1 - x0 : 0; }
+  [[nodiscard]] int height() const { return y1 > y0 ? y1 - y0 : 0; }
+  [[nodiscard]] bool empty() const { return width() == 0 || height() == 0; }
+  [[nodiscard]] long long area() const {
+    return static_cast<long long>(width()) * static_cast<long long>(height());
+  }
+  [[nodiscard]] PixelRect intersect(const PixelRect& o) const;
+
+  friend bool operator==(const PixelRect&, const PixelRect&) = default;
+};
+
+// The pure functions of the per-fragment stage, shared by every software implementation
+// and by the tests' independent model.
+[[nodiscard]] bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored);
+[[nodiscard]] std::uint8_t applyStencilOp(StencilOp op, std::uint8_t value, std::uint8_t ref);
+
+// Names as they appear in the golden-vector files and in messages ("LEQUAL", "INCR_WRAP",
+// "front", ...). Parsing is case-sensitive and returns nullopt for an unknown name.
+[[nodiscard]] std::string_view toString(CompareFunc f);
+[[nodiscard]] std::string_view toString(StencilOp op);
+[[nodiscard]] std::string_view toString(Face face);
+[[nodiscard]] std::string_view toString(CullMode mode);
+[[nodiscard]] std::optional<CompareFunc> parseCompareFunc(std::string_view s);
+[[nodiscard]] std::optional<StencilOp> parseStencilOp(std::string_view s);
+[[nodiscard]] std::optional<Face> parseFace(std::string_view s);
+[[nodiscard]] std::optional<CullMode> parseCullMode(std::string_view s);
+
+}  // namespace recode::raster
