@@ -32,7 +32,8 @@ class DepthStencilDevice {
   // in pixels). The default is the whole framebuffer; a rectangle is clamped to it.
   virtual void setScissor(const PixelRect& rect) = 0;
 
-  // Clear depth (quantised like fragment depth) / stencil inside the scissor.
+  // Clear depth (quantised like fragment depth) / stencil inside the scissor. As in GL, the
+  // depth write mask and the stencil write mask apply to clears too.
   virtual void clearDepth(double depth) = 0;
   virtual void clearStencil(std::uint8_t value) = 0;
 

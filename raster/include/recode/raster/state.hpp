@@ -16,10 +16,19 @@ inline constexpr int kMaxFramebufferSize = 16384;
 inline constexpr float kMaxWindowCoordinate = 32768.0f;
 
 inline constexpr int kSubpixelBits = 8;
-inline constexpr int kSubpixelOne = 1 << kSubpixelBits;  // 256 sub-pixel steps per pixel
+inline constexpr int kSubpixelOne = 1 << kSubpixelBits;      // 256 sub-pixel steps per pixel
 inline constexpr std::uint32_t kDepthMax = (1u << 24) - 1u;  // 24-bit unorm depth
 
-enum class CompareFunc : std::uint8_t { Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always };
+enum class CompareFunc : std::uint8_t {
+  Never,
+  Less,
+  Equal,
+  LEqual,
+  Greater,
+  NotEqual,
+  GEqual,
+  Always
+};
 
 enum class StencilOp : std::uint8_t { Keep, Zero, Replace, Incr, IncrWrap, Decr, DecrWrap, Invert };
 

@@ -1,0 +1,71 @@
+#pragma once
+// The reference depth/stencil machine: a 24-bit depth buffer and an 8-bit stencil buffer in
+// memory, drawn by the fixed-point tile rasterizer. Single-threaded and deterministic.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "recode/raster/device.hpp"
+#include "recode/raster/fragment_ops.hpp"
+#include "recode/raster/traversal.hpp"
+
+namespace recode::raster {
+
+class CpuDevice final : public DepthStencilDevice {
+ public:
+  // Throws std::invalid_argument unless 1 <= width, height <= kMaxFramebufferSize. Depth
+  // starts at 1.0 (2^24 - 1) and stencil at 0, as after GL's default clears.
+  CpuDevice(int width, int height);
+
+  [[nodiscard]] int width() const override { return width_; }
+  [[nodiscard]] int height() const override { return height_; }
+
+  void setScissor(const PixelRect& rect) override;
+  void clearDepth(double depth) override;
+  void clearStencil(std::uint8_t value) override;
+  void setDepthFunc(CompareFunc func) override { state_.depthFunc = func; }
+  void setDepthWriteMask(bool write) override { state_.depthWrite = write; }
+  void setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) override;
+  void setStencilOps(Face face, const StencilOps& ops) override;
+  void setStencilWriteMask(std::uint8_t mask) override { state_.stencilWriteMask = mask; }
+  void setCullMode(CullMode mode) override { state_.cull = mode; }
+  void drawTriangles(std::span<const WindowVertex> vertices,
+                     std::span<const std::uint32_t> indices) override;
+  [[nodiscard]] std::vector<std::uint8_t> readStencil(const PixelRect& rect) const override;
+  [[nodiscard]] std::vector<std::uint32_t> readDepth(const PixelRect& rect) const override;
+
+  // Direct views of the whole buffers (row-major, bottom row first), for tools and tests.
+  [[nodiscard]] std::span<const std::uint8_t> stencilBuffer() const { return stencil_; }
+  [[nodiscard]] std::span<const std::uint32_t> depthBuffer() const { return depth_; }
+  [[nodiscard]] const DepthStencilState& state() const { return state_; }
+  [[nodiscard]] const PixelRect& scissor() const { return scissor_; }
+
+  // Counters since construction (or the last reset): useful for benchmarks and teaching.
+  struct Counters {
+    std::uint64_t trianglesSubmitted = 0;
+    std::uint64_t trianglesDegenerate = 0;
+    std::uint64_t trianglesCulled = 0;
+    std::uint64_t fragments = 0;
+    TraversalStats traversal;
+  };
+  [[nodiscard]] const Counters& counters() const { return counters_; }
+  void resetCounters() { counters_ = {}; }
+
+ private:
+  [[nodiscard]] PixelRect framebufferRect() const { return {0, 0, width_, height_}; }
+  [[nodiscard]] std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(x);
+  }
+
+  int width_;
+  int height_;
+  std::vector<std::uint32_t> depth_;
+  std::vector<std::uint8_t> stencil_;
+  DepthStencilState state_;
+  PixelRect scissor_;
+  Counters counters_;
+};
+
+}  // namespace recode::raster

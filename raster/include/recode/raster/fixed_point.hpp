@@ -1,0 +1,38 @@
+#pragma once
+// Sub-pixel snapping and depth quantisation: the two places where real numbers become the
+// integers that every back end must agree on (docs/rasterization.md, sections 2 and 5).
+
+#include <cmath>
+#include <cstdint>
+
+#include "recode/raster/state.hpp"
+
+namespace recode::raster {
+
+// Window coordinate -> 24.8 fixed point, round half to even. Exact for |x| < 65536 because
+// multiplying a float by 256 only changes its exponent.
+[[nodiscard]] inline std::int64_t snapToFixed(float x) {
+  return static_cast<std::int64_t>(std::nearbyint(static_cast<double>(x) * kSubpixelOne));
+}
+
+// The value a pre-snapping producer should hand to the device: x on the 1/256-pixel grid.
+[[nodiscard]] inline float snapToSubpixel(double x) {
+  return static_cast<float>(std::nearbyint(x * kSubpixelOne) / kSubpixelOne);
+}
+
+// Fixed-point coordinate of the centre of pixel column/row i: 256 i + 128.
+[[nodiscard]] inline std::int64_t pixelCentreFixed(int i) {
+  return static_cast<std::int64_t>(i) * kSubpixelOne + kSubpixelOne / 2;
+}
+
+// Depth in [0, 1] (clamped; NaN is treated as 0) -> 24-bit unorm, round(z * (2^24 - 1)) with
+// round half to even, evaluated in double.
+[[nodiscard]] inline std::uint32_t quantizeDepth(double z) {
+  if (!(z > 0.0))
+    return 0;
+  if (z >= 1.0)
+    return kDepthMax;
+  return static_cast<std::uint32_t>(std::nearbyint(z * static_cast<double>(kDepthMax)));
+}
+
+}  // namespace recode::raster

@@ -1,0 +1,41 @@
+#pragma once
+// Golden vectors: a command stream plus the depth and stencil buffers it must produce,
+// stored as JSON (format "recode-golden-1", described in docs/rasterization.md, section 8)
+// so that any back end, in any language, can replay and compare them.
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "recode/raster/command_stream.hpp"
+
+namespace recode::raster {
+
+// A malformed command-stream or golden file. The message names the source and the JSON
+// path of the problem, e.g. "case.json: /commands/3/func: unknown compare function "LESSER"".
+class FormatError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct GoldenVector {
+  std::string description;
+  CommandStream stream;
+  // Whole framebuffer, row-major, bottom row (y = 0) first.
+  std::vector<std::uint32_t> depth;
+  std::vector<std::uint8_t> stencil;
+};
+
+[[nodiscard]] std::string commandStreamToJson(const CommandStream& stream);
+[[nodiscard]] CommandStream commandStreamFromJson(std::string_view text, std::string_view source);
+
+[[nodiscard]] std::string goldenToJson(const GoldenVector& golden);
+[[nodiscard]] GoldenVector goldenFromJson(std::string_view text, std::string_view source);
+
+[[nodiscard]] GoldenVector readGolden(const std::filesystem::path& path);
+void writeGolden(const std::filesystem::path& path, const GoldenVector& golden);
+
+}  // namespace recode::raster

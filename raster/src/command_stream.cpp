@@ -1,0 +1,87 @@
+#include "recode/raster/command_stream.hpp"
+
+#include <type_traits>
+
+namespace recode::raster {
+
+void replay(const std::vector<Command>& commands, DepthStencilDevice& device) {
+  for (const Command& command : commands) {
+    std::visit(
+        [&device](const auto& c) {
+          using T = std::decay_t<decltype(c)>;
+          if constexpr (std::is_same_v<T, cmd::Scissor>) {
+            device.setScissor(c.rect);
+          } else if constexpr (std::is_same_v<T, cmd::ClearDepth>) {
+            device.clearDepth(c.value);
+          } else if constexpr (std::is_same_v<T, cmd::ClearStencil>) {
+            device.clearStencil(c.value);
+          } else if constexpr (std::is_same_v<T, cmd::DepthFunc>) {
+            device.setDepthFunc(c.func);
+          } else if constexpr (std::is_same_v<T, cmd::DepthWriteMask>) {
+            device.setDepthWriteMask(c.write);
+          } else if constexpr (std::is_same_v<T, cmd::StencilFunc>) {
+            device.setStencilFunc(c.func, c.ref, c.valueMask);
+          } else if constexpr (std::is_same_v<T, cmd::StencilOpsCmd>) {
+            device.setStencilOps(c.face, c.ops);
+          } else if constexpr (std::is_same_v<T, cmd::StencilWriteMask>) {
+            device.setStencilWriteMask(c.mask);
+          } else if constexpr (std::is_same_v<T, cmd::Cull>) {
+            device.setCullMode(c.mode);
+          } else {
+            static_assert(std::is_same_v<T, cmd::Draw>);
+            device.drawTriangles(c.vertices, c.indices);
+          }
+        },
+        command);
+  }
+}
+
+RecordingDevice::RecordingDevice(DepthStencilDevice& inner) : inner_(inner) {
+  stream_.width = inner.width();
+  stream_.height = inner.height();
+}
+
+void RecordingDevice::setScissor(const PixelRect& rect) {
+  stream_.commands.emplace_back(cmd::Scissor{rect});
+  inner_.setScissor(rect);
+}
+void RecordingDevice::clearDepth(double depth) {
+  stream_.commands.emplace_back(cmd::ClearDepth{depth});
+  inner_.clearDepth(depth);
+}
+void RecordingDevice::clearStencil(std::uint8_t value) {
+  stream_.commands.emplace_back(cmd::ClearStencil{value});
+  inner_.clearStencil(value);
+}
+void RecordingDevice::setDepthFunc(CompareFunc func) {
+  stream_.commands.emplace_back(cmd::DepthFunc{func});
+  inner_.setDepthFunc(func);
+}
+void RecordingDevice::setDepthWriteMask(bool write) {
+  stream_.commands.emplace_back(cmd::DepthWriteMask{write});
+  inner_.setDepthWriteMask(write);
+}
+void RecordingDevice::setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) {
+  stream_.commands.emplace_back(cmd::StencilFunc{func, ref, valueMask});
+  inner_.setStencilFunc(func, ref, valueMask);
+}
+void RecordingDevice::setStencilOps(Face face, const StencilOps& ops) {
+  stream_.commands.emplace_back(cmd::StencilOpsCmd{face, ops});
+  inner_.setStencilOps(face, ops);
+}
+void RecordingDevice::setStencilWriteMask(std::uint8_t mask) {
+  stream_.commands.emplace_back(cmd::StencilWriteMask{mask});
+  inner_.setStencilWriteMask(mask);
+}
+void RecordingDevice::setCullMode(CullMode mode) {
+  stream_.commands.emplace_back(cmd::Cull{mode});
+  inner_.setCullMode(mode);
+}
+void RecordingDevice::drawTriangles(std::span<const WindowVertex> vertices,
+                                    std::span<const std::uint32_t> indices) {
+  inner_.drawTriangles(vertices, indices);  // validates first: a rejected draw is not recorded
+  stream_.commands.emplace_back(
+      cmd::Draw{{vertices.begin(), vertices.end()}, {indices.begin(), indices.end()}});
+}
+
+}  // namespace recode::raster

@@ -1,0 +1,178 @@
+#include "recode/raster/cpu_device.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "recode/raster/fixed_point.hpp"
+#include "recode/raster/triangle_setup.hpp"
+
+namespace recode::raster {
+
+namespace {
+
+// Writes the fragments of one triangle into the buffers.
+class FragmentWriter final : public BlockSink {
+ public:
+  FragmentWriter(const TriangleSetup& tri, const DepthStencilState& state, int stride,
+                 std::uint32_t* depth, std::uint8_t* stencil)
+      : tri_(tri),
+        state_(state),
+        ops_(tri.frontFacing ? state.frontOps : state.backOps),
+        stride_(static_cast<std::size_t>(stride)),
+        depth_(depth),
+        stencil_(stencil) {}
+
+  void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
+    while (mask != 0) {
+      const int bit = __builtin_ctzll(mask);
+      mask &= mask - 1;
+      const int x = blockX + (bit & (kBlockSize - 1));
+      const int y = blockY + bit / kBlockSize;
+      const std::uint32_t z =
+          quantizeDepth(tri_.depth.at(pixelCentreFixed(x), pixelCentreFixed(y)));
+      const std::size_t i = static_cast<std::size_t>(y) * stride_ + static_cast<std::size_t>(x);
+      applyFragment(state_, ops_, z, depth_[i], stencil_[i]);
+      ++fragments;
+    }
+  }
+
+  std::uint64_t fragments = 0;
+
+ private:
+  const TriangleSetup& tri_;
+  const DepthStencilState& state_;
+  const StencilOps& ops_;
+  std::size_t stride_;
+  std::uint32_t* depth_;
+  std::uint8_t* stencil_;
+};
+
+void checkVertex(const WindowVertex& v, std::uint32_t index) {
+  const auto bad = [&](const char* what) {
+    throw std::invalid_argument("drawTriangles: vertex " + std::to_string(index) + " (" +
+                                std::to_string(v.x) + ", " + std::to_string(v.y) + ", " +
+                                std::to_string(v.z) + ") " + what);
+  };
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    bad("is not finite");
+  if (std::fabs(v.x) > kMaxWindowCoordinate || std::fabs(v.y) > kMaxWindowCoordinate) {
+    bad("lies beyond the +-32768 pixel range of 24.8 fixed point");
+  }
+  if (v.z < 0.0f || v.z > 1.0f)
+    bad("has depth outside [0, 1]");
+}
+
+}  // namespace
+
+CpuDevice::CpuDevice(int width, int height) : width_(width), height_(height) {
+  if (width < 1 || height < 1 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
+    throw std::invalid_argument("framebuffer size " + std::to_string(width) + "x" +
+                                std::to_string(height) + " is outside 1.." +
+                                std::to_string(kMaxFramebufferSize) + " in each dimension");
+  }
+  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  depth_.assign(n, kDepthMax);
+  stencil_.assign(n, 0);
+  scissor_ = framebufferRect();
+}
+
+void CpuDevice::setScissor(const PixelRect& rect) {
+  scissor_ = rect.intersect(framebufferRect());
+}
+
+void CpuDevice::clearDepth(double depth) {
+  if (!std::isfinite(depth))
+    throw std::invalid_argument("clearDepth: value is not finite");
+  if (!state_.depthWrite)
+    return;  // GL's depth mask applies to clears as well
+  const std::uint32_t q = quantizeDepth(depth);
+  for (int y = scissor_.y0; y < scissor_.y1; ++y) {
+    std::fill(depth_.begin() + static_cast<std::ptrdiff_t>(index(scissor_.x0, y)),
+              depth_.begin() + static_cast<std::ptrdiff_t>(index(scissor_.x1, y)), q);
+  }
+}
+
+void CpuDevice::clearStencil(std::uint8_t value) {
+  // GL applies the stencil write mask to clears as well.
+  const std::uint8_t wm = state_.stencilWriteMask;
+  for (int y = scissor_.y0; y < scissor_.y1; ++y) {
+    for (int x = scissor_.x0; x < scissor_.x1; ++x) {
+      std::uint8_t& s = stencil_[index(x, y)];
+      s = static_cast<std::uint8_t>((value & wm) | (s & static_cast<std::uint8_t>(~wm)));
+    }
+  }
+}
+
+void CpuDevice::setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) {
+  state_.stencilFunc = func;
+  state_.stencilRef = ref;
+  state_.stencilValueMask = valueMask;
+}
+
+void CpuDevice::setStencilOps(Face face, const StencilOps& ops) {
+  if (face != Face::Back)
+    state_.frontOps = ops;
+  if (face != Face::Front)
+    state_.backOps = ops;
+}
+
+void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,
+                              std::span<const std::uint32_t> indices) {
+  if (indices.size() % 3 != 0) {
+    throw std::invalid_argument("drawTriangles: index count " + std::to_string(indices.size()) +
+                                " is not a multiple of 3");
+  }
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    if (indices[k] >= vertices.size()) {
+      throw std::invalid_argument("drawTriangles: index " + std::to_string(indices[k]) +
+                                  " at position " + std::to_string(k) + " is out of range (" +
+                                  std::to_string(vertices.size()) + " vertices)");
+    }
+    checkVertex(vertices[indices[k]], indices[k]);
+  }
+  // The draw is validated as a whole before any pixel changes, so an error leaves the
+  // buffers untouched.
+  for (std::size_t k = 0; k < indices.size(); k += 3) {
+    ++counters_.trianglesSubmitted;
+    const auto tri =
+        setupTriangle(snapVertex(vertices[indices[k]]), snapVertex(vertices[indices[k + 1]]),
+                      snapVertex(vertices[indices[k + 2]]));
+    if (!tri) {
+      ++counters_.trianglesDegenerate;
+      continue;
+    }
+    if ((state_.cull == CullMode::Front && tri->frontFacing) ||
+        (state_.cull == CullMode::Back && !tri->frontFacing)) {
+      ++counters_.trianglesCulled;
+      continue;
+    }
+    FragmentWriter writer(*tri, state_, width_, depth_.data(), stencil_.data());
+    traverseTriangle(*tri, scissor_, writer, &counters_.traversal);
+    counters_.fragments += writer.fragments;
+  }
+}
+
+std::vector<std::uint8_t> CpuDevice::readStencil(const PixelRect& rect) const {
+  const PixelRect r = rect.intersect(framebufferRect());
+  std::vector<std::uint8_t> out;
+  out.reserve(static_cast<std::size_t>(r.area()));
+  for (int y = r.y0; y < r.y1; ++y) {
+    for (int x = r.x0; x < r.x1; ++x)
+      out.push_back(stencil_[index(x, y)]);
+  }
+  return out;
+}
+
+std::vector<std::uint32_t> CpuDevice::readDepth(const PixelRect& rect) const {
+  const PixelRect r = rect.intersect(framebufferRect());
+  std::vector<std::uint32_t> out;
+  out.reserve(static_cast<std::size_t>(r.area()));
+  for (int y = r.y0; y < r.y1; ++y) {
+    for (int x = r.x0; x < r.x1; ++x)
+      out.push_back(depth_[index(x, y)]);
+  }
+  return out;
+}
+
+}  // namespace recode::raster

@@ -1,0 +1,129 @@
+#include "recode/raster/traversal.hpp"
+
+#include <algorithm>
+
+#include "recode/raster/fixed_point.hpp"
+
+namespace recode::raster {
+
+namespace {
+
+enum class RegionTest { Reject, Accept, Partial };
+
+// Classifies the size x size pixel square at (px, py) against the three edges from the
+// values of each edge function at the square's extreme pixel centres.
+RegionTest testRegion(const TriangleSetup& tri, int px, int py, int size) {
+  const std::int64_t x = pixelCentreFixed(px);
+  const std::int64_t y = pixelCentreFixed(py);
+  const std::int64_t span = static_cast<std::int64_t>(size - 1) * kSubpixelOne;
+  bool allInside = true;
+  for (const EdgeFunction& e : tri.edges) {
+    const std::int64_t base = e.at(x, y);
+    const std::int64_t sx = e.a * span, sy = e.b * span;
+    const std::int64_t maxE = base + std::max<std::int64_t>(sx, 0) + std::max<std::int64_t>(sy, 0);
+    const std::int64_t minE = base + std::min<std::int64_t>(sx, 0) + std::min<std::int64_t>(sy, 0);
+    if (maxE < 0)
+      return RegionTest::Reject;
+    if (minE < 0)
+      allInside = false;
+  }
+  return allInside ? RegionTest::Accept : RegionTest::Partial;
+}
+
+// Bits of the 8x8 block at (bx, by) whose pixels lie inside `clip`.
+std::uint64_t clipMask(int bx, int by, const PixelRect& clip) {
+  const int c0 = std::max(clip.x0 - bx, 0), c1 = std::min(clip.x1 - bx, kBlockSize);
+  const int r0 = std::max(clip.y0 - by, 0), r1 = std::min(clip.y1 - by, kBlockSize);
+  if (c0 >= c1 || r0 >= r1)
+    return 0;
+  const std::uint64_t rowBits = ((std::uint64_t{1} << (c1 - c0)) - 1) << c0;
+  std::uint64_t mask = 0;
+  for (int r = r0; r < r1; ++r)
+    mask |= rowBits << (r * kBlockSize);
+  return mask;
+}
+
+// Per-pixel edge evaluation of one block, stepping the exact integer edge values.
+std::uint64_t coverageMask(const TriangleSetup& tri, int bx, int by) {
+  const std::int64_t x = pixelCentreFixed(bx);
+  const std::int64_t y = pixelCentreFixed(by);
+  std::int64_t rowStart[3], stepX[3], stepY[3];
+  for (int k = 0; k < 3; ++k) {
+    rowStart[k] = tri.edges[k].at(x, y);
+    stepX[k] = tri.edges[k].a * kSubpixelOne;
+    stepY[k] = tri.edges[k].b * kSubpixelOne;
+  }
+  std::uint64_t mask = 0;
+  for (int r = 0; r < kBlockSize; ++r) {
+    std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
+    for (int c = 0; c < kBlockSize; ++c) {
+      const bool inside = (e0 | e1 | e2) >= 0;  // all three non-negative
+      mask |= static_cast<std::uint64_t>(inside) << (r * kBlockSize + c);
+      e0 += stepX[0];
+      e1 += stepX[1];
+      e2 += stepX[2];
+    }
+    for (int k = 0; k < 3; ++k)
+      rowStart[k] += stepY[k];
+  }
+  return mask;
+}
+
+int alignDown(int v, int a) {
+  return v >= 0 ? v / a * a : -((-v + a - 1) / a) * a;
+}
+
+}  // namespace
+
+void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink& sink,
+                      TraversalStats* stats) {
+  const PixelRect area = tri.bounds.intersect(clip);
+  if (area.empty())
+    return;
+  TraversalStats local;
+  TraversalStats& st = stats ? *stats : local;
+
+  for (int ty = alignDown(area.y0, kTileSize); ty < area.y1; ty += kTileSize) {
+    for (int tx = alignDown(area.x0, kTileSize); tx < area.x1; tx += kTileSize) {
+      const RegionTest tileTest = testRegion(tri, tx, ty, kTileSize);
+      if (tileTest == RegionTest::Reject) {
+        ++st.tilesRejected;
+        continue;
+      }
+      if (tileTest == RegionTest::Accept)
+        ++st.tilesAccepted;
+      const int by0 = std::max(ty, alignDown(area.y0, kBlockSize));
+      const int bx0 = std::max(tx, alignDown(area.x0, kBlockSize));
+      const int by1 = std::min(ty + kTileSize, area.y1);
+      const int bx1 = std::min(tx + kTileSize, area.x1);
+      for (int by = by0; by < by1; by += kBlockSize) {
+        for (int bx = bx0; bx < bx1; bx += kBlockSize) {
+          const std::uint64_t inClip = clipMask(bx, by, area);
+          if (inClip == 0)
+            continue;
+          std::uint64_t mask;
+          if (tileTest == RegionTest::Accept) {
+            mask = inClip;
+          } else {
+            const RegionTest blockTest = testRegion(tri, bx, by, kBlockSize);
+            if (blockTest == RegionTest::Reject) {
+              ++st.blocksRejected;
+              continue;
+            }
+            if (blockTest == RegionTest::Accept) {
+              ++st.blocksAccepted;
+              mask = inClip;
+            } else {
+              ++st.blocksPartial;
+              mask = coverageMask(tri, bx, by) & inClip;
+            }
+          }
+          if (mask != 0)
+            sink.coveredBlock(bx, by, mask);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace recode::raster

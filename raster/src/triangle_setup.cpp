@@ -1,0 +1,77 @@
+#include "recode/raster/triangle_setup.hpp"
+
+#include <algorithm>
+
+#include "recode/raster/fixed_point.hpp"
+
+namespace recode::raster {
+
+namespace {
+
+// Floor division by a positive divisor, correct for negative numerators.
+std::int64_t floorDiv(std::int64_t n, std::int64_t d) {
+  std::int64_t q = n / d;
+  if ((n % d != 0) && (n < 0))
+    --q;
+  return q;
+}
+
+// Edge a->b of a counter-clockwise triangle: E = (xb - xa)(Y - ya) - (yb - ya)(X - xa),
+// positive on the interior side. Exclusive edges get c - 1 so that "E >= 0" rejects ties.
+EdgeFunction makeEdge(const FixedVertex& a, const FixedVertex& b) {
+  const std::int64_t dx = b.x - a.x;
+  const std::int64_t dy = b.y - a.y;
+  EdgeFunction e;
+  e.a = -dy;
+  e.b = dx;
+  e.c = a.x * b.y - b.x * a.y;
+  if (!isInclusiveEdge(dx, dy))
+    e.c -= 1;
+  return e;
+}
+
+}  // namespace
+
+FixedVertex snapVertex(const WindowVertex& v) {
+  return {snapToFixed(v.x), snapToFixed(v.y), v.z};
+}
+
+std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0, const FixedVertex& v1,
+                                           const FixedVertex& v2) {
+  const std::int64_t e1x = v1.x - v0.x, e1y = v1.y - v0.y;
+  const std::int64_t e2x = v2.x - v0.x, e2y = v2.y - v0.y;
+  const std::int64_t area2 = e1x * e2y - e2x * e1y;  // twice the signed area, exact
+  if (area2 == 0)
+    return std::nullopt;
+
+  TriangleSetup t;
+  t.frontFacing = area2 > 0;
+  // Coverage uses the counter-clockwise order; the depth plane uses the submitted order.
+  const FixedVertex& p1 = t.frontFacing ? v1 : v2;
+  const FixedVertex& p2 = t.frontFacing ? v2 : v1;
+  t.edges = {makeEdge(v0, p1), makeEdge(p1, p2), makeEdge(p2, v0)};
+
+  const std::int64_t minX = std::min({v0.x, v1.x, v2.x}), maxX = std::max({v0.x, v1.x, v2.x});
+  const std::int64_t minY = std::min({v0.y, v1.y, v2.y}), maxY = std::max({v0.y, v1.y, v2.y});
+  const std::int64_t half = kSubpixelOne / 2;
+  // Pixel i is a candidate when its centre 256 i + 128 lies in [min, max].
+  t.bounds.x0 = static_cast<int>(-floorDiv(-(minX - half), kSubpixelOne));
+  t.bounds.x1 = static_cast<int>(floorDiv(maxX - half, kSubpixelOne) + 1);
+  t.bounds.y0 = static_cast<int>(-floorDiv(-(minY - half), kSubpixelOne));
+  t.bounds.y1 = static_cast<int>(floorDiv(maxY - half, kSubpixelOne) + 1);
+
+  // Depth plane through the three snapped vertices, in the submitted order:
+  // dz/dX = (dz1 e2y - dz2 e1y) / area2, dz/dY = (dz2 e1x - dz1 e2x) / area2.
+  const double z0 = static_cast<double>(v0.z);
+  const double dz1 = static_cast<double>(v1.z) - z0;
+  const double dz2 = static_cast<double>(v2.z) - z0;
+  const double a2 = static_cast<double>(area2);
+  t.depth.x0 = v0.x;
+  t.depth.y0 = v0.y;
+  t.depth.z0 = z0;
+  t.depth.dzdx = (dz1 * static_cast<double>(e2y) - dz2 * static_cast<double>(e1y)) / a2;
+  t.depth.dzdy = (dz2 * static_cast<double>(e1x) - dz1 * static_cast<double>(e2x)) / a2;
+  return t;
+}
+
+}  // namespace recode::raster

@@ -1,0 +1,82 @@
+// Depth quantisation at its boundaries, and the depth plane through snapped vertices.
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+#include "raster_test_support.hpp"
+#include "recode/raster/cpu_device.hpp"
+#include "recode/raster/fixed_point.hpp"
+
+using namespace recode::raster;
+
+TEST_CASE("quantizeDepth at 0, 1, exact steps and half-LSB boundaries", "[depth]") {
+  const double D = 16777215.0;
+  CHECK(quantizeDepth(0.0) == 0u);
+  CHECK(quantizeDepth(1.0) == 16777215u);
+  CHECK(quantizeDepth(-0.25) == 0u);
+  CHECK(quantizeDepth(1.5) == 16777215u);
+  CHECK(quantizeDepth(std::numeric_limits<double>::quiet_NaN()) == 0u);
+  CHECK(quantizeDepth(1.0 / D) == 1u);
+  CHECK(quantizeDepth(0.5) == 8388608u);  // 0.5 * D = 8388607.5, a tie: to even
+  for (std::uint32_t k : {0u, 1u, 2u, 1000u, 8388607u, 8388608u, 16777213u, 16777214u}) {
+    INFO("k = " << k);
+    CHECK(quantizeDepth(k / D) == k);
+    // A tenth of an LSB either side of the half-way point between k and k + 1.
+    CHECK(quantizeDepth((k + 0.4) / D) == k);
+    CHECK(quantizeDepth((k + 0.6) / D) == k + 1);
+  }
+  // Exact ties (k + 0.5 representable as z * D): round half to even. 0.5 is such a z since
+  // 0.5 * D = 8388607.5 exactly; 0.25 * D = 4194303.75 is not a tie.
+  CHECK(quantizeDepth(0.25) == 4194304u);
+  CHECK(quantizeDepth(0.75) == 12582911u);  // 12582911.25
+}
+
+TEST_CASE("constant-depth triangles store the quantised vertex depth", "[depth]") {
+  for (const float z : {0.0f, 1.0f, 0.5f, 0.123456789f, 1e-7f, 0.99999994f}) {
+    CpuDevice dev(8, 8);
+    dev.setDepthFunc(CompareFunc::Always);
+    recode::test::drawTriangle(dev, {0.0f, 0.0f, z}, {8.0f, 0.0f, z}, {0.0f, 8.0f, z});
+    INFO("z = " << z);
+    CHECK(dev.depthBuffer()[0] == quantizeDepth(z));
+  }
+}
+
+TEST_CASE("the depth plane is evaluated at pixel centres from the first vertex", "[depth]") {
+  // z = x / 64 over a 64-pixel ramp: at pixel centre x = i + 0.5 the plane gives exactly
+  // (i + 0.5) / 64 (all values are dyadic, so every operation is exact).
+  CpuDevice dev(64, 4);
+  dev.setDepthFunc(CompareFunc::Always);
+  recode::test::drawTriangle(dev, {0.0f, 0.0f, 0.0f}, {64.0f, 0.0f, 1.0f}, {0.0f, 16.0f, 0.0f});
+  recode::test::drawTriangle(dev, {64.0f, 0.0f, 1.0f}, {64.0f, 16.0f, 1.0f}, {0.0f, 16.0f, 0.0f});
+  for (int i = 0; i < 64; ++i) {
+    const double z = (i + 0.5) / 64.0;
+    const auto expected = static_cast<std::uint32_t>(std::nearbyint(z * 16777215.0));
+    INFO("pixel " << i);
+    CHECK(dev.depthBuffer()[static_cast<std::size_t>(i)] == expected);
+    CHECK(dev.depthBuffer()[static_cast<std::size_t>(64 * 3 + i)] == expected);
+  }
+  // A vertex on a pixel centre where both of its edges are inclusive (bottom and left): the
+  // first vertex's depth is reproduced exactly there.
+  CpuDevice dev2(16, 16);
+  dev2.setDepthFunc(CompareFunc::Always);
+  const float z0 = 0.3f;
+  recode::test::drawTriangle(dev2, {4.5f, 4.5f, z0}, {14.5f, 4.5f, 0.9f}, {6.0f, 15.0f, 0.1f});
+  CHECK(dev2.depthBuffer()[4 * 16 + 4] == quantizeDepth(z0));
+}
+
+TEST_CASE("depth test LESS keeps the nearer of two overlapping triangles", "[depth]") {
+  CpuDevice dev(16, 16);
+  dev.clearDepth(1.0);
+  dev.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Replace});
+  dev.setStencilFunc(CompareFunc::Always, 1, 0xFF);
+  recode::test::drawTriangle(dev, {0, 0, 0.25f}, {16, 0, 0.25f}, {0, 16, 0.25f});
+  dev.setStencilFunc(CompareFunc::Always, 2, 0xFF);
+  recode::test::drawTriangle(dev, {0, 0, 0.75f}, {16, 0, 0.75f}, {0, 16, 0.75f});
+  CHECK(dev.stencilBuffer()[0] == 1);
+  CHECK(dev.depthBuffer()[0] == quantizeDepth(0.25f));
+  dev.setStencilFunc(CompareFunc::Always, 3, 0xFF);
+  recode::test::drawTriangle(dev, {0, 0, 0.125f}, {16, 0, 0.125f}, {0, 16, 0.125f});
+  CHECK(dev.stencilBuffer()[0] == 3);
+  CHECK(dev.depthBuffer()[0] == quantizeDepth(0.125f));
+}

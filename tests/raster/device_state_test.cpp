@@ -1,0 +1,139 @@
+// Scissor, clears, culling, read-back layout and the errors of the CPU device.
+
+#include <catch2/catch.hpp>
+
+#include "raster_test_support.hpp"
+#include "recode/raster/cpu_device.hpp"
+#include "recode/raster/fixed_point.hpp"
+
+using namespace recode::raster;
+using recode::test::drawTriangle;
+using recode::test::setCountingState;
+
+namespace {
+int count(const std::vector<std::uint8_t>& v, std::uint8_t value) {
+  int n = 0;
+  for (std::uint8_t s : v)
+    n += s == value;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("scissor limits drawing and clears; read-back is bottom-up row-major", "[state]") {
+  CpuDevice dev(16, 16);
+  dev.setScissor({3, 4, 9, 7});
+  dev.clearStencil(7);
+  dev.clearDepth(0.0);
+  const auto all = dev.readStencil({0, 0, 16, 16});
+  REQUIRE(all.size() == 256);
+  CHECK(count(all, 7) == 6 * 3);
+  CHECK(all[4 * 16 + 3] == 7);  // (3, 4): first inside
+  CHECK(all[4 * 16 + 2] == 0);
+  CHECK(all[6 * 16 + 8] == 7);  // (8, 6): last inside
+  CHECK(all[7 * 16 + 8] == 0);
+  CHECK(dev.depthBuffer()[4 * 16 + 3] == 0u);
+  CHECK(dev.depthBuffer()[0] == kDepthMax);
+
+  setCountingState(dev);
+  drawTriangle(dev, {-4, -4, 0.5f}, {40, -4, 0.5f}, {-4, 40, 0.5f});  // covers everything
+  const auto after = dev.readStencil({0, 0, 16, 16});
+  CHECK(count(after, 8) == 18);
+  CHECK(count(after, 0) == 256 - 18);
+
+  // A read-back rectangle: rows from the bottom, clamped to the framebuffer.
+  const auto part = dev.readStencil({2, 3, 5, 5});
+  REQUIRE(part.size() == 6);
+  CHECK(part == std::vector<std::uint8_t>{0, 0, 0, 0, 8, 8});
+  CHECK(dev.readStencil({14, 14, 20, 20}).size() == 4);
+  CHECK(dev.readStencil({5, 5, 5, 9}).empty());
+
+  // The scissor is clamped to the framebuffer.
+  dev.setScissor({-5, -5, 100, 3});
+  CHECK(dev.scissor() == PixelRect{0, 0, 16, 3});
+}
+
+TEST_CASE("write masks apply to clears as in GL", "[state]") {
+  CpuDevice dev(4, 4);
+  dev.clearStencil(0xF0);
+  dev.setStencilWriteMask(0x0F);
+  dev.clearStencil(0xFF);
+  CHECK(dev.stencilBuffer()[0] == 0xFF);
+  dev.clearStencil(0x00);
+  CHECK(dev.stencilBuffer()[0] == 0xF0);
+  dev.setDepthWriteMask(false);
+  dev.clearDepth(0.0);
+  CHECK(dev.depthBuffer()[0] == kDepthMax);
+  dev.setDepthWriteMask(true);
+  dev.clearDepth(0.25);
+  CHECK(dev.depthBuffer()[0] == quantizeDepth(0.25));
+}
+
+TEST_CASE("culling by the facing of the snapped triangle", "[state]") {
+  const WindowVertex a{0, 0, 0.5f}, b{8, 0, 0.5f}, c{0, 8, 0.5f};
+  for (const CullMode mode : {CullMode::None, CullMode::Front, CullMode::Back}) {
+    CpuDevice dev(8, 8);
+    setCountingState(dev);
+    // Front faces add 1, back faces invert, so the stencil says which were drawn.
+    dev.setStencilOps(Face::Front, {StencilOp::Keep, StencilOp::Keep, StencilOp::IncrWrap});
+    dev.setStencilOps(Face::Back, {StencilOp::Keep, StencilOp::Keep, StencilOp::Invert});
+    dev.setCullMode(mode);
+    drawTriangle(dev, a, b, c);  // counter-clockwise: front
+    const std::uint8_t afterFront = dev.stencilBuffer()[0];
+    drawTriangle(dev, a, c, b);  // clockwise: back
+    const std::uint8_t afterBack = dev.stencilBuffer()[0];
+    INFO("cull " << toString(mode));
+    CHECK(afterFront == (mode == CullMode::Front ? 0 : 1));
+    const std::uint8_t expectedBack =
+        mode == CullMode::Back ? afterFront : static_cast<std::uint8_t>(~afterFront);
+    CHECK(afterBack == expectedBack);
+    CHECK(dev.counters().trianglesCulled == (mode == CullMode::None ? 0u : 1u));
+  }
+}
+
+TEST_CASE("zero-area triangles draw nothing", "[state]") {
+  CpuDevice dev(8, 8);
+  setCountingState(dev);
+  drawTriangle(dev, {1.5f, 1.5f, 0.5f}, {5.5f, 5.5f, 0.5f}, {3.5f, 3.5f, 0.5f});  // collinear
+  drawTriangle(dev, {1.5f, 1.5f, 0.5f}, {1.5f, 1.5f, 0.5f}, {6.5f, 2.5f, 0.5f});  // repeated
+  // Distinct floats that snap to the same 1/256 point are degenerate after snapping.
+  drawTriangle(dev, {2.0f, 2.0f, 0.5f}, {2.001f, 2.0f, 0.5f}, {2.0f, 7.0f, 0.5f});
+  CHECK(count(dev.readStencil({0, 0, 8, 8}), 0) == 64);
+  CHECK(dev.counters().trianglesDegenerate == 3u);
+}
+
+TEST_CASE("bad input is rejected with a message and leaves the buffers alone", "[state]") {
+  CHECK_THROWS_WITH(CpuDevice(0, 10), Catch::Contains("outside 1..16384"));
+  CHECK_THROWS_WITH(CpuDevice(16385, 10), Catch::Contains("16385x10"));
+  CHECK_THROWS_WITH(CpuDevice(10, -3), Catch::Contains("10x-3"));
+
+  CpuDevice dev(8, 8);
+  setCountingState(dev);
+  const WindowVertex good{0, 0, 0.5f}, g2{8, 0, 0.5f}, g3{0, 8, 0.5f};
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  CHECK_THROWS_WITH(drawTriangle(dev, good, g2, {nan, 1, 0.5f}), Catch::Contains("not finite"));
+  CHECK_THROWS_WITH(drawTriangle(dev, good, g2, {40000.0f, 1, 0.5f}),
+                    Catch::Contains("beyond the +-32768"));
+  CHECK_THROWS_WITH(drawTriangle(dev, good, g2, {1, 1, 1.5f}), Catch::Contains("outside [0, 1]"));
+  const WindowVertex v[3] = {good, g2, g3};
+  const std::uint32_t badIndex[3] = {0, 1, 3};
+  CHECK_THROWS_WITH(dev.drawTriangles(v, badIndex), Catch::Contains("index 3 at position 2"));
+  const std::uint32_t twoIndices[2] = {0, 1};
+  CHECK_THROWS_WITH(dev.drawTriangles(v, twoIndices), Catch::Contains("not a multiple of 3"));
+  // A draw whose last triangle is bad draws nothing at all.
+  const WindowVertex v4[4] = {good, g2, g3, {nan, 0, 0}};
+  const std::uint32_t mixed[6] = {0, 1, 2, 0, 1, 3};
+  CHECK_THROWS(dev.drawTriangles(v4, mixed));
+  CHECK(count(dev.readStencil({0, 0, 8, 8}), 0) == 64);
+  CHECK_THROWS_WITH(dev.clearDepth(std::numeric_limits<double>::infinity()),
+                    Catch::Contains("not finite"));
+}
+
+TEST_CASE("vertices are snapped to 1/256 pixel with round half to even", "[state]") {
+  CHECK(snapToFixed(1.0f) == 256);
+  CHECK(snapToFixed(1.0f / 512.0f) == 0);    // 0.5 sub-pixel step -> even (0)
+  CHECK(snapToFixed(3.0f / 512.0f) == 2);    // 1.5 -> 2
+  CHECK(snapToFixed(-3.0f / 512.0f) == -2);  // -1.5 -> -2
+  CHECK(snapToFixed(5.0f / 512.0f) == 2);    // 2.5 -> 2
+  CHECK(snapToFixed(-32768.0f) == -8388608);
+  CHECK(snapToSubpixel(0.3) == 77.0f / 256.0f);  // 76.8 -> 77
+}
