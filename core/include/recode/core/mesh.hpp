@@ -1,0 +1,69 @@
+#pragma once
+// Indexed triangle meshes, the geometry every convex block is made of.
+//
+// Conventions (see docs/geometry.md): vertices are points in a right-handed frame;
+// triangles index into `vertices`; a closed mesh's triangles are counter-clockwise when
+// seen from outside, so the normal (b - a) x (c - a) of triangle (a, b, c) points outward
+// and the signed volume of a well-formed closed mesh is positive.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace recode::core {
+
+using VertexIndex = std::uint32_t;
+using Triangle = std::array<VertexIndex, 3>;
+
+// An axis-aligned box. The default value is empty (min = +inf, max = -inf), so that
+// extending it by a point gives that point's box.
+struct Aabb {
+  Eigen::Vector3d min = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d max = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
+
+  // True if no point has been added (any min component above the max component).
+  [[nodiscard]] bool isEmpty() const { return (min.array() > max.array()).any(); }
+  // Grows the box to contain p.
+  void extend(const Eigen::Vector3d& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+  // max - min; meaningless for an empty box.
+  [[nodiscard]] Eigen::Vector3d extent() const { return max - min; }
+  // (min + max) / 2; meaningless for an empty box.
+  [[nodiscard]] Eigen::Vector3d center() const { return 0.5 * (min + max); }
+  // Length of the box's diagonal, 0 for an empty box.
+  [[nodiscard]] double diagonal() const { return isEmpty() ? 0.0 : extent().norm(); }
+};
+
+struct TriangleMesh {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<Triangle> triangles;
+
+  [[nodiscard]] std::size_t vertexCount() const { return vertices.size(); }
+  [[nodiscard]] std::size_t triangleCount() const { return triangles.size(); }
+};
+
+// Box of all vertices (referenced by a triangle or not). Empty for a mesh without
+// vertices. Non-finite coordinates propagate into the box as the min/max operations give.
+[[nodiscard]] Aabb boundingBox(const TriangleMesh& mesh);
+
+// A copy with every vertex mapped by `transform`. The triangles are copied unchanged, except
+// that when the transform's linear part has a negative determinant (a reflection) each
+// triangle's last two indices are swapped, so outward faces stay outward.
+[[nodiscard]] TriangleMesh transformed(const TriangleMesh& mesh,
+                                       const Eigen::Isometry3d& transform);
+[[nodiscard]] TriangleMesh transformed(const TriangleMesh& mesh, const Eigen::Affine3d& transform);
+
+// Signed volume enclosed by the triangles (divergence theorem: the sum over triangles of
+// det(a - o, b - o, c - o) / 6, with o the bounding-box centre for accuracy). Positive for
+// a closed, outward-oriented mesh; meaningful only for closed meshes. Throws
+// std::out_of_range if a triangle index is not below vertexCount().
+[[nodiscard]] double signedVolume(const TriangleMesh& mesh);
+
+}  // namespace recode::core
