@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -16,6 +17,8 @@
 #include <string_view>
 #include <system_error>
 #include <vector>
+
+#include "format.hpp"
 
 namespace recode::core {
 namespace {
@@ -103,7 +106,16 @@ std::optional<double> parseDouble(std::string_view token) {
   double value = 0.0;
   const char* end = token.data() + token.size();
   const auto [ptr, ec] = std::from_chars(token.data(), end, value);
-  if (ec != std::errc() || ptr != end) {
+  if (ptr != end) {
+    return std::nullopt;
+  }
+  if (ec == std::errc::result_out_of_range) {
+    // A well-formed number beyond double's range: strtod gives +-HUGE_VAL (infinity) for
+    // overflow, which the caller rejects as non-finite, and 0 or a subnormal for underflow.
+    const std::string copy(token);
+    return std::strtod(copy.c_str(), nullptr);
+  }
+  if (ec != std::errc()) {
     return std::nullopt;
   }
   return value;
@@ -308,9 +320,10 @@ TriangleMesh parseOff(const fs::path& path, std::string_view text) {
 // ---------------------------------------------------------------------------------------
 // OBJ
 
-// What the line check learned: the number of `v` and `f` records.
+// What the line check learned: the positions of the `v` records (parsed with correct
+// rounding by std::from_chars) and the number of `f` records.
 struct ObjLineSummary {
-  std::size_t vertexCount = 0;
+  std::vector<Eigen::Vector3d> positions;
   std::size_t faceCount = 0;
 };
 
@@ -329,6 +342,7 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
     if (tokens.empty()) {
       return;
     }
+    const std::size_t vertexCount = summary.positions.size();
     if (tokens[0] == "v") {
       if (tokens.size() < 4) {
         failAt(path, line,
@@ -338,7 +352,7 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
       if (const std::optional<std::string> problem = parseCoordinates(tokens, 1, p)) {
         failAt(path, line, *problem);
       }
-      ++summary.vertexCount;
+      summary.positions.push_back(p);
     } else if (tokens[0] == "f") {
       if (tokens.size() < 4) {
         failAt(path, line,
@@ -357,10 +371,10 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
         }
         if (*index < 0) {
           // Relative to the vertices defined so far: -1 is the last one.
-          if (static_cast<unsigned long long>(-(*index + 1)) >= summary.vertexCount) {
+          if (static_cast<unsigned long long>(-(*index + 1)) >= vertexCount) {
             failAt(path, line,
                    "face index " + std::to_string(*index) + " out of range (" +
-                       std::to_string(summary.vertexCount) + " vertices defined so far)");
+                       std::to_string(vertexCount) + " vertices defined so far)");
           }
         } else {
           largest = std::max(largest, *index);
@@ -373,13 +387,14 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
     }
   });
 
+  const std::size_t vertexCount = summary.positions.size();
   for (const ForwardReference& ref : largestPerFace) {
-    if (static_cast<unsigned long long>(ref.index) > summary.vertexCount) {
-      failAt(path, ref.line, outOfRange(ref.index, summary.vertexCount));
+    if (static_cast<unsigned long long>(ref.index) > vertexCount) {
+      failAt(path, ref.line, outOfRange(ref.index, vertexCount));
     }
   }
-  if (summary.vertexCount > kMaxVertices) {
-    fail(path, "vertex count " + std::to_string(summary.vertexCount) + " exceeds the limit of " +
+  if (vertexCount > kMaxVertices) {
+    fail(path, "vertex count " + std::to_string(vertexCount) + " exceeds the limit of " +
                    std::to_string(kMaxVertices));
   }
   return summary;
@@ -402,7 +417,7 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
 }
 
 TriangleMesh parseObj(const fs::path& path, const std::string& text) {
-  const ObjLineSummary summary = checkObjLines(path, text);
+  ObjLineSummary summary = checkObjLines(path, text);
 
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
@@ -417,17 +432,27 @@ TriangleMesh parseObj(const fs::path& path, const std::string& text) {
     failFromTinyObj(path, errors);
   }
 
+  // tinyobjloader's number parser is not correctly rounded (it can be 1 ulp off), so the
+  // positions come from the line check; tinyobjloader's values must agree with them to
+  // within rounding, which confirms that both counted the same vertices.
   TriangleMesh mesh;
   const std::size_t vertexCount = attrib.vertices.size() / 3;
-  if (vertexCount != summary.vertexCount) {
+  if (vertexCount != summary.positions.size()) {
     fail(path, "internal error: tinyobjloader read " + std::to_string(vertexCount) +
-                   " vertices where the line check counted " + std::to_string(summary.vertexCount));
+                   " vertices where the line check counted " +
+                   std::to_string(summary.positions.size()));
   }
-  mesh.vertices.reserve(vertexCount);
   for (std::size_t i = 0; i < vertexCount; ++i) {
-    mesh.vertices.emplace_back(attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
-                               attrib.vertices[3 * i + 2]);
+    const Eigen::Vector3d theirs(attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
+                                 attrib.vertices[3 * i + 2]);
+    const Eigen::Vector3d& ours = summary.positions[i];
+    if (!((theirs - ours).cwiseAbs().array() <= 1e-12 * ours.cwiseAbs().array() + 1e-300).all()) {
+      fail(path, "internal error: tinyobjloader read vertex " + std::to_string(i) + " as " +
+                     detail::formatPoint(theirs) + " where the line check read " +
+                     detail::formatPoint(ours));
+    }
   }
+  mesh.vertices = std::move(summary.positions);
 
   std::size_t faceCount = 0;
   std::vector<VertexIndex> polygon;
