@@ -1,3 +1,27 @@
-int main() {
-  return 0;
+// recode: the command-line front end of the RECODE reference implementation.
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "demo_command.hpp"
+#include "replay_command.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "recode: image-based collision detection (Baciu, Wong and Sun 1999) on a bit-exact CPU "
+      "depth/stencil machine"};
+  app.require_subcommand(1);
+  int exitCode = 0;
+  recode::app::addDemoCommand(app, exitCode);
+  recode::app::addReplayCommand(app, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "recode: error: " << e.what() << '\n';
+    return 1;
+  }
+  return exitCode;
 }
