@@ -60,8 +60,8 @@ void BM_SmallTriangles(benchmark::State& state) {
   for (int t = 0; t < n; ++t) {
     const double x = pos(rng), y = pos(rng);
     for (int k = 0; k < 3; ++k) {
-      v.push_back({snapToSubpixel(x + off(rng)), snapToSubpixel(y + off(rng)),
-                   static_cast<float>(z(rng))});
+      v.push_back(
+          {snapToSubpixel(x + off(rng)), snapToSubpixel(y + off(rng)), static_cast<float>(z(rng))});
       idx.push_back(static_cast<std::uint32_t>(idx.size()));
     }
   }
@@ -70,9 +70,8 @@ void BM_SmallTriangles(benchmark::State& state) {
     benchmark::DoNotOptimize(dev.stencilBuffer().data());
   }
   state.SetItemsProcessed(state.iterations() * n);
-  state.counters["fragments_per_triangle"] =
-      static_cast<double>(dev.counters().fragments) /
-      static_cast<double>(dev.counters().trianglesSubmitted);
+  state.counters["fragments_per_triangle"] = static_cast<double>(dev.counters().fragments) /
+                                             static_cast<double>(dev.counters().trianglesSubmitted);
 }
 BENCHMARK(BM_SmallTriangles)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond);
 
