@@ -24,14 +24,21 @@ class FragmentWriter final : public BlockSink {
         stencil_(stencil) {}
 
   void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
+    // The contract's z = (z0 + tx) + ty with tx depending only on the column and ty only on
+    // the row: precomputing both per block gives the same roundings, so the same bits.
+    const DepthPlane& p = tri_.depth;
+    double zx[kBlockSize], ty[kBlockSize];
+    for (int k = 0; k < kBlockSize; ++k) {
+      zx[k] = p.z0 + p.dzdx * static_cast<double>(pixelCentreFixed(blockX + k) - p.x0);
+      ty[k] = p.dzdy * static_cast<double>(pixelCentreFixed(blockY + k) - p.y0);
+    }
     while (mask != 0) {
       const int bit = __builtin_ctzll(mask);
       mask &= mask - 1;
-      const int x = blockX + (bit & (kBlockSize - 1));
-      const int y = blockY + bit / kBlockSize;
-      const std::uint32_t z =
-          quantizeDepth(tri_.depth.at(pixelCentreFixed(x), pixelCentreFixed(y)));
-      const std::size_t i = static_cast<std::size_t>(y) * stride_ + static_cast<std::size_t>(x);
+      const int col = bit & (kBlockSize - 1), row = bit / kBlockSize;
+      const std::uint32_t z = quantizeDepth(zx[col] + ty[row]);
+      const std::size_t i =
+          static_cast<std::size_t>(blockY + row) * stride_ + static_cast<std::size_t>(blockX + col);
       applyFragment(state_, ops_, z, depth_[i], stencil_[i]);
       ++fragments;
     }
