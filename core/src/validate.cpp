@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <Eigen/Eigenvalues>
 
 #include "format.hpp"
 
@@ -46,8 +49,15 @@ std::string triangleName(std::size_t t, const Triangle& tri) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Bounding-volume hierarchy over points, for the convexity search. Points are stored
-// contiguously (structure of arrays) in the order of the tree's leaves.
+// Bounding-volume hierarchy over points, for the convexity search: a binary tree of
+// oriented boxes (axes from the principal components of each node's points), with the
+// points stored contiguously (structure of arrays) in the order of the tree's leaves.
+//
+// Oriented boxes matter here: the points of a convex mesh lie on its surface, and a node's
+// points form a surface patch. An oriented box around a patch of size L is thin across the
+// surface, so against a face plane it only reaches across the plane when the patch is
+// within a few L of the face; an axis-aligned box reaches about L across any oblique plane,
+// so many more nodes near each face would have to be opened.
 
 class PointTree {
  public:
@@ -56,7 +66,7 @@ class PointTree {
     std::vector<std::uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0U);
     nodes_.reserve(2 * (n / kLeafSize + 1));
-    build(points, order, 0, n);
+    build(points, order);
     x_.resize(n);
     y_.resize(n);
     z_.resize(n);
@@ -82,13 +92,13 @@ class PointTree {
   [[nodiscard]] Farthest farthestAbove(const Eigen::Vector3d& normal, double offset,
                                        double threshold, double slack) const {
     Farthest best;
-    const Eigen::Vector3d absNormal = normal.cwiseAbs();
     std::uint32_t stack[128];
     std::size_t top = 0;
     stack[top++] = 0;
     while (top > 0) {
       const Node& node = nodes_[stack[--top]];
-      const double bound = normal.dot(node.center) + absNormal.dot(node.half) - offset;
+      const double bound =
+          normal.dot(node.center) + (node.axes * normal).cwiseAbs().dot(node.half) - offset;
       if (bound + slack <= threshold) {
         continue;
       }
@@ -112,55 +122,82 @@ class PointTree {
   static constexpr std::size_t kLeafSize = 8;
 
   struct Node {
+    Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  // rows: the box's unit axes
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
-    Eigen::Vector3d half = Eigen::Vector3d::Zero();
+    Eigen::Vector3d half = Eigen::Vector3d::Zero();  // half extents along the axes
     std::uint32_t first = 0;  // leaf: first point; inner: index of the left child (right = +1)
     std::uint32_t count = 0;  // leaf: number of points; inner: 0
   };
 
-  // Builds the subtree for order[begin, end) and returns its node index. Children of a
-  // node are allocated as a pair so that a node stores one child index.
-  void build(const std::vector<Eigen::Vector3d>& points, std::vector<std::uint32_t>& order,
-             std::size_t begin, std::size_t end) {
-    // Iterative construction: (node index, begin, end) work items.
+  // Builds the tree over order[0, n): each node's box is oriented along the principal axes
+  // of its points; inner nodes split at the median along the axis of largest variance.
+  // Children are allocated as a pair so that a node stores one child index.
+  void build(const std::vector<Eigen::Vector3d>& points, std::vector<std::uint32_t>& order) {
     struct Item {
       std::size_t node, begin, end;
     };
     nodes_.push_back({});
-    std::vector<Item> work{{0, begin, end}};
+    std::vector<Item> work{{0, 0, order.size()}};
+    std::vector<std::pair<double, std::uint32_t>> keyed;
     while (!work.empty()) {
       const Item item = work.back();
       work.pop_back();
-      Aabb box;
-      for (std::size_t i = item.begin; i < item.end; ++i) {
-        box.extend(points[order[i]]);
-      }
-      Node node{box.center(), 0.5 * box.extent(), 0, 0};
       const std::size_t size = item.end - item.begin;
+
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (std::size_t i = item.begin; i < item.end; ++i) {
+        mean += points[order[i]];
+      }
+      mean /= static_cast<double>(size);
+      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+      for (std::size_t i = item.begin; i < item.end; ++i) {
+        const Eigen::Vector3d d = points[order[i]] - mean;
+        covariance.noalias() += d * d.transpose();
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+      solver.computeDirect(covariance);
+      Node node;
+      if (solver.info() == Eigen::Success && solver.eigenvectors().allFinite()) {
+        // Eigenvalues ascend, so the last row is the axis of largest variance.
+        node.axes = solver.eigenvectors().transpose();
+      }
+      Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+      Eigen::Vector3d hi = -lo;
+      for (std::size_t i = item.begin; i < item.end; ++i) {
+        const Eigen::Vector3d q = node.axes * points[order[i]];
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+      }
+      node.center = node.axes.transpose() * (0.5 * (lo + hi));
+      node.half = 0.5 * (hi - lo);
+
       if (size <= kLeafSize) {
         node.first = static_cast<std::uint32_t>(item.begin);
         node.count = static_cast<std::uint32_t>(size);
         nodes_[item.node] = node;
         continue;
       }
+      // Split at the median of the projections on the axis of largest extent.
       int axis = 0;
       node.half.maxCoeff(&axis);
-      const std::size_t middle = item.begin + size / 2;
-      std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(item.begin),
-                       order.begin() + static_cast<std::ptrdiff_t>(middle),
-                       order.begin() + static_cast<std::ptrdiff_t>(item.end),
-                       [&](std::uint32_t a, std::uint32_t b) {
-                         const double pa = points[a][axis];
-                         const double pb = points[b][axis];
-                         return pa < pb || (pa == pb && a < b);
-                       });
+      const Eigen::Vector3d direction = node.axes.row(axis).transpose();
+      keyed.clear();
+      for (std::size_t i = item.begin; i < item.end; ++i) {
+        keyed.emplace_back(direction.dot(points[order[i]]), order[i]);
+      }
+      const std::size_t half = size / 2;
+      std::nth_element(keyed.begin(), keyed.begin() + static_cast<std::ptrdiff_t>(half),
+                       keyed.end());
+      for (std::size_t i = 0; i < size; ++i) {
+        order[item.begin + i] = keyed[i].second;
+      }
       const std::size_t left = nodes_.size();
       nodes_.push_back({});
       nodes_.push_back({});
       node.first = static_cast<std::uint32_t>(left);
       nodes_[item.node] = node;
-      work.push_back({left, item.begin, middle});
-      work.push_back({left + 1, middle, item.end});
+      work.push_back({left, item.begin, item.begin + half});
+      work.push_back({left + 1, item.begin + half, item.end});
     }
   }
 
@@ -459,7 +496,7 @@ ValidationReport checkConvexBlock(const TriangleMesh& mesh, double relativeToler
   // Stage 6.
   {
     const PointTree tree(points);
-    const double slack = 1e-13 * diagonal;
+    const double slack = 1e-12 * diagonal;
     for (std::size_t t = 0; t < triangles.size(); ++t) {
       const Triangle& tri = triangles[t];
       const Eigen::Vector3d& a = points[tri[0]];
