@@ -184,6 +184,9 @@ TriangleMesh makeSphere(double radius, int segments, int rings) {
   requirePositive(kFunction, "radius", radius);
   requireAtLeast(kFunction, "segments", segments, 3);
   requireAtLeast(kFunction, "rings", rings, 2);
+  requireTriangleBudget(
+      kFunction, "segments = " + std::to_string(segments) + " and rings = " + std::to_string(rings),
+      2.0 * (static_cast<double>(rings) - 1.0) * static_cast<double>(segments));
   return makeEllipsoid(radius, radius, radius, segments, rings);
 }
 

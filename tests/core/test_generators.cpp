@@ -352,6 +352,8 @@ TEST_CASE("generators reject invalid parameters, naming parameter and value", "[
       {[] { (void)makeSphere(-0.5, 8, 4); }, {"makeSphere", "radius", "-0.5"}},
       {[] { (void)makeSphere(1.0, 8, -1); }, {"rings", "-1"}},
       {[] { (void)makeSphere(1.0, 2, 4); }, {"segments", "got 2"}},
+      {[] { (void)makeSphere(1.0, 10'000, 10'000); },
+       {"makeSphere: segments = 10000 and rings = 10000", "limit of 33554432"}},
       {[] { (void)makeBox(1.0, 1.0, 0.0); }, {"makeBox", "hz", "got 0"}},
       {[&] { (void)makeBox(nan, 1.0, 1.0); }, {"hx", "nan"}},
       {[] { (void)makeBox(Eigen::Vector3d(1.0, -1.0, 1.0)); }, {"hy", "-1"}},

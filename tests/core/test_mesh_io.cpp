@@ -103,6 +103,9 @@ TEST_CASE("OBJ and OFF coordinates are read with correct rounding", "[mesh_io]")
   const Eigen::Vector3d expected(0.3, 1.2345678901234567, 7e22);
   CHECK(readObj(obj).vertices[0] == expected);
   CHECK(readOff(off).vertices[0] == expected);
+  // Underflow reads as zero.
+  const auto tiny = dir.write("tiny.off", "OFF\n3 1 0\n1e-999 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  CHECK(readOff(tiny).vertices[0] == Eigen::Vector3d::Zero());
 }
 
 TEST_CASE("readMesh chooses the reader by extension, ignoring case", "[mesh_io]") {
