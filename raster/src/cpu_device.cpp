@@ -161,25 +161,11 @@ void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,
 }
 
 std::vector<std::uint8_t> CpuDevice::readStencil(const PixelRect& rect) const {
-  const PixelRect r = rect.intersect(framebufferRect());
-  std::vector<std::uint8_t> out;
-  out.reserve(static_cast<std::size_t>(r.area()));
-  for (int y = r.y0; y < r.y1; ++y) {
-    for (int x = r.x0; x < r.x1; ++x)
-      out.push_back(stencil_[index(x, y)]);
-  }
-  return out;
+  return copyRect(stencil_, rect);
 }
 
 std::vector<std::uint32_t> CpuDevice::readDepth(const PixelRect& rect) const {
-  const PixelRect r = rect.intersect(framebufferRect());
-  std::vector<std::uint32_t> out;
-  out.reserve(static_cast<std::size_t>(r.area()));
-  for (int y = r.y0; y < r.y1; ++y) {
-    for (int x = r.x0; x < r.x1; ++x)
-      out.push_back(depth_[index(x, y)]);
-  }
-  return out;
+  return copyRect(depth_, rect);
 }
 
 }  // namespace recode::raster

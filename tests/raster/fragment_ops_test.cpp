@@ -17,13 +17,11 @@ using recode::test::modelStencilOp;
 namespace {
 
 // A 1x1 framebuffer; the triangle covers the single pixel centre (0.5, 0.5) at constant depth.
-void drawPixel(CpuDevice& dev, float z, bool front) {
-  const WindowVertex a{-1.0f, -1.0f, z}, b{3.0f, -1.0f, z}, c{-1.0f, 3.0f, z};
-  if (front) {
-    recode::test::drawTriangle(dev, a, b, c);
-  } else {
-    recode::test::drawTriangle(dev, a, c, b);
-  }
+cmd::Draw pixelDraw(float z, bool front) {
+  cmd::Draw d{{{-1.0f, -1.0f, z}, {3.0f, -1.0f, z}, {-1.0f, 3.0f, z}}, {0, 1, 2}};
+  if (!front)
+    std::swap(d.indices[1], d.indices[2]);
+  return d;
 }
 
 }  // namespace
@@ -67,13 +65,17 @@ TEST_CASE("single-pixel fragments: every func x op x mask x value combination", 
   const std::uint8_t valueMasks[] = {0xFF, 0x0F, 0xF0, 0x00};
   const std::uint8_t writeMasks[] = {0xFF, 0x0F, 0x00};
   const std::uint8_t initial[] = {0, 1, 0x7F, 0x80, 0xFE, 0xFF};
+  // One stream per combination on a fresh 1x1 framebuffer: set the pixel, set the state under
+  // test, draw one fragment (the other face gets KEEP everywhere). The device and the longhand
+  // model must agree.
+  std::vector<Command> stream(9);
   long long checked = 0;
-  CpuDevice dev(1, 1);
   for (int sf = 0; sf < 8; ++sf) {
     for (int df = 0; df < 8; ++df) {
       for (int op = 0; op < 8; ++op) {
         // Three different ops per combination so that the branch taken is visible.
-        const int ops[3] = {op, (op + 3) % 8, (op + 5) % 8};
+        const StencilOps under{static_cast<StencilOp>(op), static_cast<StencilOp>((op + 3) % 8),
+                               static_cast<StencilOp>((op + 5) % 8)};
         for (std::uint8_t ref : refs) {
           for (std::uint8_t vm : valueMasks) {
             for (std::uint8_t wm : writeMasks) {
@@ -81,44 +83,27 @@ TEST_CASE("single-pixel fragments: every func x op x mask x value combination", 
                 for (const float z : incoming) {
                   for (const bool depthWrite : {true, false}) {
                     for (const bool front : {true, false}) {
-                      // Reset the pixel.
-                      dev.setStencilWriteMask(0xFF);
-                      dev.setDepthWriteMask(true);
-                      dev.clearStencil(s0);
-                      dev.clearDepth(storedZ);
-                      // State under test; the other face gets KEEP everywhere.
-                      dev.setDepthFunc(static_cast<CompareFunc>(df));
-                      dev.setDepthWriteMask(depthWrite);
-                      dev.setStencilFunc(static_cast<CompareFunc>(sf), ref, vm);
-                      const StencilOps under{static_cast<StencilOp>(ops[0]),
-                                             static_cast<StencilOp>(ops[1]),
-                                             static_cast<StencilOp>(ops[2])};
-                      dev.setStencilOps(front ? Face::Front : Face::Back, under);
-                      dev.setStencilOps(front ? Face::Back : Face::Front, StencilOps{});
-                      dev.setStencilWriteMask(wm);
-                      drawPixel(dev, z, front);
-
-                      // The model, written out.
-                      const std::uint32_t q = modelQuantize(z);
-                      unsigned s = s0;
-                      std::uint32_t d = stored;
-                      int taken;
-                      if (!modelCompare(sf, ref & vm, s & vm)) {
-                        taken = ops[0];
-                      } else if (!modelCompare(df, q, d)) {
-                        taken = ops[1];
-                      } else {
-                        taken = ops[2];
-                        if (depthWrite)
-                          d = q;
-                      }
-                      s = (modelStencilOp(taken, s, ref) & wm) | (s & (255u - wm));
-                      if (dev.stencilBuffer()[0] != s || dev.depthBuffer()[0] != d) {
-                        FAIL("sf " << sf << " df " << df << " ops " << ops[0] << ops[1] << ops[2]
-                                   << " ref " << int(ref) << " vm " << int(vm) << " wm " << int(wm)
-                                   << " s0 " << int(s0) << " z " << z << " front " << front
-                                   << ": got s " << int(dev.stencilBuffer()[0]) << " d "
-                                   << dev.depthBuffer()[0] << ", want s " << s << " d " << d);
+                      stream[0] = cmd::ClearStencil{s0};
+                      stream[1] = cmd::ClearDepth{storedZ};
+                      stream[2] = cmd::DepthFunc{static_cast<CompareFunc>(df)};
+                      stream[3] = cmd::DepthWriteMask{depthWrite};
+                      stream[4] = cmd::StencilFunc{static_cast<CompareFunc>(sf), ref, vm};
+                      stream[5] = cmd::StencilOpsCmd{front ? Face::Front : Face::Back, under};
+                      stream[6] = cmd::StencilOpsCmd{front ? Face::Back : Face::Front, {}};
+                      stream[7] = cmd::StencilWriteMask{wm};
+                      stream[8] = pixelDraw(z, front);
+                      CpuDevice dev(1, 1);
+                      replay(stream, dev);
+                      recode::test::ReferenceModel model(1, 1);
+                      model.run(stream);
+                      if (dev.stencilBuffer()[0] != model.stencil(0, 0) ||
+                          dev.depthBuffer()[0] != model.depth(0, 0)) {
+                        FAIL("sf " << sf << " df " << df << " op " << op << " ref " << int(ref)
+                                   << " vm " << int(vm) << " wm " << int(wm) << " s0 " << int(s0)
+                                   << " z " << z << " front " << front << ": got s "
+                                   << int(dev.stencilBuffer()[0]) << " d " << dev.depthBuffer()[0]
+                                   << ", model s " << int(model.stencil(0, 0)) << " d "
+                                   << model.depth(0, 0));
                       }
                       ++checked;
                     }
@@ -132,4 +117,35 @@ TEST_CASE("single-pixel fragments: every func x op x mask x value combination", 
     }
   }
   CHECK(checked == 8LL * 8 * 8 * 5 * 4 * 3 * 6 * 3 * 2 * 2);
+}
+
+TEST_CASE("the model's fragment stage on hand-worked examples", "[fragment]") {
+  // The model is itself checked on cases worked out by hand, so that device and model cannot
+  // agree on a shared mistake unnoticed.
+  const auto run = [](std::vector<Command> cmds) {
+    recode::test::ReferenceModel m(1, 1);
+    m.run(cmds);
+    return std::make_pair(int(m.stencil(0, 0)), m.depth(0, 0));
+  };
+  const std::uint32_t half = 8388608u;  // quantised 0.5
+  // Stencil test fails (ref 2 LESS stored 1 is false): sfail = REPLACE writes ref 2; depth kept.
+  CHECK(
+      run({cmd::ClearStencil{1}, cmd::ClearDepth{1.0}, cmd::StencilFunc{CompareFunc::Less, 2, 0xFF},
+           cmd::StencilOpsCmd{Face::Both, {StencilOp::Replace, StencilOp::Zero, StencilOp::Keep}},
+           pixelDraw(0.5f, true)}) == std::make_pair(2, 16777215u));
+  // Stencil passes, depth fails (0.5 LESS 0.25 is false): dpfail = INCR; depth kept.
+  CHECK(run({cmd::ClearStencil{7}, cmd::ClearDepth{0.25},
+             cmd::StencilOpsCmd{Face::Front, {StencilOp::Zero, StencilOp::Incr, StencilOp::Zero}},
+             pixelDraw(0.5f, true)}) == std::make_pair(8, 4194304u));
+  // Both pass: dppass = INVERT through write mask 0x0F, depth written.
+  CHECK(run({cmd::ClearStencil{0x35}, cmd::StencilWriteMask{0x0F},
+             cmd::StencilOpsCmd{Face::Front, {StencilOp::Keep, StencilOp::Keep, StencilOp::Invert}},
+             pixelDraw(0.5f, true)}) == std::make_pair(0x3A, half));
+  // Back face uses the back ops; value mask 0xF0 hides the low bits (ref 0x1F & 0xF0 = 0x10
+  // EQUAL stored 0x13 & 0xF0 = 0x10 passes).
+  CHECK(
+      run({cmd::ClearStencil{0x13}, cmd::StencilFunc{CompareFunc::Equal, 0x1F, 0xF0},
+           cmd::StencilOpsCmd{Face::Front, {StencilOp::Keep, StencilOp::Keep, StencilOp::Zero}},
+           cmd::StencilOpsCmd{Face::Back, {StencilOp::Keep, StencilOp::Keep, StencilOp::DecrWrap}},
+           pixelDraw(0.5f, false)}) == std::make_pair(0x12, half));
 }

@@ -59,6 +59,18 @@ class CpuDevice final : public DepthStencilDevice {
            static_cast<std::size_t>(x);
   }
 
+  template <class T>
+  [[nodiscard]] std::vector<T> copyRect(const std::vector<T>& buffer, const PixelRect& rect) const {
+    const PixelRect r = rect.intersect(framebufferRect());
+    std::vector<T> out;
+    out.reserve(static_cast<std::size_t>(r.area()));
+    for (int y = r.y0; y < r.y1; ++y) {
+      const auto row = buffer.begin() + static_cast<std::ptrdiff_t>(index(r.x0, y));
+      out.insert(out.end(), row, row + r.width());
+    }
+    return out;
+  }
+
   int width_;
   int height_;
   std::vector<std::uint32_t> depth_;
