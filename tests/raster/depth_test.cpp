@@ -7,6 +7,7 @@
 #include "raster_test_support.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/triangle_setup.hpp"
 
 using namespace recode::raster;
 
@@ -79,4 +80,29 @@ TEST_CASE("depth test LESS keeps the nearer of two overlapping triangles", "[dep
   recode::test::drawTriangle(dev, {0, 0, 0.125f}, {16, 0, 0.125f}, {0, 16, 0.125f});
   CHECK(dev.stencilBuffer()[0] == 3);
   CHECK(dev.depthBuffer()[0] == quantizeDepth(0.125f));
+}
+
+TEST_CASE("stored depth equals DepthPlane::at at every covered sample", "[depth]") {
+  // The device computes depth per 8x8 block from column and row terms; the plane's own
+  // per-sample formula must give the same bits everywhere.
+  const FixedVertex v0{snapToFixed(3.3f), snapToFixed(1.7f), 0.91f};
+  const FixedVertex v1{snapToFixed(70.1f), snapToFixed(20.2f), 0.13f};
+  const FixedVertex v2{snapToFixed(12.6f), snapToFixed(66.9f), 0.47f};
+  const auto tri = setupTriangle(v0, v1, v2);
+  REQUIRE(tri.has_value());
+  CpuDevice dev(80, 80);
+  dev.setDepthFunc(CompareFunc::Always);
+  recode::test::drawTriangle(dev, {3.3f, 1.7f, 0.91f}, {70.1f, 20.2f, 0.13f},
+                             {12.6f, 66.9f, 0.47f});
+  int compared = 0;
+  for (int y = 0; y < 80; ++y) {
+    for (int x = 0; x < 80; ++x) {
+      const std::uint32_t d = dev.depthBuffer()[static_cast<std::size_t>(y * 80 + x)];
+      if (d == kDepthMax)
+        continue;  // not covered (no sample of this plane reaches 1.0)
+      REQUIRE(d == quantizeDepth(tri->depth.at(pixelCentreFixed(x), pixelCentreFixed(y))));
+      ++compared;
+    }
+  }
+  CHECK(compared > 1500);
 }

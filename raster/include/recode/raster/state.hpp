@@ -62,8 +62,8 @@ struct PixelRect {
   friend bool operator==(const PixelRect&, const PixelRect&) = default;
 };
 
-// The pure functions of the per-fragment stage, shared by every software implementation
-// and by the tests' independent model.
+// The pure functions of the per-fragment stage (GL's compare and stencil-op tables). The
+// tests hold them against a longhand model of their own (tests/raster/reference_model.cpp).
 [[nodiscard]] bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored);
 [[nodiscard]] std::uint8_t applyStencilOp(StencilOp op, std::uint8_t value, std::uint8_t ref);
 

@@ -22,6 +22,8 @@ struct EdgeFunction {
 };
 
 // z(X, Y) = (z0 + dzdx (X - x0)) + dzdy (Y - y0), all in double, in exactly that order.
+// at() is the contract's formula for one sample; CpuDevice evaluates the same operations per
+// 8x8 block (docs/rasterization.md, section 7).
 struct DepthPlane {
   std::int64_t x0 = 0;  // fixed-point position of the first submitted vertex
   std::int64_t y0 = 0;
