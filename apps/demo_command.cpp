@@ -10,6 +10,7 @@
 #include "recode/core/validate.hpp"
 #include "recode/core/view.hpp"
 #include "recode/raster/cpu_device.hpp"
+#include "recode/raster/facing_counts.hpp"
 
 namespace recode::app {
 
@@ -37,31 +38,6 @@ Cones makeCones(int segments, double overlap) {
   return {cone, core::transformed(cone, flip)};
 }
 
-// Front and back fragment counts of one mesh: equal everywhere for a watertight draw.
-long long unequalFrontBack(raster::CpuDevice& dev, const std::vector<raster::WindowVertex>& v,
-                           const std::vector<std::uint32_t>& idx) {
-  using namespace raster;
-  const PixelRect all{0, 0, dev.width(), dev.height()};
-  dev.setScissor(all);
-  dev.setDepthFunc(CompareFunc::Always);
-  dev.setDepthWriteMask(false);
-  dev.setStencilFunc(CompareFunc::Always, 0, 0xFF);
-  dev.setStencilOps(Face::Front, {StencilOp::Keep, StencilOp::Keep, StencilOp::Incr});
-  dev.setStencilOps(Face::Back, {StencilOp::Keep, StencilOp::Keep, StencilOp::Keep});
-  dev.clearStencil(0);
-  dev.drawTriangles(v, idx);
-  const auto front = dev.readStencil(all);
-  dev.setStencilOps(Face::Front, {StencilOp::Keep, StencilOp::Keep, StencilOp::Keep});
-  dev.setStencilOps(Face::Back, {StencilOp::Keep, StencilOp::Keep, StencilOp::Incr});
-  dev.clearStencil(0);
-  dev.drawTriangles(v, idx);
-  const auto back = dev.readStencil(all);
-  long long unequal = 0;
-  for (std::size_t i = 0; i < front.size(); ++i)
-    unequal += front[i] != back[i];
-  return unequal;
-}
-
 int runDemo(const DemoOptions& o) {
   using namespace raster;
   const Cones cones = makeCones(o.segments, o.overlap);
@@ -78,8 +54,8 @@ int runDemo(const DemoOptions& o) {
   const auto ia = core::triangleIndices(cones.a), ib = core::triangleIndices(cones.b);
 
   CpuDevice dev(o.width, o.height);
-  const long long crackA = unequalFrontBack(dev, va, ia);
-  const long long crackB = unequalFrontBack(dev, vb, ib);
+  const long long crackA = countFacingFragments(dev, va, ia).unequalPixels();
+  const long long crackB = countFacingFragments(dev, vb, ib).unequalPixels();
   dev.resetCounters();
 
   const auto start = std::chrono::steady_clock::now();

@@ -9,64 +9,36 @@
 
 #include "recode/core/generators.hpp"
 #include "recode/core/mesh.hpp"
+#include "recode/core/view.hpp"
 #include "recode/raster/cpu_device.hpp"
-#include "recode/raster/fixed_point.hpp"
+#include "recode/raster/facing_counts.hpp"
 
 using namespace recode;
-using raster::CompareFunc;
 using raster::CpuDevice;
-using raster::CullMode;
-using raster::Face;
-using raster::StencilOp;
 
 namespace {
 
-// Orthographic view along -z fitted to the frame with a random margin and sub-pixel offset;
-// x, y pre-snapped to 1/256 pixel, depth mapped so that larger world z is nearer (smaller).
+// A view along z that fits the mesh into the frame with a random margin and a random
+// sub-pixel offset, so that edges and vertices land at every sub-pixel phase.
 std::vector<raster::WindowVertex> project(const core::TriangleMesh& mesh, int w, int h,
                                           std::mt19937& rng) {
   const core::Aabb box = core::boundingBox(mesh);
   std::uniform_real_distribution<double> margin(0.05, 0.3), shift(-0.5, 0.5);
-  const Eigen::Vector3d size = box.max - box.min;
-  const double scale = std::min(w / size.x(), h / size.y()) * (1.0 - margin(rng));
-  const double ox = 0.5 * (w - scale * size.x()) + shift(rng);
-  const double oy = 0.5 * (h - scale * size.y()) + shift(rng);
-  std::vector<raster::WindowVertex> out;
-  for (const Eigen::Vector3d& p : mesh.vertices) {
-    const double z = (box.max.z() - p.z()) / (size.z() > 0 ? size.z() : 1.0);
-    out.push_back({raster::snapToSubpixel(ox + scale * (p.x() - box.min.x())),
-                   raster::snapToSubpixel(oy + scale * (p.y() - box.min.y())),
-                   static_cast<float>(0.05 + 0.9 * z)});
-  }
-  return out;
+  const Eigen::Vector3d size = box.extent();
+  // World units per pixel, the same along both window axes.
+  const double pixel = std::max(size.x() / w, size.y() / h) / (1.0 - margin(rng));
+  const double u0 = box.center().x() - 0.5 * w * pixel + shift(rng) * pixel;
+  const double v0 = box.center().y() - 0.5 * h * pixel + shift(rng) * pixel;
+  const double pad = 0.05 * size.z() + 1e-9;
+  const core::OrthoView view(core::ViewAxis::Z, {u0, v0, u0 + w * pixel, v0 + h * pixel}, w, h,
+                             box.min.z() - pad, box.max.z() + pad);
+  return view.toWindow(mesh);
 }
 
-std::vector<std::uint32_t> indices(const core::TriangleMesh& mesh) {
-  std::vector<std::uint32_t> out;
-  for (const auto& t : mesh.triangles)
-    out.insert(out.end(), t.begin(), t.end());
-  return out;
-}
-
-// Counts front and back fragments per pixel in two culled passes.
-struct Counts {
-  std::vector<std::uint8_t> front, back;
-};
-Counts countFragments(const std::vector<raster::WindowVertex>& v,
-                      const std::vector<std::uint32_t>& idx, int w, int h) {
+raster::FacingCounts countFragments(const std::vector<raster::WindowVertex>& v,
+                                    const core::TriangleMesh& mesh, int w, int h) {
   CpuDevice dev(w, h);
-  dev.setDepthFunc(CompareFunc::Always);
-  dev.setDepthWriteMask(false);
-  dev.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Incr});
-  Counts c;
-  dev.setCullMode(CullMode::Back);
-  dev.drawTriangles(v, idx);
-  c.front = dev.readStencil({0, 0, w, h});
-  dev.clearStencil(0);
-  dev.setCullMode(CullMode::Front);
-  dev.drawTriangles(v, idx);
-  c.back = dev.readStencil({0, 0, w, h});
-  return c;
+  return raster::countFacingFragments(dev, v, core::triangleIndices(mesh));
 }
 
 core::TriangleMesh randomShape(std::mt19937& rng, int k) {
@@ -108,7 +80,7 @@ TEST_CASE("convex meshes at random poses: one front and one back fragment inside
     pose.linear() = randomRotation(rng).toRotationMatrix();
     const core::TriangleMesh mesh = core::transformed(shape, pose);
     const auto v = project(mesh, w, h, rng);
-    const Counts c = countFragments(v, indices(mesh), w, h);
+    const raster::FacingCounts c = countFragments(v, mesh, w, h);
     int unequal = 0, overTwo = 0, covered = 0;
     for (std::size_t i = 0; i < c.front.size(); ++i) {
       unequal += c.front[i] != c.back[i];
@@ -144,7 +116,7 @@ TEST_CASE("two overlapping convex meshes in one draw: front count equals back co
     for (auto t : b.triangles)
       both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
     const int w = 160, h = 120;
-    const Counts c = countFragments(project(both, w, h, rng), indices(both), w, h);
+    const raster::FacingCounts c = countFragments(project(both, w, h, rng), both, w, h);
     int unequal = 0;
     for (std::size_t i = 0; i < c.front.size(); ++i) {
       unequal += c.front[i] != c.back[i];
