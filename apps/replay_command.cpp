@@ -1,9 +1,7 @@
 #include "replay_command.hpp"
 
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "pgm.hpp"
 #include "recode/raster/cpu_device.hpp"
@@ -20,25 +18,10 @@ struct ReplayOptions {
   bool json = false;
 };
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw raster::FormatError(path + ": cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 int runReplay(const ReplayOptions& o) {
-  const std::string text = readText(o.file);
-  // A golden vector carries expected buffers; a plain command stream does not.
-  const bool golden = text.find("\"recode-golden-1\"") != std::string::npos;
-  raster::GoldenVector g;
-  if (golden) {
-    g = raster::goldenFromJson(text, o.file);
-  } else {
-    g.stream = raster::commandStreamFromJson(text, o.file);
-  }
+  const raster::CommandFile file = raster::readCommandFile(o.file);
+  const bool golden = file.hasExpected;
+  const raster::GoldenVector& g = file.content;
   raster::CpuDevice dev(g.stream.width, g.stream.height);
   raster::replay(g.stream.commands, dev);
 

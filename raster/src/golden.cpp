@@ -350,13 +350,35 @@ GoldenVector goldenFromJson(std::string_view text, std::string_view source) {
   return g;
 }
 
-GoldenVector readGolden(const std::filesystem::path& path) {
+namespace {
+
+std::string readFileText(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw FormatError(path.string() + ": cannot open file");
   std::ostringstream text;
   text << in.rdbuf();
-  return goldenFromJson(text.str(), path.string());
+  return text.str();
+}
+
+}  // namespace
+
+GoldenVector readGolden(const std::filesystem::path& path) {
+  return goldenFromJson(readFileText(path), path.string());
+}
+
+CommandFile readCommandFile(const std::filesystem::path& path) {
+  const std::string text = readFileText(path);
+  const std::string source = path.string();
+  const json doc = parseDocument(text, source);
+  const Reader r(source);
+  const std::string format = r.string(r.member(doc, "", "format"), "/format");
+  if (format == kGoldenFormat)
+    return {goldenFromJson(text, source), true};
+  if (format == kStreamFormat)
+    return {{{}, commandStreamFromJson(text, source), {}, {}}, false};
+  r.fail("/format", "expected \"" + std::string(kGoldenFormat) + "\" or \"" +
+                        std::string(kStreamFormat) + "\", got \"" + format + "\"");
 }
 
 void writeGolden(const std::filesystem::path& path, const GoldenVector& golden) {

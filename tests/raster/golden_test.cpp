@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <fstream>
 
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/golden.hpp"
@@ -80,4 +81,34 @@ TEST_CASE("malformed golden and command files name the JSON path", "[golden]") {
                     Catch::Contains("/commands/0/vertices_fixed/0/2: depth is not a single"));
   CHECK_THROWS_WITH(readGolden("/nonexistent/golden.json"),
                     Catch::Contains("/nonexistent/golden.json: cannot open file"));
+}
+
+TEST_CASE("readCommandFile chooses the format by its format key", "[golden]") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path();
+  const GoldenVector golden =
+      readGolden(std::filesystem::path(RECODE_DATA_DIR) / "golden" / "fill_square.json");
+  const CommandFile asGolden =
+      readCommandFile(std::filesystem::path(RECODE_DATA_DIR) / "golden" / "fill_square.json");
+  CHECK(asGolden.hasExpected);
+  CHECK(asGolden.content.stencil == golden.stencil);
+
+  const std::filesystem::path streamPath = dir / "recode_stream_test.json";
+  {
+    std::ofstream out(streamPath);
+    out << commandStreamToJson(golden.stream);
+  }
+  const CommandFile asStream = readCommandFile(streamPath);
+  CHECK_FALSE(asStream.hasExpected);
+  CHECK(asStream.content.stencil.empty());
+  CHECK(commandStreamToJson(asStream.content.stream) == commandStreamToJson(golden.stream));
+
+  const std::filesystem::path badPath = dir / "recode_bad_format_test.json";
+  {
+    std::ofstream out(badPath);
+    out << R"({"format": "recode-golden-2"})";
+  }
+  CHECK_THROWS_WITH(readCommandFile(badPath),
+                    Catch::Contains("/format: expected \"recode-golden-1\" or"));
+  std::filesystem::remove(streamPath);
+  std::filesystem::remove(badPath);
 }

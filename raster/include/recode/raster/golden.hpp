@@ -36,6 +36,14 @@ struct GoldenVector {
 [[nodiscard]] GoldenVector goldenFromJson(std::string_view text, std::string_view source);
 
 [[nodiscard]] GoldenVector readGolden(const std::filesystem::path& path);
+
+// Reads either format, chosen by the document's "format" key. For a recode-commands-1 file
+// the result has empty expected buffers and hasExpected is false.
+struct CommandFile {
+  GoldenVector content;
+  bool hasExpected = false;
+};
+[[nodiscard]] CommandFile readCommandFile(const std::filesystem::path& path);
 void writeGolden(const std::filesystem::path& path, const GoldenVector& golden);
 
 }  // namespace recode::raster
