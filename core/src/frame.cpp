@@ -33,10 +33,11 @@ ViewWindow defaultWindow(ViewAxis axis, const Aabb& bounds,
   w.umax += margin;
   w.vmin -= margin;
   w.vmax += margin;
+  if (!resolution)
+    return w;
   du = w.umax - w.umin;
   dv = w.vmax - w.vmin;
-  const int cols = resolution ? (*resolution)[0] : kDefaultResolution;
-  const int rows = resolution ? (*resolution)[1] : kDefaultResolution;
+  const int cols = (*resolution)[0], rows = (*resolution)[1];
   // Square pixels: widen the side that is short for the pixel aspect.
   const double perPixel = std::max(du / cols, dv / rows);
   const double cu = 0.5 * (w.umin + w.umax), cv = 0.5 * (w.vmin + w.vmax);
@@ -76,6 +77,54 @@ FrameSpec frameFromPixelSize(ViewAxis axis, const ViewWindow& window, double pix
 int heightForWidth(const ViewWindow& window, int width) {
   const double rows = std::round(width * (window.vmax - window.vmin) / (window.umax - window.umin));
   return static_cast<int>(std::clamp(rows, 1.0, static_cast<double>(raster::kMaxFramebufferSize)));
+}
+
+FrameSpec resolveFrame(const ViewSpec& spec, const Aabb& bounds, const FrameOverrides& overrides) {
+  if (overrides.width && overrides.pixelSize)
+    throw std::invalid_argument("give a resolution or a pixel size, not both");
+  if (overrides.height && !overrides.width)
+    throw std::invalid_argument("a height override needs a width");
+  const auto checkSide = [](int n, const char* what) {
+    if (n < 1 || n > raster::kMaxFramebufferSize) {
+      std::ostringstream m;
+      m << what << " " << n << " is outside 1.." << raster::kMaxFramebufferSize;
+      throw std::invalid_argument(m.str());
+    }
+  };
+  std::optional<double> pixelSize = overrides.pixelSize;
+  std::optional<std::array<int, 2>> resolution;
+  bool widthOnly = false;
+  if (overrides.width) {
+    checkSide(*overrides.width, "width");
+    if (overrides.height) {
+      checkSide(*overrides.height, "height");
+      resolution = std::array<int, 2>{*overrides.width, *overrides.height};
+    } else {
+      widthOnly = true;
+    }
+  } else if (!pixelSize) {
+    pixelSize = spec.pixelSize;
+    if (!pixelSize)
+      resolution =
+          spec.resolution.value_or(std::array<int, 2>{kDefaultResolution, kDefaultResolution});
+  }
+  if (pixelSize)
+    return frameFromPixelSize(spec.axis, spec.window.value_or(defaultWindow(spec.axis, bounds, {})),
+                              *pixelSize);
+  FrameSpec f;
+  f.axis = spec.axis;
+  if (widthOnly) {
+    const int width = *overrides.width;
+    const int height =
+        heightForWidth(spec.window.value_or(defaultWindow(spec.axis, bounds, {})), width);
+    resolution = std::array<int, 2>{width, height};
+  }
+  f.width = (*resolution)[0];
+  f.height = (*resolution)[1];
+  checkSide(f.width, "width");
+  checkSide(f.height, "height");
+  f.window = spec.window.value_or(defaultWindow(spec.axis, bounds, resolution));
+  return f;
 }
 
 }  // namespace recode::core
