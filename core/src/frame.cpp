@@ -91,6 +91,10 @@ FrameSpec resolveFrame(const ViewSpec& spec, const Aabb& bounds, const FrameOver
       throw std::invalid_argument(m.str());
     }
   };
+  // The window the resolution is chosen for (value_or would build the default eagerly).
+  const auto windowFor = [&](const std::optional<std::array<int, 2>>& res) {
+    return spec.window ? *spec.window : defaultWindow(spec.axis, bounds, res);
+  };
   std::optional<double> pixelSize = overrides.pixelSize;
   std::optional<std::array<int, 2>> resolution;
   bool widthOnly = false;
@@ -109,21 +113,19 @@ FrameSpec resolveFrame(const ViewSpec& spec, const Aabb& bounds, const FrameOver
           spec.resolution.value_or(std::array<int, 2>{kDefaultResolution, kDefaultResolution});
   }
   if (pixelSize)
-    return frameFromPixelSize(spec.axis, spec.window.value_or(defaultWindow(spec.axis, bounds, {})),
-                              *pixelSize);
+    return frameFromPixelSize(spec.axis, windowFor(std::nullopt), *pixelSize);
   FrameSpec f;
   f.axis = spec.axis;
   if (widthOnly) {
     const int width = *overrides.width;
-    const int height =
-        heightForWidth(spec.window.value_or(defaultWindow(spec.axis, bounds, {})), width);
+    const int height = heightForWidth(windowFor(std::nullopt), width);
     resolution = std::array<int, 2>{width, height};
   }
   f.width = (*resolution)[0];
   f.height = (*resolution)[1];
   checkSide(f.width, "width");
   checkSide(f.height, "height");
-  f.window = spec.window.value_or(defaultWindow(spec.axis, bounds, resolution));
+  f.window = windowFor(resolution);
   return f;
 }
 

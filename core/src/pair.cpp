@@ -227,13 +227,17 @@ PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a
   const PixelRect footB = pixelFootprint(vb, frame.width, frame.height);
   const PixelRect overlap = footA.intersect(footB);
   r.boxesOverlap = !overlap.empty() && depthSpansMeet(depthSpan(va), depthSpan(vb));
-  if (!r.boxesOverlap) {
+  if (request.boxTest && !r.boxesOverlap) {
     r.timing.totalUs = microsecondsSince(start);
     return r;
   }
   switch (request.mor) {
     case MorMode::Min:
       r.mor = overlap;
+      if (r.mor.empty()) {  // only reachable without the box test
+        r.timing.totalUs = microsecondsSince(start);
+        return r;
+      }
       break;
     case MorMode::Max:
       r.mor = boundingRect(footA, footB);
