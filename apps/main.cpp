@@ -4,7 +4,7 @@
 #include <exception>
 #include <iostream>
 
-#include "demo_command.hpp"
+#include "pair_command.hpp"
 #include "replay_command.hpp"
 
 int main(int argc, char** argv) {
@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
       "depth/stencil machine"};
   app.require_subcommand(1);
   int exitCode = 0;
-  recode::app::addDemoCommand(app, exitCode);
+  recode::app::addPairCommand(app, exitCode);
   recode::app::addReplayCommand(app, exitCode);
   try {
     app.parse(argc, argv);

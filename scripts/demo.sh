@@ -4,4 +4,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
-./build/apps/recode demo "$@"
+./build/apps/recode pair "$@"

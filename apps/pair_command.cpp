@@ -1,0 +1,93 @@
+#include "pair_command.hpp"
+
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "pair_report.hpp"
+#include "pair_setup.hpp"
+#include "pgm.hpp"
+#include "recode/core/pair.hpp"
+#include "recode/raster/cpu_device.hpp"
+
+namespace recode::app {
+
+namespace {
+
+struct PairOptions {
+  std::string scene;
+  bool json = false;
+  core::MorMode mor = core::MorMode::Min;
+  std::string resolution;
+  double pixelSize = 0.0;
+  std::string dumpCases;
+  bool contact = true;
+  bool boxTest = true;
+  bool picture = true;
+};
+
+int runPairCommand(const PairOptions& o) {
+  core::FrameOverrides overrides;
+  if (!o.resolution.empty())
+    overrides = parseResolution(o.resolution);
+  if (o.pixelSize > 0.0)
+    overrides.pixelSize = o.pixelSize;
+  const PairSetup setup = loadPairSetup(
+      o.scene.empty() ? std::nullopt : std::optional<std::string>(o.scene), overrides);
+  core::PairRequest request;
+  request.frame = setup.frame;
+  request.mor = o.mor;
+  request.contact = o.contact;
+  request.boxTest = o.boxTest;
+  raster::CpuDevice device(setup.frame.width, setup.frame.height);
+  const core::PairResult result = core::collidePair(device, setup.a, setup.b, request);
+  if (!o.dumpCases.empty())
+    writePgmBottomUp(o.dumpCases, setup.frame.width, setup.frame.height,
+                     frameCaseImage(setup.frame, result));
+  if (o.json)
+    std::cout << pairResultToJson(setup, request, result).dump(2) << '\n';
+  else
+    printPairReport(std::cout, setup, request, result, o.picture);
+  return 0;
+}
+
+}  // namespace
+
+void addPairCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<PairOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "pair",
+      "Run RECODE on the first two objects of a scene (or the built-in pair of cones tip to "
+      "tip): the per-pixel cases, the verdict and the contact region");
+  cmd->add_option("scene", o->scene,
+                  "scene file (JSON, docs/scenes.md); omit for the built-in pair")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  const std::map<std::string, core::MorMode> morModes = {
+      {"min", core::MorMode::Min}, {"max", core::MorMode::Max}, {"full", core::MorMode::Full}};
+  cmd->add_option("--mor", o->mor,
+                  "region the passes run over and the stencil is read from: min (the boxes' "
+                  "intersection), max (both boxes), full (the frame)")
+      ->transform(CLI::CheckedTransformer(morModes, CLI::ignore_case))
+      ->default_str("min");
+  auto* res = cmd->add_option("--resolution", o->resolution,
+                              "W or WxH pixels (W alone: square pixels); overrides the scene");
+  cmd->add_option("--pixel-size", o->pixelSize,
+                  "pixel size in world units (square pixels over the window); overrides the "
+                  "scene")
+      ->check(CLI::PositiveNumber)
+      ->excludes(res);
+  cmd->add_option("--dump-cases", o->dumpCases,
+                  "write each pixel's case (0-8; 255 outside the MOR) as an 8-bit PGM, top row "
+                  "first");
+  cmd->add_flag("!--no-contact", o->contact,
+                "skip the two depth passes that measure the overlap (points, box, depth)");
+  cmd->add_flag("!--no-box-test", o->boxTest,
+                "run the passes even when the blocks' boxes are apart (shows cases 1, 2, 7, 8)");
+  cmd->add_flag("!--no-picture", o->picture, "leave the character picture out of the report");
+  cmd->callback([o, &exitCode]() { exitCode = runPairCommand(*o); });
+}
+
+}  // namespace recode::app

@@ -1,0 +1,26 @@
+#pragma once
+// The output of `recode pair`: the JSON object of DESIGN.md section 6 and the text report.
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "pair_setup.hpp"
+#include "recode/core/pair.hpp"
+
+namespace recode::app {
+
+// The object printed by `recode pair --json` (keys documented in docs/cli.md).
+[[nodiscard]] nlohmann::ordered_json pairResultToJson(const PairSetup& setup,
+                                                      const core::PairRequest& request,
+                                                      const core::PairResult& result);
+
+// The human-readable report; `picture` adds a character picture of the MOR's cases.
+void printPairReport(std::ostream& out, const PairSetup& setup, const core::PairRequest& request,
+                     const core::PairResult& result, bool picture);
+
+// The whole frame's cases for --dump-cases: case 0-8 inside the MOR, 255 outside it (not
+// examined), rows bottom-up as the device stores them.
+[[nodiscard]] std::vector<std::uint8_t> frameCaseImage(const core::FrameSpec& frame,
+                                                       const core::PairResult& result);
+
+}  // namespace recode::app

@@ -1,0 +1,80 @@
+#include "pair_setup.hpp"
+
+#include <charconv>
+#include <stdexcept>
+
+#include "recode/core/generators.hpp"
+
+namespace recode::app {
+
+core::Scene builtinPairScene() {
+  core::Scene scene;
+  scene.sourceName = "built-in pair";
+  scene.view.axis = core::ViewAxis::X;
+  scene.view.resolution = std::array<int, 2>{256, 256};
+  const core::TriangleMesh cone = core::makeCone(1.0, 2.0, 32);
+  core::SceneObject a;
+  a.name = "lower cone";
+  a.jsonPath = "objects[0]";
+  a.localMesh = cone;
+  core::SceneObject b = a;
+  b.name = "upper cone";
+  b.jsonPath = "objects[1]";
+  b.position = {0.0, 0.0, 3.75};
+  b.rotationDeg = {180.0, 0.0, 0.0};
+  scene.objects = {a, b};
+  return scene;
+}
+
+PairSetup pairSetupFromScene(const core::Scene& scene, const core::FrameOverrides& overrides) {
+  if (scene.objects.size() < 2)
+    throw core::SceneError(
+        scene.sourceName, "objects",
+        "a pair needs at least two objects, the file has " + std::to_string(scene.objects.size()));
+  PairSetup s;
+  s.source = scene.sourceName;
+  s.nameA = scene.objects[0].name;
+  s.nameB = scene.objects[1].name;
+  s.a = scene.objects[0].worldMesh();
+  s.b = scene.objects[1].worldMesh();
+  core::Aabb bounds = core::boundingBox(s.a);
+  const core::Aabb bb = core::boundingBox(s.b);
+  bounds.extend(bb.min);
+  bounds.extend(bb.max);
+  s.frame = core::resolveFrame(scene.view, bounds, overrides);
+  return s;
+}
+
+PairSetup loadPairSetup(const std::optional<std::string>& scenePath,
+                        const core::FrameOverrides& overrides) {
+  if (scenePath)
+    return pairSetupFromScene(core::loadScene(*scenePath), overrides);
+  return pairSetupFromScene(builtinPairScene(), overrides);
+}
+
+core::FrameOverrides parseResolution(const std::string& text) {
+  const auto fail = [&]() -> core::FrameOverrides {
+    throw std::invalid_argument("--resolution '" + text +
+                                "': expected W or WxH with whole numbers in 1..16384");
+  };
+  const auto number = [&](std::string_view part) {
+    int value = 0;
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    if (ec != std::errc() || end != part.data() + part.size() || part.empty() || value < 1 ||
+        value > raster::kMaxFramebufferSize)
+      fail();
+    return value;
+  };
+  core::FrameOverrides o;
+  const std::string_view all(text);
+  const std::size_t x = all.find('x');
+  if (x == std::string_view::npos) {
+    o.width = number(all);
+  } else {
+    o.width = number(all.substr(0, x));
+    o.height = number(all.substr(x + 1));
+  }
+  return o;
+}
+
+}  // namespace recode::app

@@ -1,0 +1,39 @@
+#pragma once
+// What `recode pair` and `recode explain` run on: two convex blocks in world coordinates and
+// the frame, from a scene file's first two objects or from the built-in pair.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "recode/core/frame.hpp"
+#include "recode/core/mesh.hpp"
+#include "recode/core/scene.hpp"
+
+namespace recode::app {
+
+struct PairSetup {
+  std::string source;  // the scene file, or "built-in pair"
+  std::string nameA, nameB;
+  core::TriangleMesh a, b;  // world coordinates
+  core::FrameSpec frame;
+};
+
+// The built-in pair, the same scene as data/scenes/cones-tip-to-tip.json: two cones of
+// radius 1 and height 2 tip to tip along z, B upside down with its apex 0.25 into A, seen
+// from the side along x at 256 x 256 pixels.
+[[nodiscard]] core::Scene builtinPairScene();
+
+// The first two objects of the scene as A and B at frame 0, and the frame for them. Throws
+// core::SceneError when the scene has fewer than two objects.
+[[nodiscard]] PairSetup pairSetupFromScene(const core::Scene& scene,
+                                           const core::FrameOverrides& overrides);
+
+// A scene file when given, else the built-in pair.
+[[nodiscard]] PairSetup loadPairSetup(const std::optional<std::string>& scenePath,
+                                      const core::FrameOverrides& overrides);
+
+// "--resolution W" or "WxH" into overrides; throws std::invalid_argument naming the text.
+[[nodiscard]] core::FrameOverrides parseResolution(const std::string& text);
+
+}  // namespace recode::app

@@ -1,0 +1,32 @@
+cmake_minimum_required(VERSION 3.25)
+# `recode pair --dump-cases` writes a binary PGM of the whole frame: header "P5 W H 255",
+# then W*H bytes holding case 0-8 inside the MOR and 255 outside it. Checks the header, the
+# size, and that the number of interfering bytes equals the reported interfering pixels.
+execute_process(COMMAND ${RECODE} pair --json --resolution 96x80 --dump-cases ${OUT}
+                OUTPUT_VARIABLE json RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "recode pair failed with ${rc}")
+endif()
+file(READ ${OUT} header LIMIT 13)
+if(NOT header STREQUAL "P5\n96 80\n255\n")
+  message(FATAL_ERROR "unexpected PGM header '${header}'")
+endif()
+file(SIZE ${OUT} size)
+if(NOT size EQUAL 7693)  # 13 header bytes + 96 * 80
+  message(FATAL_ERROR "PGM is ${size} bytes, expected 7693")
+endif()
+file(READ ${OUT} body OFFSET 13 HEX)
+set(interfering 0)
+string(LENGTH "${body}" hexlen)
+math(EXPR last "${hexlen} - 2")
+foreach(i RANGE 0 ${last} 2)
+  string(SUBSTRING "${body}" ${i} 2 byte)
+  if(byte MATCHES "^0[3-6]$")
+    math(EXPR interfering "${interfering} + 1")
+  endif()
+endforeach()
+string(REGEX MATCH "\"interfering_pixels\": ([0-9]+)" m "${json}")
+if(NOT CMAKE_MATCH_1 EQUAL interfering OR interfering EQUAL 0)
+  message(FATAL_ERROR "PGM has ${interfering} interfering pixels, the JSON says ${CMAKE_MATCH_1}")
+endif()
+message(STATUS "PGM ok: ${interfering} interfering pixels")
