@@ -1,7 +1,6 @@
 #include "pair_command.hpp"
 
 #include <iostream>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,7 +18,7 @@ namespace {
 struct PairOptions {
   std::string scene;
   bool json = false;
-  core::MorMode mor = core::MorMode::Min;
+  std::string morName = "min";
   std::string resolution;
   double pixelSize = 0.0;
   std::string dumpCases;
@@ -38,7 +37,9 @@ int runPairCommand(const PairOptions& o) {
       o.scene.empty() ? std::nullopt : std::optional<std::string>(o.scene), overrides);
   core::PairRequest request;
   request.frame = setup.frame;
-  request.mor = o.mor;
+  request.mor = o.morName == "max"    ? core::MorMode::Max
+                : o.morName == "full" ? core::MorMode::Full
+                                      : core::MorMode::Min;
   request.contact = o.contact;
   request.boxTest = o.boxTest;
   raster::CpuDevice device(setup.frame.width, setup.frame.height);
@@ -65,13 +66,11 @@ void addPairCommand(CLI::App& app, int& exitCode) {
                   "scene file (JSON, docs/scenes.md); omit for the built-in pair")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
-  const std::map<std::string, core::MorMode> morModes = {
-      {"min", core::MorMode::Min}, {"max", core::MorMode::Max}, {"full", core::MorMode::Full}};
-  cmd->add_option("--mor", o->mor,
+  cmd->add_option("--mor", o->morName,
                   "region the passes run over and the stencil is read from: min (the boxes' "
                   "intersection), max (both boxes), full (the frame)")
-      ->transform(CLI::CheckedTransformer(morModes, CLI::ignore_case))
-      ->default_str("min");
+      ->check(CLI::IsMember({"min", "max", "full"}))
+      ->capture_default_str();
   auto* res = cmd->add_option("--resolution", o->resolution,
                               "W or WxH pixels (W alone: square pixels); overrides the scene");
   cmd->add_option("--pixel-size", o->pixelSize,
