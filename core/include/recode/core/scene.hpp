@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "recode/core/frame.hpp"
 #include "recode/core/mesh.hpp"
 #include "recode/core/view.hpp"
 
@@ -21,15 +22,23 @@ namespace recode::core {
 
 // "<file>: <json path>: <problem>", e.g. "pair.json: objects[1].shape.radius: expected a
 // positive number, got -2". The JSON path is also available on its own.
+// A problem with the file as a whole has an empty JSON path and reads "<file>: <problem>";
+// malformed JSON reads "<file>:<line>:<column>: invalid JSON: ..." (line() and column() are
+// then 1-based, counted in bytes; both are 0 for every other error).
 class SceneError : public std::runtime_error {
  public:
   SceneError(const std::string& file, const std::string& jsonPath, const std::string& problem);
+  SceneError(const std::string& file, int line, int column, const std::string& problem);
   [[nodiscard]] const std::string& file() const { return file_; }
   [[nodiscard]] const std::string& jsonPath() const { return jsonPath_; }
+  [[nodiscard]] int line() const { return line_; }
+  [[nodiscard]] int column() const { return column_; }
 
  private:
   std::string file_;
   std::string jsonPath_;
+  int line_ = 0;
+  int column_ = 0;
 };
 
 // Per-frame motion; frame k's pose is a pure function of k (used by `recode run`).
@@ -39,9 +48,9 @@ struct Motion {
 };
 
 struct SceneObject {
-  std::string name;         // "name", or "object <index>" when the file gives none
-  std::string jsonPath;     // "objects[<index>]", for messages
-  TriangleMesh localMesh;   // in the object's own frame, validated closed and convex
+  std::string name;        // "name", or "object <index>" when the file gives none
+  std::string jsonPath;    // "objects[<index>]", for messages
+  TriangleMesh localMesh;  // in the object's own frame, validated closed and convex
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   Eigen::Vector3d rotationDeg = Eigen::Vector3d::Zero();  // applied X, then Y, then Z
   std::optional<Motion> motion;
@@ -52,14 +61,7 @@ struct SceneObject {
   [[nodiscard]] TriangleMesh worldMesh() const;
 };
 
-// The "view" object. Window and resolution are optional in the file; resolveFrame() in
-// frame.hpp fills in the defaults.
-struct ViewSpec {
-  ViewAxis axis = ViewAxis::Z;
-  std::optional<ViewWindow> window;               // "window": [umin, vmin, umax, vmax]
-  std::optional<std::array<int, 2>> resolution;   // "resolution": [W, H]
-  std::optional<double> pixelSize;                // "pixel_size": world units per pixel
-};
+// ViewSpec (the "view" object) is declared in frame.hpp, beside resolveFrame().
 
 struct Scene {
   std::string sourceName;  // the file name as given, for messages
