@@ -3,28 +3,9 @@
 #include <charconv>
 #include <stdexcept>
 
-#include "recode/core/generators.hpp"
+#include "recode/core/builtin_scenes.hpp"
 
 namespace recode::app {
-
-core::Scene builtinPairScene() {
-  core::Scene scene;
-  scene.sourceName = "built-in pair";
-  scene.view.axis = core::ViewAxis::X;
-  scene.view.resolution = std::array<int, 2>{256, 256};
-  const core::TriangleMesh cone = core::makeCone(1.0, 2.0, 32);
-  core::SceneObject a;
-  a.name = "lower cone";
-  a.jsonPath = "objects[0]";
-  a.localMesh = cone;
-  core::SceneObject b = a;
-  b.name = "upper cone";
-  b.jsonPath = "objects[1]";
-  b.position = {0.0, 0.0, 3.75};
-  b.rotationDeg = {180.0, 0.0, 0.0};
-  scene.objects = {a, b};
-  return scene;
-}
 
 PairSetup pairSetupFromScene(const core::Scene& scene, const core::FrameOverrides& overrides) {
   if (scene.objects.size() < 2)
@@ -49,7 +30,7 @@ PairSetup loadPairSetup(const std::optional<std::string>& scenePath,
                         const core::FrameOverrides& overrides) {
   if (scenePath)
     return pairSetupFromScene(core::loadScene(*scenePath), overrides);
-  return pairSetupFromScene(builtinPairScene(), overrides);
+  return pairSetupFromScene(core::builtinPairScene(), overrides);
 }
 
 core::FrameOverrides parseResolution(const std::string& text) {

@@ -19,17 +19,12 @@ struct PairSetup {
   core::FrameSpec frame;
 };
 
-// The built-in pair, the same scene as data/scenes/cones-tip-to-tip.json: two cones of
-// radius 1 and height 2 tip to tip along z, B upside down with its apex 0.25 into A, seen
-// from the side along x at 256 x 256 pixels.
-[[nodiscard]] core::Scene builtinPairScene();
-
 // The first two objects of the scene as A and B at frame 0, and the frame for them. Throws
 // core::SceneError when the scene has fewer than two objects.
 [[nodiscard]] PairSetup pairSetupFromScene(const core::Scene& scene,
                                            const core::FrameOverrides& overrides);
 
-// A scene file when given, else the built-in pair.
+// A scene file when given, else core::builtinPairScene().
 [[nodiscard]] PairSetup loadPairSetup(const std::optional<std::string>& scenePath,
                                       const core::FrameOverrides& overrides);
 

@@ -45,6 +45,18 @@ bool depthSpansMeet(const DepthSpan& a, const DepthSpan& b) {
   return a.min <= b.max + 1 && b.min <= a.max + 1;
 }
 
+// caseFromStencil for every byte, so decoding a large MOR is one table load per pixel.
+const std::array<std::uint8_t, 256>& caseTable() {
+  static const std::array<std::uint8_t, 256> table = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (int s = 0; s < 256; ++s)
+      t[static_cast<std::size_t>(s)] =
+          static_cast<std::uint8_t>(caseFromStencil(static_cast<std::uint8_t>(s)));
+    return t;
+  }();
+  return table;
+}
+
 PixelRect boundingRect(const PixelRect& a, const PixelRect& b) {
   if (a.empty())
     return b;
@@ -268,8 +280,9 @@ PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a
   r.caseMap.resize(stencil.size());
   int cx0 = r.mor.x1, cy0 = r.mor.y1, cx1 = r.mor.x0, cy1 = r.mor.y0;
   const int morWidth = r.mor.width();
+  const std::array<std::uint8_t, 256>& table = caseTable();
   for (std::size_t i = 0; i < stencil.size(); ++i) {
-    const int c = caseFromStencil(stencil[i]);
+    const int c = table[stencil[i]];
     r.caseMap[i] = static_cast<std::uint8_t>(c);
     ++r.caseCounts[static_cast<std::size_t>(c)];
     if (isInterfering(c)) {

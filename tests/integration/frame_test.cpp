@@ -56,7 +56,7 @@ TEST_CASE("a scene window and resolution are used as given") {
   CHECK(f.window.vmax == 4);
 }
 
-TEST_CASE("--resolution W alone keeps pixels square; WxH is taken as is") {
+TEST_CASE("a width alone keeps pixels square; width and height are taken as is") {
   ViewSpec spec;
   spec.window = ViewWindow{0, 0, 4, 1};
   FrameOverrides o;
