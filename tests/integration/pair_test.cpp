@@ -379,3 +379,49 @@ TEST_CASE("a device of the wrong size is refused") {
   CHECK_THROWS_WITH(core::collidePair(device, box, box, request),
                     Catch::Contains("device is 10x10 but the pair's frame is 20x20"));
 }
+
+TEST_CASE("random axis-aligned boxes: every pixel's case matches the boxes' own intervals") {
+  // Box sides on pixel edges (multiples of 0.25 on a 32x32 frame over [-4, 4]^2), so no pixel
+  // centre lies on an edge; z on the same grid, so equal z gives equal depth and different z
+  // depths many steps apart. The expected case comes from the boxes, not from the device.
+  std::mt19937 rng(4242);
+  std::uniform_int_distribution<int> grid(-16, 16);
+  const auto frame = frameZ(-4, -4, 4, 4, 32, 32);
+  long long interfering = 0, pixels = 0;
+  for (int i = 0; i < 150; ++i) {
+    Vector3d lo[2], hi[2];
+    for (int k = 0; k < 2; ++k)
+      for (int d = 0; d < 3; ++d) {
+        int u = grid(rng), v = grid(rng);
+        while (u == v)
+          v = grid(rng);
+        lo[k][d] = 0.25 * std::min(u, v);
+        hi[k][d] = 0.25 * std::max(u, v);
+      }
+    const core::PairResult r = runPair(boxBetween(lo[0], hi[0]), boxBetween(lo[1], hi[1]), frame,
+                                       MorMode::Full, true, false);
+    INFO("pair " << i);
+    long long interferingHere = 0;
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 32; ++x) {
+        const double cx = -4 + 0.25 * (x + 0.5), cy = -4 + 0.25 * (y + 0.5);
+        std::optional<core::DepthInterval> iv[2];
+        for (int k = 0; k < 2; ++k)
+          if (lo[k].x() < cx && cx < hi[k].x() && lo[k].y() < cy && cy < hi[k].y())
+            // Depth order is -z; shift to stay unsigned (z is in [-4, 4] on a 0.25 grid).
+            iv[k] = core::DepthInterval{static_cast<std::uint32_t>(100 - 4 * hi[k].z()),
+                                        static_cast<std::uint32_t>(100 - 4 * lo[k].z())};
+        const int expected = core::caseFromIntervals(iv[0], iv[1]);
+        if (caseAt(r, x, y) != expected)
+          FAIL_CHECK("pixel (" << x << ", " << y << "): device case " << caseAt(r, x, y)
+                               << ", boxes say " << expected);
+        interferingHere += core::isInterfering(expected) ? 1 : 0;
+        ++pixels;
+      }
+    CHECK(r.interferingPixels == interferingHere);
+    CHECK(r.collide == (interferingHere > 0));
+    interfering += interferingHere;
+  }
+  CHECK(pixels == 150 * 1024);
+  CHECK(interfering > 1000);  // the generator must produce plenty of overlap
+}
