@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 
+#include "explain_command.hpp"
 #include "pair_command.hpp"
 #include "replay_command.hpp"
 
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   int exitCode = 0;
   recode::app::addPairCommand(app, exitCode);
   recode::app::addReplayCommand(app, exitCode);
+  recode::app::addExplainCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
