@@ -1,0 +1,78 @@
+#pragma once
+// JSON reading layer (private to core): parsing with line:column, typed readers with JSON paths.
+
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+namespace recode::core::detail {
+
+// A JSON path as shown in messages: "(root)" for the top level, else the path itself.
+[[nodiscard]] std::string displayJsonPath(const std::string& path);
+
+// path.key, or path["key"] (JSON-escaped) when the key is not a plain identifier; the
+// top-level path is "".
+[[nodiscard]] std::string childPath(const std::string& path, const std::string& key);
+// path[index].
+[[nodiscard]] std::string childPath(const std::string& path, std::size_t index);
+
+// A value as compact JSON text, for messages.
+[[nodiscard]] std::string jsonText(const nlohmann::json& value);
+
+// What a value is, for "expected ..., got <what>": "null", "true", "a string", "an array",
+// "an object", or the number itself.
+[[nodiscard]] std::string describeJsonValue(const nlohmann::json& value);
+
+// Parses JSON text into a document. Malformed JSON throws
+// SceneError(sourceName, line, column, "invalid JSON: ...") pointing at the offending
+// character (or at the start of the offending string or number); a key repeated within one
+// object throws SceneError(sourceName, <path of the repeated key>, "duplicate key").
+[[nodiscard]] nlohmann::json parseJsonDocument(std::string_view text,
+                                               const std::string& sourceName);
+
+// Typed readers for the fields of a parsed document. `path` is the JSON path of the value
+// being read ("" for the top level); every problem throws
+// SceneError(sourceName, displayJsonPath(path), problem).
+class JsonFieldReader {
+ public:
+  explicit JsonFieldReader(std::string sourceName) : sourceName_(std::move(sourceName)) {}
+
+  [[nodiscard]] const std::string& sourceName() const { return sourceName_; }
+
+  // Throws the error for the value at `path`.
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const;
+
+  // The value is an object.
+  void requireObject(const nlohmann::json& value, const std::string& path) const;
+
+  // Every key of the object is one of `allowed`; otherwise the first other key is reported
+  // as "unknown key<context> (allowed: ...)".
+  void requireOnlyKeys(const nlohmann::json& object, const std::string& path,
+                       std::initializer_list<std::string_view> allowed,
+                       const std::string& context = "") const;
+
+  [[nodiscard]] double finiteNumber(const nlohmann::json& value, const std::string& path) const;
+  [[nodiscard]] double positiveNumber(const nlohmann::json& value, const std::string& path) const;
+  // An integer in lo..hi.
+  [[nodiscard]] std::int64_t integerInRange(const nlohmann::json& value, const std::string& path,
+                                            std::int64_t lo, std::int64_t hi) const;
+  [[nodiscard]] std::string nonEmptyString(const nlohmann::json& value,
+                                           const std::string& path) const;
+  // An array of exactly `size` elements (returned as is); `what` describes the expected
+  // elements, e.g. "3 numbers [x, y, z]".
+  const nlohmann::json& arrayOfSize(const nlohmann::json& value, const std::string& path,
+                                    std::size_t size, const char* what) const;
+  // An array of 3 finite numbers [x, y, z].
+  [[nodiscard]] Eigen::Vector3d vector3(const nlohmann::json& value, const std::string& path) const;
+
+ private:
+  std::string sourceName_;
+};
+
+}  // namespace recode::core::detail
