@@ -1,0 +1,183 @@
+// Writes the explain page: index.html (sections of text and pictures) and explain.json.
+#include "explain_page.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "explain_format.hpp"
+#include "explain_palette.hpp"
+#include "explain_text.hpp"
+
+namespace recode::app::explain {
+
+namespace {
+
+namespace fs = std::filesystem;
+using raster::PixelRect;
+
+void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out)
+    throw std::runtime_error(path.string() + ": cannot open for writing");
+  out << text;
+  if (!out)
+    throw std::runtime_error(path.string() + ": write failed");
+}
+
+nlohmann::json colourJson(Rgb c) {
+  return nlohmann::json::array({c.r, c.g, c.b});
+}
+
+}  // namespace
+
+void writeIndexHtml(const fs::path& dir, const Page& page) {
+  const core::FrameSpec& f = page.setup.frame;
+  const std::string source = escapeHtml(page.setup.source);
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+       "<title>RECODE step by step</title><style>\n"
+       "body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;"
+       "line-height:1.45;color:#222}\n"
+       "section{border-top:1px solid #ccc;margin-top:2em;padding-top:.5em}\n"
+       "figure{display:inline-block;vertical-align:top;margin:.5em 1.5em .5em 0}\n"
+       "img{image-rendering:pixelated;max-width:100%;height:auto;border:1px solid #888}\n"
+       "figcaption{font-size:.9em;color:#444;max-width:520px}\n"
+       ".sw{display:inline-block;width:1.1em;height:1.1em;border:1px solid #555;"
+       "vertical-align:middle;margin-right:.4em}\n"
+       ".grad{display:inline-block;width:12em;height:1.1em;border:1px solid #555;"
+       "vertical-align:middle;background:linear-gradient(to right,#ffffff,#000000)}\n"
+       "ul.legend{list-style:none;padding-left:0;font-size:.9em}\n"
+       "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #bbb;"
+       "padding:.2em .5em;text-align:left}tr.hit{background:#fff3d6}\n"
+       ".verdict{font-size:1.3em;font-weight:bold}.verdict.yes{color:#b3261e}"
+       ".verdict.no{color:#1e6b2e}\ncode{background:#f2f2f2;padding:0 .2em}\n"
+       "</style></head><body>\n";
+  h << "<h1>RECODE step by step</h1>\n<p>Block A: <b>" << escapeHtml(page.setup.nameA)
+    << "</b>, block B: <b>" << escapeHtml(page.setup.nameB) << "</b>, from " << source << ". View "
+    << "along the " << axisName(f.axis) << " axis, " << f.width << " &times; " << f.height
+    << " pixels, MOR mode <code>" << escapeHtml(page.morMode) << "</code>.</p>\n"
+    << verdictHtml(page.result) << '\n';
+  h << "<h2>How RECODE works, and how to read the pictures</h2>\n"
+       "<p>RECODE (REndered COllision DEtection, Baciu, Wong and Sun 1999) decides whether "
+       "two convex blocks A and B touch by <i>drawing</i> them, as a graphics card would, "
+       "instead of intersecting their triangles in 3-D. A graphics card keeps two numbers "
+       "for every pixel besides its colour: the <b>depth</b> (how far along the view "
+       "direction the drawn surface is, 0 nearest to the viewer, 1 farthest, stored as a "
+       "24-bit integer) and the <b>stencil</b> (an 8-bit counter). When a triangle is "
+       "drawn, each pixel it covers produces a <i>fragment</i> with its own depth. The "
+       "<b>depth test</b> compares it with the stored depth (e.g. <code>LEQUAL</code>: pass "
+       "if the fragment is at or in front of what is stored) and, if depth writes are on, "
+       "a passing fragment stores its depth. The <b>stencil test</b> compares the stored "
+       "stencil with a reference value, and the <b>stencil operations</b> say what to do "
+       "with the stencil when the stencil test fails, when the depth test fails, or when "
+       "both pass (keep, replace, increment, invert a bit...).</p>\n"
+       "<p>RECODE chooses these tests so that after a few passes each pixel's stencil "
+       "tells how the two blocks' depth intervals along that pixel's ray are arranged. "
+       "Reading the stencil back then gives the verdict and the contact region. Here every "
+       "pass runs on the reference CPU depth/stencil machine, exactly as a GPU back end "
+       "would run it.</p>\n"
+       "<p>Pictures: each framebuffer pixel is shown as a "
+    << page.scale << " &times; " << page.scale
+    << " block (close-ups magnify more), the top of the picture is the top of the frame. "
+       "The cyan frame is the MOR; dimmed, hatched pixels are outside the rectangle a step "
+       "works in (the step does not touch them). Depth pictures show near as bright and far "
+       "as dark. Notation: A<sub>min</sub> and A<sub>max</sub> are the depths where a "
+       "pixel's ray enters and leaves A, likewise B<sub>min</sub>, B<sub>max</sub>.</p>\n";
+  for (const Section& s : page.sections) {
+    h << "<section id=\"" << s.id << "\"><h2>" << s.title << "</h2>\n" << s.text << '\n';
+    for (const Picture& p : s.pictures) {
+      h << "<figure><img src=\"" << p.file << "\" width=\"" << p.width << "\" height=\"" << p.height
+        << "\" alt=\"" << p.kind << (p.zoom ? " close-up" : "") << "\"><figcaption>" << p.caption
+        << "<ul class=\"legend\">";
+      if (p.depthLegend)
+        h << "<li>near (" << formatNumber(p.depthNear) << ") <span class=\"grad\"></span> far ("
+          << formatNumber(p.depthFar) << ")</li><li>" << swatch(kDepthZero)
+          << "exactly 0: a clear to 0 left it (nothing drawn here)</li><li>" << swatch(kHatch)
+          << "hatched, dimmed: outside the rectangle this step draws in</li>";
+      for (const LegendEntry& e : p.legend) {
+        h << "<li>" << swatch(e.colour) << e.label;
+        if (e.pixels >= 0)
+          h << " &mdash; " << e.pixels << " px";
+        h << "</li>";
+      }
+      h << "</ul></figcaption></figure>\n";
+    }
+    h << "</section>\n";
+  }
+  h << "<section id=\"verdict\"><h2>Verdict</h2>" << verdictHtml(page.result) << "</section>\n"
+    << "</body></html>\n";
+  writeText(dir / "index.html", h.str());
+}
+
+void writeExplainJson(const fs::path& dir, const Page& page) {
+  nlohmann::json j;
+  const core::FrameSpec& f = page.setup.frame;
+  const core::PairResult& result = page.result;
+  const auto rect = [](const PixelRect& r) {
+    return nlohmann::json::array({r.x0, r.y0, r.x1, r.y1});
+  };
+  j["source"] = page.setup.source;
+  j["objects"] = {page.setup.nameA, page.setup.nameB};
+  j["axis"] = axisName(f.axis);
+  j["width"] = f.width;
+  j["height"] = f.height;
+  j["scale"] = page.scale;
+  j["mor_mode"] = page.morMode;
+  j["collide"] = result.collide;
+  j["boxes_overlap"] = result.boxesOverlap;
+  j["mor"] = rect(result.mor);
+  j["contact_rect"] = rect(result.contactRect);
+  nlohmann::json counts = nlohmann::json::object();
+  for (int c = 0; c < core::kCaseCount; ++c)
+    counts[std::to_string(c)] = result.caseCounts[static_cast<std::size_t>(c)];
+  j["case_counts"] = counts;
+  j["interfering_pixels"] = result.interferingPixels;
+  nlohmann::json contact;
+  contact["pixels"] = result.contact.pixels;
+  contact["area"] = result.contact.area;
+  contact["max_depth"] = result.contact.maxDepth;
+  if (!result.contact.box.isEmpty()) {
+    const auto& b = result.contact.box;
+    contact["box"] = {{b.min.x(), b.min.y(), b.min.z()}, {b.max.x(), b.max.y(), b.max.z()}};
+  }
+  j["contact"] = contact;
+  nlohmann::json palettes;
+  nlohmann::json cases = nlohmann::json::object();
+  for (int c = 0; c < core::kCaseCount; ++c)
+    cases[std::to_string(c)] = colourJson(kCasePalette[static_cast<std::size_t>(c)]);
+  palettes["cases"] = cases;
+  nlohmann::json stencil = nlohmann::json::object();
+  for (std::size_t v = 0; v < kStencilPalette.size(); ++v)
+    stencil[std::to_string(v)] = colourJson(kStencilPalette[v]);
+  palettes["stencil"] = stencil;
+  palettes["silhouettes"] = {{"a", colourJson(kColourA)},
+                             {"b", colourJson(kColourB)},
+                             {"both", colourJson(kColourBoth)},
+                             {"neither", colourJson(kEmpty)}};
+  palettes["interfering"] = colourJson(kInterfering);
+  j["palettes"] = palettes;
+  nlohmann::json sections = nlohmann::json::array();
+  nlohmann::json pictures = nlohmann::json::array();
+  for (const Section& s : page.sections) {
+    nlohmann::json files = nlohmann::json::array();
+    for (const Picture& p : s.pictures) {
+      files.push_back(p.file);
+      pictures.push_back({{"file", p.file},
+                          {"kind", p.kind},
+                          {"section", s.id},
+                          {"zoom", p.zoom},
+                          {"region", rect(p.region)},
+                          {"scale", p.scale},
+                          {"width", p.width},
+                          {"height", p.height}});
+    }
+    sections.push_back({{"id", s.id}, {"step", s.step}, {"files", files}});
+  }
+  j["sections"] = sections;
+  j["pictures"] = pictures;
+  writeText(dir / "explain.json", j.dump(2) + "\n");
+}
+
+}  // namespace recode::app::explain

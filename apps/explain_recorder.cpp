@@ -1,0 +1,39 @@
+// Records the buffers `recode explain` pictures: a PairObserver's snapshots and block coverage.
+#include "explain_recorder.hpp"
+
+#include "recode/core/frame.hpp"
+#include "recode/core/view.hpp"
+#include "recode/raster/cpu_device.hpp"
+
+namespace recode::app::explain {
+
+void StepRecorder::afterStep(core::PairStep step, raster::DepthStencilDevice& device) {
+  const raster::PixelRect all{0, 0, device.width(), device.height()};
+  snapshots_.push_back({step, device.readStencil(all), device.readDepth(all)});
+}
+
+std::vector<std::uint8_t> blockCoverage(const PairSetup& setup, double depthMin, double depthMax) {
+  const core::FrameSpec& f = setup.frame;
+  const core::OrthoView view(f.axis, f.window, f.width, f.height, depthMin, depthMax);
+  raster::CpuDevice device(f.width, f.height);
+  device.setScissor({0, 0, f.width, f.height});
+  device.setStencilWriteMask(0xFF);
+  device.clearStencil(0);
+  device.setDepthWriteMask(false);
+  device.setDepthFunc(raster::CompareFunc::Always);
+  device.setCullMode(raster::CullMode::None);
+  device.setStencilOps(raster::Face::Both, {raster::StencilOp::Keep, raster::StencilOp::Keep,
+                                            raster::StencilOp::Replace});
+  const auto draw = [&](const core::TriangleMesh& mesh, std::uint8_t bit) {
+    device.setStencilFunc(raster::CompareFunc::Always, bit, 0xFF);
+    device.setStencilWriteMask(bit);
+    const auto vertices = view.toWindow(mesh);
+    const auto indices = core::triangleIndices(mesh);
+    device.drawTriangles(vertices, indices);
+  };
+  draw(setup.a, 1);
+  draw(setup.b, 2);
+  return device.readStencil({0, 0, f.width, f.height});
+}
+
+}  // namespace recode::app::explain

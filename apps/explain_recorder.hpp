@@ -1,0 +1,37 @@
+#pragma once
+// The buffers `recode explain` pictures: depth and stencil after every step, and block coverage.
+
+#include <cstdint>
+#include <vector>
+
+#include "pair_setup.hpp"
+#include "recode/core/pair.hpp"
+
+namespace recode::app::explain {
+
+// Both buffers over the whole frame after one step, bottom row first.
+struct StepSnapshot {
+  core::PairStep step;
+  std::vector<std::uint8_t> stencil;
+  std::vector<std::uint32_t> depth;
+};
+
+// Keeps a full-frame copy of the stencil and depth buffers after every step of the pair
+// algorithm.
+class StepRecorder final : public core::PairObserver {
+ public:
+  void afterStep(core::PairStep step, raster::DepthStencilDevice& device) override;
+  [[nodiscard]] const std::vector<StepSnapshot>& snapshots() const { return snapshots_; }
+
+ private:
+  std::vector<StepSnapshot> snapshots_;
+};
+
+// Coverage of A (bit 0) and B (bit 1) over the whole frame, bottom row first, drawn through
+// the device interface on a device of its own: depth test ALWAYS, no depth writes, each
+// block setting its own stencil bit. [depthMin, depthMax] is the world range along the view
+// axis that the view maps onto depth.
+[[nodiscard]] std::vector<std::uint8_t> blockCoverage(const PairSetup& setup, double depthMin,
+                                                      double depthMax);
+
+}  // namespace recode::app::explain

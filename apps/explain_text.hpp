@@ -1,0 +1,34 @@
+#pragma once
+// What the explain page says, for a student who has not read the paper (HTML fragments).
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "recode/core/pair.hpp"
+#include "recode/raster/state.hpp"
+
+namespace recode::app::explain {
+
+inline constexpr std::string_view kSilhouettesTitle = "The two blocks and the MOR";
+inline constexpr std::string_view kContactTitle = "The contact region";
+
+// The heading of a step's section.
+[[nodiscard]] std::string stepTitle(core::PairStep step);
+// What the step does and why, as paragraphs.
+[[nodiscard]] std::string stepText(core::PairStep step);
+// What a stencil value means once `step` has run (a legend label).
+[[nodiscard]] std::string stencilMeaning(std::uint8_t value, core::PairStep step);
+
+// The first section: the silhouettes, the MOR of mode `mor` and, when the boxes are apart,
+// what the box test did. `frame` is the whole frame.
+[[nodiscard]] std::string silhouettesText(const core::PairResult& result, core::MorMode mor,
+                                          bool boxTest, const raster::PixelRect& frame);
+// The nine cases with their conditions, stencil values and pixel counts, and how to read it.
+[[nodiscard]] std::string caseTableHtml(const core::PairResult& result);
+// The contact region's measures.
+[[nodiscard]] std::string contactText(const core::ContactRegion& contact);
+// "The blocks collide" or "No collision", with the numbers behind it.
+[[nodiscard]] std::string verdictHtml(const core::PairResult& result);
+
+}  // namespace recode::app::explain
