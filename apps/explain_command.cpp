@@ -40,14 +40,6 @@ struct ExplainOptions {
   bool boxTest = true;
 };
 
-core::MorMode parseMor(const std::string& text) {
-  if (text == "min")
-    return core::MorMode::Min;
-  if (text == "max")
-    return core::MorMode::Max;
-  return core::MorMode::Full;
-}
-
 fs::path prepareOutDir(const std::string& out) {
   const fs::path dir(out);
   std::error_code ec;
@@ -150,7 +142,7 @@ int runExplain(const ExplainOptions& options) {
   // Run the pair, keeping the buffers after every step.
   core::PairRequest request;
   request.frame = f;
-  request.mor = parseMor(options.mor);
+  request.mor = core::parseMorMode(options.mor).value();  // CLI11 checked the name
   request.contact = true;
   request.boxTest = options.boxTest;
   raster::CpuDevice device(f.width, f.height);
@@ -172,7 +164,7 @@ int runExplain(const ExplainOptions& options) {
   for (const explain::Section& s : sections)
     written += s.pictures.size();
   std::cout << "recode explain: " << setup.nameA << " and " << setup.nameB << ", " << f.width << "x"
-            << f.height << " pixels along " << explain::axisName(f.axis) << ", MOR " << options.mor
+            << f.height << " pixels along " << core::toString(f.axis) << ", MOR " << options.mor
             << ": " << (result.collide ? "collide" : "no collision") << " ("
             << result.interferingPixels << " interfering pixels)\n"
             << "  wrote " << written << (written == 1 ? " picture" : " pictures")

@@ -50,18 +50,6 @@ std::string pointText(const Eigen::Vector3d& p) {
   return s.str();
 }
 
-std::string_view axisName(core::ViewAxis axis) {
-  switch (axis) {
-    case core::ViewAxis::X:
-      return "x";
-    case core::ViewAxis::Y:
-      return "y";
-    case core::ViewAxis::Z:
-      return "z";
-  }
-  return "?";
-}
-
 std::string swatch(Rgb c) {
   return "<span class=\"sw\" style=\"background:" + hexColour(c) + "\"></span>";
 }

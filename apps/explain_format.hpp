@@ -18,8 +18,6 @@ namespace recode::app::explain {
 [[nodiscard]] std::string rectText(const raster::PixelRect& r);
 // "(x, y, z)".
 [[nodiscard]] std::string pointText(const Eigen::Vector3d& p);
-// "x", "y" or "z".
-[[nodiscard]] std::string_view axisName(core::ViewAxis axis);
 // An HTML colour swatch for legends and tables.
 [[nodiscard]] std::string swatch(Rgb c);
 

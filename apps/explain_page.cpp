@@ -56,7 +56,7 @@ void writeIndexHtml(const fs::path& dir, const Page& page) {
        "</style></head><body>\n";
   h << "<h1>RECODE step by step</h1>\n<p>Block A: <b>" << escapeHtml(page.setup.nameA)
     << "</b>, block B: <b>" << escapeHtml(page.setup.nameB) << "</b>, from " << source << ". View "
-    << "along the " << axisName(f.axis) << " axis, " << f.width << " &times; " << f.height
+    << "along the " << core::toString(f.axis) << " axis, " << f.width << " &times; " << f.height
     << " pixels, MOR mode <code>" << escapeHtml(page.morMode) << "</code>.</p>\n"
     << verdictHtml(page.result) << '\n';
   h << "<h2>How RECODE works, and how to read the pictures</h2>\n"
@@ -120,7 +120,7 @@ void writeExplainJson(const fs::path& dir, const Page& page) {
   };
   j["source"] = page.setup.source;
   j["objects"] = {page.setup.nameA, page.setup.nameB};
-  j["axis"] = axisName(f.axis);
+  j["axis"] = core::toString(f.axis);
   j["width"] = f.width;
   j["height"] = f.height;
   j["scale"] = page.scale;

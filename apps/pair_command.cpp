@@ -37,9 +37,7 @@ int runPairCommand(const PairOptions& o) {
       o.scene.empty() ? std::nullopt : std::optional<std::string>(o.scene), overrides);
   core::PairRequest request;
   request.frame = setup.frame;
-  request.mor = o.morName == "max"    ? core::MorMode::Max
-                : o.morName == "full" ? core::MorMode::Full
-                                      : core::MorMode::Min;
+  request.mor = core::parseMorMode(o.morName).value();  // CLI11 checked the name
   request.contact = o.contact;
   request.boxTest = o.boxTest;
   raster::CpuDevice device(setup.frame.width, setup.frame.height);

@@ -17,10 +17,6 @@ ordered_json rect(const raster::PixelRect& r) {
   return ordered_json::array({r.x0, r.y0, r.x1, r.y1});
 }
 
-std::string_view axisName(core::ViewAxis a) {
-  return a == core::ViewAxis::X ? "x" : a == core::ViewAxis::Y ? "y" : "z";
-}
-
 // One character per case for the text picture: the interfering cases stand out.
 char caseGlyph(int c) {
   static constexpr char kGlyphs[] = {'.', 'a', 'a', '3', '4', '5', '6', 'a', 'b'};
@@ -72,7 +68,7 @@ ordered_json pairResultToJson(const PairSetup& setup, const core::PairRequest& r
   j["depth_pixels_read"] = r.depthPixelsRead;
   j["contact_rect"] = rect(r.contactRect);
   ordered_json frame;
-  frame["axis"] = axisName(setup.frame.axis);
+  frame["axis"] = core::toString(setup.frame.axis);
   const core::ViewWindow& w = setup.frame.window;
   frame["window"] = ordered_json::array({w.umin, w.vmin, w.umax, w.vmax});
   frame["resolution"] = ordered_json::array({setup.frame.width, setup.frame.height});
@@ -88,7 +84,7 @@ void printPairReport(std::ostream& out, const PairSetup& setup, const core::Pair
   const core::FrameSpec& f = setup.frame;
   out << "RECODE pair: " << setup.nameA << " (A, " << setup.a.triangleCount() << " triangles) and "
       << setup.nameB << " (B, " << setup.b.triangleCount() << " triangles) from " << setup.source
-      << "\n  view along " << axisName(f.axis) << ", " << f.width << "x" << f.height
+      << "\n  view along " << core::toString(f.axis) << ", " << f.width << "x" << f.height
       << " pixels over [" << f.window.umin << ", " << f.window.vmin << "] - [" << f.window.umax
       << ", " << f.window.vmax << "], MOR " << core::toString(request.mor) << "\n";
   if (r.mor.empty()) {

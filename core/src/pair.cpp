@@ -169,6 +169,13 @@ std::string_view toString(MorMode mode) {
   return "?";
 }
 
+std::optional<MorMode> parseMorMode(std::string_view name) {
+  for (const MorMode mode : {MorMode::Min, MorMode::Max, MorMode::Full})
+    if (name == toString(mode))
+      return mode;
+  return std::nullopt;
+}
+
 std::string_view toString(PairStep step) {
   switch (step) {
     case PairStep::SetZ:

@@ -107,15 +107,10 @@ class SceneReader {
       const json& a = v.at("axis");
       if (!a.is_string())
         fields_.fail(p, "expected \"x\", \"y\" or \"z\", got " + describeJsonValue(a));
-      const std::string s = a.get<std::string>();
-      if (s == "x")
-        spec.axis = ViewAxis::X;
-      else if (s == "y")
-        spec.axis = ViewAxis::Y;
-      else if (s == "z")
-        spec.axis = ViewAxis::Z;
-      else
+      const std::optional<ViewAxis> axis = parseViewAxis(a.get<std::string>());
+      if (!axis)
         fields_.fail(p, "expected \"x\", \"y\" or \"z\", got " + jsonText(a));
+      spec.axis = *axis;
     }
     if (v.contains("window")) {
       const std::string p = childPath(path, "window");

@@ -8,6 +8,25 @@
 
 namespace recode::core {
 
+std::string_view toString(ViewAxis axis) {
+  switch (axis) {
+    case ViewAxis::X:
+      return "x";
+    case ViewAxis::Y:
+      return "y";
+    case ViewAxis::Z:
+      break;
+  }
+  return "z";
+}
+
+std::optional<ViewAxis> parseViewAxis(std::string_view name) {
+  for (const ViewAxis axis : {ViewAxis::X, ViewAxis::Y, ViewAxis::Z})
+    if (name == toString(axis))
+      return axis;
+  return std::nullopt;
+}
+
 OrthoView::OrthoView(ViewAxis axis, const ViewWindow& window, int width, int height,
                      double depthMin, double depthMax)
     : axis_(axis),

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -25,7 +26,8 @@ namespace recode::core {
 // rectangle of both projected boxes; Full = the whole frame.
 enum class MorMode { Min, Max, Full };
 
-[[nodiscard]] std::string_view toString(MorMode mode);  // "min", "max", "full"
+[[nodiscard]] std::string_view toString(MorMode mode);                     // "min", "max", "full"
+[[nodiscard]] std::optional<MorMode> parseMorMode(std::string_view name);  // nullopt if unknown
 
 struct PairRequest {
   FrameSpec frame;

@@ -5,6 +5,8 @@
 // y pre-snapped to the 1/256-pixel grid so every back end starts from the same vertices.
 
 #include <Eigen/Core>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "recode/core/mesh.hpp"
@@ -15,6 +17,10 @@ namespace recode::core {
 // The view axis and its image plane (right-handed, no mirror): z -> (x, y), x -> (y, z),
 // y -> (z, x).
 enum class ViewAxis { X, Y, Z };
+
+// "x", "y", "z" as in scene files and output; parseViewAxis returns nullopt for anything else.
+[[nodiscard]] std::string_view toString(ViewAxis axis);
+[[nodiscard]] std::optional<ViewAxis> parseViewAxis(std::string_view name);
 
 // [umin, vmin, umax, vmax] in world units on the image plane.
 struct ViewWindow {
