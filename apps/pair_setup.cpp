@@ -19,9 +19,7 @@ PairSetup pairSetupFromScene(const core::Scene& scene, const core::FrameOverride
   s.a = scene.objects[0].worldMesh();
   s.b = scene.objects[1].worldMesh();
   core::Aabb bounds = core::boundingBox(s.a);
-  const core::Aabb bb = core::boundingBox(s.b);
-  bounds.extend(bb.min);
-  bounds.extend(bb.max);
+  bounds.extend(core::boundingBox(s.b));
   s.frame = core::resolveFrame(scene.view, bounds, overrides);
   return s;
 }

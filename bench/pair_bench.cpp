@@ -22,8 +22,7 @@ void pairBench(benchmark::State& state) {
   const core::Scene scene = core::builtinPairScene();
   const core::TriangleMesh a = scene.objects[0].worldMesh(), b = scene.objects[1].worldMesh();
   core::Aabb bounds = core::boundingBox(a);
-  bounds.extend(core::boundingBox(b).min);
-  bounds.extend(core::boundingBox(b).max);
+  bounds.extend(core::boundingBox(b));
   core::PairRequest request;
   request.frame = core::resolveFrame(scene.view, bounds, {resolution, resolution, {}});
   request.mor = mor;

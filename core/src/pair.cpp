@@ -241,7 +241,7 @@ PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a
 
   // The box test on the snapped geometry the device will draw: the projected boxes must share
   // a pixel centre and the depth ranges must come within one step of each other. Nothing
-  // that passes it can interfere, so it decides the same verdict the passes would.
+  // that fails it can interfere, so skipping the passes then gives the verdict they would.
   const PixelRect footA = pixelFootprint(va, frame.width, frame.height);
   const PixelRect footB = pixelFootprint(vb, frame.width, frame.height);
   const PixelRect overlap = footA.intersect(footB);

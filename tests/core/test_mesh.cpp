@@ -105,3 +105,20 @@ TEST_CASE("transformed by an affine map scales volume and keeps faces outward", 
   CHECK(signedVolume(mirrored) == Approx(volume).epsilon(1e-12));
   CHECK_NOTHROW(validateConvexBlock(mirrored, "mirrored sphere"));
 }
+
+TEST_CASE("Aabb::extend by a box unites them, and an empty box adds nothing") {
+  recode::core::Aabb a;
+  a.extend(Eigen::Vector3d(0, 0, 0));
+  a.extend(Eigen::Vector3d(1, 1, 1));
+  recode::core::Aabb b;
+  b.extend(Eigen::Vector3d(-1, 0.5, 2));
+  a.extend(b);
+  CHECK(a.min == Eigen::Vector3d(-1, 0, 0));
+  CHECK(a.max == Eigen::Vector3d(1, 1, 2));
+  a.extend(recode::core::Aabb{});
+  CHECK(a.min == Eigen::Vector3d(-1, 0, 0));
+  CHECK(a.max == Eigen::Vector3d(1, 1, 2));
+  recode::core::Aabb empty;
+  empty.extend(recode::core::Aabb{});
+  CHECK(empty.isEmpty());
+}

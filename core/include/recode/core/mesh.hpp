@@ -33,6 +33,12 @@ struct Aabb {
     min = min.cwiseMin(p);
     max = max.cwiseMax(p);
   }
+  // Grows the box to contain `other`; an empty `other` leaves it as it is (extending by its
+  // corners instead would not: an empty box's corners are infinities).
+  void extend(const Aabb& other) {
+    min = min.cwiseMin(other.min);
+    max = max.cwiseMax(other.max);
+  }
   // max - min; meaningless for an empty box.
   [[nodiscard]] Eigen::Vector3d extent() const { return max - min; }
   // (min + max) / 2; meaningless for an empty box.
