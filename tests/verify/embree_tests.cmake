@@ -1,0 +1,1 @@
+# Owned by the embree oracle work; filled in by it.

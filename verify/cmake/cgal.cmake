@@ -1,0 +1,1 @@
+# Owned by the cgal oracle work; filled in by it.

@@ -1,0 +1,1 @@
+# Owned by the osmesa oracle work; filled in by it.
