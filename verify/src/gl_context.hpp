@@ -1,0 +1,37 @@
+#pragma once
+// The GL context behind a GlDevice, kept apart from the device so that another way of getting
+// a context (EGL on a real GPU, a window system) is a new class here and not a rewrite of the
+// device. Private to recode_verify: this header may name GL types, public headers may not.
+
+#include <memory>
+#include <string>
+
+namespace recode::verify::detail {
+
+// A context with a default framebuffer of exactly width x height pixels, a 24-bit depth and an
+// 8-bit stencil buffer, and GL 4.5 compatibility-profile entry points (client vertex arrays and
+// the fixed-function matrix stack, plus glClipControl).
+class GlContext {
+ public:
+  virtual ~GlContext() = default;
+  GlContext() = default;
+  GlContext(const GlContext&) = delete;
+  GlContext& operator=(const GlContext&) = delete;
+
+  // Makes this context current on the calling thread (cheap when it already is).
+  virtual void makeCurrent() = 0;
+
+  // Resolves a GL entry point that the library does not export under its own name
+  // (glClipControl on OSMesa). Returns nullptr when there is none.
+  using Proc = void (*)();
+  [[nodiscard]] virtual Proc procAddress(const char* name) = 0;
+
+  // The renderer's own name ("llvmpipe (LLVM 15, 256 bits)"), for reports.
+  [[nodiscard]] virtual std::string renderer() = 0;
+};
+
+// An OSMesa (Mesa llvmpipe) context rendering into memory the context owns. Throws
+// std::runtime_error when OSMesa cannot create it or gives other depth/stencil sizes.
+[[nodiscard]] std::unique_ptr<GlContext> makeOsMesaContext(int width, int height);
+
+}  // namespace recode::verify::detail

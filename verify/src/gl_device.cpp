@@ -1,0 +1,376 @@
+// GlDevice: the device interface mapped one to one onto OpenGL 4.5 compatibility-profile state.
+// How window coordinates reach GL unchanged, and why depth goes through glClipControl, is in
+// docs/verification.md (the GL device section).
+
+#include "recode/verify/gl_device.hpp"
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "gl_context.hpp"
+#include "recode/raster/fixed_point.hpp"
+
+namespace recode::verify {
+
+namespace {
+
+using raster::CompareFunc;
+using raster::PixelRect;
+using raster::StencilOp;
+
+GLenum glCompare(CompareFunc f) {
+  switch (f) {
+    case CompareFunc::Never:
+      return GL_NEVER;
+    case CompareFunc::Less:
+      return GL_LESS;
+    case CompareFunc::Equal:
+      return GL_EQUAL;
+    case CompareFunc::LEqual:
+      return GL_LEQUAL;
+    case CompareFunc::Greater:
+      return GL_GREATER;
+    case CompareFunc::NotEqual:
+      return GL_NOTEQUAL;
+    case CompareFunc::GEqual:
+      return GL_GEQUAL;
+    case CompareFunc::Always:
+      return GL_ALWAYS;
+  }
+  throw std::invalid_argument("GlDevice: unknown compare function " +
+                              std::to_string(static_cast<int>(f)));
+}
+
+GLenum glStencilOpOf(StencilOp op) {
+  switch (op) {
+    case StencilOp::Keep:
+      return GL_KEEP;
+    case StencilOp::Zero:
+      return GL_ZERO;
+    case StencilOp::Replace:
+      return GL_REPLACE;
+    case StencilOp::Incr:
+      return GL_INCR;
+    case StencilOp::IncrWrap:
+      return GL_INCR_WRAP;
+    case StencilOp::Decr:
+      return GL_DECR;
+    case StencilOp::DecrWrap:
+      return GL_DECR_WRAP;
+    case StencilOp::Invert:
+      return GL_INVERT;
+  }
+  throw std::invalid_argument("GlDevice: unknown stencil op " +
+                              std::to_string(static_cast<int>(op)));
+}
+
+// The smallest power of two >= n (n <= 16384).
+GLint powerOfTwoAtLeast(int n) {
+  GLint p = 1;
+  while (p < n)
+    p *= 2;
+  return p;
+}
+
+// The same rules and messages as CpuDevice, so that both devices reject the same draws.
+void checkVertex(const raster::WindowVertex& v, std::uint32_t index) {
+  const auto bad = [&](const char* what) {
+    throw std::invalid_argument("drawTriangles: vertex " + std::to_string(index) + " (" +
+                                std::to_string(v.x) + ", " + std::to_string(v.y) + ", " +
+                                std::to_string(v.z) + ") " + what);
+  };
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    bad("is not finite");
+  if (std::fabs(v.x) > raster::kMaxWindowCoordinate ||
+      std::fabs(v.y) > raster::kMaxWindowCoordinate) {
+    bad("lies beyond the +-32768 pixel range of 24.8 fixed point");
+  }
+  if (v.z < 0.0f || v.z > 1.0f)
+    bad("has depth outside [0, 1]");
+}
+
+void validateDraw(std::span<const raster::WindowVertex> vertices,
+                  std::span<const std::uint32_t> indices) {
+  if (indices.size() % 3 != 0) {
+    throw std::invalid_argument("drawTriangles: index count " + std::to_string(indices.size()) +
+                                " is not a multiple of 3");
+  }
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    if (indices[k] >= vertices.size()) {
+      throw std::invalid_argument("drawTriangles: index " + std::to_string(indices[k]) +
+                                  " at position " + std::to_string(k) + " is out of range (" +
+                                  std::to_string(vertices.size()) + " vertices)");
+    }
+    checkVertex(vertices[indices[k]], indices[k]);
+  }
+}
+
+// Snaps to the 1/256 grid as CpuDevice does (round half to even in double). The result has at
+// most 24 significant bits (|x| * 256 <= 2^23), so it is exact as a float.
+float snapped(float x) {
+  return static_cast<float>(std::nearbyint(static_cast<double>(x) * raster::kSubpixelOne) /
+                            raster::kSubpixelOne);
+}
+
+}  // namespace
+
+struct GlDevice::Impl {
+  std::unique_ptr<detail::GlContext> context;
+  std::vector<GLfloat> vertexScratch;  // snapped x, y, z per vertex, reused between draws
+
+  // Makes the context current and returns it; every public entry point starts here.
+  void use() { context->makeCurrent(); }
+
+  // A GL error here is a bug in this file (every input was validated), so it is reported
+  // loudly rather than ignored.
+  static void check(const char* what) {
+    const GLenum error = glGetError();
+    if (error != GL_NO_ERROR) {
+      char code[16];
+      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(error));
+      throw std::runtime_error(std::string("GlDevice: GL error ") + code + " in " + what);
+    }
+  }
+};
+
+GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
+  if (width < 1 || height < 1 || width > raster::kMaxFramebufferSize ||
+      height > raster::kMaxFramebufferSize) {
+    throw std::invalid_argument("framebuffer size " + std::to_string(width) + "x" +
+                                std::to_string(height) + " is outside 1.." +
+                                std::to_string(raster::kMaxFramebufferSize) + " in each dimension");
+  }
+  impl_ = std::make_unique<Impl>();
+  impl_->context = detail::makeOsMesaContext(width, height);
+  impl_->use();
+
+  // Window coordinates must reach the rasterizer unchanged. The viewport transform is
+  // x_w = (x_ndc + 1) * P / 2; with P a power of two, x_ndc = x * (2 / P) - 1 and its inverse
+  // are exact in float for every x on the 1/256 grid within +-32768 (at most 24 significant
+  // bits), so the projection below maps x, y to themselves bit for bit. The viewport may be
+  // larger than the framebuffer; drawing is limited to the framebuffer anyway.
+  const GLint vpWidth = powerOfTwoAtLeast(width);
+  const GLint vpHeight = powerOfTwoAtLeast(height);
+  GLint maxViewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+  if (vpWidth > maxViewport[0] || vpHeight > maxViewport[1]) {
+    throw std::runtime_error("GlDevice: viewport " + std::to_string(vpWidth) + "x" +
+                             std::to_string(vpHeight) + " exceeds GL_MAX_VIEWPORT_DIMS " +
+                             std::to_string(maxViewport[0]) + "x" + std::to_string(maxViewport[1]));
+  }
+  glViewport(0, 0, vpWidth, vpHeight);
+
+  // Depth: with glClipControl's ZERO_TO_ONE convention window z = z_ndc, so a projection that
+  // passes z through leaves it unchanged. (GL's default -1..1 convention needs z_ndc = 2z - 1,
+  // which loses low bits of small z before the rasterizer sees them.)
+  const auto clipControl =
+      reinterpret_cast<PFNGLCLIPCONTROLPROC>(impl_->context->procAddress("glClipControl"));
+  if (clipControl == nullptr)
+    throw std::runtime_error("GlDevice: the GL implementation has no glClipControl (GL 4.5)");
+  clipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  glDepthRange(0.0, 1.0);
+
+  // Column-major: x_clip = x * 2/P - 1, y_clip = y * 2/Q - 1, z_clip = z, w = 1.
+  const GLfloat projection[16] = {2.0f / static_cast<GLfloat>(vpWidth),
+                                  0.0f,
+                                  0.0f,
+                                  0.0f,
+                                  0.0f,
+                                  2.0f / static_cast<GLfloat>(vpHeight),
+                                  0.0f,
+                                  0.0f,
+                                  0.0f,
+                                  0.0f,
+                                  1.0f,
+                                  0.0f,
+                                  -1.0f,
+                                  -1.0f,
+                                  0.0f,
+                                  1.0f};
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixf(projection);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+
+  // The tests are always on; "off" is ALWAYS, as docs/rasterization.md section 6 says. No
+  // colour is written, and nothing else in the fragment pipeline may change a fragment.
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glEnable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_CLAMP);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_MULTISAMPLE);
+  glDisable(GL_DITHER);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glFrontFace(GL_CCW);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(0xFF);
+  glScissor(0, 0, width, height);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glEnableClientState(GL_VERTEX_ARRAY);
+
+  // Start as CpuDevice starts: depth 1.0, stencil 0 (OSMesa's buffers start undefined).
+  glClearDepth(1.0);
+  glClearStencil(0);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  impl_->check("GlDevice setup");
+}
+
+GlDevice::~GlDevice() = default;
+
+std::string GlDevice::renderer() const {
+  return impl_->context->renderer();
+}
+
+void GlDevice::setScissor(const PixelRect& rect) {
+  // Clamped to the framebuffer like CpuDevice's; an empty result is a zero-sized scissor.
+  const PixelRect r = rect.intersect({0, 0, width_, height_});
+  impl_->use();
+  glScissor(r.x0, r.y0, r.width(), r.height());
+}
+
+void GlDevice::clearDepth(double depth) {
+  if (!std::isfinite(depth))
+    throw std::invalid_argument("clearDepth: value is not finite");
+  impl_->use();
+  glClearDepth(depth);  // GL clamps to [0, 1]; the depth write mask applies to the clear
+  glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+void GlDevice::clearStencil(std::uint8_t value) {
+  impl_->use();
+  glClearStencil(value);  // the stencil write mask applies to the clear
+  glClear(GL_STENCIL_BUFFER_BIT);
+}
+
+void GlDevice::setDepthFunc(CompareFunc func) {
+  const GLenum f = glCompare(func);
+  impl_->use();
+  glDepthFunc(f);
+}
+
+void GlDevice::setDepthWriteMask(bool write) {
+  impl_->use();
+  glDepthMask(write ? GL_TRUE : GL_FALSE);
+}
+
+void GlDevice::setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) {
+  const GLenum f = glCompare(func);
+  impl_->use();
+  glStencilFunc(f, ref, valueMask);  // one func for both faces, as in the device interface
+}
+
+void GlDevice::setStencilOps(raster::Face face, const raster::StencilOps& ops) {
+  GLenum glFace = GL_FRONT_AND_BACK;
+  switch (face) {
+    case raster::Face::Front:
+      glFace = GL_FRONT;
+      break;
+    case raster::Face::Back:
+      glFace = GL_BACK;
+      break;
+    case raster::Face::Both:
+      glFace = GL_FRONT_AND_BACK;
+      break;
+    default:
+      throw std::invalid_argument("GlDevice: unknown face " +
+                                  std::to_string(static_cast<int>(face)));
+  }
+  const GLenum sfail = glStencilOpOf(ops.stencilFail);
+  const GLenum dpfail = glStencilOpOf(ops.depthFail);
+  const GLenum dppass = glStencilOpOf(ops.depthPass);
+  impl_->use();
+  glStencilOpSeparate(glFace, sfail, dpfail, dppass);
+}
+
+void GlDevice::setStencilWriteMask(std::uint8_t mask) {
+  impl_->use();
+  glStencilMask(mask);
+}
+
+void GlDevice::setCullMode(raster::CullMode mode) {
+  impl_->use();
+  switch (mode) {
+    case raster::CullMode::None:
+      glDisable(GL_CULL_FACE);
+      return;
+    case raster::CullMode::Front:
+      glEnable(GL_CULL_FACE);
+      glCullFace(GL_FRONT);
+      return;
+    case raster::CullMode::Back:
+      glEnable(GL_CULL_FACE);
+      glCullFace(GL_BACK);
+      return;
+  }
+  throw std::invalid_argument("GlDevice: unknown cull mode " +
+                              std::to_string(static_cast<int>(mode)));
+}
+
+void GlDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
+                             std::span<const std::uint32_t> indices) {
+  validateDraw(vertices, indices);
+  if (indices.empty())
+    return;
+  std::vector<GLfloat>& xyz = impl_->vertexScratch;
+  xyz.resize(vertices.size() * 3);
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    xyz[3 * k] = snapped(vertices[k].x);
+    xyz[3 * k + 1] = snapped(vertices[k].y);
+    xyz[3 * k + 2] = vertices[k].z;
+  }
+  impl_->use();
+  glVertexPointer(3, GL_FLOAT, 0, xyz.data());
+  // glDrawElements counts in GLsizei; split a (huge) draw into whole triangles that fit.
+  constexpr std::size_t kChunk = static_cast<std::size_t>(INT_MAX / 3) * 3;
+  for (std::size_t first = 0; first < indices.size(); first += kChunk) {
+    const std::size_t count = std::min(kChunk, indices.size() - first);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+                   indices.data() + first);
+  }
+  impl_->check("drawTriangles");
+}
+
+std::vector<std::uint8_t> GlDevice::readStencil(const PixelRect& rect) const {
+  const PixelRect r = rect.intersect({0, 0, width_, height_});
+  if (r.empty())
+    return {};
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(r.area()));
+  impl_->use();
+  // glReadPixels returns rows from the bottom (y = r.y0) up, the interface's order; neither
+  // the scissor nor the write masks affect it.
+  glReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, out.data());
+  impl_->check("readStencil");
+  return out;
+}
+
+std::vector<std::uint32_t> GlDevice::readDepth(const PixelRect& rect) const {
+  const PixelRect r = rect.intersect({0, 0, width_, height_});
+  if (r.empty())
+    return {};
+  std::vector<std::uint32_t> out(static_cast<std::size_t>(r.area()));
+  impl_->use();
+  // GL_UNSIGNED_INT_24_8 hands back the stored 24-bit depth unconverted in the top 24 bits
+  // (GL_DEPTH_COMPONENT as GL_UNSIGNED_INT would rescale it to 32 bits and round).
+  glReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+               out.data());
+  impl_->check("readDepth");
+  for (std::uint32_t& word : out)
+    word >>= 8;
+  return out;
+}
+
+}  // namespace recode::verify
