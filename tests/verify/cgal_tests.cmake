@@ -1,1 +1,6 @@
-# Owned by the cgal oracle work; filled in by it.
+# The CGAL exact-intersection oracle: exact facts by construction, the judgement's power to
+# fail on corrupted results, and the generated pair suite judged pair by pair.
+add_executable(recode_verify_cgal_tests cgal_oracle_test.cpp)
+target_link_libraries(recode_verify_cgal_tests PRIVATE recode_verify recode_warnings
+                                                       Catch2::Catch2WithMain)
+catch_discover_tests(recode_verify_cgal_tests)
