@@ -1,0 +1,387 @@
+// CPU/GL parity: replay, compare after every buffer change, and explain what differs.
+//
+// The reference's fragment depth q follows the contract exactly; llvmpipe's q' is a float
+// evaluation of the same plane, |q' - q| <= t for a per-fragment tolerance t (depth_error_bound
+// below). A depth test compares q' with the stored depth d', which differs from the
+// reference's d by a known amount s (read back before the draw) or, once a fragment of this
+// draw has written it, by at most that fragment's t. So GL's test can only come out differently
+// where |q - d| <= t + s. Every such fragment marks its pixel "near" for this draw, and whatever
+// differs there afterwards (stencil, depth) is a tie. A pixel that leaves a draw different
+// beyond a plain depth tie keeps its mark until the buffers agree again, because later tests
+// there start from different values.
+
+#include "recode/verify/gl_parity.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+
+#include "recode/raster/cpu_device.hpp"
+#include "recode/raster/fixed_point.hpp"
+#include "recode/raster/fragment_ops.hpp"
+#include "recode/raster/traversal.hpp"
+#include "recode/raster/triangle_setup.hpp"
+#include "recode/verify/gl_device.hpp"
+
+namespace recode::verify {
+
+namespace {
+
+using raster::PixelRect;
+
+std::uint32_t absDiff(std::uint32_t a, std::uint32_t b) {
+  return a > b ? a - b : b - a;
+}
+
+// A first-order bound, in 24-bit LSB, on how far llvmpipe's float depth for one triangle can be
+// from the contract's. llvmpipe (lp_state_setup.c, lp_bld_interp.c) computes in single
+// precision, with pixel positions p = window - 0.5 and v0 the first vertex of its setup:
+//   det = dx01*dy20 - dx20*dy01,  dzdx = dz01*(dy20/det) - dz20*(dy01/det)  (dzdy alike)
+//   a0  = z0 - (dzdx*x0 + dzdy*y0)          the plane's value at the framebuffer origin
+//   z   = a0 + dzdx*x + dzdy*y              at each fragment (fused multiply-adds)
+// and the origin is the top-left corner: Gallium stores a window-system framebuffer top row
+// first, so y runs down from the top (y' = H - y). Far from that origin, on steep planes, the
+// terms are much larger than z itself (Mesa's own comment in lp_state_setup.c calls this out).
+// With u = 2^-24 (float's unit roundoff, one LSB of a value near 1):
+// - each of the six roundings in a0 and z errs by at most u times a partial sum no larger
+//   than S = |z0| + |gx|(|x0| + |x|) + |gy|(|y0| + |y|) (g the gradient per pixel): 6 S LSB;
+// - the gradient carries the cancellation in det: relative error (k + 6) u with
+//   k = (|dx01 dy20| + |dx20 dy01|) / |det|, times Px |x - x0| + Py |y - y0|, where Px, Py
+//   are the gradient's terms without cancellation (a0 uses the same gradient, so its error
+//   acts from v0 only);
+// - both sides round to 24 bits: 1 LSB.
+// Each term is taken at its worst over the three choices of v0 (llvmpipe may rotate the
+// vertices) and over both y origins (top and bottom), so the bound does not hang on details
+// of one Mesa version. Ordinary planes get a few LSB; the steep slivers of faces seen almost
+// edge-on get tens, which llvmpipe does use.
+class DepthErrorBound {
+ public:
+  DepthErrorBound(const std::array<raster::FixedVertex, 3>& v, int height) : height_(height) {
+    for (int k = 0; k < 3; ++k) {
+      x_[k] = static_cast<double>(v[k].x) / raster::kSubpixelOne - 0.5;
+      y_[k] = static_cast<double>(v[k].y) / raster::kSubpixelOne - 0.5;
+      z_[k] = static_cast<double>(v[k].z);
+    }
+    for (int r = 0; r < 3; ++r) {
+      const int a = r, b = (r + 1) % 3, c = (r + 2) % 3;
+      const double dx01 = x_[a] - x_[b], dy01 = y_[a] - y_[b];
+      const double dx20 = x_[c] - x_[a], dy20 = y_[c] - y_[a];
+      const double dz01 = z_[a] - z_[b], dz20 = z_[c] - z_[a];
+      const double e = dx01 * dy20, f = dx20 * dy01, det = std::fabs(e - f);
+      const double k = (std::fabs(e) + std::fabs(f)) / det;
+      weightX_[r] = (k + 6.0) * (std::fabs(dz01 * dy20) + std::fabs(dz20 * dy01)) / det;
+      weightY_[r] = (k + 6.0) * (std::fabs(dz20 * dx01) + std::fabs(dz01 * dx20)) / det;
+      // The exact gradient, the same for every rotation.
+      gx_ = std::fabs(dz01 * dy20 - dz20 * dy01) / det;
+      gy_ = std::fabs(dz20 * dx01 - dz01 * dx20) / det;
+    }
+  }
+
+  // The bound at the sample of pixel (x, y), in LSB (not rounded).
+  [[nodiscard]] double at(int x, int y) const {
+    const double px = x, py = y;  // the sample (x + 0.5, y + 0.5) in p coordinates
+    // The same sample measured from the top: y' = H - (y + 0.5), minus 0.5.
+    const double pyTop = static_cast<double>(height_) - 1.0 - py;
+    double rounding = 0.0, gradient = 0.0;
+    for (int r = 0; r < 3; ++r) {
+      const double yTop = static_cast<double>(height_) - 1.0 - y_[r];
+      const double ySpan =
+          std::max(std::fabs(y_[r]) + std::fabs(py), std::fabs(yTop) + std::fabs(pyTop));
+      const double s = std::fabs(z_[r]) + gx_ * (std::fabs(x_[r]) + std::fabs(px)) + gy_ * ySpan;
+      rounding = std::max(rounding, 6.0 * s);
+      gradient = std::max(
+          gradient, weightX_[r] * std::fabs(px - x_[r]) + weightY_[r] * std::fabs(py - y_[r]));
+    }
+    return 1.0 + rounding + gradient;
+  }
+
+ private:
+  int height_;
+  double x_[3] = {}, y_[3] = {}, z_[3] = {};
+  double weightX_[3] = {}, weightY_[3] = {};
+  double gx_ = 0.0, gy_ = 0.0;
+};
+
+// The reference's buffers over the region, and what is known about the candidate's.
+struct RegionState {
+  PixelRect region;
+  std::vector<std::uint32_t> depth;  // reference, row-major from the region's bottom row
+  std::vector<std::uint8_t> stencil;
+  // Bound on |candidate depth - reference depth|: the read-back difference, or the tolerance
+  // of the fragment that wrote the depth since.
+  std::vector<std::uint32_t> depthSlack;
+  std::vector<std::uint8_t> near;     // 1: a test here may have gone the other way
+  std::vector<std::uint8_t> written;  // 1: depthSlack is a fragment's tolerance from this draw
+
+  [[nodiscard]] std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y - region.y0) * static_cast<std::size_t>(region.width()) +
+           static_cast<std::size_t>(x - region.x0);
+  }
+};
+
+// Re-runs one triangle's fragments on the reference's values with the contract's arithmetic
+// and marks the pixels whose depth test was within reach of GL's rounding.
+class NearDecisionSink final : public raster::BlockSink {
+ public:
+  NearDecisionSink(const raster::TriangleSetup& tri, const DepthErrorBound* bound,
+                   const raster::DepthStencilState& state, std::uint32_t floor, RegionState& region)
+      : tri_(tri),
+        bound_(bound),
+        state_(state),
+        ops_(tri.frontFacing ? state.frontOps : state.backOps),
+        floor_(floor),
+        r_(region) {}
+
+  void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
+    const bool depthDecides = state_.depthFunc != raster::CompareFunc::Always &&
+                              state_.depthFunc != raster::CompareFunc::Never;
+    while (mask != 0) {
+      const int bit = __builtin_ctzll(mask);
+      mask &= mask - 1;
+      const int x = blockX + (bit & (raster::kBlockSize - 1));
+      const int y = blockY + bit / raster::kBlockSize;
+      const std::size_t i = r_.index(x, y);
+      const std::uint32_t q = raster::quantizeDepth(
+          tri_.depth.at(raster::pixelCentreFixed(x), raster::pixelCentreFixed(y)));
+      const std::uint32_t tolerance = toleranceAt(x, y);
+      const std::uint32_t d = r_.depth[i];
+      const bool stencilPasses =
+          raster::compare(state_.stencilFunc, state_.stencilRef & state_.stencilValueMask,
+                          r_.stencil[i] & state_.stencilValueMask);
+      if (stencilPasses && depthDecides &&
+          static_cast<std::uint64_t>(absDiff(q, d)) <=
+              static_cast<std::uint64_t>(tolerance) + r_.depthSlack[i]) {
+        r_.near[i] = 1;
+      }
+      const bool writes =
+          stencilPasses && state_.depthWrite && raster::compare(state_.depthFunc, q, d);
+      raster::applyFragment(state_, ops_, q, r_.depth[i], r_.stencil[i]);
+      if (writes) {
+        r_.depthSlack[i] = tolerance;  // the candidate wrote its own depth for this fragment
+        r_.written[i] = 1;
+      }
+    }
+  }
+
+ private:
+  [[nodiscard]] std::uint32_t toleranceAt(int x, int y) const {
+    if (bound_ == nullptr)
+      return floor_;
+    const double b = std::ceil(bound_->at(x, y));
+    return b >= static_cast<double>(raster::kDepthMax)
+               ? raster::kDepthMax
+               : std::max(floor_, static_cast<std::uint32_t>(b));
+  }
+
+  const raster::TriangleSetup& tri_;
+  const DepthErrorBound* bound_;
+  const raster::DepthStencilState& state_;
+  const raster::StencilOps& ops_;
+  std::uint32_t floor_;
+  RegionState& r_;
+};
+
+class Comparer {
+ public:
+  Comparer(raster::DepthStencilDevice& reference, raster::DepthStencilDevice& candidate,
+           const PixelRect& region, const GlParityOptions& options)
+      : reference_(reference), candidate_(candidate), options_(options) {
+    state_.region = region;
+    const auto n = static_cast<std::size_t>(region.area());
+    state_.depthSlack.assign(n, 0);
+    state_.near.assign(n, 0);
+    state_.written.assign(n, 0);
+    scissor_ = {0, 0, reference.width(), reference.height()};
+  }
+
+  // Follows the state commands so that draws can be re-evaluated.
+  void track(const raster::Command& command) {
+    std::visit(
+        [this](const auto& c) {
+          using T = std::decay_t<decltype(c)>;
+          if constexpr (std::is_same_v<T, raster::cmd::Scissor>) {
+            scissor_ = c.rect.intersect({0, 0, reference_.width(), reference_.height()});
+          } else if constexpr (std::is_same_v<T, raster::cmd::DepthFunc>) {
+            gl_.depthFunc = c.func;
+          } else if constexpr (std::is_same_v<T, raster::cmd::DepthWriteMask>) {
+            gl_.depthWrite = c.write;
+          } else if constexpr (std::is_same_v<T, raster::cmd::StencilFunc>) {
+            gl_.stencilFunc = c.func;
+            gl_.stencilRef = c.ref;
+            gl_.stencilValueMask = c.valueMask;
+          } else if constexpr (std::is_same_v<T, raster::cmd::StencilOpsCmd>) {
+            if (c.face != raster::Face::Back)
+              gl_.frontOps = c.ops;
+            if (c.face != raster::Face::Front)
+              gl_.backOps = c.ops;
+          } else if constexpr (std::is_same_v<T, raster::cmd::StencilWriteMask>) {
+            gl_.stencilWriteMask = c.mask;
+          } else if constexpr (std::is_same_v<T, raster::cmd::Cull>) {
+            gl_.cull = c.mode;
+          }
+        },
+        command);
+  }
+
+  // Marks the pixels where this draw's depth tests were near, from the reference's values
+  // before the draw. Call only for a draw the reference has accepted (indices in range).
+  void analyseDraw(const raster::cmd::Draw& draw) {
+    const PixelRect clip = scissor_.intersect(state_.region);
+    if (clip.empty())
+      return;
+    for (std::size_t k = 0; k + 2 < draw.indices.size(); k += 3) {
+      const std::array<raster::FixedVertex, 3> v = {
+          raster::snapVertex(draw.vertices[draw.indices[k]]),
+          raster::snapVertex(draw.vertices[draw.indices[k + 1]]),
+          raster::snapVertex(draw.vertices[draw.indices[k + 2]])};
+      const auto tri = raster::setupTriangle(v[0], v[1], v[2]);
+      if (!tri || (gl_.cull == raster::CullMode::Front && tri->frontFacing) ||
+          (gl_.cull == raster::CullMode::Back && !tri->frontFacing)) {
+        continue;
+      }
+      std::optional<DepthErrorBound> bound;
+      if (options_.planeErrorBound)
+        bound.emplace(v, reference_.height());
+      NearDecisionSink sink(*tri, bound ? &*bound : nullptr, gl_, options_.depthTolerance, state_);
+      raster::traverseTriangle(*tri, clip, sink);
+    }
+  }
+
+  // Reads both devices over the region and classifies every pixel.
+  void compare(int command, GlParityReport& report) {
+    const PixelRect& r = state_.region;
+    ++report.comparisons;
+    if (r.empty())
+      return;
+    const auto depth = candidate_.readDepth(r);
+    const auto stencil = candidate_.readStencil(r);
+    auto refDepth = reference_.readDepth(r);
+    auto refStencil = reference_.readStencil(r);
+    const auto n = static_cast<std::size_t>(r.area());
+    if (refDepth.size() != n || refStencil.size() != n || depth.size() != n ||
+        stencil.size() != n) {
+      throw std::runtime_error("GL parity: a device returned a read-back of the wrong size");
+    }
+    GlParityCounts& c = report.counts;
+    for (int y = r.y0; y < r.y1; ++y) {
+      for (int x = r.x0; x < r.x1; ++x) {
+        const std::size_t i = state_.index(x, y);
+        const std::uint32_t dd = absDiff(refDepth[i], depth[i]);
+        const std::uint32_t allowed = std::max(options_.depthTolerance, state_.depthSlack[i]);
+        const bool stencilEqual = refStencil[i] == stencil[i];
+        ++c.pixels;
+        bool keepNear = false;
+        if (stencilEqual && dd == 0) {
+          ++c.identical;
+        } else if (stencilEqual && dd <= allowed) {
+          ++c.depthTies;
+          if (dd > options_.depthTolerance)
+            ++report.wideDepthTies;
+          if (state_.written[i] != 0) {
+            report.maxDepthDifference = std::max(report.maxDepthDifference, dd);
+            report.maxToleranceFraction =
+                std::max(report.maxToleranceFraction,
+                         static_cast<double>(dd) / static_cast<double>(allowed));
+          }
+        } else if (state_.near[i] != 0) {
+          ++c.depthTies;
+          ++report.nearDecisions;
+          if (!stencilEqual)
+            ++report.stencilTies;
+          keepNear = true;
+        } else {
+          ++c.unexplained;
+          if (static_cast<int>(report.examples.size()) < options_.maxExamples) {
+            report.examples.push_back(
+                {command, x, y, refStencil[i], stencil[i], refDepth[i], depth[i]});
+          }
+        }
+        state_.near[i] = keepNear ? 1 : 0;
+        state_.written[i] = 0;
+        state_.depthSlack[i] = dd;
+      }
+    }
+    state_.depth = std::move(refDepth);
+    state_.stencil = std::move(refStencil);
+  }
+
+ private:
+  raster::DepthStencilDevice& reference_;
+  raster::DepthStencilDevice& candidate_;
+  const GlParityOptions& options_;
+  RegionState state_;
+  raster::DepthStencilState gl_;  // the stream's state so far (GL's defaults to start)
+  PixelRect scissor_;
+};
+
+bool changesBuffers(const raster::Command& command) {
+  return std::holds_alternative<raster::cmd::Draw>(command) ||
+         std::holds_alternative<raster::cmd::ClearDepth>(command) ||
+         std::holds_alternative<raster::cmd::ClearStencil>(command);
+}
+
+void checkSize(const raster::DepthStencilDevice& device, const raster::CommandStream& stream,
+               const char* which) {
+  if (device.width() != stream.width || device.height() != stream.height) {
+    throw std::invalid_argument(std::string("GL parity: the ") + which + " device is " +
+                                std::to_string(device.width()) + "x" +
+                                std::to_string(device.height()) + " but the stream is " +
+                                std::to_string(stream.width) + "x" + std::to_string(stream.height));
+  }
+}
+
+}  // namespace
+
+GlParityReport compareStreamOnDevices(const raster::CommandStream& stream,
+                                      raster::DepthStencilDevice& reference,
+                                      raster::DepthStencilDevice& candidate,
+                                      const GlParityOptions& options) {
+  checkSize(reference, stream, "reference");
+  checkSize(candidate, stream, "candidate");
+  const PixelRect frame{0, 0, stream.width, stream.height};
+  PixelRect region = options.region ? options.region->intersect(frame) : frame;
+  if (region.empty())
+    region = {};
+
+  GlParityReport report;
+  Comparer comparer(reference, candidate, region, options);
+  comparer.compare(-1, report);  // the fresh state: depth 1, stencil 0 on both
+  for (std::size_t k = 0; k < stream.commands.size(); ++k) {
+    const std::vector<raster::Command> one{stream.commands[k]};
+    // The reference validates a draw before the analysis reads its indices; the analysis
+    // starts from the reference's read-back before the draw, which the comparer keeps.
+    raster::replay(one, reference);
+    comparer.track(one.front());
+    if (const auto* draw = std::get_if<raster::cmd::Draw>(&one.front()))
+      comparer.analyseDraw(*draw);
+    raster::replay(one, candidate);
+    if (changesBuffers(one.front()))
+      comparer.compare(static_cast<int>(k), report);
+  }
+  return report;
+}
+
+GlParityReport compareStreamOnGl(const raster::CommandStream& stream,
+                                 const GlParityOptions& options) {
+  raster::CpuDevice reference(stream.width, stream.height);
+  GlDevice candidate(stream.width, stream.height);
+  GlParityReport report = compareStreamOnDevices(stream, reference, candidate, options);
+  report.renderer = candidate.renderer();
+  return report;
+}
+
+GlParityReport compareOnGl(const core::TriangleMesh& a, const core::TriangleMesh& b,
+                           const core::PairRequest& request, const GlParityOptions& options) {
+  raster::CpuDevice cpu(request.frame.width, request.frame.height);
+  raster::RecordingDevice recorder(cpu);
+  const core::PairResult result = core::collidePair(recorder, a, b, request);
+  GlParityOptions pairOptions = options;
+  pairOptions.region = result.mor;
+  return compareStreamOnGl(recorder.stream(), pairOptions);
+}
+
+}  // namespace recode::verify
