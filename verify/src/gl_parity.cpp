@@ -1,14 +1,14 @@
 // CPU/GL parity: replay, compare after every buffer change, and explain what differs.
 //
 // The reference's fragment depth q follows the contract exactly; llvmpipe's q' is a float
-// evaluation of the same plane, |q' - q| <= t for a per-fragment tolerance t (depth_error_bound
+// evaluation of the same plane, |q' - q| <= t for a per-fragment tolerance t (DepthErrorBound
 // below). A depth test compares q' with the stored depth d', which differs from the
-// reference's d by a known amount s (read back before the draw) or, once a fragment of this
-// draw has written it, by at most that fragment's t. So GL's test can only come out differently
-// where |q - d| <= t + s. Every such fragment marks its pixel "near" for this draw, and whatever
-// differs there afterwards (stencil, depth) is a tie. A pixel that leaves a draw different
-// beyond a plain depth tie keeps its mark until the buffers agree again, because later tests
-// there start from different values.
+// reference's d by at most s: the read-back difference before the draw, then updated by each
+// fragment of the draw. So GL's test can only come out differently where |q - d| <= t + s:
+// such a fragment marks its pixel "near", and there the stencil may differ. The depth never
+// may differ by more than s: after a near fragment either side may or may not have written,
+// so s grows to max(s, t) + |q - d|. A pixel whose stencil leaves a draw different stays near
+// (its later stencil tests start from different values) until the stencils agree again.
 
 #include "recode/verify/gl_parity.hpp"
 
@@ -152,18 +152,27 @@ class NearDecisionSink final : public raster::BlockSink {
       const bool stencilPasses =
           raster::compare(state_.stencilFunc, state_.stencilRef & state_.stencilValueMask,
                           r_.stencil[i] & state_.stencilValueMask);
-      if (stencilPasses && depthDecides &&
-          static_cast<std::uint64_t>(absDiff(q, d)) <=
-              static_cast<std::uint64_t>(tolerance) + r_.depthSlack[i]) {
-        r_.near[i] = 1;
-      }
       const bool writes =
           stencilPasses && state_.depthWrite && raster::compare(state_.depthFunc, q, d);
-      raster::applyFragment(state_, ops_, q, r_.depth[i], r_.stencil[i]);
-      if (writes) {
+      // The candidate's outcome may differ when its stencil may already differ (a pixel left
+      // "near" by an earlier draw) or when the depth test was decided within reach.
+      const std::uint32_t margin = absDiff(q, d);
+      const bool depthNear =
+          depthDecides && static_cast<std::uint64_t>(margin) <=
+                              static_cast<std::uint64_t>(tolerance) + r_.depthSlack[i];
+      if (r_.near[i] != 0 || (stencilPasses && depthNear)) {
+        r_.near[i] = 1;
+        // Either side may or may not write: the candidate keeps d' (within s of d) or writes
+        // q' (within t of q), the reference keeps d or writes q.
+        if (state_.depthWrite) {
+          r_.depthSlack[i] =
+              std::min(raster::kDepthMax, std::max(r_.depthSlack[i], tolerance) + margin);
+        }
+      } else if (writes) {
         r_.depthSlack[i] = tolerance;  // the candidate wrote its own depth for this fragment
         r_.written[i] = 1;
       }
+      raster::applyFragment(state_, ops_, q, r_.depth[i], r_.stencil[i]);
     }
   }
 
@@ -277,22 +286,20 @@ class Comparer {
         bool keepNear = false;
         if (stencilEqual && dd == 0) {
           ++c.identical;
-        } else if (stencilEqual && dd <= allowed) {
+        } else if (dd <= allowed && (stencilEqual || state_.near[i] != 0)) {
           ++c.depthTies;
-          if (dd > options_.depthTolerance)
+          if (!stencilEqual) {
+            ++report.stencilTies;
+            keepNear = true;  // later tests here start from different stencil values
+          } else if (dd > options_.depthTolerance) {
             ++report.wideDepthTies;
-          if (state_.written[i] != 0) {
+          }
+          if (stencilEqual && state_.written[i] != 0) {
             report.maxDepthDifference = std::max(report.maxDepthDifference, dd);
             report.maxToleranceFraction =
                 std::max(report.maxToleranceFraction,
                          static_cast<double>(dd) / static_cast<double>(allowed));
           }
-        } else if (state_.near[i] != 0) {
-          ++c.depthTies;
-          ++report.nearDecisions;
-          if (!stencilEqual)
-            ++report.stencilTies;
-          keepNear = true;
         } else {
           ++c.unexplained;
           if (static_cast<int>(report.examples.size()) < options_.maxExamples) {

@@ -55,10 +55,9 @@ struct GlParityReport {
   // Of counts.depthTies: equal stencil, depth apart by more than depthTolerance but within the
   // tolerance of the fragment that wrote it (steep or sliver planes).
   long long wideDepthTies = 0;
-  // Of counts.depthTies: the stencil differs, or the depth by more than its tolerance, at a
-  // pixel where a depth test was decided within the tolerance (it may have gone either way).
-  long long nearDecisions = 0;
-  long long stencilTies = 0;  // of nearDecisions: those whose stencil differs
+  // Of counts.depthTies: the stencil differs, at a pixel where a depth test was decided within
+  // the tolerance (so it may have gone either way on GL); the depth is still within bounds.
+  long long stencilTies = 0;
   // Largest depth difference among ties with equal stencil, and the largest ratio of such a
   // difference to the tolerance it was held to (how close llvmpipe came to the bound).
   std::uint32_t maxDepthDifference = 0;
