@@ -10,6 +10,7 @@
 #include "recode/core/generators.hpp"
 #include "recode/core/mesh_error.hpp"
 #include "recode/core/pair.hpp"
+#include "recode/core/pair_cases.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/verify/cgal_oracle.hpp"
 #include "recode/verify/pair_suite.hpp"
@@ -383,4 +384,52 @@ TEST_CASE("cgal oracle: the generated pair suite has no disagreement") {
   CHECK(counts.pairs == static_cast<long long>(suite.size()));
   CHECK(counts.agree + counts.resolutionMisses + counts.disagree == counts.pairs);
   CHECK(counts.disagree == 0);
+}
+
+TEST_CASE("cgal judge: the tolerance rules hold at every pixel of the suite's device results") {
+  // The rules, checked against the device without CGAL: rule (b) applied to every colliding
+  // pair as if the blocks were apart must explain each interfering pixel (an overlapping pixel
+  // passes too); rule (a) applied with the verdict taken as apart must find a must-see pixel
+  // only where the device did see interference, and none in pairs the device found apart. The
+  // search box for rule (a) is the overlap of the blocks' boxes, which holds the intersection.
+  const std::vector<verify::SuitePair> suite = verify::generatePairSuite();
+  long long mustSeeFound = 0;
+  for (const verify::SuitePair& pair : suite) {
+    INFO(pair.label);
+    const core::PairResult result = runRecode(pair.a, pair.b, pair.frame);
+    core::Aabb overlap;
+    const core::Aabb boxA = core::boundingBox(pair.a), boxB = core::boundingBox(pair.b);
+    overlap.min = boxA.min.cwiseMax(boxB.min);
+    overlap.max = boxA.max.cwiseMin(boxB.max);
+    if (result.collide) {
+      const verify::CgalJudgement asApart =
+          verify::judgePair(verify::ExactIntersection{}, pair.frame, pair.a, pair.b, result);
+      INFO(asApart.reason);
+      CHECK(asApart.verdict == verify::VerdictCheck::ResolutionMiss);
+    }
+    if (overlap.isEmpty())
+      continue;
+    verify::ExactIntersection superset;
+    superset.intersect = true;
+    superset.box = overlap;
+    core::PairResult apart = result;
+    apart.collide = false;
+    const verify::CgalJudgement j = verify::judgePair(superset, pair.frame, pair.a, pair.b, apart);
+    INFO(j.reason);
+    if (!result.collide) {
+      CHECK(j.verdict == verify::VerdictCheck::ResolutionMiss);
+    } else if (j.verdict == verify::VerdictCheck::Disagree) {
+      ++mustSeeFound;
+      const raster::PixelRect& m = result.mor;
+      REQUIRE(j.pixelX >= m.x0);
+      REQUIRE(j.pixelX < m.x1);
+      REQUIRE(j.pixelY >= m.y0);
+      REQUIRE(j.pixelY < m.y1);
+      const std::size_t k =
+          static_cast<std::size_t>(j.pixelY - m.y0) * m.width() + (j.pixelX - m.x0);
+      CHECK(core::isInterfering(result.caseMap[k]));
+    }
+  }
+  // Most colliding pairs overlap clearly, so rule (a) must have found must-see pixels.
+  CHECK(mustSeeFound > 0);
 }
