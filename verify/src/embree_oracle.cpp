@@ -29,15 +29,6 @@ std::string_view toString(DisagreementKind kind) {
   return "unexplained";
 }
 
-EmbreeCounts& EmbreeCounts::operator+=(const EmbreeCounts& o) {
-  pixels += o.pixels;
-  agree += o.agree;
-  ties += o.ties;
-  edges += o.edges;
-  unexplained += o.unexplained;
-  return *this;
-}
-
 bool caseWithinTolerance(const std::optional<core::DepthInterval>& a,
                          const std::optional<core::DepthInterval>& b, int deviceCase,
                          std::uint32_t tolerance) {

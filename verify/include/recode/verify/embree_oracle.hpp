@@ -57,7 +57,15 @@ struct EmbreeCounts {
   long long edges = 0;
   long long unexplained = 0;
 
-  EmbreeCounts& operator+=(const EmbreeCounts& o);
+  // Inline so that totals can be kept in builds without Embree.
+  EmbreeCounts& operator+=(const EmbreeCounts& o) {
+    pixels += o.pixels;
+    agree += o.agree;
+    ties += o.ties;
+    edges += o.edges;
+    unexplained += o.unexplained;
+    return *this;
+  }
 };
 
 struct EmbreeReport {

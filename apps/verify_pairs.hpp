@@ -1,0 +1,35 @@
+#pragma once
+// The pairs `recode verify` checks: every pair of blocks of different objects of a scene, the
+// built-in pair, or the generated suite (verify::generatePairSuite).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "recode/core/frame.hpp"
+#include "recode/core/mesh.hpp"
+#include "recode/core/scene.hpp"
+
+namespace recode::app {
+
+struct PairToVerify {
+  std::string label;  // "A name / B name", or the suite's label
+  core::TriangleMesh a, b;
+  core::FrameSpec frame;
+};
+
+struct VerifyPairs {
+  std::string source;  // the scene file, "built-in pair" or "suite (N pairs, seed S, width W)"
+  std::vector<PairToVerify> pairs;
+};
+
+// Every pair of convex blocks (leaves) of two different objects, posed at `frame`, each pair
+// with its own frame from the scene's view over the two blocks' bounds (as `recode pair` frames
+// its pair).
+[[nodiscard]] VerifyPairs scenePairs(const core::Scene& scene,
+                                     const core::FrameOverrides& overrides, int frame = 0);
+
+// The generated suite; `overrides` may not be given (the suite sets its own frames).
+[[nodiscard]] VerifyPairs suitePairs(int count, unsigned seed, int width);
+
+}  // namespace recode::app

@@ -1,0 +1,155 @@
+#include "verify_report.hpp"
+
+#include <iomanip>
+#include <sstream>
+
+namespace recode::app {
+
+namespace {
+
+using nlohmann::ordered_json;
+
+std::string embreeLine(const verify::EmbreeCounts& c) {
+  std::ostringstream s;
+  s << c.pixels << " px: " << c.agree << " agree, " << c.ties << " depth ties, " << c.edges
+    << " edge samples, " << c.unexplained << " unexplained";
+  return s.str();
+}
+
+std::string glLine(const verify::GlParityCounts& c) {
+  std::ostringstream s;
+  s << c.pixels << " px: " << c.identical << " identical, " << c.depthTies << " depth ties, "
+    << c.unexplained << " unexplained";
+  return s.str();
+}
+
+bool worthShowing(const verify::PairVerification& p) {
+  return !p.passed() || (p.cgal && p.cgal->verdict == verify::VerdictCheck::ResolutionMiss);
+}
+
+void printPair(std::ostream& out, const verify::PairVerification& p) {
+  out << (p.passed() ? "  ok    " : "  FAIL  ") << p.label << ": RECODE "
+      << (p.result.collide ? "collide" : "apart") << " (" << p.result.interferingPixels << " px)\n";
+  if (p.embree) {
+    out << "        embree " << embreeLine(p.embree->counts) << '\n';
+    for (const verify::PixelDisagreement& d : p.embree->unexplained)
+      out << "          pixel (" << d.x << ", " << d.y << "): device case " << d.deviceCase
+          << ", oracle case " << d.oracleCase << '\n';
+  }
+  if (p.cgal)
+    out << "        cgal   " << (p.cgal->exactIntersect ? "intersect" : "apart") << ", "
+        << verify::toString(p.cgal->verdict) << ": " << p.cgal->reason << '\n';
+  if (p.gl) {
+    out << "        gl     " << glLine(p.gl->counts) << '\n';
+    for (const verify::GlDifference& d : p.gl->examples)
+      out << "          command " << d.command << " pixel (" << d.x << ", " << d.y << "): stencil "
+          << int{d.referenceStencil} << " vs " << int{d.candidateStencil} << ", depth "
+          << d.referenceDepth << " vs " << d.candidateDepth << '\n';
+  }
+}
+
+ordered_json embreeJson(const verify::EmbreeCounts& c) {
+  return {{"pixels", c.pixels},
+          {"agree", c.agree},
+          {"ties", c.ties},
+          {"edges", c.edges},
+          {"unexplained", c.unexplained}};
+}
+
+ordered_json glJson(const verify::GlParityCounts& c) {
+  return {{"pixels", c.pixels},
+          {"identical", c.identical},
+          {"depth_ties", c.depthTies},
+          {"unexplained", c.unexplained}};
+}
+
+ordered_json boxJson(const core::Aabb& box) {
+  if (box.isEmpty())
+    return nullptr;
+  return ordered_json::array(
+      {{box.min.x(), box.min.y(), box.min.z()}, {box.max.x(), box.max.y(), box.max.z()}});
+}
+
+ordered_json pairJson(const verify::PairVerification& p) {
+  ordered_json j;
+  j["label"] = p.label;
+  j["collide"] = p.result.collide;
+  j["interfering_pixels"] = p.result.interferingPixels;
+  if (p.embree)
+    j["embree"] = embreeJson(p.embree->counts);
+  if (p.cgal && p.exact) {
+    j["cgal"] = {{"intersect", p.exact->intersect},
+                 {"volume", p.exact->volume},
+                 {"box", boxJson(p.exact->box)},
+                 {"verdict", verify::toString(p.cgal->verdict)},
+                 {"contact_box_inside", p.cgal->contactBoxInside},
+                 {"reason", p.cgal->reason}};
+  }
+  if (p.gl)
+    j["gl"] = glJson(p.gl->counts);
+  j["passed"] = p.passed();
+  return j;
+}
+
+}  // namespace
+
+void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) {
+  const verify::VerificationTotals& t = run.totals;
+  out << "recode verify: " << run.source << "\n  " << t.pairs << " pairs, RECODE finds "
+      << t.recodeCollisions << " colliding\n";
+  bool listed = false;
+  for (const verify::PairVerification& p : run.pairs)
+    if (everyPair || worthShowing(p)) {
+      if (!listed)
+        out << (everyPair ? "pairs:\n" : "pairs worth a look (failures, resolution misses):\n");
+      listed = true;
+      printPair(out, p);
+    }
+  out << "totals:\n" << std::fixed << std::setprecision(2);
+  if (run.oracles.embree)
+    out << "  embree  " << embreeLine(t.embree) << "  (" << t.embreeRays << " rays, "
+        << t.embreeSeconds << " s)\n";
+  if (run.oracles.cgal)
+    out << "  cgal    " << t.cgal.pairs << " pairs: " << t.cgal.agree << " agree, "
+        << t.cgal.resolutionMisses << " resolution misses, " << t.cgal.disagree << " disagree  ("
+        << t.cgalSeconds << " s)\n";
+  if (run.oracles.gl)
+    out << "  gl      " << glLine(t.gl) << "  (" << t.glSeconds << " s)\n";
+  out << "verdict: "
+      << (t.passed() ? "VERIFIED"
+                     : "FAILED (" + std::to_string(t.failedPairs) +
+                           " pairs with unexplained "
+                           "differences)")
+      << '\n';
+}
+
+ordered_json verifyRunToJson(const VerifyRun& run) {
+  const verify::VerificationTotals& t = run.totals;
+  ordered_json j;
+  j["source"] = run.source;
+  j["pairs_checked"] = t.pairs;
+  j["recode_collisions"] = t.recodeCollisions;
+  ordered_json pairs = ordered_json::array();
+  for (const verify::PairVerification& p : run.pairs)
+    pairs.push_back(pairJson(p));
+  j["pairs"] = std::move(pairs);
+  if (run.oracles.embree) {
+    j["embree"] = embreeJson(t.embree);
+    j["embree"]["rays"] = t.embreeRays;
+    j["embree"]["seconds"] = t.embreeSeconds;
+  }
+  if (run.oracles.cgal)
+    j["cgal"] = {{"pairs", t.cgal.pairs},
+                 {"agree", t.cgal.agree},
+                 {"resolution_misses", t.cgal.resolutionMisses},
+                 {"disagree", t.cgal.disagree},
+                 {"seconds", t.cgalSeconds}};
+  if (run.oracles.gl) {
+    j["gl"] = glJson(t.gl);
+    j["gl"]["seconds"] = t.glSeconds;
+  }
+  j["passed"] = t.passed();
+  return j;
+}
+
+}  // namespace recode::app

@@ -1,0 +1,154 @@
+#include "recode/verify/verify_pair.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "recode/raster/cpu_device.hpp"
+
+namespace recode::verify {
+
+namespace {
+
+[[maybe_unused]] double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string packageOf(Oracle oracle) {
+  switch (oracle) {
+    case Oracle::Embree:
+      return "Embree (-DRECODE_WITH_EMBREE=ON, package libembree-dev)";
+    case Oracle::Cgal:
+      return "CGAL (-DRECODE_WITH_CGAL=ON, package libcgal-dev)";
+    case Oracle::Gl:
+      return "OSMesa (-DRECODE_WITH_OSMESA=ON, package libosmesa6-dev)";
+  }
+  return "?";
+}
+
+void requireBuilt(Oracle oracle) {
+  if (!oracleBuilt(oracle))
+    throw std::invalid_argument("the " + std::string(toString(oracle)) +
+                                " oracle is not in this build: configure with " +
+                                packageOf(oracle));
+}
+
+}  // namespace
+
+std::string_view toString(Oracle oracle) {
+  switch (oracle) {
+    case Oracle::Embree:
+      return "embree";
+    case Oracle::Cgal:
+      return "cgal";
+    case Oracle::Gl:
+      return "gl";
+  }
+  return "unknown";
+}
+
+bool oracleBuilt(Oracle oracle) {
+  switch (oracle) {
+    case Oracle::Embree:
+#ifdef RECODE_HAVE_EMBREE
+      return true;
+#else
+      return false;
+#endif
+    case Oracle::Cgal:
+#ifdef RECODE_HAVE_CGAL
+      return true;
+#else
+      return false;
+#endif
+    case Oracle::Gl:
+#ifdef RECODE_HAVE_OSMESA
+      return true;
+#else
+      return false;
+#endif
+  }
+  return false;
+}
+
+bool PairVerification::passed() const {
+  if (embree && embree->counts.unexplained != 0)
+    return false;
+  if (cgal && cgal->verdict == VerdictCheck::Disagree)
+    return false;
+  if (gl && gl->counts.unexplained != 0)
+    return false;
+  return true;
+}
+
+void VerificationTotals::add(const PairVerification& pair) {
+  ++pairs;
+  failedPairs += pair.passed() ? 0 : 1;
+  recodeCollisions += pair.result.collide ? 1 : 0;
+  if (pair.embree) {
+    embree += pair.embree->counts;
+    embreeRays += pair.embree->rays;
+  }
+  if (pair.cgal)
+    cgal.add(*pair.cgal);
+  if (pair.gl)
+    gl += pair.gl->counts;
+  embreeSeconds += pair.embreeSeconds;
+  cgalSeconds += pair.cgalSeconds;
+  glSeconds += pair.glSeconds;
+}
+
+struct PairVerifier::State {
+#ifdef RECODE_HAVE_EMBREE
+  std::optional<EmbreeOracle> embree;
+#endif
+};
+
+PairVerifier::PairVerifier(const OracleSelection& selection)
+    : selection_(selection), state_(std::make_unique<State>()) {
+  if (selection_.embree)
+    requireBuilt(Oracle::Embree);
+  if (selection_.cgal)
+    requireBuilt(Oracle::Cgal);
+  if (selection_.gl)
+    requireBuilt(Oracle::Gl);
+#ifdef RECODE_HAVE_EMBREE
+  if (selection_.embree)
+    state_->embree.emplace();
+#endif
+}
+
+PairVerifier::~PairVerifier() = default;
+
+PairVerification PairVerifier::verify(std::string label, const core::TriangleMesh& a,
+                                      const core::TriangleMesh& b,
+                                      const core::PairRequest& request) {
+  PairVerification out;
+  out.label = std::move(label);
+  raster::CpuDevice device(request.frame.width, request.frame.height);
+  out.result = core::collidePair(device, a, b, request);
+#ifdef RECODE_HAVE_EMBREE
+  if (state_->embree) {
+    const auto start = std::chrono::steady_clock::now();
+    out.embree = state_->embree->check(request.frame, a, b, out.result);
+    out.embreeSeconds = secondsSince(start);
+  }
+#endif
+#ifdef RECODE_HAVE_CGAL
+  if (selection_.cgal) {
+    const auto start = std::chrono::steady_clock::now();
+    out.exact = exactIntersection(a, b);
+    out.cgal = judgePair(*out.exact, request.frame, a, b, out.result);
+    out.cgalSeconds = secondsSince(start);
+  }
+#endif
+#ifdef RECODE_HAVE_OSMESA
+  if (selection_.gl) {
+    const auto start = std::chrono::steady_clock::now();
+    out.gl = compareOnGl(a, b, request);
+    out.glSeconds = secondsSince(start);
+  }
+#endif
+  return out;
+}
+
+}  // namespace recode::verify
