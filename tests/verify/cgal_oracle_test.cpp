@@ -334,12 +334,18 @@ TEST_CASE("cgal judge: faces a hair apart along the view axis are touching withi
   CHECK(k.verdict == verify::VerdictCheck::Disagree);
 }
 
-TEST_CASE("cgal judge: an unusable depth range is refused") {
+TEST_CASE("cgal judge: an unusable depth range or a broken mesh is refused") {
   const auto a = boxBetween({0, 0, 0}, {1, 1, 1});
   const core::PairResult empty;  // depthMin == depthMax == 0
   CHECK_THROWS_AS(
       verify::judgePair(verify::exactIntersection(a, a), frameZ(0, 0, 1, 1, 8, 8), a, a, empty),
       std::invalid_argument);
+  auto broken = a;
+  broken.triangles[0][1] = 99;
+  const core::FrameSpec frame = frameZ(0, 0, 1, 1, 8, 8);
+  CHECK_THROWS_WITH(
+      verify::judgePair(verify::exactIntersection(a, a), frame, a, broken, runRecode(a, a, frame)),
+      Catch::Contains("block B") && Catch::Contains("vertex 99"));
 }
 
 TEST_CASE("cgal oracle: the generated pair suite has no disagreement") {

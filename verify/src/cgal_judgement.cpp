@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "recode/core/pair_cases.hpp"
 #include "recode/raster/state.hpp"
@@ -60,20 +61,26 @@ std::string describe(const Eigen::Vector3d& p) {
 // seen interfere; none means a resolution miss.
 void judgeMiss(const ExactIntersection& exact, const JudgeFrame& f, const core::TriangleMesh& a,
                const core::TriangleMesh& b, CgalJudgement& j) {
+  // Pixels whose centres lie in the exact box's projection, one more on every side against
+  // rounding (the test below does not depend on the box: the box only limits the search). An
+  // empty or non-finite box (an inconsistent ExactIntersection) searches the whole frame.
+  const bool usable =
+      !exact.box.isEmpty() && exact.box.min.allFinite() && exact.box.max.allFinite();
   const PlaneBox box = toPlane(f.view, exact.box);
   const core::ViewWindow& w = f.view.window();
-  // Pixels whose centres lie in the box's projection, one more on every side against rounding
-  // (the test below does not depend on the box: the box only limits the search).
-  const int i0 =
-      std::max(0, static_cast<int>(std::ceil((box.min.x() - w.umin) / f.pixelU - 0.5)) - 1);
-  const int i1 =
-      std::min(f.view.width() - 1,
-               static_cast<int>(std::floor((box.max.x() - w.umin) / f.pixelU - 0.5)) + 1);
-  const int j0 =
-      std::max(0, static_cast<int>(std::ceil((box.min.y() - w.vmin) / f.pixelV - 0.5)) - 1);
+  const auto first = [](double lo, double origin, double size, int count) {
+    const double i = std::ceil((lo - origin) / size - 0.5) - 1.0;
+    return static_cast<int>(std::clamp(i, 0.0, static_cast<double>(count)));
+  };
+  const auto last = [](double hi, double origin, double size, int count) {
+    const double i = std::floor((hi - origin) / size - 0.5) + 1.0;
+    return static_cast<int>(std::clamp(i, -1.0, static_cast<double>(count - 1)));
+  };
+  const int i0 = usable ? first(box.min.x(), w.umin, f.pixelU, f.view.width()) : 0;
+  const int i1 = usable ? last(box.max.x(), w.umin, f.pixelU, f.view.width()) : f.view.width() - 1;
+  const int j0 = usable ? first(box.min.y(), w.vmin, f.pixelV, f.view.height()) : 0;
   const int j1 =
-      std::min(f.view.height() - 1,
-               static_cast<int>(std::floor((box.max.y() - w.vmin) / f.pixelV - 0.5)) + 1);
+      usable ? last(box.max.y(), w.vmin, f.pixelV, f.view.height()) : f.view.height() - 1;
 
   double best = -std::numeric_limits<double>::infinity();
   long long robustPixels = 0;  // pixels whose whole square lies over both blocks
@@ -291,6 +298,15 @@ void judgeContactBox(const ExactIntersection& exact, const JudgeFrame& f,
   j.reason = s.str();
 }
 
+void requireIndicesInRange(const core::TriangleMesh& mesh, const char* name) {
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (const core::VertexIndex index : mesh.triangles[t])
+      if (index >= mesh.vertices.size())
+        throw std::invalid_argument(std::string("judgePair: ") + name + ": triangle " +
+                                    std::to_string(t) + " indexes vertex " + std::to_string(index) +
+                                    " of " + std::to_string(mesh.vertices.size()));
+}
+
 }  // namespace
 
 std::string_view toString(VerdictCheck check) {
@@ -308,6 +324,8 @@ std::string_view toString(VerdictCheck check) {
 CgalJudgement judgePair(const ExactIntersection& exact, const core::FrameSpec& frame,
                         const core::TriangleMesh& worldA, const core::TriangleMesh& worldB,
                         const core::PairResult& result) {
+  requireIndicesInRange(worldA, "block A");
+  requireIndicesInRange(worldB, "block B");
   const JudgeFrame f(frame, result);  // throws for an unusable frame or depth range
   CgalJudgement j;
   j.exactIntersect = exact.intersect;

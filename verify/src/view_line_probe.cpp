@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 
 namespace recode::verify {
 
@@ -50,6 +52,11 @@ ViewLineProbe::ViewLineProbe(const core::TriangleMesh& mesh, const core::OrthoVi
   for (const Eigen::Vector3d& p : mesh.vertices)
     plane.push_back(view.toPlane(p));
   for (const core::Triangle& t : mesh.triangles) {
+    for (const core::VertexIndex index : t)
+      if (index >= plane.size())
+        throw std::invalid_argument("a triangle indexes vertex " + std::to_string(index) +
+                                    " of a mesh with " + std::to_string(plane.size()) +
+                                    " vertices");
     PlaneTriangle pt{{plane[t[0]], plane[t[1]], plane[t[2]]}, 0, 0, 0, 0};
     pt.umin = std::min({pt.p[0].x(), pt.p[1].x(), pt.p[2].x()});
     pt.umax = std::max({pt.p[0].x(), pt.p[1].x(), pt.p[2].x()});

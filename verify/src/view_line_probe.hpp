@@ -4,6 +4,7 @@
 // is the coordinate along the view axis (larger d is nearer the viewer). Internal to verify.
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -21,7 +22,8 @@ struct AxisRange {
 class ViewLineProbe {
  public:
   // The block's triangles whose projections meet the image-plane rectangle [u0, u1] x [v0, v1]:
-  // later queries must stay inside it.
+  // later queries must stay inside it. Throws std::invalid_argument for a vertex index out of
+  // range.
   ViewLineProbe(const core::TriangleMesh& mesh, const core::OrthoView& view, double u0, double v0,
                 double u1, double v1);
 
