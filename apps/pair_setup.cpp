@@ -16,6 +16,13 @@ PairSetup pairSetupFromScene(const core::Scene& scene, const core::FrameOverride
   s.source = scene.sourceName;
   s.nameA = scene.objects[0].name;
   s.nameB = scene.objects[1].name;
+  for (int i = 0; i < 2; ++i) {
+    const core::SceneObject& o = scene.objects[static_cast<std::size_t>(i)];
+    if (!o.isLeaf())
+      throw core::SceneError(scene.sourceName, o.jsonPath,
+                             "a pair needs two convex blocks, and this object has children "
+                             "(recode run handles objects made of several blocks)");
+  }
   s.a = scene.objects[0].worldMesh();
   s.b = scene.objects[1].worldMesh();
   core::Aabb bounds = core::boundingBox(s.a);

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <fstream>
 #include <initializer_list>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include <string_view>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -75,16 +77,22 @@ class SceneReader {
   SceneReader(const std::string& sourceName, const fs::path& baseDir)
       : fields_(sourceName), baseDir_(baseDir) {}
 
-  Scene scene(const json& doc) const {
+  Scene scene(const json& doc) {
     Scene scene;
     scene.sourceName = fields_.sourceName();
     fields_.requireObject(doc, "");
-    fields_.requireOnlyKeys(doc, "", {"view", "objects", "frames"});
+    fields_.requireOnlyKeys(doc, "", {"view", "objects", "frames", "parts"});
     if (doc.contains("view"))
       scene.view = view(doc.at("view"), "view");
     if (doc.contains("frames"))
       scene.frames =
           static_cast<int>(fields_.integerInRange(doc.at("frames"), "frames", 1, INT_MAX));
+    if (doc.contains("parts")) {
+      parts_ = &doc.at("parts");
+      if (!parts_->is_object())
+        fields_.fail("parts",
+                     "expected an object of named parts, got " + describeJsonValue(*parts_));
+    }
     if (!doc.contains("objects"))
       fields_.fail("", "missing key \"objects\" (the list of objects)");
     const json& objects = doc.at("objects");
@@ -92,8 +100,16 @@ class SceneReader {
       fields_.fail("objects", "expected an array of objects, got " + describeJsonValue(objects));
     if (objects.empty())
       fields_.fail("objects", "expected at least one object, got an empty array");
-    for (std::size_t i = 0; i < objects.size(); ++i)
-      scene.objects.push_back(object(objects[i], i));
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      scene.objects.push_back(
+          node(objects[i], childPath("objects", i), "object " + std::to_string(i), 0));
+    }
+    // Parts nobody uses are still checked: a typo in one should not wait for its first use.
+    if (parts_) {
+      for (const auto& [name, value] : parts_->items())
+        if (!partCache_.contains(name))
+          (void)part(name, childPath("parts", name), 0);
+    }
     return scene;
   }
 
@@ -149,35 +165,76 @@ class SceneReader {
     return spec;
   }
 
-  SceneObject object(const json& v, std::size_t index) const {
-    const std::string path = childPath("objects", index);
+  // A node of an object (a root or a child): geometry or children or a part, placement and
+  // motion. `depth` counts the levels above it.
+  SceneObject node(const json& v, const std::string& path, const std::string& defaultName,
+                   int depth) {
     fields_.requireObject(v, path);
-    fields_.requireOnlyKeys(
-        v, path, {"name", "mesh", "shape", "children", "position", "rotation_deg", "motion"});
-    if (v.contains("children")) {
-      fields_.fail(
-          childPath(path, "children"),
-          "hierarchical objects (\"children\") are not supported yet; give a \"mesh\" or a "
-          "\"shape\"");
+    fields_.requireOnlyKeys(v, path,
+                            {"name", "mesh", "shape", "children", "part", "position",
+                             "rotation_deg", "motion", "keyframes", "joint"});
+    if (depth > kMaxDepth)
+      fields_.fail(path, "objects nested more than " + std::to_string(kMaxDepth) + " levels deep");
+    std::string given;
+    int count = 0;
+    for (const char* key : {"mesh", "shape", "children", "part"}) {
+      if (!v.contains(key))
+        continue;
+      given += std::string(count++ ? " and \"" : "\"") + key + "\"";
     }
+    if (count > 1) {
+      fields_.fail(
+          path, "give exactly one of \"mesh\", \"shape\", \"children\" and \"part\", got " + given);
+    }
+    if (count == 0) {
+      fields_.fail(path,
+                   "missing \"mesh\", \"shape\", \"children\" or \"part\" (give exactly one)");
+    }
+
     SceneObject object;
+    if (v.contains("part")) {
+      const std::string p = childPath(path, "part");
+      const std::string name = fields_.nonEmptyString(v.at("part"), p);
+      if (!parts_ || !parts_->contains(name)) {
+        fields_.fail(p, "no part named " + jsonText(json(name)) + " (parts: " + partNames() + ")");
+      }
+      object = part(name, p, depth);
+    } else {
+      geometry(v, path, depth, object);
+    }
     object.jsonPath = path;
     object.name = v.contains("name") ? fields_.nonEmptyString(v.at("name"), childPath(path, "name"))
-                                     : "object " + std::to_string(index);
-    if (v.contains("position"))
-      object.position = fields_.vector3(v.at("position"), childPath(path, "position"));
-    if (v.contains("rotation_deg"))
-      object.rotationDeg = fields_.vector3(v.at("rotation_deg"), childPath(path, "rotation_deg"));
-    if (v.contains("motion"))
-      object.motion = motion(v.at("motion"), childPath(path, "motion"));
+                                     : defaultName;
+    placement(v, path, object);
+    return object;
+  }
 
-    const bool hasMesh = v.contains("mesh");
-    const bool hasShape = v.contains("shape");
-    if (hasMesh && hasShape)
-      fields_.fail(path, "give exactly one of \"mesh\" and \"shape\", not both");
-    if (!hasMesh && !hasShape)
-      fields_.fail(path, "missing \"mesh\" or \"shape\" (give exactly one)");
-    if (hasMesh) {
+  // The mesh, shape or children of a node (or of a part).
+  void geometry(const json& v, const std::string& path, int depth, SceneObject& object) {
+    if (v.contains("children")) {
+      const std::string p = childPath(path, "children");
+      const json& list = v.at("children");
+      if (!list.is_array())
+        fields_.fail(p, "expected an array of objects, got " + describeJsonValue(list));
+      if (list.empty())
+        fields_.fail(p, "expected at least one child, got an empty array");
+      std::map<std::string, std::size_t> seen;
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string cp = childPath(p, i);
+        object.children.push_back(node(list[i], cp, "child " + std::to_string(i), depth + 1));
+        const std::string& name = object.children.back().name;
+        const auto [it, added] = seen.emplace(name, i);
+        if (!added) {
+          fields_.fail(cp, "duplicate name " + jsonText(json(name)) + " (also " +
+                               childPath(p, it->second) +
+                               "); children of one object need distinct names, so that every "
+                               "block has its own path");
+        }
+      }
+      return;
+    }
+    countBlocks(1, path);
+    if (v.contains("mesh")) {
       const std::string p = childPath(path, "mesh");
       const fs::path file = baseDir_ / fs::path(fields_.nonEmptyString(v.at("mesh"), p));
       try {
@@ -196,12 +253,78 @@ class SceneReader {
         fields_.fail(p, e.what());
       }
     }
-    return object;
   }
 
-  Motion motion(const json& v, const std::string& path) const {
+  // A part's geometry, read once and copied for every use. `usePath` is where it is used,
+  // for the message when a part uses itself.
+  SceneObject part(const std::string& name, const std::string& usePath, int depth) {
+    if (const auto done = partCache_.find(name); done != partCache_.end()) {
+      countBlocks(partBlocks_.at(name), usePath);
+      return done->second;
+    }
+    const auto open = std::find(expanding_.begin(), expanding_.end(), name);
+    if (open != expanding_.end()) {
+      std::string cycle;
+      for (auto it = open; it != expanding_.end(); ++it)
+        cycle += *it + " -> ";
+      fields_.fail(usePath, "part " + jsonText(json(name)) + " contains itself (" + cycle + name +
+                                "); parts must not form a cycle");
+    }
+    const std::string path = childPath("parts", name);
+    const json& v = parts_->at(name);
     fields_.requireObject(v, path);
-    fields_.requireOnlyKeys(v, path, {"velocity", "angular_velocity_deg"});
+    fields_.requireOnlyKeys(v, path, {"mesh", "shape", "children"},
+                            " for a part (a part is geometry only; place it where it is used)");
+    const int given = static_cast<int>(v.contains("mesh")) + static_cast<int>(v.contains("shape")) +
+                      static_cast<int>(v.contains("children"));
+    if (given != 1)
+      fields_.fail(path, "give exactly one of \"mesh\", \"shape\" and \"children\"");
+    expanding_.push_back(name);
+    const long long before = blocks_;
+    SceneObject geometryOnly;
+    geometry(v, path, depth, geometryOnly);
+    expanding_.pop_back();
+    partCache_.emplace(name, geometryOnly);
+    partBlocks_.emplace(name, blocks_ - before);
+    return geometryOnly;
+  }
+
+  void countBlocks(long long more, const std::string& path) {
+    blocks_ += more;
+    if (blocks_ > kMaxBlocks) {
+      fields_.fail(path, "more than " + std::to_string(kMaxBlocks) +
+                             " blocks in the scene (parts used inside parts multiply)");
+    }
+  }
+
+  std::string partNames() const {
+    std::string names;
+    if (parts_) {
+      for (const auto& [name, value] : parts_->items())
+        names += (names.empty() ? "" : ", ") + name;
+    }
+    return names.empty() ? "none defined" : names;
+  }
+
+  // position, rotation_deg, motion, keyframes, joint.
+  void placement(const json& v, const std::string& path, SceneObject& object) const {
+    if (v.contains("position"))
+      object.position = fields_.vector3(v.at("position"), childPath(path, "position"));
+    if (v.contains("rotation_deg"))
+      object.rotationDeg = fields_.vector3(v.at("rotation_deg"), childPath(path, "rotation_deg"));
+    if (v.contains("motion") && v.contains("keyframes"))
+      fields_.fail(path, "give at most one of \"motion\" and \"keyframes\"");
+    if (v.contains("motion"))
+      object.motion = motion(v.at("motion"), childPath(path, "motion"), object.position);
+    if (v.contains("keyframes"))
+      object.keyframes = keyframes(v.at("keyframes"), childPath(path, "keyframes"), object);
+    if (v.contains("joint"))
+      object.joint = joint(v.at("joint"), childPath(path, "joint"));
+  }
+
+  Motion motion(const json& v, const std::string& path, const Eigen::Vector3d& position) const {
+    fields_.requireObject(v, path);
+    fields_.requireOnlyKeys(v, path, {"velocity", "angular_velocity_deg", "bounce_within"});
     Motion m;
     if (v.contains("velocity"))
       m.velocity = fields_.vector3(v.at("velocity"), childPath(path, "velocity"));
@@ -209,7 +332,95 @@ class SceneReader {
       m.angularVelocityDeg =
           fields_.vector3(v.at("angular_velocity_deg"), childPath(path, "angular_velocity_deg"));
     }
+    if (v.contains("bounce_within")) {
+      const std::string p = childPath(path, "bounce_within");
+      const json& box = fields_.arrayOfSize(v.at("bounce_within"), p, 2,
+                                            "2 corners [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
+      Aabb bounds;
+      bounds.min = fields_.vector3(box[0], childPath(p, 0));
+      bounds.max = fields_.vector3(box[1], childPath(p, 1));
+      for (int i = 0; i < 3; ++i) {
+        if (!(bounds.min[i] <= bounds.max[i])) {
+          fields_.fail(p, "the first corner must not exceed the second (" +
+                              jsonText(box[0][static_cast<std::size_t>(i)]) + " > " +
+                              jsonText(box[1][static_cast<std::size_t>(i)]) + " along " + "xyz"[i] +
+                              ")");
+        }
+        if (!(bounds.min[i] <= position[i] && position[i] <= bounds.max[i])) {
+          fields_.fail(p, "the object's position " + jsonText(json(position[i])) + " along " +
+                              "xyz"[i] + " lies outside the box");
+        }
+      }
+      m.bounceWithin = bounds;
+    }
     return m;
+  }
+
+  std::vector<Keyframe> keyframes(const json& v, const std::string& path,
+                                  const SceneObject& object) const {
+    if (!v.is_array())
+      fields_.fail(path, "expected an array of keyframes, got " + describeJsonValue(v));
+    if (v.empty())
+      fields_.fail(path, "expected at least one keyframe, got an empty array");
+    std::vector<Keyframe> keys;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::string p = childPath(path, i);
+      const json& k = v[i];
+      fields_.requireObject(k, p);
+      fields_.requireOnlyKeys(k, p, {"frame", "position", "rotation_deg"});
+      if (!k.contains("frame"))
+        fields_.fail(p, "missing key \"frame\"");
+      Keyframe key;
+      key.frame = static_cast<int>(
+          fields_.integerInRange(k.at("frame"), childPath(p, "frame"), 0, INT_MAX));
+      if (!keys.empty() && key.frame <= keys.back().frame) {
+        fields_.fail(childPath(p, "frame"), "keyframes must be in increasing frame order; got " +
+                                                std::to_string(key.frame) + " after " +
+                                                std::to_string(keys.back().frame));
+      }
+      key.position = k.contains("position")
+                         ? fields_.vector3(k.at("position"), childPath(p, "position"))
+                         : object.position;
+      key.rotationDeg = k.contains("rotation_deg")
+                            ? fields_.vector3(k.at("rotation_deg"), childPath(p, "rotation_deg"))
+                            : object.rotationDeg;
+      keys.push_back(key);
+    }
+    return keys;
+  }
+
+  Joint joint(const json& v, const std::string& path) const {
+    fields_.requireObject(v, path);
+    fields_.requireOnlyKeys(v, path, {"axis", "angle_deg", "rate_deg", "min_deg", "max_deg"});
+    if (!v.contains("axis"))
+      fields_.fail(path, "missing key \"axis\" (the hinge direction [x, y, z])");
+    Joint j;
+    const std::string axisPath = childPath(path, "axis");
+    const Eigen::Vector3d axis = fields_.vector3(v.at("axis"), axisPath);
+    const double length = axis.norm();
+    if (!(length > 0.0) || !std::isfinite(length))
+      fields_.fail(axisPath, "expected a non-zero direction, got " + jsonText(v.at("axis")));
+    j.axis = axis / length;
+    if (v.contains("angle_deg"))
+      j.angleDeg = fields_.finiteNumber(v.at("angle_deg"), childPath(path, "angle_deg"));
+    if (v.contains("rate_deg"))
+      j.rateDeg = fields_.finiteNumber(v.at("rate_deg"), childPath(path, "rate_deg"));
+    if (v.contains("min_deg"))
+      j.minDeg = fields_.finiteNumber(v.at("min_deg"), childPath(path, "min_deg"));
+    if (v.contains("max_deg"))
+      j.maxDeg = fields_.finiteNumber(v.at("max_deg"), childPath(path, "max_deg"));
+    if (j.minDeg && j.maxDeg && *j.minDeg > *j.maxDeg) {
+      fields_.fail(path, "min_deg (" + jsonText(v.at("min_deg")) + ") must not exceed max_deg (" +
+                             jsonText(v.at("max_deg")) + ")");
+    }
+    if ((j.minDeg && j.angleDeg < *j.minDeg) || (j.maxDeg && j.angleDeg > *j.maxDeg)) {
+      fields_.fail(childPath(path, "angle_deg"),
+                   "the starting angle " + jsonText(json(j.angleDeg)) + " lies outside [" +
+                       (j.minDeg ? jsonText(json(*j.minDeg)) : std::string("-inf")) + ", " +
+                       (j.maxDeg ? jsonText(json(*j.maxDeg)) : std::string("inf")) +
+                       "] (min_deg, max_deg)");
+    }
+    return j;
   }
 
   // The shape's mesh; *typeName is set to its "type".
@@ -311,8 +522,16 @@ class SceneReader {
     }
   }
 
+  static constexpr int kMaxDepth = 32;
+  static constexpr long long kMaxBlocks = 1000000;
+
   JsonFieldReader fields_;
   fs::path baseDir_;
+  const json* parts_ = nullptr;
+  std::map<std::string, SceneObject> partCache_;
+  std::vector<std::string> expanding_;           // parts being read, outermost first
+  std::map<std::string, long long> partBlocks_;  // blocks in one use of each part
+  long long blocks_ = 0;                         // blocks made so far (each use of a part counts)
 };
 
 }  // namespace

@@ -327,7 +327,7 @@ TEST_CASE("scene errors: duplicate keys", "[scene][errors]") {
 TEST_CASE("scene errors: unknown keys", "[scene][errors]") {
   const std::string box = R"("shape": {"type": "box", "size": [1, 1, 1]})";
   CHECK_THAT(errorOf(R"({"objects": [{)" + box + R"(}], "camera": {}})"),
-             StartsWith("s.json: camera: unknown key (allowed: view, objects, frames)"));
+             StartsWith("s.json: camera: unknown key (allowed: view, objects, frames, parts)"));
   CHECK_THAT(errorOf(R"({"view": {"axis": "z", "zoom": 2}, "objects": [{)" + box + "}]}"),
              StartsWith("s.json: view.zoom: unknown key"));
   CHECK_THAT(errorOf(oneObject(box + R"(, "color": "red")")),
@@ -436,14 +436,15 @@ TEST_CASE("scene errors: the objects list", "[scene][errors]") {
              StartsWith("s.json: objects: expected at least one object, got an empty array"));
   CHECK_THAT(errorOf(oneObject(
                  R"("mesh": "meshes/octahedron.obj", "shape": {"type": "sphere", "radius": 1})")),
-             StartsWith("s.json: objects[0]: give exactly one of \"mesh\" and \"shape\", not "
-                        "both"));
+             StartsWith("s.json: objects[0]: give exactly one of \"mesh\", \"shape\", "
+                        "\"children\" and \"part\", got \"mesh\" and \"shape\""));
   CHECK_THAT(errorOf(oneObject(R"("name": "nothing", "position": [0, 0, 0])")),
-             StartsWith("s.json: objects[0]: missing \"mesh\" or \"shape\""));
+             StartsWith("s.json: objects[0]: missing \"mesh\", \"shape\", \"children\" or "
+                        "\"part\""));
   CHECK_THAT(errorOf(R"({"objects": [{"mesh": "meshes/octahedron.obj"},
                                      {"name": "group", "children": []}]})"),
-             StartsWith("s.json: objects[1].children: hierarchical objects (\"children\") are not "
-                        "supported yet; give a \"mesh\" or a \"shape\""));
+             StartsWith("s.json: objects[1].children: expected at least one child, got an empty "
+                        "array"));
   CHECK_THAT(errorOf(oneObject(R"("name": "", "mesh": "meshes/octahedron.obj")")),
              StartsWith("s.json: objects[0].name: expected a non-empty string"));
 }
