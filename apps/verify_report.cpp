@@ -83,6 +83,7 @@ ordered_json pairJson(const verify::PairVerification& p) {
                  {"box", boxJson(p.exact->box)},
                  {"verdict", verify::toString(p.cgal->verdict)},
                  {"contact_box_inside", p.cgal->contactBoxInside},
+                 {"contact_box_explained", p.cgal->contactBoxExplained},
                  {"reason", p.cgal->reason}};
   }
   if (p.gl)

@@ -13,14 +13,14 @@ namespace {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string packageOf(Oracle oracle) {
+std::string howToBuild(Oracle oracle) {
   switch (oracle) {
     case Oracle::Embree:
-      return "Embree (-DRECODE_WITH_EMBREE=ON, package libembree-dev)";
+      return "install libembree-dev and configure with -DRECODE_WITH_EMBREE=ON";
     case Oracle::Cgal:
-      return "CGAL (-DRECODE_WITH_CGAL=ON, package libcgal-dev)";
+      return "install libcgal-dev and configure with -DRECODE_WITH_CGAL=ON";
     case Oracle::Gl:
-      return "OSMesa (-DRECODE_WITH_OSMESA=ON, package libosmesa6-dev)";
+      return "install libosmesa6-dev and configure with -DRECODE_WITH_OSMESA=ON";
   }
   return "?";
 }
@@ -28,8 +28,7 @@ std::string packageOf(Oracle oracle) {
 void requireBuilt(Oracle oracle) {
   if (!oracleBuilt(oracle))
     throw std::invalid_argument("the " + std::string(toString(oracle)) +
-                                " oracle is not in this build: configure with " +
-                                packageOf(oracle));
+                                " oracle is not in this build: " + howToBuild(oracle));
 }
 
 }  // namespace
