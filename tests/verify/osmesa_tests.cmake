@@ -1,1 +1,7 @@
-# Owned by the osmesa oracle work; filled in by it.
+# The GL device on its own, and CPU/GL parity on the golden vectors and the generated suite.
+add_executable(recode_verify_gl_tests gl_device_test.cpp gl_parity_test.cpp)
+target_link_libraries(recode_verify_gl_tests PRIVATE recode_verify recode_warnings
+                                                     Catch2::Catch2WithMain)
+target_compile_definitions(recode_verify_gl_tests PRIVATE
+                           RECODE_DATA_DIR="${PROJECT_SOURCE_DIR}/data")
+catch_discover_tests(recode_verify_gl_tests)

@@ -72,12 +72,20 @@ GLenum glStencilOpOf(StencilOp op) {
                               std::to_string(static_cast<int>(op)));
 }
 
-// The smallest power of two >= n (n <= 16384).
-GLint powerOfTwoAtLeast(int n) {
-  GLint p = 1;
-  while (p < n)
-    p *= 2;
-  return p;
+// One axis of the viewport: the largest power of two GL allows, centred on the framebuffer
+// (the origin kept within GL_VIEWPORT_BOUNDS_RANGE).
+struct Viewport {
+  GLint origin = 0;
+  GLint size = 1;
+  [[nodiscard]] GLint centre() const { return origin + size / 2; }
+};
+
+Viewport viewportFor(int framebuffer, GLint maxSize, GLint lowestOrigin) {
+  Viewport v;
+  while (v.size * 2 <= maxSize)
+    v.size *= 2;
+  v.origin = std::max<GLint>(-(v.size - framebuffer) / 2, lowestOrigin);
+  return v;
 }
 
 // The same rules and messages as CpuDevice, so that both devices reject the same draws.
@@ -152,21 +160,25 @@ GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
   impl_->context = detail::makeOsMesaContext(width, height);
   impl_->use();
 
-  // Window coordinates must reach the rasterizer unchanged. The viewport transform is
-  // x_w = (x_ndc + 1) * P / 2; with P a power of two, x_ndc = x * (2 / P) - 1 and its inverse
-  // are exact in float for every x on the 1/256 grid within +-32768 (at most 24 significant
-  // bits), so the projection below maps x, y to themselves bit for bit. The viewport may be
-  // larger than the framebuffer; drawing is limited to the framebuffer anyway.
-  const GLint vpWidth = powerOfTwoAtLeast(width);
-  const GLint vpHeight = powerOfTwoAtLeast(height);
+  // Window coordinates must reach the rasterizer unchanged, and must not be clipped: llvmpipe
+  // clips x and y at the viewport's edges (no guard band), and a clipped triangle gets new,
+  // off-grid vertices. So the viewport is as large as GL allows, P x Q with P, Q powers of
+  // two, and placed around the framebuffer with a band of (P - W) / 2 pixels on either side
+  // (about 8,000 for small frames). Vertices inside it are drawn exactly as given: with c the
+  // viewport's centre, x_ndc = (x - c) * 2/P and x_w = x_ndc * P/2 + c are exact in float for
+  // every x on the 1/256 grid within +-32768 (x - c has at most 24 significant bits).
   GLint maxViewport[2] = {0, 0};
+  GLint bounds[2] = {0, 0};
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
-  if (vpWidth > maxViewport[0] || vpHeight > maxViewport[1]) {
-    throw std::runtime_error("GlDevice: viewport " + std::to_string(vpWidth) + "x" +
-                             std::to_string(vpHeight) + " exceeds GL_MAX_VIEWPORT_DIMS " +
-                             std::to_string(maxViewport[0]) + "x" + std::to_string(maxViewport[1]));
+  glGetIntegerv(GL_VIEWPORT_BOUNDS_RANGE, bounds);
+  const Viewport vx = viewportFor(width, maxViewport[0], bounds[0]);
+  const Viewport vy = viewportFor(height, maxViewport[1], bounds[0]);
+  if (vx.size < width || vy.size < height) {
+    throw std::runtime_error("GlDevice: GL_MAX_VIEWPORT_DIMS " + std::to_string(maxViewport[0]) +
+                             "x" + std::to_string(maxViewport[1]) + " is smaller than the " +
+                             std::to_string(width) + "x" + std::to_string(height) + " framebuffer");
   }
-  glViewport(0, 0, vpWidth, vpHeight);
+  glViewport(vx.origin, vy.origin, vx.size, vy.size);
 
   // Depth: with glClipControl's ZERO_TO_ONE convention window z = z_ndc, so a projection that
   // passes z through leaves it unchanged. (GL's default -1..1 convention needs z_ndc = 2z - 1,
@@ -178,21 +190,23 @@ GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
   clipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDepthRange(0.0, 1.0);
 
-  // Column-major: x_clip = x * 2/P - 1, y_clip = y * 2/Q - 1, z_clip = z, w = 1.
-  const GLfloat projection[16] = {2.0f / static_cast<GLfloat>(vpWidth),
+  // Column-major: x_clip = (x - cx) * 2/P, y_clip = (y - cy) * 2/Q, z_clip = z, w = 1.
+  const GLfloat sx = 2.0f / static_cast<GLfloat>(vx.size);
+  const GLfloat sy = 2.0f / static_cast<GLfloat>(vy.size);
+  const GLfloat projection[16] = {sx,
                                   0.0f,
                                   0.0f,
+                                  0.0f,  //
                                   0.0f,
+                                  sy,
                                   0.0f,
-                                  2.0f / static_cast<GLfloat>(vpHeight),
-                                  0.0f,
-                                  0.0f,
+                                  0.0f,  //
                                   0.0f,
                                   0.0f,
                                   1.0f,
-                                  0.0f,
-                                  -1.0f,
-                                  -1.0f,
+                                  0.0f,  //
+                                  -static_cast<GLfloat>(vx.centre()) * sx,
+                                  -static_cast<GLfloat>(vy.centre()) * sy,
                                   0.0f,
                                   1.0f};
   glMatrixMode(GL_PROJECTION);
