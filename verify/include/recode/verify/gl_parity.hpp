@@ -5,8 +5,9 @@
 // precision from the framebuffer origin, so its depth may differ from the contract's by a
 // couple of LSB on ordinary planes and by more on steep or sliver triangles far from the
 // origin; each fragment gets a tolerance from a float error bound of that arithmetic (never
-// below depthTolerance). A stencil (or larger depth) difference is accepted only at a pixel
-// where a depth test was decided within that tolerance. Details: docs/verification.md (GL).
+// below depthTolerance). A stencil difference is accepted only at a pixel where a depth test
+// was decided within that tolerance, and a depth difference only within what the tolerances of
+// the fragments there allow. Details: docs/verification.md (the GL parity section).
 
 #include <cstdint>
 #include <optional>
@@ -59,7 +60,8 @@ struct GlParityReport {
   // the tolerance (so it may have gone either way on GL); the depth is still within bounds.
   long long stencilTies = 0;
   // Largest depth difference among ties with equal stencil, and the largest ratio of such a
-  // difference to the tolerance it was held to (how close llvmpipe came to the bound).
+  // difference to the tolerance of the fragment that wrote it (how close llvmpipe came to the
+  // bound; pixels whose last write was a near decision are left out).
   std::uint32_t maxDepthDifference = 0;
   double maxToleranceFraction = 0.0;
   int comparisons = 0;                 // read-backs compared (initial state, draws, clears)
