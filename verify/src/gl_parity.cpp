@@ -162,6 +162,7 @@ class NearDecisionSink final : public raster::BlockSink {
                               static_cast<std::uint64_t>(tolerance) + r_.depthSlack[i];
       if (r_.near[i] != 0 || (stencilPasses && depthNear)) {
         r_.near[i] = 1;
+        r_.written[i] = 0;
         // Either side may or may not write: the candidate keeps d' (within s of d) or writes
         // q' (within t of q), the reference keeps d or writes q.
         if (state_.depthWrite) {
@@ -294,8 +295,9 @@ class Comparer {
           } else if (dd > options_.depthTolerance) {
             ++report.wideDepthTies;
           }
-          if (stencilEqual && state_.written[i] != 0) {
+          if (stencilEqual)
             report.maxDepthDifference = std::max(report.maxDepthDifference, dd);
+          if (stencilEqual && state_.written[i] != 0) {
             report.maxToleranceFraction =
                 std::max(report.maxToleranceFraction,
                          static_cast<double>(dd) / static_cast<double>(allowed));
