@@ -7,6 +7,7 @@
 #include "explain_command.hpp"
 #include "pair_command.hpp"
 #include "replay_command.hpp"
+#include "run_command.hpp"
 #include "verify_command.hpp"
 
 int main(int argc, char** argv) {
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   recode::app::addPairCommand(app, exitCode);
   recode::app::addReplayCommand(app, exitCode);
   recode::app::addExplainCommand(app, exitCode);
+  recode::app::addRunCommand(app, exitCode);
   recode::app::addVerifyCommand(app, exitCode);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,183 @@
+#include "run_command.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "pair_setup.hpp"
+#include "progress_bar.hpp"
+#include "recode/core/experiment_scenes.hpp"
+#include "recode/core/run_statistics.hpp"
+#include "recode/core/scene.hpp"
+#include "recode/core/simulation.hpp"
+#include "run_report.hpp"
+
+namespace recode::app {
+
+namespace {
+
+struct RunOptions {
+  std::string scene;
+  int frames = 0;  // 0: the scene's, else kDefaultRunFrames
+  bool stopOnContact = false;
+  bool json = false;
+  std::string csv;
+  bool list = false;
+  int trianglesPerBlock = 0;  // 0: the built-in's default
+  std::string writeScene;
+  std::string resolution;
+  double pixelSize = 0.0;
+  std::string morName = "min";
+  bool contact = true;
+  bool quiet = false;
+};
+
+std::string builtinNames() {
+  std::string names;
+  for (const core::BuiltinSceneInfo& b : core::builtinExperimentScenes())
+    names += (names.empty() ? "" : ", ") + std::string(b.name);
+  return names;
+}
+
+void printList() {
+  std::cout << "built-in scenes (recode run NAME; --triangles-per-block N to change the "
+               "tessellation):\n";
+  for (const core::BuiltinSceneInfo& b : core::builtinExperimentScenes())
+    std::cout << "  " << b.name << std::string(24 - std::min<std::size_t>(b.name.size(), 22), ' ')
+              << b.summary << " (default " << b.defaultTrianglesPerBlock
+              << " triangles per block)\n";
+}
+
+std::ofstream openForWriting(const std::string& file, const char* option) {
+  std::ofstream out(file, std::ios::binary);
+  if (!out)
+    throw std::runtime_error(std::string(option) + " " + file + ": cannot open for writing");
+  return out;
+}
+
+int runRunCommand(const RunOptions& o) {
+  if (o.list) {
+    printList();
+    return 0;
+  }
+  if (o.scene.empty())
+    throw std::invalid_argument("give a scene file or a built-in scene (" + builtinNames() +
+                                "), or --list");
+  const std::optional<int> triangles =
+      o.trianglesPerBlock > 0 ? std::optional<int>(o.trianglesPerBlock) : std::nullopt;
+  std::error_code ec;
+  const bool isFile = std::filesystem::exists(o.scene, ec);
+  const bool isBuiltin = !isFile && core::findBuiltinExperimentScene(o.scene) != nullptr;
+  if (!isFile && !isBuiltin) {
+    throw std::invalid_argument(
+        "'" + o.scene +
+        "' is neither a scene file nor a built-in scene (built-ins: " + builtinNames() + ")");
+  }
+  if (isFile && triangles)
+    throw std::invalid_argument("--triangles-per-block applies to built-in scenes only; '" +
+                                o.scene + "' is a file");
+  if (!o.writeScene.empty()) {
+    if (!isBuiltin)
+      throw std::invalid_argument("--write-scene writes a built-in scene; '" + o.scene +
+                                  "' is a file");
+    openForWriting(o.writeScene, "--write-scene") << core::builtinSceneJson(o.scene, triangles);
+    std::cerr << "recode run: wrote " << o.scene << " to " << o.writeScene << "\n";
+    return 0;
+  }
+  const core::Scene scene =
+      isFile ? core::loadScene(o.scene) : core::builtinExperimentScene(o.scene, triangles);
+
+  core::RunOptions options;
+  if (!o.resolution.empty())
+    options.overrides = parseResolution(o.resolution);
+  if (o.pixelSize > 0.0)
+    options.overrides.pixelSize = o.pixelSize;
+  options.mor = core::parseMorMode(o.morName).value();  // CLI11 checked the name
+  options.contact = o.contact;
+  core::Simulation sim(scene, options);
+
+  RunDescription run;
+  run.scene = o.scene;
+  run.source = isFile ? "file" : "built-in";
+  run.frames = o.frames > 0 ? o.frames : scene.frames.value_or(core::kDefaultRunFrames);
+  run.stopOnContact = o.stopOnContact;
+
+  std::optional<std::ofstream> csv;
+  if (!o.csv.empty()) {
+    csv = openForWriting(o.csv, "--csv");
+    *csv << csvHeader();
+  }
+  nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+  if (!o.json)
+    printRunHeader(std::cout, run, sim);
+  core::RunStatisticsAccumulator stats;
+  ProgressBar progress(run.frames);
+  for (int k = 0; k < run.frames; ++k) {
+    const core::FrameReport report = sim.runFrame(k);
+    stats.add(report);
+    if (csv)
+      *csv << csvRow(report);
+    if (o.json)
+      frames.push_back(frameToJson(sim, report));
+    else if (!o.quiet)
+      printFrame(std::cout, sim, report);
+    progress.update(k + 1);
+    if (o.stopOnContact && !report.contacts.empty())
+      break;
+  }
+  progress.finish();
+  const core::RunStatistics result = stats.result(static_cast<long long>(sim.triangleCount()));
+  if (o.json) {
+    nlohmann::ordered_json j = runToJson(run, sim);
+    j["frames"] = frames;
+    j["stats"] = statisticsToJson(result);
+    std::cout << j.dump(2) << '\n';
+  } else {
+    printStatistics(std::cout, result);
+  }
+  if (csv && !*csv)
+    throw std::runtime_error("--csv " + o.csv + ": error while writing");
+  return 0;
+}
+
+}  // namespace
+
+void addRunCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "run",
+      "Simulate a scene (a file or a built-in experiment) over frames: per frame the "
+      "interfering blocks and their contact regions, then the paper's Table 2 statistics");
+  cmd->add_option("scene", o->scene, "scene file (JSON, docs/scenes.md) or built-in scene name");
+  cmd->add_option("--frames", o->frames,
+                  "frames to run (default: the scene's \"frames\", else 100)")
+      ->check(CLI::Range(1, 1000000));
+  cmd->add_flag("--stop-on-contact", o->stopOnContact, "stop after the first frame with contact");
+  cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  cmd->add_option("--csv", o->csv, "write one CSV row of times and counters per frame to FILE");
+  cmd->add_flag("--list", o->list, "list the built-in scenes and exit");
+  cmd->add_option("--triangles-per-block", o->trianglesPerBlock,
+                  "tessellate every block of a built-in scene to about N triangles")
+      ->check(CLI::Range(core::kMinTrianglesPerBlock, core::kMaxTrianglesPerBlock));
+  cmd->add_option("--write-scene", o->writeScene,
+                  "write the built-in scene as a scene file (JSON) to FILE and exit");
+  auto* res = cmd->add_option("--resolution", o->resolution,
+                              "W or WxH pixels of the scene's screen, which sets the pixel "
+                              "size; overrides the scene");
+  cmd->add_option("--pixel-size", o->pixelSize, "pixel size in world units; overrides the scene")
+      ->check(CLI::PositiveNumber)
+      ->excludes(res);
+  cmd->add_option("--mor", o->morName, "MOR of every pair test: min, max or full")
+      ->check(CLI::IsMember({"min", "max", "full"}))
+      ->capture_default_str();
+  cmd->add_flag("!--no-contact", o->contact,
+                "skip the two depth passes that measure each contact region");
+  cmd->add_flag("--quiet", o->quiet, "print only the header and the statistics");
+  cmd->callback([o, &exitCode]() { exitCode = runRunCommand(*o); });
+}
+
+}  // namespace recode::app

@@ -1,0 +1,38 @@
+#pragma once
+// What `recode run` prints: the per-frame contacts and the run's statistics, as text, JSON
+// (docs/cli.md, "recode run") and CSV rows.
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include "recode/core/run_statistics.hpp"
+#include "recode/core/simulation.hpp"
+
+namespace recode::app {
+
+struct RunDescription {
+  std::string scene;   // the file or the built-in's name
+  std::string source;  // "file" or "built-in"
+  int frames = 0;      // frames asked for
+  bool stopOnContact = false;
+};
+
+// One frame: {"frame", "pairs": [...], counters, times}.
+[[nodiscard]] nlohmann::ordered_json frameToJson(const core::Simulation& sim,
+                                                 const core::FrameReport& frame);
+// The "stats" object.
+[[nodiscard]] nlohmann::ordered_json statisticsToJson(const core::RunStatistics& s);
+// The top-level keys besides "frames" and "stats".
+[[nodiscard]] nlohmann::ordered_json runToJson(const RunDescription& run,
+                                               const core::Simulation& sim);
+
+void printRunHeader(std::ostream& out, const RunDescription& run, const core::Simulation& sim);
+// The frame's contacts, one line each; nothing for a frame without contact.
+void printFrame(std::ostream& out, const core::Simulation& sim, const core::FrameReport& frame);
+void printStatistics(std::ostream& out, const core::RunStatistics& s);
+
+[[nodiscard]] std::string csvHeader();
+[[nodiscard]] std::string csvRow(const core::FrameReport& frame);
+
+}  // namespace recode::app
