@@ -103,8 +103,10 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(1, 4096))
       ->capture_default_str()
       ->needs(suite);
-  cmd->add_flag("--embree", o->embree, "per pixel: Embree ray casts (default with --cgal)");
-  cmd->add_flag("--cgal", o->cgal, "per pair: CGAL exact intersection (default with --embree)");
+  cmd->add_flag("--embree", o->embree,
+                "per pixel: Embree ray casts (naming no oracle runs --embree --cgal)");
+  cmd->add_flag("--cgal", o->cgal,
+                "per pair: CGAL exact intersection (naming no oracle runs --embree --cgal)");
   cmd->add_flag("--gl", o->gl, "replay every pair's commands on OSMesa and compare the buffers");
   cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   cmd->add_flag("--verbose", o->verbose, "list every pair, not only failures and misses");
