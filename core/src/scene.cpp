@@ -523,7 +523,7 @@ class SceneReader {
   }
 
   static constexpr int kMaxDepth = 32;
-  static constexpr long long kMaxBlocks = 1000000;
+  static constexpr long long kMaxBlocks = 100000;
 
   JsonFieldReader fields_;
   fs::path baseDir_;

@@ -125,8 +125,60 @@ double SceneRandom::uniform(double lo, double hi) {
   return tidy(lo + (hi - lo) * unit, 4);
 }
 
+namespace {
+
+// Arrays of numbers (and arrays of such arrays, like a box's two corners) go on one line;
+// objects and other arrays are indented two spaces per level.
+bool isFlat(const Json& value) {
+  if (!value.is_array())
+    return value.is_primitive();
+  for (const Json& element : value)
+    if (!(element.is_primitive() || (element.is_array() && isFlat(element))))
+      return false;
+  return true;
+}
+
+void write(std::string& out, const Json& value, int indent) {
+  if (value.is_array() && isFlat(value)) {
+    out += '[';
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      if (i > 0)
+        out += ", ";
+      write(out, value[i], indent);
+    }
+    out += ']';
+    return;
+  }
+  if (!value.is_structured()) {
+    out += value.dump();
+    return;
+  }
+  const std::string inner(static_cast<std::size_t>(indent + 2), ' ');
+  const bool object = value.is_object();
+  if (value.empty()) {
+    out += object ? "{}" : "[]";
+    return;
+  }
+  out += object ? "{\n" : "[\n";
+  bool first = true;
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (!first)
+      out += ",\n";
+    first = false;
+    out += inner;
+    if (object)
+      out += Json(it.key()).dump() + ": ";
+    write(out, it.value(), indent + 2);
+  }
+  out += '\n' + std::string(static_cast<std::size_t>(indent), ' ') + (object ? '}' : ']');
+}
+
+}  // namespace
+
 std::string sceneText(const Json& scene) {
-  return scene.dump(2) + "\n";
+  std::string out;
+  write(out, scene, 0);
+  return out + "\n";
 }
 
 }  // namespace recode::core::detail

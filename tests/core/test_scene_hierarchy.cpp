@@ -137,17 +137,17 @@ TEST_CASE("scene hierarchy errors: parts", "[scene][errors]") {
                          "objects": [{)" +
                      kBox + R"(}]})"),
              StartsWith("h.json: parts.a.shape.radius: expected a positive number, got -1"));
-  // Parts inside parts multiply: 10^7 blocks are refused before they are built.
+  // Parts inside parts multiply: 10^6 blocks are refused before they are all built.
   std::string parts = R"("p0": {)" + kBox + "}";
-  for (int i = 1; i <= 7; ++i) {
+  for (int i = 1; i <= 6; ++i) {
     std::string children;
     for (int c = 0; c < 10; ++c)
       children += std::string(c ? ", " : "") + R"({"name": "c)" + std::to_string(c) +
                   R"(", "part": "p)" + std::to_string(i - 1) + R"("})";
     parts += R"(, "p)" + std::to_string(i) + R"(": {"children": [)" + children + "]}";
   }
-  CHECK_THAT(errorOf(R"({"parts": {)" + parts + R"(}, "objects": [{"part": "p7"}]})"),
-             Catch::Matchers::Contains("more than 1000000 blocks in the scene"));
+  CHECK_THAT(errorOf(R"({"parts": {)" + parts + R"(}, "objects": [{"part": "p6"}]})"),
+             Catch::Matchers::Contains("more than 100000 blocks in the scene"));
 }
 
 TEST_CASE("scene hierarchy errors: children", "[scene][errors]") {
