@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/triangle_setup.hpp"
 
@@ -55,29 +56,10 @@ class FragmentWriter final : public BlockSink {
   std::uint8_t* stencil_;
 };
 
-void checkVertex(const WindowVertex& v, std::uint32_t index) {
-  const auto bad = [&](const char* what) {
-    throw std::invalid_argument("drawTriangles: vertex " + std::to_string(index) + " (" +
-                                std::to_string(v.x) + ", " + std::to_string(v.y) + ", " +
-                                std::to_string(v.z) + ") " + what);
-  };
-  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-    bad("is not finite");
-  if (std::fabs(v.x) > kMaxWindowCoordinate || std::fabs(v.y) > kMaxWindowCoordinate) {
-    bad("lies beyond the +-32768 pixel range of 24.8 fixed point");
-  }
-  if (v.z < 0.0f || v.z > 1.0f)
-    bad("has depth outside [0, 1]");
-}
-
 }  // namespace
 
 CpuDevice::CpuDevice(int width, int height) : width_(width), height_(height) {
-  if (width < 1 || height < 1 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
-    throw std::invalid_argument("framebuffer size " + std::to_string(width) + "x" +
-                                std::to_string(height) + " is outside 1.." +
-                                std::to_string(kMaxFramebufferSize) + " in each dimension");
-  }
+  checkFramebufferSize(width, height);
   const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   depth_.assign(n, kDepthMax);
   stencil_.assign(n, 0);
@@ -126,18 +108,7 @@ void CpuDevice::setStencilOps(Face face, const StencilOps& ops) {
 
 void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,
                               std::span<const std::uint32_t> indices) {
-  if (indices.size() % 3 != 0) {
-    throw std::invalid_argument("drawTriangles: index count " + std::to_string(indices.size()) +
-                                " is not a multiple of 3");
-  }
-  for (std::size_t k = 0; k < indices.size(); ++k) {
-    if (indices[k] >= vertices.size()) {
-      throw std::invalid_argument("drawTriangles: index " + std::to_string(indices[k]) +
-                                  " at position " + std::to_string(k) + " is out of range (" +
-                                  std::to_string(vertices.size()) + " vertices)");
-    }
-    checkVertex(vertices[indices[k]], indices[k]);
-  }
+  checkDraw(vertices, indices);
   // The draw is validated as a whole before any pixel changes, so an error leaves the
   // buffers untouched.
   for (std::size_t k = 0; k < indices.size(); k += 3) {

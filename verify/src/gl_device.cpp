@@ -16,6 +16,7 @@
 #include <string>
 
 #include "gl_context.hpp"
+#include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 
 namespace recode::verify {
@@ -88,46 +89,6 @@ Viewport viewportFor(int framebuffer, GLint maxSize, GLint lowestOrigin) {
   return v;
 }
 
-// The same rules and messages as CpuDevice, so that both devices reject the same draws.
-void checkVertex(const raster::WindowVertex& v, std::uint32_t index) {
-  const auto bad = [&](const char* what) {
-    throw std::invalid_argument("drawTriangles: vertex " + std::to_string(index) + " (" +
-                                std::to_string(v.x) + ", " + std::to_string(v.y) + ", " +
-                                std::to_string(v.z) + ") " + what);
-  };
-  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-    bad("is not finite");
-  if (std::fabs(v.x) > raster::kMaxWindowCoordinate ||
-      std::fabs(v.y) > raster::kMaxWindowCoordinate) {
-    bad("lies beyond the +-32768 pixel range of 24.8 fixed point");
-  }
-  if (v.z < 0.0f || v.z > 1.0f)
-    bad("has depth outside [0, 1]");
-}
-
-void validateDraw(std::span<const raster::WindowVertex> vertices,
-                  std::span<const std::uint32_t> indices) {
-  if (indices.size() % 3 != 0) {
-    throw std::invalid_argument("drawTriangles: index count " + std::to_string(indices.size()) +
-                                " is not a multiple of 3");
-  }
-  for (std::size_t k = 0; k < indices.size(); ++k) {
-    if (indices[k] >= vertices.size()) {
-      throw std::invalid_argument("drawTriangles: index " + std::to_string(indices[k]) +
-                                  " at position " + std::to_string(k) + " is out of range (" +
-                                  std::to_string(vertices.size()) + " vertices)");
-    }
-    checkVertex(vertices[indices[k]], indices[k]);
-  }
-}
-
-// Snaps to the 1/256 grid as CpuDevice does (round half to even in double). The result has at
-// most 24 significant bits (|x| * 256 <= 2^23), so it is exact as a float.
-float snapped(float x) {
-  return static_cast<float>(std::nearbyint(static_cast<double>(x) * raster::kSubpixelOne) /
-                            raster::kSubpixelOne);
-}
-
 }  // namespace
 
 struct GlDevice::Impl {
@@ -150,12 +111,7 @@ struct GlDevice::Impl {
 };
 
 GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
-  if (width < 1 || height < 1 || width > raster::kMaxFramebufferSize ||
-      height > raster::kMaxFramebufferSize) {
-    throw std::invalid_argument("framebuffer size " + std::to_string(width) + "x" +
-                                std::to_string(height) + " is outside 1.." +
-                                std::to_string(raster::kMaxFramebufferSize) + " in each dimension");
-  }
+  raster::checkFramebufferSize(width, height);
   impl_ = std::make_unique<Impl>();
   impl_->context = detail::makeOsMesaContext(width, height);
   impl_->use();
@@ -336,14 +292,14 @@ void GlDevice::setCullMode(raster::CullMode mode) {
 
 void GlDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
                              std::span<const std::uint32_t> indices) {
-  validateDraw(vertices, indices);
+  raster::checkDraw(vertices, indices);
   if (indices.empty())
     return;
   std::vector<GLfloat>& xyz = impl_->vertexScratch;
   xyz.resize(vertices.size() * 3);
   for (std::size_t k = 0; k < vertices.size(); ++k) {
-    xyz[3 * k] = snapped(vertices[k].x);
-    xyz[3 * k + 1] = snapped(vertices[k].y);
+    xyz[3 * k] = raster::snapToSubpixel(vertices[k].x);
+    xyz[3 * k + 1] = raster::snapToSubpixel(vertices[k].y);
     xyz[3 * k + 2] = vertices[k].z;
   }
   impl_->use();

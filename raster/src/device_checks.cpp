@@ -1,0 +1,52 @@
+#include "recode/raster/device_checks.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "recode/raster/state.hpp"
+
+namespace recode::raster {
+
+namespace {
+
+void checkVertex(const WindowVertex& v, std::uint32_t index) {
+  const auto bad = [&](const char* what) {
+    throw std::invalid_argument("drawTriangles: vertex " + std::to_string(index) + " (" +
+                                std::to_string(v.x) + ", " + std::to_string(v.y) + ", " +
+                                std::to_string(v.z) + ") " + what);
+  };
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    bad("is not finite");
+  if (std::fabs(v.x) > kMaxWindowCoordinate || std::fabs(v.y) > kMaxWindowCoordinate)
+    bad("lies beyond the +-32768 pixel range of 24.8 fixed point");
+  if (v.z < 0.0f || v.z > 1.0f)
+    bad("has depth outside [0, 1]");
+}
+
+}  // namespace
+
+void checkFramebufferSize(int width, int height) {
+  if (width < 1 || height < 1 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
+    throw std::invalid_argument("framebuffer size " + std::to_string(width) + "x" +
+                                std::to_string(height) + " is outside 1.." +
+                                std::to_string(kMaxFramebufferSize) + " in each dimension");
+  }
+}
+
+void checkDraw(std::span<const WindowVertex> vertices, std::span<const std::uint32_t> indices) {
+  if (indices.size() % 3 != 0) {
+    throw std::invalid_argument("drawTriangles: index count " + std::to_string(indices.size()) +
+                                " is not a multiple of 3");
+  }
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    if (indices[k] >= vertices.size()) {
+      throw std::invalid_argument("drawTriangles: index " + std::to_string(indices[k]) +
+                                  " at position " + std::to_string(k) + " is out of range (" +
+                                  std::to_string(vertices.size()) + " vertices)");
+    }
+    checkVertex(vertices[indices[k]], indices[k]);
+  }
+}
+
+}  // namespace recode::raster
