@@ -72,6 +72,9 @@ int runRunCommand(const RunOptions& o) {
   std::error_code ec;
   const bool isFile = std::filesystem::exists(o.scene, ec);
   const bool isBuiltin = !isFile && core::findBuiltinExperimentScene(o.scene) != nullptr;
+  const bool looksLikeFile = o.scene.find('/') != std::string::npos || o.scene.ends_with(".json");
+  if (!isFile && !isBuiltin && looksLikeFile)
+    (void)core::loadScene(o.scene);  // throws its "cannot open scene file (...)" error
   if (!isFile && !isBuiltin) {
     throw std::invalid_argument(
         "'" + o.scene +
