@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "pair_test_support.hpp"
 #include "recode/core/generators.hpp"
 #include "recode/core/mesh_error.hpp"
 #include "recode/core/pair.hpp"
@@ -17,14 +18,10 @@
 
 using namespace recode;
 using Eigen::Vector3d;
+using test::boxBetween;
+using test::frameZ;
 
 namespace {
-
-core::TriangleMesh boxBetween(const Vector3d& lo, const Vector3d& hi) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.translation() = 0.5 * (lo + hi);
-  return core::transformed(core::makeBox(0.5 * (hi - lo)), t);
-}
 
 core::TriangleMesh posed(const core::TriangleMesh& m, const Eigen::Matrix3d& rotation,
                          const Vector3d& offset) {
@@ -64,26 +61,6 @@ core::TriangleMesh coneWithApexAtOrigin(double radius, double height, bool up) {
 
 bool sameBox(const core::Aabb& x, const Vector3d& lo, const Vector3d& hi) {
   return x.min == lo && x.max == hi;
-}
-
-core::FrameSpec frameZ(double umin, double vmin, double umax, double vmax, int w, int h) {
-  core::FrameSpec f;
-  f.axis = core::ViewAxis::Z;
-  f.window = {umin, vmin, umax, vmax};
-  f.width = w;
-  f.height = h;
-  return f;
-}
-
-core::PairResult runRecode(const core::TriangleMesh& a, const core::TriangleMesh& b,
-                           const core::FrameSpec& frame, core::MorMode mor = core::MorMode::Min,
-                           bool boxTest = true) {
-  raster::CpuDevice device(frame.width, frame.height);
-  core::PairRequest request;
-  request.frame = frame;
-  request.mor = mor;
-  request.boxTest = boxTest;
-  return core::collidePair(device, a, b, request);
 }
 
 bool contains(const std::string& text, const std::string& part) {
@@ -192,7 +169,7 @@ TEST_CASE("cgal judge: a clear overlap agrees; flipping RECODE's verdict is a di
   const auto b = moved(a, {0.5, 0.25, 0.125});
   const core::FrameSpec frame = frameZ(-0.5, -0.5, 2.0, 2.0, 64, 64);
   const verify::ExactIntersection exact = verify::exactIntersection(a, b);
-  core::PairResult result = runRecode(a, b, frame);
+  core::PairResult result = test::runPair(a, b, frame);
   REQUIRE(result.collide);
   const verify::CgalJudgement ok = verify::judgePair(exact, frame, a, b, result);
   CHECK(ok.verdict == verify::VerdictCheck::Agree);
@@ -209,7 +186,7 @@ TEST_CASE("cgal judge: a contact box moved far away fails the box check") {
   const auto a = boxBetween({0, 0, 0}, {1, 1, 1});
   const auto b = moved(a, {0.5, 0, 0});
   const core::FrameSpec frame = frameZ(-0.5, -0.5, 2.0, 2.0, 64, 64);
-  core::PairResult result = runRecode(a, b, frame);
+  core::PairResult result = test::runPair(a, b, frame);
   REQUIRE(result.collide);
   result.contact.box.min.x() += 10.0;
   result.contact.box.max.x() += 10.0;
@@ -234,7 +211,7 @@ TEST_CASE("cgal judge: faces touching within rounding may widen the contact box"
   const verify::ExactIntersection exact = verify::exactIntersection(a, b);
   REQUIRE(exact.intersect);
   CHECK(exact.box.min.y() == Approx(0.5).margin(1e-12));
-  const core::PairResult result = runRecode(a, b, frame);
+  const core::PairResult result = test::runPair(a, b, frame);
   REQUIRE(result.collide);
   REQUIRE(result.contact.box.min.y() < 0.1);
   const verify::CgalJudgement j = verify::judgePair(exact, frame, a, b, result);
@@ -249,7 +226,8 @@ TEST_CASE("cgal judge: a collision claimed between blocks far apart is a disagre
   const auto a = boxBetween({0, 0, 0}, {1, 1, 1});
   const auto b = boxBetween({0, 0, 2}, {1, 1, 3});
   const core::FrameSpec frame = frameZ(-0.5, -0.5, 1.5, 1.5, 32, 32);
-  core::PairResult result = runRecode(a, b, frame, core::MorMode::Full, false);
+  core::PairResult result =
+      test::runPair(a, b, frame, core::MorMode::Full, /*contact=*/true, /*boxTest=*/false);
   REQUIRE_FALSE(result.collide);
   const verify::ExactIntersection exact = verify::exactIntersection(a, b);
   REQUIRE_FALSE(exact.intersect);
@@ -283,7 +261,7 @@ TEST_CASE("cgal judge: an overlap between pixel centres is a resolution miss") {
   const verify::ExactIntersection exact = verify::exactIntersection(a, b);
   REQUIRE(exact.intersect);
   CHECK(exact.volume == Approx(0.1 * 1.0 * 0.5).epsilon(1e-12));
-  const core::PairResult result = runRecode(a, b, frame);
+  const core::PairResult result = test::runPair(a, b, frame);
   REQUIRE_FALSE(result.collide);
   const verify::CgalJudgement j = verify::judgePair(exact, frame, a, b, result);
   CHECK(j.verdict == verify::VerdictCheck::ResolutionMiss);
@@ -297,7 +275,7 @@ TEST_CASE("cgal judge: an overlap thinner than the depth tolerance is a resoluti
   const core::FrameSpec frame = frameZ(-0.25, -0.25, 1.25, 1.25, 24, 24);
   const verify::ExactIntersection exact = verify::exactIntersection(a, b);
   REQUIRE(exact.intersect);
-  core::PairResult result = runRecode(a, b, frame);
+  core::PairResult result = test::runPair(a, b, frame);
   const verify::CgalJudgement actual = verify::judgePair(exact, frame, a, b, result);
   CHECK(actual.verdict != verify::VerdictCheck::Disagree);
   CHECK(actual.depthStep == Approx(2.0 / 16777215.0));
@@ -316,7 +294,7 @@ TEST_CASE("cgal judge: faces a hair apart along the view axis are touching withi
   const core::FrameSpec frame = frameZ(-0.25, -0.25, 1.25, 1.25, 24, 24);
   const verify::ExactIntersection exact = verify::exactIntersection(a, b);
   REQUIRE_FALSE(exact.intersect);
-  const core::PairResult result = runRecode(a, b, frame);
+  const core::PairResult result = test::runPair(a, b, frame);
   REQUIRE(result.collide);
   const verify::CgalJudgement j = verify::judgePair(exact, frame, a, b, result);
   CHECK(j.verdict == verify::VerdictCheck::ResolutionMiss);
@@ -324,7 +302,8 @@ TEST_CASE("cgal judge: faces a hair apart along the view axis are touching withi
 
   // 1e-3 apart (over 8000 depth steps) the same claimed collision is a disagreement.
   const auto far = boxBetween({0, 0, 1 + 1e-3}, {1, 1, 2});
-  core::PairResult claimed = runRecode(a, far, frame, core::MorMode::Min, false);
+  core::PairResult claimed =
+      test::runPair(a, far, frame, core::MorMode::Min, /*contact=*/true, /*boxTest=*/false);
   REQUIRE_FALSE(claimed.collide);
   REQUIRE(claimed.caseMap.size() > 0);
   claimed.caseMap[claimed.caseMap.size() / 2] = 6;
@@ -343,9 +322,9 @@ TEST_CASE("cgal judge: an unusable depth range or a broken mesh is refused") {
   auto broken = a;
   broken.triangles[0][1] = 99;
   const core::FrameSpec frame = frameZ(0, 0, 1, 1, 8, 8);
-  CHECK_THROWS_WITH(
-      verify::judgePair(verify::exactIntersection(a, a), frame, a, broken, runRecode(a, a, frame)),
-      Catch::Contains("block B") && Catch::Contains("vertex 99"));
+  CHECK_THROWS_WITH(verify::judgePair(verify::exactIntersection(a, a), frame, a, broken,
+                                      test::runPair(a, a, frame)),
+                    Catch::Contains("block B") && Catch::Contains("vertex 99"));
 }
 
 TEST_CASE("cgal oracle: the generated pair suite has no disagreement") {
@@ -354,7 +333,7 @@ TEST_CASE("cgal oracle: the generated pair suite has no disagreement") {
   for (const verify::SuitePair& pair : suite) {
     INFO(pair.label);
     const verify::ExactIntersection exact = verify::exactIntersection(pair.a, pair.b);
-    const core::PairResult result = runRecode(pair.a, pair.b, pair.frame);
+    const core::PairResult result = test::runPair(pair.a, pair.b, pair.frame);
     const verify::CgalJudgement j = verify::judgePair(exact, pair.frame, pair.a, pair.b, result);
     counts.add(j);
     INFO(j.reason);
@@ -402,7 +381,7 @@ TEST_CASE("cgal judge: the tolerance rules hold at every pixel of the suite's de
   long long mustSeeFound = 0;
   for (const verify::SuitePair& pair : suite) {
     INFO(pair.label);
-    const core::PairResult result = runRecode(pair.a, pair.b, pair.frame);
+    const core::PairResult result = test::runPair(pair.a, pair.b, pair.frame);
     core::Aabb overlap;
     const core::Aabb boxA = core::boundingBox(pair.a), boxB = core::boundingBox(pair.b);
     overlap.min = boxA.min.cwiseMax(boxB.min);

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "pair_test_support.hpp"
 #include "recode/core/generators.hpp"
 #include "recode/core/pair.hpp"
 #include "recode/core/view.hpp"
@@ -18,6 +19,8 @@
 using namespace recode;
 using core::DepthInterval;
 using Eigen::Vector3d;
+using test::boxBetween;
+using test::runPair;
 
 namespace {
 
@@ -32,23 +35,6 @@ core::FrameSpec frame16() {
   f.width = 16;
   f.height = 16;
   return f;
-}
-
-core::TriangleMesh boxBetween(const Vector3d& lo, const Vector3d& hi) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.translation() = 0.5 * (lo + hi);
-  return core::transformed(core::makeBox(0.5 * (hi - lo)), t);
-}
-
-core::PairResult runPair(const core::TriangleMesh& a, const core::TriangleMesh& b,
-                         const core::FrameSpec& frame, core::MorMode mor = core::MorMode::Min,
-                         bool boxTest = true) {
-  raster::CpuDevice device(frame.width, frame.height);
-  core::PairRequest request;
-  request.frame = frame;
-  request.mor = mor;
-  request.boxTest = boxTest;
-  return core::collidePair(device, a, b, request);
 }
 
 std::size_t morIndex(const core::PairResult& r, int x, int y) {
@@ -431,7 +417,7 @@ TEST_CASE("embree oracle: the generated suite has no unexplained pixel") {
     long long interfering = 0;
     std::map<verify::PairConfiguration, verify::EmbreeCounts> byConfiguration;
     for (const verify::SuitePair& p : suite) {
-      const core::PairResult r = runPair(p.a, p.b, p.frame, mor, boxTest);
+      const core::PairResult r = runPair(p.a, p.b, p.frame, mor, /*contact=*/true, boxTest);
       const verify::EmbreeReport rep = oracle.check(p.frame, p.a, p.b, r);
       INFO(p.label << " (MOR " << core::toString(mor) << ")");
       CHECK(rep.counts.unexplained == 0);
