@@ -59,8 +59,8 @@ VerifyPairs pairsToVerify(const VerifyOptions& o) {
 int runVerifyCommand(const VerifyOptions& o) {
   VerifyRun run;
   run.oracles = selectedOracles(o);
+  VerifyPairs input = pairsToVerify(o);        // the input's errors first, whatever the build
   verify::PairVerifier verifier(run.oracles);  // throws for an oracle this build lacks
-  VerifyPairs input = pairsToVerify(o);
   run.source = input.source;
   for (PairToVerify& p : input.pairs) {
     core::PairRequest request;
