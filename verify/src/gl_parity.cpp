@@ -388,6 +388,10 @@ GlParityReport compareOnGl(const core::TriangleMesh& a, const core::TriangleMesh
   raster::CpuDevice cpu(request.frame.width, request.frame.height);
   raster::RecordingDevice recorder(cpu);
   const core::PairResult result = core::collidePair(recorder, a, b, request);
+  // An empty MOR (boxes apart) compares no pixel: skip starting a GL context (milliseconds
+  // each, which dominated scenes of many distant pairs).
+  if (result.mor.empty())
+    return {};
   GlParityOptions pairOptions = options;
   pairOptions.region = result.mor;
   return compareStreamOnGl(recorder.stream(), pairOptions);
