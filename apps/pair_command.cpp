@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "frame_options.hpp"
 #include "pair_report.hpp"
 #include "pair_setup.hpp"
 #include "pgm.hpp"
@@ -18,9 +19,7 @@ namespace {
 struct PairOptions {
   std::string scene;
   bool json = false;
-  std::string morName = "min";
-  std::string resolution;
-  double pixelSize = 0.0;
+  FrameOptions frame;
   std::string dumpCases;
   bool contact = true;
   bool boxTest = true;
@@ -28,16 +27,11 @@ struct PairOptions {
 };
 
 int runPairCommand(const PairOptions& o) {
-  core::FrameOverrides overrides;
-  if (!o.resolution.empty())
-    overrides = parseResolution(o.resolution);
-  if (o.pixelSize > 0.0)
-    overrides.pixelSize = o.pixelSize;
   const PairSetup setup = loadPairSetup(
-      o.scene.empty() ? std::nullopt : std::optional<std::string>(o.scene), overrides);
+      o.scene.empty() ? std::nullopt : std::optional<std::string>(o.scene), o.frame.overrides());
   core::PairRequest request;
   request.frame = setup.frame;
-  request.mor = core::parseMorMode(o.morName).value();  // CLI11 checked the name
+  request.mor = o.frame.mor();
   request.contact = o.contact;
   request.boxTest = o.boxTest;
   raster::CpuDevice device(setup.frame.width, setup.frame.height);
@@ -64,18 +58,12 @@ void addPairCommand(CLI::App& app, int& exitCode) {
                   "scene file (JSON, docs/scenes.md); omit for the built-in pair")
       ->check(CLI::ExistingFile);
   cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
-  cmd->add_option("--mor", o->morName,
-                  "region the passes run over and the stencil is read from: min (the boxes' "
-                  "intersection), max (both boxes), full (the frame)")
-      ->check(CLI::IsMember({"min", "max", "full"}))
-      ->capture_default_str();
-  auto* res = cmd->add_option("--resolution", o->resolution,
-                              "W or WxH pixels (W alone: square pixels); overrides the scene");
-  cmd->add_option("--pixel-size", o->pixelSize,
-                  "pixel size in world units (square pixels over the window); overrides the "
-                  "scene")
-      ->check(CLI::PositiveNumber)
-      ->excludes(res);
+  addFrameOptions(*cmd, o->frame,
+                  {"region the passes run over and the stencil is read from: min (the boxes' "
+                   "intersection), max (both boxes), full (the frame)",
+                   "W or WxH pixels (W alone: square pixels); overrides the scene",
+                   "pixel size in world units (square pixels over the window); overrides the "
+                   "scene"});
   cmd->add_option("--dump-cases", o->dumpCases,
                   "write each pixel's case (0-8; 255 outside the MOR) as an 8-bit PGM, top row "
                   "first");

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "pair_setup.hpp"
+#include "frame_options.hpp"
 #include "progress_bar.hpp"
 #include "recode/core/experiment_scenes.hpp"
 #include "recode/core/run_statistics.hpp"
@@ -29,9 +29,7 @@ struct RunOptions {
   bool list = false;
   int trianglesPerBlock = 0;  // 0: the built-in's default
   std::string writeScene;
-  std::string resolution;
-  double pixelSize = 0.0;
-  std::string morName = "min";
+  FrameOptions frame;
   bool contact = true;
   bool quiet = false;
 };
@@ -95,11 +93,8 @@ int runRunCommand(const RunOptions& o) {
       isFile ? core::loadScene(o.scene) : core::builtinExperimentScene(o.scene, triangles);
 
   core::RunOptions options;
-  if (!o.resolution.empty())
-    options.overrides = parseResolution(o.resolution);
-  if (o.pixelSize > 0.0)
-    options.overrides.pixelSize = o.pixelSize;
-  options.mor = core::parseMorMode(o.morName).value();  // CLI11 checked the name
+  options.overrides = o.frame.overrides();
+  options.mor = o.frame.mor();
   options.contact = o.contact;
   core::Simulation sim(scene, options);
 
@@ -168,15 +163,11 @@ void addRunCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(core::kMinTrianglesPerBlock, core::kMaxTrianglesPerBlock));
   cmd->add_option("--write-scene", o->writeScene,
                   "write the built-in scene as a scene file (JSON) to FILE and exit");
-  auto* res = cmd->add_option("--resolution", o->resolution,
-                              "W or WxH pixels of the scene's screen, which sets the pixel "
-                              "size; overrides the scene");
-  cmd->add_option("--pixel-size", o->pixelSize, "pixel size in world units; overrides the scene")
-      ->check(CLI::PositiveNumber)
-      ->excludes(res);
-  cmd->add_option("--mor", o->morName, "MOR of every pair test: min, max or full")
-      ->check(CLI::IsMember({"min", "max", "full"}))
-      ->capture_default_str();
+  addFrameOptions(*cmd, o->frame,
+                  {"MOR of every pair test: min, max or full",
+                   "W or WxH pixels of the scene's screen, which sets the pixel size; overrides "
+                   "the scene",
+                   "pixel size in world units; overrides the scene"});
   cmd->add_flag("!--no-contact", o->contact,
                 "skip the two depth passes that measure each contact region");
   cmd->add_flag("--quiet", o->quiet, "print only the header and the statistics");

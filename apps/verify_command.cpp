@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "pair_setup.hpp"
+#include "frame_options.hpp"
 #include "recode/core/builtin_scenes.hpp"
 #include "verify_pairs.hpp"
 #include "verify_report.hpp"
@@ -25,9 +25,7 @@ struct VerifyOptions {
   bool gl = false;
   bool json = false;
   bool verbose = false;
-  std::string morName = "min";
-  std::string resolution;
-  double pixelSize = 0.0;
+  FrameOptions frameOptions;
   int frame = 0;
 };
 
@@ -43,11 +41,7 @@ verify::OracleSelection selectedOracles(const VerifyOptions& o) {
 VerifyPairs pairsToVerify(const VerifyOptions& o) {
   if (o.suite)
     return suitePairs(o.count, o.seed, o.width);
-  core::FrameOverrides overrides;
-  if (!o.resolution.empty())
-    overrides = parseResolution(o.resolution);
-  if (o.pixelSize > 0.0)
-    overrides.pixelSize = o.pixelSize;
+  const core::FrameOverrides overrides = o.frameOptions.overrides();
   if (o.scene.empty()) {
     VerifyPairs builtin = scenePairs(core::builtinPairScene(), overrides);
     builtin.source = "built-in pair";
@@ -65,7 +59,7 @@ int runVerifyCommand(const VerifyOptions& o) {
   for (PairToVerify& p : input.pairs) {
     core::PairRequest request;
     request.frame = p.frame;
-    request.mor = core::parseMorMode(o.morName).value();  // CLI11 checked the name
+    request.mor = o.frameOptions.mor();
     run.pairs.push_back(verifier.verify(std::move(p.label), p.a, p.b, request));
     run.totals.add(run.pairs.back());
   }
@@ -110,17 +104,13 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--gl", o->gl, "replay every pair's commands on OSMesa and compare the buffers");
   cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   cmd->add_flag("--verbose", o->verbose, "list every pair, not only failures and misses");
-  cmd->add_option("--mor", o->morName, "region the passes run over: min, max, full")
-      ->check(CLI::IsMember({"min", "max", "full"}))
-      ->capture_default_str();
-  auto* res = cmd->add_option("--resolution", o->resolution,
-                              "W or WxH pixels for a scene's pairs; overrides the scene")
-                  ->excludes(suite);
-  cmd->add_option("--pixel-size", o->pixelSize,
-                  "pixel size in world units for a scene's pairs; overrides the scene")
-      ->check(CLI::PositiveNumber)
-      ->excludes(res)
-      ->excludes(suite);
+  const FrameOptionHandles frameOptions =
+      addFrameOptions(*cmd, o->frameOptions,
+                      {"region the passes run over: min, max, full",
+                       "W or WxH pixels for a scene's pairs; overrides the scene",
+                       "pixel size in world units for a scene's pairs; overrides the scene"});
+  frameOptions.resolution->excludes(suite);
+  frameOptions.pixelSize->excludes(suite);
   cmd->add_option("--frame", o->frame, "the scene's frame to pose the objects at (motion)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str()
