@@ -20,19 +20,12 @@ using recode::core::test::TempDir;
 
 namespace {
 
-// Parses `text` as "s.json" with mesh paths relative to data/.
 Scene parse(const std::string& text) {
-  return parseScene(text, "s.json", dataFile(""));
+  return test::parseSceneText(text, "s.json");
 }
 
-// The message of the SceneError that parsing `text` throws ("" if it does not throw).
 std::string errorOf(const std::string& text) {
-  try {
-    (void)parse(text);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
+  return test::sceneErrorOf(text, "s.json");
 }
 
 // A scene with one object whose members are `objectBody` (JSON members, without braces).

@@ -18,16 +18,11 @@ using recode::core::test::dataFile;
 namespace {
 
 Scene parse(const std::string& text) {
-  return parseScene(text, "h.json", dataFile(""));
+  return test::parseSceneText(text, "h.json");
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    (void)parse(text);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
+  return test::sceneErrorOf(text, "h.json");
 }
 
 const std::string kBox = R"("shape": {"type": "box", "size": [1, 1, 1]})";
