@@ -29,12 +29,7 @@ constexpr std::uint32_t kFar = 16777215;  // 2^24 - 1
 // A 16 x 16 frame over [0, 16]^2 along z: one world unit per pixel, pixel i's centre at
 // i + 0.5, so box faces at integer coordinates lie half a pixel from every centre.
 core::FrameSpec frame16() {
-  core::FrameSpec f;
-  f.axis = core::ViewAxis::Z;
-  f.window = {0.0, 0.0, 16.0, 16.0};
-  f.width = 16;
-  f.height = 16;
-  return f;
+  return test::frameZ(0.0, 0.0, 16.0, 16.0, 16, 16);
 }
 
 std::size_t morIndex(const core::PairResult& r, int x, int y) {
