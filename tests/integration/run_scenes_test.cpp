@@ -7,8 +7,10 @@
 #include <catch2/catch.hpp>
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 
@@ -196,4 +198,58 @@ TEST_CASE("simulation: the run's pixel size and the frames of pairs", "[run]") {
   CHECK(f.window.umax > 1.0);
   CHECK(f.window.vmin < 0.0);
   CHECK(f.window.vmax > 1.2);
+}
+
+TEST_CASE("a run's device factory: one device per frame size, the same contacts as the default",
+          "[run][device]") {
+  const Scene scene = builtinExperimentScene("comb-translate-offset");
+  RunOptions withFactory;
+  std::map<std::pair<int, int>, int> made;  // frame size -> devices made for it
+  withFactory.deviceFactory = [&made](int width, int height) {
+    ++made[{width, height}];
+    return std::make_unique<raster::CpuDevice>(width, height);
+  };
+  Simulation byFactory(scene, withFactory);
+  Simulation byDefault(scene, RunOptions{});
+  long long contacts = 0;
+  for (int k = 0; k < scene.frames.value_or(kDefaultRunFrames); k += 3) {  // contact from frame 30
+    const FrameReport a = byFactory.runFrame(k);
+    const FrameReport b = byDefault.runFrame(k);
+    INFO("frame " << k);
+    REQUIRE(a.contacts.size() == b.contacts.size());
+    for (std::size_t i = 0; i < a.contacts.size(); ++i) {
+      CHECK(a.contacts[i].leafA == b.contacts[i].leafA);
+      CHECK(a.contacts[i].leafB == b.contacts[i].leafB);
+      CHECK(a.contacts[i].result.interferingPixels == b.contacts[i].result.interferingPixels);
+    }
+    CHECK(a.stencilPixelsRead == b.stencilPixelsRead);
+    contacts += static_cast<long long>(a.contacts.size());
+    // A frame that made no device reports no set-up time.
+    if (a.pairTests == 0)
+      CHECK(a.deviceSetupUs == 0.0);
+  }
+  CHECK(contacts > 0);  // the comparison above compared something
+  REQUIRE_FALSE(made.empty());
+  for (const auto& [size, count] : made) {
+    INFO(size.first << " x " << size.second);
+    CHECK(count == 1);
+    CHECK(size.first % kPairFrameGranule == 0);
+    CHECK(size.second % kPairFrameGranule == 0);
+  }
+}
+
+TEST_CASE("a device factory that returns nothing is a clear error", "[run][device]") {
+  RunOptions options;
+  options.deviceFactory = [](int, int) { return std::unique_ptr<raster::DepthStencilDevice>(); };
+  Simulation sim(builtinExperimentScene("comb-translate-aligned"), options);
+  bool threw = false;
+  for (int k = 0; k < 40 && !threw; ++k) {
+    try {
+      (void)sim.runFrame(k);
+    } catch (const std::logic_error& e) {
+      threw = true;
+      CHECK(std::string(e.what()).find("device factory") != std::string::npos);
+    }
+  }
+  CHECK(threw);
 }

@@ -11,6 +11,7 @@
 // have over the scene's window (given, else the default window over all objects at frame 0).
 // It is one pixel size for the whole run, so accuracy does not depend on which pair is drawn.
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -22,17 +23,25 @@
 #include "recode/core/hierarchy.hpp"
 #include "recode/core/pair.hpp"
 #include "recode/core/scene.hpp"
-#include "recode/raster/cpu_device.hpp"
+#include "recode/raster/device.hpp"
 
 namespace recode::core {
 
 inline constexpr int kPairFrameGranule = 32;
 inline constexpr int kDefaultRunFrames = 100;  // when neither the scene nor the caller says
 
+// Makes a device with a framebuffer of width x height pixels. The simulation keeps the
+// devices it made, one per frame size, and uses them frame after frame.
+using DeviceFactory =
+    std::function<std::unique_ptr<raster::DepthStencilDevice>(int width, int height)>;
+
 struct RunOptions {
   FrameOverrides overrides;  // --resolution (of the scene's screen) or --pixel-size
   MorMode mor = MorMode::Min;
   bool contact = true;  // measure contact regions (the two extra depth passes)
+  // Where the pairs are drawn; empty: raster::CpuDevice, the reference. A GL device here runs
+  // the same command stream on a real GL implementation (`recode bench`'s recode-gl column).
+  DeviceFactory deviceFactory;
 };
 
 // A leaf pair whose blocks interfere at this frame.
@@ -52,6 +61,10 @@ struct FrameReport {
   long long depthPixelsRead = 0;
   double frameUs = 0.0;      // the whole frame: posing the nodes + collisionUs
   double collisionUs = 0.0;  // boxes, broad phase, descent and pair tests
+  // Making devices for frame sizes not seen before: a one-off cost of the run (a few
+  // microseconds on the CPU, milliseconds for a GL context), left out of frameUs and
+  // collisionUs so that times measure collision detection, not start-up.
+  double deviceSetupUs = 0.0;
 };
 
 class Simulation {
@@ -74,14 +87,15 @@ class Simulation {
   [[nodiscard]] FrameSpec pairFrame(const Aabb& a, const Aabb& b) const;
 
  private:
-  raster::CpuDevice& deviceFor(int width, int height);
+  // The device for this frame size, made (and its making timed into `setupUs`) if new.
+  raster::DepthStencilDevice& deviceFor(int width, int height, double& setupUs);
 
   std::vector<ObjectTree> objects_;
   RunOptions options_;
   ViewAxis axis_ = ViewAxis::Z;
   double pixelSize_ = 0.0;
   SweepAndPrune broadPhase_;
-  std::map<std::pair<int, int>, std::unique_ptr<raster::CpuDevice>> devices_;
+  std::map<std::pair<int, int>, std::unique_ptr<raster::DepthStencilDevice>> devices_;
 };
 
 // The pixel size of a run (see above); `bounds` is the objects' box at frame 0.
