@@ -46,6 +46,8 @@ Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::m
     bounds.extend(objects_.back().root().worldAabb);
   }
   pixelSize_ = runPixelSize(scene.view, bounds, options_.overrides);
+  if (options_.drawOnScreen)
+    screen_ = resolveFrame(scene.view, bounds, options_.overrides);
   if (!(pixelSize_ > 0.0) || !std::isfinite(pixelSize_))
     throw std::invalid_argument("the run's pixel size " + std::to_string(pixelSize_) +
                                 " is not a positive finite number");
@@ -59,6 +61,8 @@ std::size_t Simulation::triangleCount() const {
 }
 
 FrameSpec Simulation::pairFrame(const Aabb& a, const Aabb& b) const {
+  if (screen_)
+    return *screen_;
   Aabb both = a;
   both.extend(b);
   FrameSpec f = frameFromPixelSize(axis_, defaultWindow(axis_, both, std::nullopt), pixelSize_);

@@ -253,3 +253,36 @@ TEST_CASE("a device factory that returns nothing is a clear error", "[run][devic
   }
   CHECK(threw);
 }
+
+TEST_CASE("drawOnScreen: every pair in the scene's screen; FULL reads all of it for each pair",
+          "[run][screen]") {
+  const Scene scene = builtinExperimentScene("hierarchy-9", 288);
+  RunOptions onScreen;
+  onScreen.drawOnScreen = true;
+  onScreen.mor = MorMode::Full;
+  Simulation screen(scene, onScreen);
+  Simulation perPair(scene, RunOptions{});
+  // The screen, worked out here from the scene as `recode pair` does.
+  Aabb bounds;
+  for (const ObjectTree& t : perPair.objects())
+    bounds.extend(t.root().worldAabb);
+  const FrameSpec expected = resolveFrame(scene.view, bounds, FrameOverrides{});
+  CHECK(screen.pairFrame(Aabb{}, Aabb{}).width == expected.width);
+  CHECK(screen.pairFrame(Aabb{}, Aabb{}).height == expected.height);
+  long long contacts = 0;
+  for (int k = 0; k < scene.frames.value_or(kDefaultRunFrames); ++k) {
+    const FrameReport s = screen.runFrame(k);
+    const FrameReport p = perPair.runFrame(k);
+    INFO("frame " << k);
+    CHECK(s.pairTests == p.pairTests);
+    CHECK(s.stencilPixelsRead ==
+          s.pairTests * static_cast<long long>(expected.width) * expected.height);
+    REQUIRE(s.contacts.size() == p.contacts.size());
+    for (std::size_t i = 0; i < s.contacts.size(); ++i) {
+      CHECK(s.contacts[i].leafA == p.contacts[i].leafA);
+      CHECK(s.contacts[i].leafB == p.contacts[i].leafB);
+    }
+    contacts += static_cast<long long>(s.contacts.size());
+  }
+  CHECK(contacts > 0);
+}
