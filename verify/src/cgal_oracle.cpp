@@ -128,18 +128,39 @@ double hullVolume(const std::vector<Point>& points) {
   return CGAL::to_double(CGAL::exact(PMP::volume(hull)));
 }
 
+// The two blocks, checked and copied exactly: the common start of both entry points.
+struct ExactPair {
+  Mesh a;
+  Mesh b;
+};
+
+ExactPair toExactPair(const core::TriangleMesh& worldA, const core::TriangleMesh& worldB) {
+  core::validateConvexBlock(worldA, "block A");
+  core::validateConvexBlock(worldB, "block B");
+  return {toExactMesh(worldA, "block A"), toExactMesh(worldB, "block B")};
+}
+
+// The verdict on closed sets: surfaces that meet (touching included), or one block's bounded
+// side holding the other (containment, where no surfaces meet).
+bool closedSolidsIntersect(const Mesh& a, const Mesh& b) {
+  return PMP::do_intersect(a, b, CGAL::parameters::do_overlap_test_of_bounded_sides(true),
+                           CGAL::parameters::do_overlap_test_of_bounded_sides(true));
+}
+
 }  // namespace
+
+bool exactlyIntersect(const core::TriangleMesh& worldA, const core::TriangleMesh& worldB) {
+  const ExactPair pair = toExactPair(worldA, worldB);
+  return closedSolidsIntersect(pair.a, pair.b);
+}
 
 ExactIntersection exactIntersection(const core::TriangleMesh& worldA,
                                     const core::TriangleMesh& worldB) {
-  core::validateConvexBlock(worldA, "block A");
-  core::validateConvexBlock(worldB, "block B");
-  const Mesh a = toExactMesh(worldA, "block A");
-  const Mesh b = toExactMesh(worldB, "block B");
+  const ExactPair pair = toExactPair(worldA, worldB);
+  const Mesh& a = pair.a;
+  const Mesh& b = pair.b;
 
-  const bool overlap =
-      PMP::do_intersect(a, b, CGAL::parameters::do_overlap_test_of_bounded_sides(true),
-                        CGAL::parameters::do_overlap_test_of_bounded_sides(true));
+  const bool overlap = closedSolidsIntersect(a, b);
 
   std::vector<Point> points;
   addEdgeCrossings(a, trianglesOf(b), points);

@@ -32,6 +32,13 @@ struct ExactIntersection {
 [[nodiscard]] ExactIntersection exactIntersection(const core::TriangleMesh& worldA,
                                                   const core::TriangleMesh& worldB);
 
+// Only exactIntersection's verdict (`intersect`), the same closed-set rules (touching at a point
+// counts, so does one block inside the other), without constructing the solid: cheap enough for
+// the bench's exact judge to call on every candidate pair of every frame. The same checks and
+// errors as exactIntersection.
+[[nodiscard]] bool exactlyIntersect(const core::TriangleMesh& worldA,
+                                    const core::TriangleMesh& worldB);
+
 // The tolerances of the judgement, in the units of the device (docs/verification.md).
 // An overlap or gap along the view axis within this many depth steps (LSB of 24-bit depth over
 // the pair's depth range) is within rounding: each end of a depth interval is off by at most
