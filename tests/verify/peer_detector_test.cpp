@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -383,7 +384,7 @@ TEST_CASE("peers: agree with an independent classification over a random motion"
         for (std::size_t f = 0; f < detectors.size(); ++f) {
           const bool reported = found[f].count(id) > 0;
           if (c == Clear::Borderline) {
-            // Compared with the exact judge where there is one, else with "overlap".
+            // Compared with the last detector: the exact judge in a build with CGAL.
             const bool reference = found.back().count(id) > 0;
             borderlineDifferences[factories[f].name] += reported != reference;
             continue;
