@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 
+#include "bench_command.hpp"
 #include "explain_command.hpp"
 #include "pair_command.hpp"
 #include "replay_command.hpp"
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   recode::app::addExplainCommand(app, exitCode);
   recode::app::addRunCommand(app, exitCode);
   recode::app::addVerifyCommand(app, exitCode);
+  recode::app::addBenchCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,46 @@
+#pragma once
+// The experiments `recode bench` runs (docs/benchmarks.md): the paper's Table 1, Table 2,
+// Figure 8, the comb experiments and the random cones, each as built-in scenes over
+// tessellation levels and the algorithms compared on them.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "recode/core/frame.hpp"
+#include "recode/verify/recode_detector.hpp"
+
+namespace recode::app {
+
+struct AlgorithmSpec {
+  enum class Kind { Recode, FclGjk, FclObbrss, Bullet };
+  std::string name;  // the CSV's `algorithm` column
+  Kind kind = Kind::Recode;
+  verify::RecodeDevice device = verify::RecodeDevice::Cpu;  // Recode only
+  core::MorMode mor = core::MorMode::Min;                   // Recode only
+  bool onScreen = false;  // Recode only: core::RunOptions::drawOnScreen (the paper's screen)
+};
+
+struct Experiment {
+  std::string name;                    // on the command line and in the CSV: "table1", "comb", ...
+  std::string title;                   // a heading for the summary
+  std::vector<std::string> scenes;     // built-in scene names
+  std::vector<int> trianglesPerBlock;  // tessellation levels of a full run
+  std::vector<int> quickTrianglesPerBlock;  // of `--quick`
+  std::vector<AlgorithmSpec> algorithms;    // CGAL judges them all and is not listed here
+};
+
+// All experiments, in the order they run.
+[[nodiscard]] const std::vector<Experiment>& benchExperiments();
+
+// The named experiments in the order given; all of them for an empty list. Throws
+// std::invalid_argument for an unknown or repeated name (the message lists the names).
+[[nodiscard]] std::vector<const Experiment*> selectExperiments(
+    const std::vector<std::string>& names);
+
+// Ground truth: CGAL judges every frame of a scene of at most this many triangles, and every
+// kJudgeSampleStep-th frame (0, 10, 20, ...) of a larger one.
+inline constexpr long long kJudgeEveryFrameUpTo = 300000;
+inline constexpr int kJudgeSampleStep = 10;
+
+}  // namespace recode::app

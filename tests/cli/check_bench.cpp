@@ -1,0 +1,251 @@
+// Checks what `recode bench --quick` wrote, against the requirements and against
+// facts derived independently of the bench:
+// - bench.csv has the documented header and exactly one row per experiment, scene and
+//   algorithm (the expected lists are written here from the experiment definitions in
+//   docs/benchmarks.md, not read from the bench);
+// - frames and triangles agree with the built-in scene itself (core, not the bench);
+// - every algorithm's counts add up against the ground truth: found - extra + missed == truth,
+//   the same truth for every algorithm of a case, and the judge agrees with itself;
+// - times are consistent (total = mean x frames), RECODE's counters are present only for it;
+// - MIN, MAX and FULL MORs find the same contacts while reading more and more stencil pixels,
+//   and RECODE finds the same pairs on the CPU and the GL device;
+// - summary.md has the FULL/MIN ratio and every plot is a PNG.
+//
+// Usage: recode_check_bench DIR
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "recode/core/experiment_scenes.hpp"
+#include "recode/core/frame.hpp"
+#include "recode/core/simulation.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int failures = 0;
+
+void fail(const std::string& message) {
+  std::cerr << "FAIL: " << message << '\n';
+  ++failures;
+}
+
+const char* const kHeader =
+    "experiment,scene,triangles_per_block,triangles,algorithm,frames,judged_frames,total_ms,"
+    "mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
+    "stencil_pixels_read,depth_pixels_read";
+
+struct Row {
+  std::map<std::string, std::string> field;
+  [[nodiscard]] const std::string& text(const std::string& key) const { return field.at(key); }
+  [[nodiscard]] long long count(const std::string& key) const { return std::stoll(text(key)); }
+  [[nodiscard]] double number(const std::string& key) const { return std::stod(text(key)); }
+  [[nodiscard]] std::string id() const {
+    return text("experiment") + "/" + text("scene") + "/" + text("triangles_per_block") + "/" +
+           text("algorithm");
+  }
+};
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream in(line);
+  for (std::string f; std::getline(in, f, ',');)
+    out.push_back(f);
+  if (!line.empty() && line.back() == ',')
+    out.emplace_back();
+  return out;
+}
+
+struct Expected {
+  std::string experiment;
+  std::vector<std::string> scenes;
+  int quickTrianglesPerBlock;
+  std::vector<std::string> algorithms;
+};
+
+std::vector<Expected> expectations() {
+  const std::vector<std::string> all = {"cgal",    "recode-cpu", "recode-gl",
+                                        "fcl-gjk", "fcl-obbrss", "bullet"};
+  return {
+      {"table1",
+       {"hierarchy-9"},
+       288,
+       {"cgal", "recode-min", "recode-max", "recode-full", "recode-full-screen"}},
+      {"table2", {"hand-grasp"}, 56, all},
+      {"figure8", {"random-shapes"}, 36, all},
+      {"comb",
+       {"comb-rotate-aligned", "comb-rotate-offset", "comb-translate-aligned",
+        "comb-translate-offset"},
+       64,
+       all},
+      {"random-cones", {"random-cones"}, 16, all},
+  };
+}
+
+bool isPng(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[8] = {};
+  in.read(magic, 8);
+  return in && std::string(magic, 8) == "\x89PNG\r\n\x1a\n";
+}
+
+void checkRow(const Row& r) {
+  const std::string id = r.id();
+  const long long truth = r.count("truth"), found = r.count("found_judged");
+  const long long missed = r.count("missed"), extra = r.count("extra");
+  if (found - extra + missed != truth)
+    fail(id + ": found - extra + missed = " + std::to_string(found - extra + missed) + ", truth " +
+         std::to_string(truth));
+  if (missed < 0 || missed > truth || extra < 0 || extra > found)
+    fail(id + ": missed or extra out of range");
+  if (r.count("contacts") < found)
+    fail(id + ": fewer contacts over all frames than on the judged frames");
+  const long long frames = r.count("frames"), judged = r.count("judged_frames");
+  if (judged != frames)  // --quick scenes are small enough to judge every frame
+    fail(id + ": " + std::to_string(judged) + " judged frames of " + std::to_string(frames));
+  const double total = r.number("total_ms"), mean = r.number("mean_ms"), sd = r.number("sd_ms");
+  if (!(total >= 0.0 && mean >= 0.0 && sd >= 0.0) ||
+      std::abs(total - mean * static_cast<double>(frames)) > 1e-3 * static_cast<double>(frames))
+    fail(id + ": total " + r.text("total_ms") + " ms is not mean x frames");
+  const bool recode = r.text("algorithm").rfind("recode-", 0) == 0;
+  for (const char* key : {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read"})
+    if (r.text(key).empty() == recode)
+      fail(id + ": " + key + (recode ? " missing" : " given for a peer"));
+  if (recode && r.count("pair_tests") < r.count("contacts"))
+    fail(id + ": more contacts than pair tests");
+  if (r.text("algorithm") == "cgal" && (missed != 0 || extra != 0 || found != truth))
+    fail(id + ": the judge disagrees with itself");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::cerr << "usage: recode_check_bench DIR\n";
+    return 2;
+  }
+  const fs::path dir(argv[1]);
+  std::ifstream csv(dir / "bench.csv");
+  std::string line;
+  if (!std::getline(csv, line) || line != kHeader) {
+    std::cerr << "FAIL: " << (dir / "bench.csv").string() << ": missing or unexpected header\n";
+    return 1;
+  }
+  const std::vector<std::string> keys = split(kHeader);
+  std::map<std::string, Row> rows;
+  for (int n = 2; std::getline(csv, line); ++n) {
+    const std::vector<std::string> values = split(line);
+    if (values.size() != keys.size()) {
+      fail("bench.csv line " + std::to_string(n) + ": " + std::to_string(values.size()) +
+           " fields, expected " + std::to_string(keys.size()));
+      continue;
+    }
+    Row r;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      r.field[keys[i]] = values[i];
+    if (!rows.emplace(r.id(), r).second)
+      fail("bench.csv: two rows for " + r.id());
+  }
+
+  std::size_t expectedRows = 0;
+  for (const Expected& e : expectations()) {
+    for (const std::string& scene : e.scenes) {
+      // Frames and triangles of the scene, from core.
+      const recode::core::Scene s =
+          recode::core::builtinExperimentScene(scene, e.quickTrianglesPerBlock);
+      long long triangles = 0;
+      recode::core::Aabb bounds;  // at frame 0, for the screen
+      for (const recode::core::SceneObject& o : s.objects) {
+        const recode::core::ObjectTree tree(o);
+        triangles += static_cast<long long>(tree.triangleCount());
+        bounds.extend(tree.root().worldAabb);
+      }
+      const long long frames = s.frames.value_or(recode::core::kDefaultRunFrames);
+      const std::string prefix =
+          e.experiment + "/" + scene + "/" + std::to_string(e.quickTrianglesPerBlock) + "/";
+      long long truth = -1;
+      for (const std::string& algorithm : e.algorithms) {
+        ++expectedRows;
+        const auto it = rows.find(prefix + algorithm);
+        if (it == rows.end()) {
+          fail("bench.csv: no row for " + prefix + algorithm);
+          continue;
+        }
+        const Row& r = it->second;
+        checkRow(r);
+        if (r.count("frames") != frames)
+          fail(r.id() + ": " + r.text("frames") + " frames, the scene has " +
+               std::to_string(frames));
+        if (r.count("triangles") != triangles)
+          fail(r.id() + ": " + r.text("triangles") + " triangles, the scene has " +
+               std::to_string(triangles));
+        if (truth < 0)
+          truth = r.count("truth");
+        else if (r.count("truth") != truth)
+          fail(r.id() + ": a different ground truth from the judge's");
+      }
+      const auto same = [&](const std::string& a, const std::string& b, const char* key) {
+        const auto ra = rows.find(prefix + a), rb = rows.find(prefix + b);
+        if (ra != rows.end() && rb != rows.end() && ra->second.text(key) != rb->second.text(key))
+          fail(prefix + ": " + a + " and " + b + " differ in " + key);
+      };
+      if (e.experiment == "table1") {
+        for (const char* key : {"contacts", "missed", "extra", "pair_tests"}) {
+          same("recode-min", "recode-max", key);
+          same("recode-min", "recode-full", key);
+          same("recode-min", "recode-full-screen", key);
+        }
+        // The paper's FULL reads the whole screen for every pair test.
+        const recode::core::FrameSpec screen =
+            recode::core::resolveFrame(s.view, bounds, recode::core::FrameOverrides{});
+        const auto fullScreen = rows.find(prefix + "recode-full-screen");
+        if (fullScreen != rows.end() &&
+            fullScreen->second.count("stencil_pixels_read") !=
+                fullScreen->second.count("pair_tests") * screen.width * screen.height)
+          fail(prefix + "recode-full-screen: stencil pixels read are not pair tests x " +
+               std::to_string(screen.width) + " x " + std::to_string(screen.height));
+        const auto stencil = [&](const std::string& a) {
+          const auto it = rows.find(prefix + a);
+          return it == rows.end() ? -1 : it->second.count("stencil_pixels_read");
+        };
+        if (!(stencil("recode-min") > 0 && stencil("recode-min") <= stencil("recode-max") &&
+              stencil("recode-max") < stencil("recode-full")))
+          fail(prefix + ": stencil pixels read do not grow from MIN to MAX to FULL");
+      } else {
+        for (const char* key : {"contacts", "missed", "extra", "stencil_pixels_read"})
+          same("recode-cpu", "recode-gl", key);
+        const fs::path png =
+            dir /
+            ((scene.rfind(e.experiment, 0) == 0 ? scene : e.experiment + "-" + scene) + ".png");
+        if (!isPng(png))
+          fail(png.string() + " is missing or not a PNG");
+      }
+    }
+  }
+  if (rows.size() != expectedRows)
+    fail("bench.csv has " + std::to_string(rows.size()) + " rows, expected " +
+         std::to_string(expectedRows));
+
+  std::ifstream summaryFile(dir / "summary.md");
+  std::stringstream summary;
+  summary << summaryFile.rdbuf();
+  if (summary.str().find("FULL/MIN (FULL = the whole screen per pair test, as in the paper): "
+                         "collision time ") == std::string::npos)
+    fail("summary.md has no FULL/MIN ratio");
+
+  if (failures > 0) {
+    std::cerr << failures << " problems\n";
+    return 1;
+  }
+  std::cout << "bench output OK: " << rows.size() << " rows, found - extra + missed == truth in "
+            << "every row\n";
+  return 0;
+}
