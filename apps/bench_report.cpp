@@ -143,7 +143,9 @@ void writeAccuracyTable(std::ostream& out, const std::vector<const BenchRow*>& r
     for (const std::string& a : algorithms) {
       const BenchRow* r = find(rows, level, a);
       out << ' '
-          << (r ? std::to_string(r->score.missed) + " / " + std::to_string(r->score.extra) : "")
+          << (r ? grouped(r->score.found) + " (" + std::to_string(r->score.missed) + " / " +
+                      std::to_string(r->score.extra) + ")"
+                : "")
           << " |";
     }
     out << '\n';
@@ -195,7 +197,7 @@ void writeBenchSummary(std::ostream& out, const std::vector<const Experiment*>& 
       }
       out << "Mean collision time per frame, ms (standard deviation):\n\n";
       writeTimeTable(out, sceneRows);
-      out << "\nMissed / extra colliding pairs against CGAL:\n\n";
+      out << "\nColliding pairs found on the judged frames (missed / extra against CGAL):\n\n";
       writeAccuracyTable(out, sceneRows);
     }
   }
