@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "detector_test_support.hpp"
 #include "recode/core/convex_distance.hpp"
 #include "recode/core/experiment_scenes.hpp"
 #include "recode/core/hierarchy.hpp"
@@ -26,6 +27,7 @@
 #include "recode/verify/peer_detectors.hpp"
 
 using namespace recode;
+using test::treesOf;
 using verify::LeafPairId;
 
 namespace {
@@ -49,13 +51,6 @@ std::vector<NamedFactory> allDetectors() {
   out.push_back({"cgal", verify::makeExactDetector});
 #endif
   return out;
-}
-
-Trees treesOf(const core::Scene& scene) {
-  Trees trees;
-  for (const core::SceneObject& object : scene.objects)
-    trees.emplace_back(object);
-  return trees;
 }
 
 Trees treesAt(const std::string& sceneJson, int frame) {
@@ -215,15 +210,7 @@ TEST_CASE("peers: several objects of several blocks -- pairs of different object
     const verify::Detection d = detector->detect(trees, 0);
     CHECK(d.pairs == expected);
     CHECK(d.collisionUs > 0.0);
-    for (const LeafPairId& p : d.pairs) {
-      CHECK(p.objectA < p.objectB);
-      CHECK(trees[static_cast<std::size_t>(p.objectA)]
-                .nodes()[static_cast<std::size_t>(p.leafA)]
-                .isLeaf());
-      CHECK(trees[static_cast<std::size_t>(p.objectB)]
-                .nodes()[static_cast<std::size_t>(p.leafB)]
-                .isLeaf());
-    }
+    test::checkPairsAreLeafPairs(trees, d.pairs);
   }
 }
 

@@ -8,23 +8,14 @@
 #include <stdexcept>
 #include <vector>
 
+#include "detector_test_support.hpp"
 #include "recode/core/experiment_scenes.hpp"
 #include "recode/core/simulation.hpp"
 #include "recode/verify/recode_detector.hpp"
 
 using namespace recode;
+using test::treesOf;
 using verify::LeafPairId;
-
-namespace {
-
-std::vector<core::ObjectTree> treesOf(const core::Scene& scene) {
-  std::vector<core::ObjectTree> trees;
-  for (const core::SceneObject& o : scene.objects)
-    trees.emplace_back(o);
-  return trees;
-}
-
-}  // namespace
 
 TEST_CASE("RecodeDetector reports the simulation's contacts as sorted leaf pairs",
           "[bench][recode]") {
@@ -45,15 +36,7 @@ TEST_CASE("RecodeDetector reports the simulation's contacts as sorted leaf pairs
     for (const core::LeafContact& c : r.contacts)
       CHECK(std::find(d.pairs.begin(), d.pairs.end(),
                       LeafPairId{c.objectA, c.leafA, c.objectB, c.leafB}) != d.pairs.end());
-    for (const LeafPairId& p : d.pairs) {
-      CHECK(p.objectA < p.objectB);
-      CHECK(trees[static_cast<std::size_t>(p.objectA)]
-                .nodes()[static_cast<std::size_t>(p.leafA)]
-                .isLeaf());
-      CHECK(trees[static_cast<std::size_t>(p.objectB)]
-                .nodes()[static_cast<std::size_t>(p.leafB)]
-                .isLeaf());
-    }
+    test::checkPairsAreLeafPairs(trees, d.pairs);
     CHECK(detector.lastReport().pairTests == r.pairTests);
     CHECK(d.collisionUs >= 0.0);
     pairs += static_cast<long long>(d.pairs.size());
