@@ -1,38 +1,17 @@
 // Running one bench case: the judge, then each algorithm over the same motion.
 #include "bench_runner.hpp"
 
-#include <cmath>
 #include <memory>
-#include <numeric>
 #include <stdexcept>
 
 #include "recode/core/experiment_scenes.hpp"
+#include "recode/core/run_statistics.hpp"
 #include "recode/core/simulation.hpp"
 #include "recode/verify/peer_detectors.hpp"
 
 namespace recode::app {
 
 namespace {
-
-struct TimeStats {
-  double totalMs = 0.0, meanMs = 0.0, sdMs = 0.0;
-};
-
-TimeStats timeStats(const std::vector<double>& us) {
-  TimeStats s;
-  if (us.empty())
-    return s;
-  const double n = static_cast<double>(us.size());
-  const double sum = std::accumulate(us.begin(), us.end(), 0.0);
-  const double mean = sum / n;
-  double squares = 0.0;
-  for (double t : us)
-    squares += (t - mean) * (t - mean);
-  s.totalMs = sum / 1000.0;
-  s.meanMs = mean / 1000.0;
-  s.sdMs = std::sqrt(squares / n) / 1000.0;
-  return s;
-}
 
 std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
                                                     const core::Scene& scene,
@@ -71,10 +50,10 @@ BenchRow rowFor(const Experiment& experiment, const std::string& scene, int tria
 }
 
 void setTimes(BenchRow& row, const std::vector<double>& us) {
-  const TimeStats s = timeStats(us);
-  row.totalMs = s.totalMs;
-  row.meanMs = s.meanMs;
-  row.sdMs = s.sdMs;
+  const core::Moments m = core::moments(us);
+  row.totalMs = m.total / 1000.0;
+  row.meanMs = m.mean / 1000.0;
+  row.sdMs = m.sd / 1000.0;
 }
 
 }  // namespace

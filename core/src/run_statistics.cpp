@@ -6,13 +6,7 @@
 
 namespace recode::core {
 
-namespace {
-
-struct Moments {
-  double total = 0.0, mean = 0.0, sd = 0.0;
-};
-
-// Total, mean and population standard deviation (two passes, for accuracy).
+// Two passes, for accuracy.
 Moments moments(std::span<const double> values) {
   Moments m;
   if (values.empty())
@@ -26,8 +20,6 @@ Moments moments(std::span<const double> values) {
   m.sd = std::sqrt(squares / static_cast<double>(values.size()));
   return m;
 }
-
-}  // namespace
 
 void RunStatisticsAccumulator::add(const FrameReport& frame) {
   frameUs_.push_back(frame.frameUs);

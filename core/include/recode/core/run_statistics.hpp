@@ -10,6 +10,7 @@
 // descent, pair tests). Standard deviations are of the population (divided by TNF). The
 // counters of the paper's Table 1 come with them: box tests, pair tests, pixels read, contacts.
 
+#include <span>
 #include <vector>
 
 #include "recode/core/simulation.hpp"
@@ -30,6 +31,13 @@ struct RunStatistics {
   int firstContactFrame = -1;  // -1: none
   int framesWithContact = 0;
 };
+
+// Total, mean and population standard deviation of a series (frame times; `recode bench`'s
+// collision times), in the series' own unit.
+struct Moments {
+  double total = 0.0, mean = 0.0, sd = 0.0;
+};
+[[nodiscard]] Moments moments(std::span<const double> values);
 
 class RunStatisticsAccumulator {
  public:
