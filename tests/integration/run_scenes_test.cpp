@@ -14,6 +14,7 @@
 #include <string>
 #include <tuple>
 
+#include "comb_test_support.hpp"
 #include "recode/core/experiment_scenes.hpp"
 #include "recode/core/motion.hpp"
 #include "recode/core/simulation.hpp"
@@ -33,17 +34,8 @@ const HierarchyNode& nodeOf(const Simulation& sim, int object, int node) {
 TEST_CASE("comb-translate-aligned: nothing tested before the tips meet, then five contacts",
           "[run][comb]") {
   const Scene scene = builtinExperimentScene("comb-translate-aligned");
-  // The contact frame from the scene's own numbers: B's tips hang kHeight = 2 below its
-  // origin and move with its velocity; A's tips stand at z = 2. The first frame at which B's
-  // tips reach A's.
-  REQUIRE(scene.objects.size() == 2);
-  const SceneObject& b = scene.objects[1];
-  REQUIRE(b.motion.has_value());
-  const double height = 2.0;
-  int contactFrame = -1;
-  for (int k = 0; k < 1000 && contactFrame < 0; ++k)
-    if (b.position.z() + b.motion->velocity.z() * k - height <= height)
-      contactFrame = k;
+  // The contact frame from the scene's own numbers (comb_test_support.hpp).
+  const int contactFrame = test::combContactFrame(scene);
   REQUIRE(contactFrame > 0);
 
   Simulation sim(scene, RunOptions{});

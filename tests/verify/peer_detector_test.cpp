@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "comb_test_support.hpp"
 #include "detector_test_support.hpp"
 #include "recode/core/convex_distance.hpp"
 #include "recode/core/experiment_scenes.hpp"
@@ -231,20 +232,12 @@ TEST_CASE("peers: trees of another shape than the detector's are refused", "[pee
 TEST_CASE("peers: comb-translate-aligned -- no pair before the tips meet, then the five tip pairs",
           "[peers][comb]") {
   const core::Scene scene = core::builtinExperimentScene("comb-translate-aligned");
-  // The contact frame from the scene's numbers (as in run_scenes_test): B's tips hang 2 below
-  // its origin and move with its velocity; A's tips stand at z = 2.
-  REQUIRE(scene.objects.size() == 2);
-  const core::SceneObject& b = scene.objects[1];
-  REQUIRE(b.motion.has_value());
-  const double height = 2.0;
-  int contactFrame = -1;
-  for (int k = 0; k < 1000 && contactFrame < 0; ++k)
-    if (b.position.z() + b.motion->velocity.z() * k - height <= height)
-      contactFrame = k;
+  // The contact frame from the scene's numbers (comb_test_support.hpp).
+  const int contactFrame = test::combContactFrame(scene);
   REQUIRE(contactFrame > 0);
   // At the contact frame the tips overlap by less than one step of the motion.
-  const double overlap = height - (b.position.z() + b.motion->velocity.z() * contactFrame - height);
-  REQUIRE(overlap < std::abs(b.motion->velocity.z()));
+  const double overlap = -test::combTipGap(scene, contactFrame);
+  REQUIRE(overlap < std::abs(scene.objects[1].motion->velocity.z()));
 
   Trees trees = treesOf(scene);
   // Node i + 1 of each comb is its cone i.
