@@ -48,7 +48,9 @@ class ExactDetector final : public SceneDetector {
     const auto box = [&](int i) -> const core::Aabb& { return boxes[static_cast<std::size_t>(i)]; };
 
     // Sort and sweep along x: each block is compared with the blocks after it in order of
-    // min.x until one starts beyond its max.x.
+    // min.x until one starts beyond its max.x. Written here rather than taken from core's
+    // SweepAndPrune on purpose: the judge must not share RECODE's broad phase, or a pair that
+    // broad phase lost would be lost by both and never counted as missed.
     std::vector<int> order(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i)
       order[static_cast<std::size_t>(i)] = i;
