@@ -16,7 +16,7 @@
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
 #include "progress_bar.hpp"
-#include "recode/core/experiment_scenes.hpp"
+#include "recode/scene/experiment_scenes.hpp"
 #include "recode/verify/peer_detectors.hpp"
 
 namespace recode::app {

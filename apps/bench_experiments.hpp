@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "recode/core/frame.hpp"
+#include "recode/pair/frame.hpp"
 #include "recode/verify/recode_detector.hpp"
 
 namespace recode::app {

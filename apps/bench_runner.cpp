@@ -4,9 +4,9 @@
 #include <memory>
 #include <stdexcept>
 
-#include "recode/core/experiment_scenes.hpp"
-#include "recode/core/run_statistics.hpp"
-#include "recode/core/simulation.hpp"
+#include "recode/scene/experiment_scenes.hpp"
+#include "recode/sim/run_statistics.hpp"
+#include "recode/sim/simulation.hpp"
 #include "recode/verify/peer_detectors.hpp"
 
 namespace recode::app {

@@ -17,8 +17,8 @@
 #include "explain_recorder.hpp"
 #include "explain_text.hpp"
 #include "pair_setup.hpp"
-#include "recode/core/frame.hpp"
-#include "recode/core/pair.hpp"
+#include "recode/pair/frame.hpp"
+#include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 
 namespace recode::app {

@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "png_image.hpp"
-#include "recode/core/view.hpp"
+#include "recode/pair/view.hpp"
 #include "recode/raster/state.hpp"
 
 namespace recode::app::explain {

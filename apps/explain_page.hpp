@@ -7,7 +7,7 @@
 
 #include "explain_pictures.hpp"
 #include "pair_setup.hpp"
-#include "recode/core/pair.hpp"
+#include "recode/pair/pair.hpp"
 
 namespace recode::app::explain {
 

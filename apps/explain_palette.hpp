@@ -4,7 +4,7 @@
 #include <array>
 
 #include "png_image.hpp"
-#include "recode/core/pair_cases.hpp"
+#include "recode/pair/pair_cases.hpp"
 
 namespace recode::app::explain {
 

@@ -11,7 +11,7 @@
 #include "explain_format.hpp"
 #include "explain_palette.hpp"
 #include "explain_text.hpp"
-#include "recode/core/pair_cases.hpp"
+#include "recode/pair/pair_cases.hpp"
 
 namespace recode::app::explain {
 

@@ -10,7 +10,7 @@
 #include "explain_recorder.hpp"
 #include "pair_setup.hpp"
 #include "png_image.hpp"
-#include "recode/core/pair.hpp"
+#include "recode/pair/pair.hpp"
 #include "recode/raster/state.hpp"
 
 namespace recode::app::explain {

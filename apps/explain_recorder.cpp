@@ -1,8 +1,8 @@
 // Records the buffers `recode explain` pictures: a PairObserver's snapshots and block coverage.
 #include "explain_recorder.hpp"
 
-#include "recode/core/frame.hpp"
-#include "recode/core/view.hpp"
+#include "recode/pair/frame.hpp"
+#include "recode/pair/view.hpp"
 #include "recode/raster/cpu_device.hpp"
 
 namespace recode::app::explain {

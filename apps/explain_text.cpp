@@ -6,7 +6,7 @@
 
 #include "explain_format.hpp"
 #include "explain_palette.hpp"
-#include "recode/core/pair_cases.hpp"
+#include "recode/pair/pair_cases.hpp"
 
 namespace recode::app::explain {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "recode/core/pair.hpp"
+#include "recode/pair/pair.hpp"
 #include "recode/raster/state.hpp"
 
 namespace recode::app::explain {

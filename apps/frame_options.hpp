@@ -7,8 +7,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "recode/core/frame.hpp"
-#include "recode/core/pair.hpp"
+#include "recode/pair/frame.hpp"
+#include "recode/pair/pair.hpp"
 
 namespace recode::app {
 

@@ -9,7 +9,7 @@
 #include "pair_report.hpp"
 #include "pair_setup.hpp"
 #include "pgm.hpp"
-#include "recode/core/pair.hpp"
+#include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 
 namespace recode::app {

@@ -5,7 +5,7 @@
 #include <ostream>
 
 #include "pair_setup.hpp"
-#include "recode/core/pair.hpp"
+#include "recode/pair/pair.hpp"
 
 namespace recode::app {
 

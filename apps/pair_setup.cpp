@@ -3,7 +3,7 @@
 #include <charconv>
 #include <stdexcept>
 
-#include "recode/core/builtin_scenes.hpp"
+#include "recode/scene/builtin_scenes.hpp"
 
 namespace recode::app {
 

@@ -10,10 +10,10 @@
 
 #include "frame_options.hpp"
 #include "progress_bar.hpp"
-#include "recode/core/experiment_scenes.hpp"
-#include "recode/core/run_statistics.hpp"
-#include "recode/core/scene.hpp"
-#include "recode/core/simulation.hpp"
+#include "recode/scene/experiment_scenes.hpp"
+#include "recode/scene/scene.hpp"
+#include "recode/sim/run_statistics.hpp"
+#include "recode/sim/simulation.hpp"
 #include "run_report.hpp"
 
 namespace recode::app {

@@ -6,8 +6,8 @@
 #include <ostream>
 #include <string>
 
-#include "recode/core/run_statistics.hpp"
-#include "recode/core/simulation.hpp"
+#include "recode/sim/run_statistics.hpp"
+#include "recode/sim/simulation.hpp"
 
 namespace recode::app {
 

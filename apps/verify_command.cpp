@@ -6,7 +6,7 @@
 #include <string>
 
 #include "frame_options.hpp"
-#include "recode/core/builtin_scenes.hpp"
+#include "recode/scene/builtin_scenes.hpp"
 #include "verify_pairs.hpp"
 #include "verify_report.hpp"
 

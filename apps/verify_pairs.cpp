@@ -1,6 +1,6 @@
 #include "verify_pairs.hpp"
 
-#include "recode/core/hierarchy.hpp"
+#include "recode/sim/hierarchy.hpp"
 #include "recode/verify/pair_suite.hpp"
 
 namespace recode::app {

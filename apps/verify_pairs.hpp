@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "recode/core/frame.hpp"
-#include "recode/core/mesh.hpp"
-#include "recode/core/scene.hpp"
+#include "recode/geometry/mesh.hpp"
+#include "recode/pair/frame.hpp"
+#include "recode/scene/scene.hpp"
 
 namespace recode::app {
 

@@ -8,9 +8,9 @@
 
 #include <array>
 
-#include "recode/core/builtin_scenes.hpp"
-#include "recode/core/pair.hpp"
+#include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
+#include "recode/scene/builtin_scenes.hpp"
 
 namespace {
 

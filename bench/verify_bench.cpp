@@ -10,7 +10,7 @@
 #include <map>
 #include <vector>
 
-#include "recode/core/pair.hpp"
+#include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/verify/cgal_oracle.hpp"
 #include "recode/verify/embree_oracle.hpp"

@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
-#include "recode/core/experiment_scenes.hpp"
-#include "recode/core/frame.hpp"
-#include "recode/core/simulation.hpp"
+#include "recode/pair/frame.hpp"
+#include "recode/scene/experiment_scenes.hpp"
+#include "recode/sim/simulation.hpp"
 
 namespace {
 

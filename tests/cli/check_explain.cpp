@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "recode/core/pair_cases.hpp"
+#include "recode/pair/pair_cases.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Helpers shared by the core test suites.
+// Helpers shared by the core test suites (geometry and up).
 
 #include <algorithm>
 #include <atomic>
@@ -12,9 +12,8 @@
 #include <string>
 #include <utility>
 
-#include "recode/core/mesh.hpp"
-#include "recode/core/mesh_error.hpp"
-#include "recode/core/scene.hpp"
+#include "recode/geometry/mesh.hpp"
+#include "recode/geometry/mesh_error.hpp"
 
 namespace recode::core::test {
 
@@ -77,21 +76,6 @@ inline std::size_t countEdges(const TriangleMesh& mesh) {
 // Path of a file under data/ in the source tree.
 inline std::filesystem::path dataFile(const std::string& relative) {
   return std::filesystem::path(RECODE_DATA_DIR) / relative;
-}
-
-// Parses `text` as a scene file called `name`, with mesh paths relative to data/.
-inline Scene parseSceneText(const std::string& text, const std::string& name) {
-  return parseScene(text, name, dataFile(""));
-}
-
-// The message of the SceneError that parsing `text` as `name` throws ("" if it does not throw).
-inline std::string sceneErrorOf(const std::string& text, const std::string& name) {
-  try {
-    (void)parseSceneText(text, name);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace recode::core::test

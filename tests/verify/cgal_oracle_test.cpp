@@ -8,10 +8,10 @@
 #include <string>
 
 #include "pair_test_support.hpp"
-#include "recode/core/generators.hpp"
-#include "recode/core/mesh_error.hpp"
-#include "recode/core/pair.hpp"
-#include "recode/core/pair_cases.hpp"
+#include "recode/geometry/generators.hpp"
+#include "recode/geometry/mesh_error.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/pair/pair_cases.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/verify/cgal_oracle.hpp"
 #include "recode/verify/pair_suite.hpp"

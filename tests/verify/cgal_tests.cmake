@@ -3,6 +3,6 @@
 add_executable(recode_verify_cgal_tests cgal_oracle_test.cpp)
 target_link_libraries(recode_verify_cgal_tests PRIVATE recode_verify recode_warnings
                                                        Catch2::Catch2WithMain)
-# pair_test_support.hpp: running a pair, boxes and frames, shared with the integration suites.
-target_include_directories(recode_verify_cgal_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/integration)
+# pair_test_support.hpp: running a pair, boxes and frames, shared with the pair suites.
+target_include_directories(recode_verify_cgal_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/core/pair)
 catch_discover_tests(recode_verify_cgal_tests)

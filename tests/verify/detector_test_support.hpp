@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "recode/core/hierarchy.hpp"
-#include "recode/core/scene.hpp"
+#include "recode/scene/scene.hpp"
+#include "recode/sim/hierarchy.hpp"
 #include "recode/verify/scene_detector.hpp"
 
 namespace recode::test {

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "pair_test_support.hpp"
-#include "recode/core/generators.hpp"
-#include "recode/core/pair.hpp"
-#include "recode/core/view.hpp"
+#include "recode/geometry/generators.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/pair/view.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/verify/embree_oracle.hpp"
 #include "recode/verify/pair_suite.hpp"

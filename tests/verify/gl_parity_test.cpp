@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "recode/core/pair.hpp"
+#include "recode/pair/pair.hpp"
 #include "recode/raster/command_stream.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"

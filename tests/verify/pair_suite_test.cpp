@@ -6,9 +6,9 @@
 #include <map>
 #include <set>
 
-#include "recode/core/pair.hpp"
-#include "recode/core/validate.hpp"
-#include "recode/core/view.hpp"
+#include "recode/geometry/validate.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/pair/view.hpp"
 #include "recode/verify/pair_suite.hpp"
 
 using namespace recode;

@@ -20,10 +20,10 @@
 
 #include "comb_test_support.hpp"
 #include "detector_test_support.hpp"
-#include "recode/core/convex_distance.hpp"
-#include "recode/core/experiment_scenes.hpp"
-#include "recode/core/hierarchy.hpp"
-#include "recode/core/scene.hpp"
+#include "recode/geometry/convex_distance.hpp"
+#include "recode/scene/experiment_scenes.hpp"
+#include "recode/scene/scene.hpp"
+#include "recode/sim/hierarchy.hpp"
 #include "recode/verify/cgal_oracle.hpp"
 #include "recode/verify/peer_detectors.hpp"
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "detector_test_support.hpp"
-#include "recode/core/experiment_scenes.hpp"
-#include "recode/core/simulation.hpp"
+#include "recode/scene/experiment_scenes.hpp"
+#include "recode/sim/simulation.hpp"
 #include "recode/verify/recode_detector.hpp"
 
 using namespace recode;

@@ -1,0 +1,40 @@
+#pragma once
+// Reading triangle meshes from Wavefront OBJ and OFF files.
+//
+// Both readers keep every vertex of the file in file order (vertex k of the file is
+// mesh.vertices[k]) and fan-triangulate each polygon v0 v1 ... v(n-1) into
+// (v0, v1, v2), (v0, v2, v3), ..., (v0, v(n-2), v(n-1)), keeping its winding. They check
+// the file's syntax, that coordinates are finite and that face indices are in range; they
+// do not check that the result is a valid convex block (see validate.hpp).
+//
+// Errors throw MeshError with a message "<path>:<line>: <problem>" when the problem belongs
+// to a line, else "<path>: <problem>". docs/geometry.md lists the messages.
+
+#include <filesystem>
+
+#include "recode/geometry/mesh.hpp"
+#include "recode/geometry/mesh_error.hpp"
+
+namespace recode::core {
+
+// Wavefront OBJ, parsed by tinyobjloader (double precision). Only `v` positions and `f`
+// faces are used; normals, texture coordinates, groups, materials, lines and points are
+// ignored (material libraries are not opened). Because tinyobjloader silently replaces
+// malformed numbers by defaults, the reader first checks every `v` and `f` line itself:
+// a `v` line needs at least three finite numbers (more are allowed: w or a colour); an
+// `f` line needs at least three vertex references whose vertex index is a non-zero integer
+// in range (negative indices count back from the last vertex defined so far).
+[[nodiscard]] TriangleMesh readObj(const std::filesystem::path& path);
+
+// OFF: the keyword "OFF" on the first non-blank line (optionally followed by the counts on
+// the same line), then "numVertices numFaces [numEdges]", then one vertex per line (exactly
+// three finite numbers), then one face per line ("n i0 i1 ... i(n-1)", n >= 3, indices
+// 0-based; anything after the n indices, such as a colour, is ignored). '#' starts a comment
+// that runs to the end of the line; blank lines are skipped. Nothing but comments and blank
+// lines may follow the last face.
+[[nodiscard]] TriangleMesh readOff(const std::filesystem::path& path);
+
+// Chooses the reader by the file extension, ignoring case: ".obj" or ".off".
+[[nodiscard]] TriangleMesh readMesh(const std::filesystem::path& path);
+
+}  // namespace recode::core

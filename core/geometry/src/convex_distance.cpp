@@ -1,0 +1,122 @@
+// GJK on the Minkowski difference A - B. The closest point of each simplex (at most four
+// points) to the origin is found by trying every face of it: the affine minimiser of each
+// subset, kept when its barycentric weights are all non-negative; the nearest kept point is
+// the simplex's closest point and its subset the next simplex. With at most 15 subsets this
+// is cheap, and it has none of the case analysis that makes hand-written sub-algorithms
+// fragile.
+#include "recode/geometry/convex_distance.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace recode::core {
+
+namespace {
+
+Eigen::Vector3d furthest(std::span<const Eigen::Vector3d> points, const Eigen::Vector3d& d) {
+  const Eigen::Vector3d* best = &points[0];
+  double bestDot = best->dot(d);
+  for (const Eigen::Vector3d& p : points) {
+    const double dot = p.dot(d);
+    if (dot > bestDot) {
+      bestDot = dot;
+      best = &p;
+    }
+  }
+  return *best;
+}
+
+struct Closest {
+  Eigen::Vector3d point;
+  std::vector<Eigen::Vector3d> simplex;  // the subset whose face holds the point
+};
+
+// The point of conv(simplex) nearest the origin.
+Closest closestOnSimplex(const std::vector<Eigen::Vector3d>& simplex) {
+  const int n = static_cast<int>(simplex.size());
+  Closest best;
+  double bestNorm = std::numeric_limits<double>::infinity();
+  for (int mask = 1; mask < (1 << n); ++mask) {
+    std::vector<Eigen::Vector3d> subset;
+    for (int i = 0; i < n; ++i)
+      if (mask & (1 << i))
+        subset.push_back(simplex[static_cast<std::size_t>(i)]);
+    const int m = static_cast<int>(subset.size());
+    // Minimise |p0 + sum_i t_i (p_i - p0)|: normal equations G t = -E^T p0.
+    Eigen::VectorXd weights(m);
+    if (m == 1) {
+      weights(0) = 1.0;
+    } else {
+      Eigen::MatrixXd e(3, m - 1);
+      for (int i = 1; i < m; ++i)
+        e.col(i - 1) = subset[static_cast<std::size_t>(i)] - subset[0];
+      const Eigen::MatrixXd g = e.transpose() * e;
+      const Eigen::FullPivLU<Eigen::MatrixXd> lu(g);
+      if (lu.rank() < m - 1)
+        continue;  // a degenerate face: its points are covered by smaller subsets
+      const Eigen::VectorXd t = lu.solve(-e.transpose() * subset[0]);
+      weights(0) = 1.0 - t.sum();
+      weights.tail(m - 1) = t;
+    }
+    if ((weights.array() < -1e-12).any())
+      continue;
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (int i = 0; i < m; ++i)
+      p += weights(i) * subset[static_cast<std::size_t>(i)];
+    const double norm = p.norm();
+    // Prefer the smaller subset on a tie, so the simplex stays small.
+    if (norm < bestNorm * (1.0 - 1e-14) ||
+        (norm <= bestNorm && subset.size() < best.simplex.size())) {
+      bestNorm = norm;
+      best.point = p;
+      best.simplex = subset;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+double convexHullDistance(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+  if (a.empty() || b.empty())
+    throw std::invalid_argument("convexHullDistance: an empty point set");
+  double scale = 0.0;
+  for (const Eigen::Vector3d& p : a)
+    scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  for (const Eigen::Vector3d& p : b)
+    scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  const double tiny = 1e-12 * std::max(scale, 1e-300);
+
+  // v is always the point of conv(simplex) nearest the origin, so a new simplex can only
+  // bring it nearer.
+  Eigen::Vector3d v = a[0] - b[0];
+  std::vector<Eigen::Vector3d> simplex{v};
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double vv = v.norm();
+    if (vv <= tiny)
+      return 0.0;
+    const Eigen::Vector3d w = furthest(a, -v) - furthest(b, v);
+    // No point of A - B lies nearer the origin along v than v itself (to rounding): done.
+    if (vv * vv - v.dot(w) <= 1e-12 * vv * vv)
+      return vv;
+    if (std::find(simplex.begin(), simplex.end(), w) != simplex.end())
+      return vv;
+    simplex.push_back(w);
+    const Closest c = closestOnSimplex(simplex);
+    if (c.simplex.empty())
+      return vv;  // numerically stuck; v is the best found
+    if (c.simplex.size() == 4)
+      return 0.0;  // the origin lies inside the tetrahedron
+    if (c.point.norm() >= vv)
+      return vv;  // no progress
+    v = c.point;
+    simplex = c.simplex;
+  }
+  return v.norm();
+}
+
+}  // namespace recode::core

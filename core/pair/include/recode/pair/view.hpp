@@ -1,0 +1,62 @@
+#pragma once
+// World -> window mapping of DESIGN.md section 3: an orthographic view along a world axis,
+// GL conventions (the viewer on the + side of the axis looking toward -, so depth grows as
+// the coordinate along the axis decreases), the scene window onto W x H pixels, window x and
+// y pre-snapped to the 1/256-pixel grid so every back end starts from the same vertices.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "recode/geometry/mesh.hpp"
+#include "recode/geometry/projection.hpp"
+#include "recode/raster/device.hpp"
+
+namespace recode::core {
+
+class OrthoView {
+ public:
+  // depthMin/depthMax: the world extent along the axis that maps onto depth [1, 0] (the far
+  // end, smallest coordinate, is depth 1). Throws std::invalid_argument for a degenerate or
+  // non-finite window or depth range, or a resolution outside 1..16384.
+  OrthoView(ViewAxis axis, const ViewWindow& window, int width, int height, double depthMin,
+            double depthMax);
+
+  [[nodiscard]] ViewAxis axis() const { return axis_; }
+  [[nodiscard]] const ViewWindow& window() const { return window_; }
+  [[nodiscard]] int width() const { return width_; }
+  [[nodiscard]] int height() const { return height_; }
+  [[nodiscard]] double depthMin() const { return depthMin_; }
+  [[nodiscard]] double depthMax() const { return depthMax_; }
+
+  // (u, v, d): the image-plane coordinates and the coordinate along the axis.
+  [[nodiscard]] Eigen::Vector3d toPlane(const Eigen::Vector3d& world) const;
+  [[nodiscard]] Eigen::Vector3d fromPlane(const Eigen::Vector3d& uvd) const;
+
+  // World point -> window vertex, x and y snapped to 1/256 pixel, z in [0, 1]. Throws
+  // std::invalid_argument for a point beyond the device's coordinate range or outside the
+  // depth range.
+  [[nodiscard]] raster::WindowVertex toWindow(const Eigen::Vector3d& world) const;
+  [[nodiscard]] std::vector<raster::WindowVertex> toWindow(const TriangleMesh& mesh) const;
+
+  // Window position (pixels) and normalised depth -> world point.
+  [[nodiscard]] Eigen::Vector3d toWorld(double windowX, double windowY, double depth) const;
+
+  // World size of one pixel along u and v.
+  [[nodiscard]] double pixelWidth() const { return (window_.umax - window_.umin) / width_; }
+  [[nodiscard]] double pixelHeight() const { return (window_.vmax - window_.vmin) / height_; }
+
+ private:
+  ViewAxis axis_;
+  ViewWindow window_;
+  int width_;
+  int height_;
+  double depthMin_;
+  double depthMax_;
+};
+
+// Flattens a mesh's triangles into a device index list.
+[[nodiscard]] std::vector<std::uint32_t> triangleIndices(const TriangleMesh& mesh);
+
+}  // namespace recode::core

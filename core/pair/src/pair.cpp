@@ -1,0 +1,361 @@
+#include "recode/pair/pair.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "recode/raster/fixed_point.hpp"
+#include "recode/raster/state.hpp"
+
+namespace recode::core {
+
+namespace {
+
+using raster::CompareFunc;
+using raster::CullMode;
+using raster::Face;
+using raster::PixelRect;
+using raster::StencilOp;
+using Clock = std::chrono::steady_clock;
+
+double microsecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::micro>(Clock::now() - start).count();
+}
+
+// Quantised depth range of a block's vertices. Every fragment depth of the block lies in it
+// up to rounding of the plane evaluation, hence the one-LSB slack where it is used.
+struct DepthSpan {
+  std::uint32_t min = raster::kDepthMax;
+  std::uint32_t max = 0;
+};
+
+DepthSpan depthSpan(std::span<const raster::WindowVertex> vertices) {
+  DepthSpan s;
+  for (const raster::WindowVertex& v : vertices) {
+    const std::uint32_t q = raster::quantizeDepth(v.z);
+    s.min = std::min(s.min, q);
+    s.max = std::max(s.max, q);
+  }
+  return s;
+}
+
+bool depthSpansMeet(const DepthSpan& a, const DepthSpan& b) {
+  return a.min <= b.max + 1 && b.min <= a.max + 1;
+}
+
+// caseFromStencil for every byte, so decoding a large MOR is one table load per pixel.
+const std::array<std::uint8_t, 256>& caseTable() {
+  static const std::array<std::uint8_t, 256> table = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (int s = 0; s < 256; ++s)
+      t[static_cast<std::size_t>(s)] =
+          static_cast<std::uint8_t>(caseFromStencil(static_cast<std::uint8_t>(s)));
+    return t;
+  }();
+  return table;
+}
+
+PixelRect boundingRect(const PixelRect& a, const PixelRect& b) {
+  if (a.empty())
+    return b;
+  if (b.empty())
+    return a;
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+// The command sequence of docs/algorithm.md ("The passes"). Each function sets every piece
+// of state its draws depend on, so the sequence does not rely on what the device held before.
+class PassRunner {
+ public:
+  PassRunner(raster::DepthStencilDevice& device, std::span<const raster::WindowVertex> va,
+             std::span<const std::uint32_t> ia, std::span<const raster::WindowVertex> vb,
+             std::span<const std::uint32_t> ib)
+      : dev_(device), va_(va), ia_(ia), vb_(vb), ib_(ib) {}
+
+  // RenderSetZ(A, GEQUAL): depth cleared to 0 then raised to the farthest face of A, so the
+  // depth buffer holds Amax; stencil cleared to 0 and set to 1 wherever A is drawn. All of
+  // A's faces are drawn (the paper draws the back faces): the maximum over both is Amax even
+  // where rounding puts a silhouette pixel's front face a step behind its back face.
+  void setZ(const PixelRect& mor) {
+    dev_.setScissor(mor);
+    dev_.setDepthWriteMask(true);
+    dev_.setStencilWriteMask(0xFF);
+    dev_.clearDepth(0.0);
+    dev_.clearStencil(0);
+    dev_.setCullMode(CullMode::None);
+    dev_.setDepthFunc(CompareFunc::GEqual);
+    dev_.setStencilFunc(CompareFunc::Always, 1, 0xFF);
+    dev_.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Replace});
+    dev_.drawTriangles(va_, ia_);
+  }
+
+  // RenderTestZ(B, LEQUAL): where A is present (1 <= count), every face of B at or in front
+  // of Amax increments the count; depth is only tested, never written.
+  void testZ() {
+    dev_.setDepthWriteMask(false);
+    dev_.setDepthFunc(CompareFunc::LEqual);
+    dev_.setStencilFunc(CompareFunc::LEqual, 1, kCountBits);
+    dev_.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Incr});
+    dev_.setStencilWriteMask(kCountBits);
+    dev_.setCullMode(CullMode::None);
+    dev_.drawTriangles(vb_, ib_);
+  }
+
+  // Depth cleared to 1 and lowered to A's nearest face: the depth buffer holds Amin. The
+  // stencil write mask is 0 so the count survives.
+  void loadAmin() {
+    dev_.setStencilWriteMask(0);
+    dev_.setDepthWriteMask(true);
+    dev_.clearDepth(1.0);
+    dev_.setDepthFunc(CompareFunc::LEqual);
+    dev_.setStencilFunc(CompareFunc::Always, 0, 0xFF);
+    dev_.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Keep});
+    dev_.setCullMode(CullMode::None);
+    dev_.drawTriangles(va_, ia_);
+  }
+
+  // One of B's two faces (front: cull back faces; back: cull front faces) against Amin with
+  // GEQUAL. Where A is present the bit is flipped when the face is at or behind Amin; where
+  // A is absent the stencil test fails and the bit is flipped anyway, recording B's
+  // coverage. A convex block has one face of each orientation per pixel, so one flip sets
+  // the bit from 0.
+  void testAmin(CullMode culled, std::uint8_t bit) {
+    dev_.setDepthWriteMask(false);
+    dev_.setDepthFunc(CompareFunc::GEqual);
+    dev_.setStencilFunc(CompareFunc::LEqual, 1, kCountBits);
+    dev_.setStencilOps(Face::Both, {StencilOp::Invert, StencilOp::Keep, StencilOp::Invert});
+    dev_.setStencilWriteMask(bit);
+    dev_.setCullMode(culled);
+    dev_.drawTriangles(vb_, ib_);
+  }
+
+  // Depth over `rect` becomes, for the faces facing the viewer (near end: cull back, GEQUAL
+  // from 0) the later of A's and B's near ends, or for the faces facing away (far end: cull
+  // front, LEQUAL from 1) the earlier of their far ends: the two ends of the overlap interval.
+  void overlapEnd(const PixelRect& rect, bool nearEnd) {
+    dev_.setScissor(rect);
+    dev_.setStencilWriteMask(0);
+    dev_.setDepthWriteMask(true);
+    dev_.clearDepth(nearEnd ? 0.0 : 1.0);
+    dev_.setCullMode(nearEnd ? CullMode::Back : CullMode::Front);
+    dev_.setDepthFunc(nearEnd ? CompareFunc::GEqual : CompareFunc::LEqual);
+    dev_.setStencilFunc(CompareFunc::Always, 0, 0xFF);
+    dev_.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Keep});
+    dev_.drawTriangles(va_, ia_);
+    dev_.drawTriangles(vb_, ib_);
+  }
+
+ private:
+  raster::DepthStencilDevice& dev_;
+  std::span<const raster::WindowVertex> va_;
+  std::span<const std::uint32_t> ia_;
+  std::span<const raster::WindowVertex> vb_;
+  std::span<const std::uint32_t> ib_;
+};
+
+}  // namespace
+
+std::string_view toString(MorMode mode) {
+  switch (mode) {
+    case MorMode::Min:
+      return "min";
+    case MorMode::Max:
+      return "max";
+    case MorMode::Full:
+      return "full";
+  }
+  return "?";
+}
+
+std::optional<MorMode> parseMorMode(std::string_view name) {
+  for (const MorMode mode : {MorMode::Min, MorMode::Max, MorMode::Full})
+    if (name == toString(mode))
+      return mode;
+  return std::nullopt;
+}
+
+std::string_view toString(PairStep step) {
+  switch (step) {
+    case PairStep::SetZ:
+      return "set_z";
+    case PairStep::TestZ:
+      return "test_z";
+    case PairStep::LoadAmin:
+      return "load_amin";
+    case PairStep::TestAminFront:
+      return "test_amin_front";
+    case PairStep::TestAminBack:
+      return "test_amin_back";
+    case PairStep::ReadStencil:
+      return "read_stencil";
+    case PairStep::ContactNear:
+      return "contact_near";
+    case PairStep::ContactFar:
+      return "contact_far";
+  }
+  return "?";
+}
+
+std::array<double, 2> pairDepthRange(ViewAxis axis, const Aabb& a, const Aabb& b) {
+  const int k = axis == ViewAxis::X ? 0 : axis == ViewAxis::Y ? 1 : 2;
+  return {std::min(a.min[k], b.min[k]), std::max(a.max[k], b.max[k])};
+}
+
+PixelRect pixelFootprint(std::span<const raster::WindowVertex> vertices, int width, int height) {
+  if (vertices.empty())
+    return {};
+  float xmin = vertices[0].x, xmax = xmin, ymin = vertices[0].y, ymax = ymin;
+  for (const raster::WindowVertex& v : vertices) {
+    xmin = std::min(xmin, v.x);
+    xmax = std::max(xmax, v.x);
+    ymin = std::min(ymin, v.y);
+    ymax = std::max(ymax, v.y);
+  }
+  // Pixel i's centre i + 0.5 lies in [min, max] for ceil(min - 0.5) <= i <= floor(max - 0.5).
+  // The snapped coordinates are multiples of 1/256, so these differences are exact.
+  const auto first = [](float lo) { return static_cast<int>(std::ceil(double{lo} - 0.5)); };
+  const auto last = [](float hi) { return static_cast<int>(std::floor(double{hi} - 0.5)) + 1; };
+  const PixelRect frame{0, 0, width, height};
+  return PixelRect{first(xmin), first(ymin), last(xmax), last(ymax)}.intersect(frame);
+}
+
+PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a,
+                       const TriangleMesh& b, const PairRequest& request, PairObserver* observer) {
+  const Clock::time_point start = Clock::now();
+  const FrameSpec& frame = request.frame;
+  if (device.width() != frame.width || device.height() != frame.height) {
+    std::ostringstream m;
+    m << "device is " << device.width() << "x" << device.height() << " but the pair's frame is "
+      << frame.width << "x" << frame.height;
+    throw std::invalid_argument(m.str());
+  }
+  PairResult r;
+  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, boundingBox(a), boundingBox(b));
+  r.depthMin = depthMin;
+  r.depthMax = depthMax;
+  const OrthoView view(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
+  const std::vector<raster::WindowVertex> va = view.toWindow(a), vb = view.toWindow(b);
+  const std::vector<std::uint32_t> ia = triangleIndices(a), ib = triangleIndices(b);
+
+  // The box test on the snapped geometry the device will draw: the projected boxes must share
+  // a pixel centre and the depth ranges must come within one step of each other. Nothing
+  // that fails it can interfere, so skipping the passes then gives the verdict they would.
+  const PixelRect footA = pixelFootprint(va, frame.width, frame.height);
+  const PixelRect footB = pixelFootprint(vb, frame.width, frame.height);
+  const PixelRect overlap = footA.intersect(footB);
+  r.boxesOverlap = !overlap.empty() && depthSpansMeet(depthSpan(va), depthSpan(vb));
+  if (request.boxTest && !r.boxesOverlap) {
+    r.timing.totalUs = microsecondsSince(start);
+    return r;
+  }
+  switch (request.mor) {
+    case MorMode::Min:
+      r.mor = overlap;
+      if (r.mor.empty()) {  // only reachable without the box test
+        r.timing.totalUs = microsecondsSince(start);
+        return r;
+      }
+      break;
+    case MorMode::Max:
+      r.mor = boundingRect(footA, footB);
+      break;
+    case MorMode::Full:
+      r.mor = {0, 0, frame.width, frame.height};
+      break;
+  }
+
+  PassRunner passes(device, va, ia, vb, ib);
+  const auto timed = [&](PairStep step, auto&& body) {
+    const Clock::time_point t = Clock::now();
+    body();
+    r.timing.stepUs[static_cast<std::size_t>(step)] += microsecondsSince(t);
+    if (observer)
+      observer->afterStep(step, device);
+  };
+  timed(PairStep::SetZ, [&] { passes.setZ(r.mor); });
+  timed(PairStep::TestZ, [&] { passes.testZ(); });
+  timed(PairStep::LoadAmin, [&] { passes.loadAmin(); });
+  timed(PairStep::TestAminFront, [&] { passes.testAmin(CullMode::Back, kFrontBehindAminBit); });
+  timed(PairStep::TestAminBack, [&] { passes.testAmin(CullMode::Front, kBackBehindAminBit); });
+  std::vector<std::uint8_t> stencil;
+  timed(PairStep::ReadStencil, [&] { stencil = device.readStencil(r.mor); });
+  r.stencilPixelsRead = r.mor.area();
+
+  Clock::time_point t = Clock::now();
+  r.caseMap.resize(stencil.size());
+  int cx0 = r.mor.x1, cy0 = r.mor.y1, cx1 = r.mor.x0, cy1 = r.mor.y0;
+  const int morWidth = r.mor.width();
+  const std::array<std::uint8_t, 256>& table = caseTable();
+  for (std::size_t i = 0; i < stencil.size(); ++i) {
+    const int c = table[stencil[i]];
+    r.caseMap[i] = static_cast<std::uint8_t>(c);
+    ++r.caseCounts[static_cast<std::size_t>(c)];
+    if (isInterfering(c)) {
+      const int x = r.mor.x0 + static_cast<int>(i % static_cast<std::size_t>(morWidth));
+      const int y = r.mor.y0 + static_cast<int>(i / static_cast<std::size_t>(morWidth));
+      cx0 = std::min(cx0, x);
+      cy0 = std::min(cy0, y);
+      cx1 = std::max(cx1, x + 1);
+      cy1 = std::max(cy1, y + 1);
+    }
+  }
+  for (int c = 3; c <= 6; ++c)
+    r.interferingPixels += r.caseCounts[static_cast<std::size_t>(c)];
+  r.collide = r.interferingPixels > 0;
+  r.contact.pixels = r.interferingPixels;
+  r.contact.area =
+      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
+  r.timing.classifyUs += microsecondsSince(t);
+  if (!r.collide || !request.contact) {
+    r.timing.totalUs = microsecondsSince(start);
+    return r;
+  }
+
+  r.contactRect = {cx0, cy0, cx1, cy1};
+  std::vector<std::uint32_t> nearDepth, farDepth;
+  timed(PairStep::ContactNear, [&] {
+    passes.overlapEnd(r.contactRect, true);
+    nearDepth = device.readDepth(r.contactRect);
+  });
+  timed(PairStep::ContactFar, [&] {
+    passes.overlapEnd(r.contactRect, false);
+    farDepth = device.readDepth(r.contactRect);
+  });
+  r.depthPixelsRead = 2 * r.contactRect.area();
+
+  t = Clock::now();
+  const double depthScale = 1.0 / static_cast<double>(raster::kDepthMax);
+  const double worldPerStep = (depthMax - depthMin) * depthScale;
+  r.contact.points.reserve(static_cast<std::size_t>(r.interferingPixels));
+  const int rectWidth = r.contactRect.width();
+  for (int y = r.contactRect.y0; y < r.contactRect.y1; ++y) {
+    for (int x = r.contactRect.x0; x < r.contactRect.x1; ++x) {
+      const std::size_t m = static_cast<std::size_t>(y - r.mor.y0) * morWidth + (x - r.mor.x0);
+      if (!isInterfering(r.caseMap[m]))
+        continue;
+      const std::size_t k =
+          static_cast<std::size_t>(y - r.contactRect.y0) * rectWidth + (x - r.contactRect.x0);
+      std::uint32_t lo = nearDepth[k], hi = farDepth[k];
+      // The near end can only pass the far end by rounding (the intervals touch within a
+      // step at this pixel): the overlap is then taken as the single depth between them.
+      if (lo > hi) {
+        ++r.contact.collapsedPixels;
+        lo = hi = lo / 2 + hi / 2 + (lo & hi & 1u);
+      }
+      const double cxw = x + 0.5, cyw = y + 0.5;
+      const Eigen::Vector3d pn = view.toWorld(cxw, cyw, lo * depthScale);
+      const Eigen::Vector3d pf = view.toWorld(cxw, cyw, hi * depthScale);
+      r.contact.box.extend(pn);
+      r.contact.box.extend(pf);
+      r.contact.points.push_back(0.5 * (pn + pf));
+      r.contact.maxDepth = std::max(r.contact.maxDepth, (hi - lo) * worldPerStep);
+    }
+  }
+  r.timing.classifyUs += microsecondsSince(t);
+  r.timing.totalUs = microsecondsSince(start);
+  return r;
+}
+
+}  // namespace recode::core

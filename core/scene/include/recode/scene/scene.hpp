@@ -1,0 +1,75 @@
+#pragma once
+// Scene files (DESIGN.md section 6, documented field by field in docs/scenes.md): the view,
+// and a list of objects, each a convex block given by a mesh file or a shape generator, or a
+// tree of such blocks ("children"), placed by a position and a rotation and moved per frame
+// by a motion, keyframes or a joint. Loading checks every field; any problem throws
+// SceneError whose message names the file, the JSON path and what is wrong.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "recode/geometry/mesh.hpp"
+#include "recode/geometry/projection.hpp"
+#include "recode/scene/motion.hpp"
+
+namespace recode::core {
+
+// "<file>: <json path>: <problem>", e.g. "pair.json: objects[1].shape.radius: expected a
+// positive number, got -2". The JSON path is also available on its own.
+// A problem with the file as a whole has an empty JSON path and reads "<file>: <problem>";
+// malformed JSON reads "<file>:<line>:<column>: invalid JSON: ..." (line() and column() are
+// then 1-based, counted in bytes; both are 0 for every other error).
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(const std::string& file, const std::string& jsonPath, const std::string& problem);
+  SceneError(const std::string& file, int line, int column, const std::string& problem);
+  [[nodiscard]] const std::string& file() const { return file_; }
+  [[nodiscard]] const std::string& jsonPath() const { return jsonPath_; }
+  [[nodiscard]] int line() const { return line_; }
+  [[nodiscard]] int column() const { return column_; }
+
+ private:
+  std::string file_;
+  std::string jsonPath_;
+  int line_ = 0;
+  int column_ = 0;
+};
+
+// A node of an object: a convex block (a leaf, with localMesh) or a group of child nodes
+// placed relative to it (its Placement: rest pose, motion, keyframes, joint). The objects of a
+// scene are the roots.
+struct SceneObject : Placement {
+  std::string name;        // "name", or "object <index>" / "child <index>" when not given
+  std::string jsonPath;    // "objects[<index>]", "objects[0].children[2]", for messages
+  TriangleMesh localMesh;  // leaves: in the node's own frame, validated closed and convex
+  std::vector<SceneObject> children;  // empty for a leaf
+
+  [[nodiscard]] bool isLeaf() const { return children.empty(); }
+  // localMesh moved by pose().
+  [[nodiscard]] TriangleMesh worldMesh() const;
+};
+
+// ViewSpec (the "view" object) is declared in recode/geometry/projection.hpp.
+
+struct Scene {
+  std::string sourceName;  // the file name as given, for messages
+  ViewSpec view;
+  std::vector<SceneObject> objects;
+  std::optional<int> frames;  // "frames"
+};
+
+// Reads and checks a scene file. Mesh paths are relative to the scene file's directory.
+[[nodiscard]] Scene loadScene(const std::filesystem::path& file);
+
+// Parses scene JSON text. `sourceName` is used in messages; `baseDir` resolves mesh paths.
+[[nodiscard]] Scene parseScene(std::string_view jsonText, const std::string& sourceName,
+                               const std::filesystem::path& baseDir);
+
+}  // namespace recode::core

@@ -1,0 +1,98 @@
+#pragma once
+// An object as a tree of nodes with rigid transforms (DESIGN.md section 5, "Hierarchies"):
+// leaves are convex blocks, every node carries a world AABB (recomputed per frame) and an
+// OBB. Pairs of objects descend their trees while both kinds of box overlap; the leaf pairs
+// that remain go to the pair algorithm.
+//
+// Boxes nest: a node's AABB is the union of its children's, and a node's OBB contains its
+// children's OBBs (it is fitted to their corners, not to the vertices). So a leaf pair whose
+// own boxes overlap has overlapping boxes at every pair of ancestors, and the descent reports
+// exactly the leaf pairs whose boxes overlap, whatever order it splits nodes in.
+//
+// OBBs are fitted once, in the node's own coordinates (fitObb), and moved rigidly with the
+// node, for every node whose subtree is rigid. A node whose subtree moves inside it (a joint,
+// a motion or keyframes below it, as in a hand) cannot keep a fixed box; its "OBB" is
+// instead recomputed per frame as the world-axis box of its children's OBB corners.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "recode/geometry/mesh.hpp"
+#include "recode/geometry/obb.hpp"
+#include "recode/scene/motion.hpp"
+#include "recode/scene/scene.hpp"
+
+namespace recode::core {
+
+struct HierarchyNode {
+  std::string path;  // names from the root joined by '/': "left hand/index/distal"
+  int parent = -1;   // index in ObjectTree::nodes(), -1 for the root
+  std::vector<int> children;
+  Placement placement;     // rest pose and motion relative to the parent
+  TriangleMesh localMesh;  // leaves: the block in the node's own coordinates; empty otherwise
+  bool rigid = true;       // nothing below this node moves relative to it
+  Obb localObb;            // in the node's coordinates (rigid nodes)
+
+  // At the current frame:
+  Eigen::Isometry3d world = Eigen::Isometry3d::Identity();  // local -> world
+  Aabb worldAabb;
+  Obb worldObb;
+
+  [[nodiscard]] bool isLeaf() const { return children.empty(); }
+};
+
+class ObjectTree {
+ public:
+  // Flattens the object (depth first, the root is node 0). Throws std::invalid_argument for a
+  // leaf without triangles.
+  explicit ObjectTree(const SceneObject& root);
+
+  [[nodiscard]] const std::string& name() const { return nodes_.front().path; }
+  [[nodiscard]] const std::vector<HierarchyNode>& nodes() const { return nodes_; }
+  [[nodiscard]] const HierarchyNode& root() const { return nodes_.front(); }
+  [[nodiscard]] const std::vector<int>& leaves() const { return leaves_; }
+  [[nodiscard]] std::size_t triangleCount() const { return triangles_; }
+
+  // Every node's world transform at frame k (the animation step).
+  void setFrame(int frame);
+  // Every node's world AABB and OBB for the current transforms (leaves recompute their
+  // AABB from their vertices only when their transform changed).
+  void updateBounds();
+  // Both steps.
+  void pose(int frame) {
+    setFrame(frame);
+    updateBounds();
+  }
+
+  // A leaf's block in world coordinates at the current frame.
+  [[nodiscard]] TriangleMesh worldMesh(int node) const;
+
+ private:
+  int add(const SceneObject& object, int parent, const std::string& parentPath);
+  void fitLocalBoxes();
+
+  std::vector<HierarchyNode> nodes_;
+  std::vector<int> leaves_;
+  std::vector<Eigen::Isometry3d> boundsAt_;  // per node: the transform its AABB was made at
+  std::vector<bool> boundsValid_;
+  std::size_t triangles_ = 0;
+};
+
+// Whether two nodes' boxes overlap: their world AABBs and their world OBBs.
+[[nodiscard]] bool nodeBoxesOverlap(const HierarchyNode& a, const HierarchyNode& b);
+
+struct LeafPair {
+  int leafA = 0;  // node index in the first tree
+  int leafB = 0;  // node index in the second tree
+  friend bool operator==(const LeafPair&, const LeafPair&) = default;
+};
+
+// Descends two trees from their roots while node boxes overlap; appends the leaf pairs whose
+// boxes overlap to `out`, sorted by (leafA, leafB). Returns the number of node pairs whose
+// boxes were tested (the roots' pair included).
+long long descendPair(const ObjectTree& a, const ObjectTree& b, std::vector<LeafPair>& out);
+
+}  // namespace recode::core

@@ -1,0 +1,174 @@
+// Object trees: flattening, rigid OBBs fitted once, per-frame world boxes, and the descent of
+// two trees to the leaf pairs whose boxes overlap.
+#include "recode/sim/hierarchy.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+namespace recode::core {
+
+namespace {
+
+// Boxes are grown by this fraction of their size and position so that a parent's box,
+// fitted to its children's corners in other coordinates, still contains them after rounding.
+constexpr double kContainmentSlack = 1e-9;
+
+Obb withSlack(const Obb& box) {
+  const double scale = box.center.cwiseAbs().maxCoeff() + box.halfExtents.maxCoeff();
+  return grown(box, kContainmentSlack * scale);
+}
+
+}  // namespace
+
+ObjectTree::ObjectTree(const SceneObject& root) {
+  add(root, -1, "");
+  // Children come after their parent, so a reverse sweep sees every child before its parent.
+  for (std::size_t i = nodes_.size(); i-- > 0;) {
+    HierarchyNode& node = nodes_[i];
+    for (int c : node.children) {
+      const HierarchyNode& child = nodes_[static_cast<std::size_t>(c)];
+      if (!child.rigid || child.placement.moves())
+        node.rigid = false;
+    }
+  }
+  fitLocalBoxes();
+  boundsAt_.assign(nodes_.size(), Eigen::Isometry3d::Identity());
+  boundsValid_.assign(nodes_.size(), false);
+  pose(0);
+}
+
+int ObjectTree::add(const SceneObject& object, int parent, const std::string& parentPath) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  {
+    HierarchyNode& node = nodes_.back();
+    node.parent = parent;
+    node.path = parent < 0 ? object.name : parentPath + "/" + object.name;
+    node.placement = object;  // the Placement part of the scene object
+    node.localMesh = object.localMesh;
+  }
+  const std::string path = nodes_.back().path;
+  if (object.isLeaf()) {
+    if (object.localMesh.triangleCount() == 0)
+      throw std::invalid_argument("object node \"" + path + "\" has no triangles");
+    triangles_ += object.localMesh.triangleCount();
+    leaves_.push_back(index);
+    return index;
+  }
+  for (const SceneObject& child : object.children) {
+    const int c = add(child, index, path);
+    nodes_[static_cast<std::size_t>(index)].children.push_back(c);
+  }
+  return index;
+}
+
+void ObjectTree::fitLocalBoxes() {
+  for (std::size_t i = nodes_.size(); i-- > 0;) {
+    HierarchyNode& node = nodes_[i];
+    if (node.isLeaf()) {
+      node.localObb = withSlack(fitObb(node.localMesh.vertices));
+      continue;
+    }
+    if (!node.rigid)
+      continue;
+    // The children's boxes in this node's coordinates (their poses are constant).
+    std::vector<Eigen::Vector3d> corners;
+    for (int c : node.children) {
+      const HierarchyNode& child = nodes_[static_cast<std::size_t>(c)];
+      for (const Eigen::Vector3d& p :
+           child.localObb.transformed(child.placement.poseAt(0)).corners())
+        corners.push_back(p);
+    }
+    node.localObb = withSlack(fitObb(corners));
+  }
+}
+
+void ObjectTree::setFrame(int frame) {
+  for (HierarchyNode& node : nodes_) {
+    const Eigen::Isometry3d local = node.placement.poseAt(frame);
+    node.world =
+        node.parent < 0 ? local : nodes_[static_cast<std::size_t>(node.parent)].world * local;
+  }
+}
+
+void ObjectTree::updateBounds() {
+  for (std::size_t i = nodes_.size(); i-- > 0;) {
+    HierarchyNode& node = nodes_[i];
+    if (node.isLeaf()) {
+      if (!boundsValid_[i] || boundsAt_[i].matrix() != node.world.matrix()) {
+        // The same arithmetic as transformed(), so the box is exactly worldMesh()'s box.
+        const Eigen::Matrix3d linear = node.world.linear();
+        const Eigen::Vector3d translation = node.world.translation();
+        Aabb box;
+        for (const Eigen::Vector3d& v : node.localMesh.vertices)
+          box.extend(Eigen::Vector3d(linear * v + translation));
+        node.worldAabb = box;
+        boundsAt_[i] = node.world;
+        boundsValid_[i] = true;
+      }
+      node.worldObb = node.localObb.transformed(node.world);
+      continue;
+    }
+    Aabb box;
+    for (int c : node.children)
+      box.extend(nodes_[static_cast<std::size_t>(c)].worldAabb);
+    node.worldAabb = box;
+    if (node.rigid) {
+      node.worldObb = node.localObb.transformed(node.world);
+    } else {
+      Aabb around;
+      for (int c : node.children)
+        around.extend(nodes_[static_cast<std::size_t>(c)].worldObb.aabb());
+      Obb axisBox;
+      axisBox.center = around.center();
+      axisBox.halfExtents = 0.5 * around.extent();
+      node.worldObb = withSlack(axisBox);
+    }
+  }
+}
+
+TriangleMesh ObjectTree::worldMesh(int node) const {
+  const HierarchyNode& n = nodes_.at(static_cast<std::size_t>(node));
+  return transformed(n.localMesh, n.world);
+}
+
+bool nodeBoxesOverlap(const HierarchyNode& a, const HierarchyNode& b) {
+  return aabbsOverlap(a.worldAabb, b.worldAabb) && obbsOverlap(a.worldObb, b.worldObb);
+}
+
+long long descendPair(const ObjectTree& a, const ObjectTree& b, std::vector<LeafPair>& out) {
+  const std::size_t first = out.size();
+  long long tests = 0;
+  std::vector<std::pair<int, int>> stack{{0, 0}};
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    const HierarchyNode& na = a.nodes()[static_cast<std::size_t>(i)];
+    const HierarchyNode& nb = b.nodes()[static_cast<std::size_t>(j)];
+    ++tests;
+    if (!nodeBoxesOverlap(na, nb))
+      continue;
+    if (na.isLeaf() && nb.isLeaf()) {
+      out.push_back({i, j});
+      continue;
+    }
+    // Split the node that is not a leaf; of two inner nodes the one with the larger box.
+    const bool splitA =
+        !na.isLeaf() && (nb.isLeaf() || na.worldAabb.diagonal() >= nb.worldAabb.diagonal());
+    if (splitA) {
+      for (int c : na.children)
+        stack.emplace_back(c, j);
+    } else {
+      for (int c : nb.children)
+        stack.emplace_back(i, c);
+    }
+  }
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+            [](const LeafPair& x, const LeafPair& y) {
+              return std::pair(x.leafA, x.leafB) < std::pair(y.leafA, y.leafB);
+            });
+  return tests;
+}
+
+}  // namespace recode::core

@@ -1,0 +1,88 @@
+// GJK distance between convex hulls: boxes a known gap apart (turned and moved together, which
+// keeps the gap), a point and a box, overlapping and touching blocks, and many random pairs of
+// boxes checked against the per-axis gap formula.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "recode/geometry/convex_distance.hpp"
+#include "recode/geometry/generators.hpp"
+
+using namespace recode::core;
+
+namespace {
+
+std::vector<Eigen::Vector3d> boxPoints(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                                       const Eigen::Isometry3d& t) {
+  std::vector<Eigen::Vector3d> out;
+  for (int k = 0; k < 8; ++k)
+    out.push_back(t * Eigen::Vector3d(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(),
+                                      k & 4 ? hi.z() : lo.z()));
+  return out;
+}
+
+// Distance between two axis-aligned boxes: the norm of the per-axis gaps.
+double boxGap(const Eigen::Vector3d& lo1, const Eigen::Vector3d& hi1, const Eigen::Vector3d& lo2,
+              const Eigen::Vector3d& hi2) {
+  Eigen::Vector3d gap;
+  for (int i = 0; i < 3; ++i)
+    gap[i] = std::max({0.0, lo2[i] - hi1[i], lo1[i] - hi2[i]});
+  return gap.norm();
+}
+
+}  // namespace
+
+TEST_CASE("convexHullDistance: random box pairs, turned together, keep their gap", "[gjk]") {
+  std::mt19937_64 rng(4242);
+  std::uniform_real_distribution<double> place(-2.0, 2.0), size(0.1, 1.5);
+  std::normal_distribution<double> n(0.0, 1.0);
+  int apart = 0, overlapping = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Eigen::Vector3d lo1(place(rng), place(rng), place(rng)),
+        lo2(place(rng), place(rng), place(rng));
+    const Eigen::Vector3d hi1 = lo1 + Eigen::Vector3d(size(rng), size(rng), size(rng));
+    const Eigen::Vector3d hi2 = lo2 + Eigen::Vector3d(size(rng), size(rng), size(rng));
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+    t.linear() = Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
+    t.translation() = Eigen::Vector3d(place(rng), place(rng), place(rng));
+    const double expected = boxGap(lo1, hi1, lo2, hi2);
+    const double d = convexHullDistance(boxPoints(lo1, hi1, t), boxPoints(lo2, hi2, t));
+    INFO("trial " << trial);
+    if (expected > 0.0) {
+      REQUIRE(d == Approx(expected).margin(1e-9));
+      ++apart;
+    } else {
+      REQUIRE(d == 0.0);
+      ++overlapping;
+    }
+  }
+  CHECK(apart > 1000);
+  CHECK(overlapping > 100);
+}
+
+TEST_CASE("convexHullDistance: points, touching and overlapping blocks", "[gjk]") {
+  const std::vector<Eigen::Vector3d> point = {{3.0, 4.0, 0.5}};
+  const TriangleMesh cube = makeBox(0.5, 0.5, 0.5);
+  // From (3, 4, 0.5) to the cube [-0.5, 0.5]^3: gaps 2.5, 3.5, 0.
+  CHECK(convexHullDistance(point, cube.vertices) == Approx(std::hypot(2.5, 3.5)));
+  CHECK(convexHullDistance(cube.vertices, point) == Approx(std::hypot(2.5, 3.5)));
+  // A cone's apex resting exactly on the cube's top face, then 1e-6 above it.
+  TriangleMesh cone = makeCone(0.3, 1.0, 24);
+  for (Eigen::Vector3d& v : cone.vertices)
+    v = Eigen::Vector3d(v.x(), v.y(), 1.5 - v.z());  // apex down at z = 0.5
+  CHECK(convexHullDistance(cone.vertices, cube.vertices) == 0.0);
+  for (Eigen::Vector3d& v : cone.vertices)
+    v.z() += 1e-6;
+  CHECK(convexHullDistance(cone.vertices, cube.vertices) == Approx(1e-6).margin(1e-12));
+  // A sphere of radius 1 around a small box: inside, so 0.
+  const TriangleMesh ball = makeSphere(1.0, 12, 6);
+  CHECK(convexHullDistance(ball.vertices, makeBox(0.1, 0.1, 0.1).vertices) == 0.0);
+  CHECK_THROWS_AS(convexHullDistance(std::vector<Eigen::Vector3d>{}, cube.vertices),
+                  std::invalid_argument);
+}

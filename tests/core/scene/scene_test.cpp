@@ -1,0 +1,533 @@
+// Scene files: parsing every field, defaults, poses, the example scenes in data/scenes, and
+// one test per kind of error, each checking the JSON path and the problem in the message.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "recode/geometry/generators.hpp"
+#include "recode/geometry/mesh_io.hpp"
+#include "recode/scene/scene.hpp"
+#include "scene_test_support.hpp"
+
+using namespace recode::core;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+using recode::core::test::dataFile;
+using recode::core::test::TempDir;
+
+namespace {
+
+Scene parse(const std::string& text) {
+  return test::parseSceneText(text, "s.json");
+}
+
+std::string errorOf(const std::string& text) {
+  return test::sceneErrorOf(text, "s.json");
+}
+
+// A scene with one object whose members are `objectBody` (JSON members, without braces).
+std::string oneObject(const std::string& objectBody) {
+  return R"({"objects": [{)" + objectBody + "}]}";
+}
+
+// A scene with one object of the given shape (the shape object's members, without braces).
+std::string oneShape(const std::string& shapeBody) {
+  return oneObject(R"("shape": {)" + shapeBody + "}");
+}
+
+void checkSameMesh(const TriangleMesh& actual, const TriangleMesh& expected) {
+  REQUIRE(actual.vertexCount() == expected.vertexCount());
+  REQUIRE(actual.triangleCount() == expected.triangleCount());
+  CHECK(actual.vertices == expected.vertices);
+  CHECK(actual.triangles == expected.triangles);
+}
+
+}  // namespace
+
+// ---- valid scenes ------------------------------------------------------------------------
+
+TEST_CASE("scene: every shape type and mesh files parse with their values", "[scene]") {
+  const Scene scene = parse(R"({
+    "view": {"axis": "y", "window": [-4, -3.5, 4, 3.5], "resolution": [640, 480]},
+    "frames": 12,
+    "objects": [
+      {"name": "cone", "shape": {"type": "cone", "radius": 1, "height": 2},
+       "position": [1, 2, 3], "rotation_deg": [90, 0, -45],
+       "motion": {"velocity": [0.5, 0, -0.25], "angular_velocity_deg": [0, 10, 0]}},
+      {"name": "cylinder", "shape": {"type": "cylinder", "radius": 0.5, "height": 3,
+                                     "segments": 12}},
+      {"name": "capsule", "shape": {"type": "capped_cone", "radius0": 1, "radius1": 0.5,
+                                    "height": 2, "segments": 16, "rings": 4}},
+      {"name": "egg", "shape": {"type": "ellipsoid", "radii": [1, 2, 3]}},
+      {"name": "ball", "shape": {"type": "sphere", "radius": 0.5, "segments": 8, "rings": 4},
+       "motion": {}},
+      {"name": "brick", "shape": {"type": "box", "size": [2, 4, 6]}},
+      {"name": "octahedron", "mesh": "meshes/octahedron.obj"},
+      {"mesh": "meshes/cube_quads.off"}
+    ]})");
+
+  CHECK(scene.sourceName == "s.json");
+  CHECK(scene.view.axis == ViewAxis::Y);
+  REQUIRE(scene.view.window.has_value());
+  CHECK(scene.view.window->umin == -4.0);
+  CHECK(scene.view.window->vmin == -3.5);
+  CHECK(scene.view.window->umax == 4.0);
+  CHECK(scene.view.window->vmax == 3.5);
+  REQUIRE(scene.view.resolution.has_value());
+  CHECK((*scene.view.resolution == std::array<int, 2>{640, 480}));
+  CHECK_FALSE(scene.view.pixelSize.has_value());
+  CHECK(scene.frames == 12);
+  REQUIRE(scene.objects.size() == 8);
+
+  const SceneObject& cone = scene.objects[0];
+  CHECK(cone.name == "cone");
+  CHECK(cone.jsonPath == "objects[0]");
+  CHECK(cone.position == Eigen::Vector3d(1, 2, 3));
+  CHECK(cone.rotationDeg == Eigen::Vector3d(90, 0, -45));
+  REQUIRE(cone.motion.has_value());
+  CHECK(cone.motion->velocity == Eigen::Vector3d(0.5, 0, -0.25));
+  CHECK(cone.motion->angularVelocityDeg == Eigen::Vector3d(0, 10, 0));
+  checkSameMesh(cone.localMesh, makeCone(1, 2, 32));
+
+  CHECK(scene.objects[1].name == "cylinder");
+  CHECK_FALSE(scene.objects[1].motion.has_value());
+  checkSameMesh(scene.objects[1].localMesh, makeCylinder(0.5, 3, 12));
+  checkSameMesh(scene.objects[2].localMesh, makeCappedCone(1, 0.5, 2, 16, 4));
+  checkSameMesh(scene.objects[3].localMesh, makeEllipsoid(1, 2, 3, 32, 16));
+  checkSameMesh(scene.objects[4].localMesh, makeSphere(0.5, 8, 4));
+  REQUIRE(scene.objects[4].motion.has_value());  // "motion": {} is a motion of zero
+  CHECK(scene.objects[4].motion->velocity == Eigen::Vector3d::Zero());
+  CHECK(scene.objects[4].motion->angularVelocityDeg == Eigen::Vector3d::Zero());
+
+  // "size" is the full edge lengths.
+  const Aabb box = boundingBox(scene.objects[5].localMesh);
+  CHECK(box.min == Eigen::Vector3d(-1, -2, -3));
+  CHECK(box.max == Eigen::Vector3d(1, 2, 3));
+  checkSameMesh(scene.objects[5].localMesh, makeBox(1, 2, 3));
+
+  CHECK(scene.objects[6].name == "octahedron");
+  checkSameMesh(scene.objects[6].localMesh, readObj(dataFile("meshes/octahedron.obj")));
+  CHECK(scene.objects[7].name == "object 7");
+  CHECK(scene.objects[7].jsonPath == "objects[7]");
+  checkSameMesh(scene.objects[7].localMesh, readOff(dataFile("meshes/cube_quads.off")));
+}
+
+TEST_CASE("scene: defaults", "[scene]") {
+  const Scene scene = parse(oneShape(R"("type": "sphere", "radius": 1)"));
+  CHECK(scene.view.axis == ViewAxis::Z);
+  CHECK_FALSE(scene.view.window.has_value());
+  CHECK_FALSE(scene.view.resolution.has_value());
+  CHECK_FALSE(scene.view.pixelSize.has_value());
+  CHECK_FALSE(scene.frames.has_value());
+  REQUIRE(scene.objects.size() == 1);
+  const SceneObject& object = scene.objects[0];
+  CHECK(object.name == "object 0");
+  CHECK(object.position == Eigen::Vector3d::Zero());
+  CHECK(object.rotationDeg == Eigen::Vector3d::Zero());
+  CHECK_FALSE(object.motion.has_value());
+  checkSameMesh(object.localMesh, makeSphere(1, 32, 16));
+  CHECK(object.pose().matrix() == Eigen::Matrix4d::Identity());
+
+  // Default segments and rings of the other round shapes.
+  checkSameMesh(parse(oneShape(R"("type": "cone", "radius": 1, "height": 1)")).objects[0].localMesh,
+                makeCone(1, 1, 32));
+  checkSameMesh(
+      parse(oneShape(R"("type": "cylinder", "radius": 1, "height": 1)")).objects[0].localMesh,
+      makeCylinder(1, 1, 32));
+  checkSameMesh(parse(oneShape(R"("type": "capped_cone", "radius0": 1, "radius1": 1, "height": 1)"))
+                    .objects[0]
+                    .localMesh,
+                makeCappedCone(1, 1, 1, 32, 8));
+  checkSameMesh(parse(oneShape(R"("type": "ellipsoid", "radii": [1, 1, 2])")).objects[0].localMesh,
+                makeEllipsoid(1, 1, 2, 32, 16));
+
+  // The view's own defaults: an empty view, and pixel_size instead of resolution.
+  const Scene withPixelSize = parse(
+      R"({"view": {"pixel_size": 0.01}, "objects": [{"shape": {"type": "box", "size": [1, 1, 1]}}]})");
+  CHECK(withPixelSize.view.axis == ViewAxis::Z);
+  CHECK(withPixelSize.view.pixelSize == 0.01);
+  CHECK_FALSE(withPixelSize.view.resolution.has_value());
+  CHECK(parse(R"({"view": {}, "objects": [{"shape": {"type": "box", "size": [1, 1, 1]}}]})")
+            .view.axis == ViewAxis::Z);
+  CHECK(
+      parse(
+          R"({"view": {"axis": "x"}, "objects": [{"shape": {"type": "box", "size": [1, 1, 1]}}]})")
+          .view.axis == ViewAxis::X);
+}
+
+// ---- rotation and pose -------------------------------------------------------------------
+
+TEST_CASE("rotationFromDegrees: quarter turns are exact", "[scene]") {
+  CHECK(rotationFromDegrees({0, 0, 0}) == Eigen::Matrix3d::Identity());
+  // About X: y -> z; about Y: z -> x; about Z: x -> y.
+  CHECK(rotationFromDegrees({90, 0, 0}) * Eigen::Vector3d(0, 1, 0) == Eigen::Vector3d(0, 0, 1));
+  CHECK(rotationFromDegrees({0, 90, 0}) * Eigen::Vector3d(0, 0, 1) == Eigen::Vector3d(1, 0, 0));
+  CHECK(rotationFromDegrees({0, 0, 90}) * Eigen::Vector3d(1, 0, 0) == Eigen::Vector3d(0, 1, 0));
+  CHECK(rotationFromDegrees({180, 0, 0}) * Eigen::Vector3d(1, 2, 3) == Eigen::Vector3d(1, -2, -3));
+  CHECK(rotationFromDegrees({0, -90, 0}) * Eigen::Vector3d(0, 0, 1) == Eigen::Vector3d(-1, 0, 0));
+  // Whole turns and multiples beyond one turn reduce exactly.
+  CHECK(rotationFromDegrees({360, -720, 1080}) == Eigen::Matrix3d::Identity());
+  CHECK(rotationFromDegrees({450, 0, 0}) == rotationFromDegrees({90, 0, 0}));
+  CHECK(rotationFromDegrees({-270, 0, 0}) == rotationFromDegrees({90, 0, 0}));
+  // Every entry of a quarter-turn rotation is exactly 0 or +-1.
+  const Eigen::Matrix3d r = rotationFromDegrees({90, 270, -180});
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const double e = r(i, j);
+      CHECK((e == 0.0 || e == 1.0 || e == -1.0));
+    }
+  }
+}
+
+TEST_CASE("rotationFromDegrees: X first, then Y, then Z", "[scene]") {
+  // (0, 1, 0) about X by 90 -> (0, 0, 1), about Y by 90 -> (1, 0, 0), about Z by 90 ->
+  // (0, 1, 0). In the opposite order (Z, Y, X) it would end at (0, 0, 1).
+  CHECK(rotationFromDegrees({90, 90, 0}) * Eigen::Vector3d(0, 1, 0) == Eigen::Vector3d(1, 0, 0));
+  CHECK(rotationFromDegrees({90, 90, 90}) * Eigen::Vector3d(0, 1, 0) == Eigen::Vector3d(0, 1, 0));
+  // (1, 2, 3): X 90 -> (1, -3, 2); Y 90 -> (2, -3, -1); Z 90 -> (3, 2, -1).
+  CHECK(rotationFromDegrees({90, 90, 90}) * Eigen::Vector3d(1, 2, 3) == Eigen::Vector3d(3, 2, -1));
+
+  // General angles: Rz * Ry * Rx, as Eigen's angle-axis rotations compose.
+  const Eigen::Vector3d degrees(30, -50, 110);
+  const double k = std::numbers::pi / 180.0;
+  const Eigen::Matrix3d expected = (Eigen::AngleAxisd(degrees.z() * k, Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(degrees.y() * k, Eigen::Vector3d::UnitY()) *
+                                    Eigen::AngleAxisd(degrees.x() * k, Eigen::Vector3d::UnitX()))
+                                       .toRotationMatrix();
+  const Eigen::Matrix3d r = rotationFromDegrees(degrees);
+  CHECK((r - expected).cwiseAbs().maxCoeff() < 1e-15);
+  CHECK((r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-15);
+  CHECK(r.determinant() == Approx(1.0).epsilon(1e-15));
+  CHECK(rotationFromDegrees({30, 0, 0})(2, 1) == std::sin(30 * k));
+}
+
+TEST_CASE("scene: pose and world mesh", "[scene]") {
+  const Scene scene = parse(oneObject(
+      R"("shape": {"type": "cone", "radius": 1, "height": 2}, "position": [0.5, -1, 3.75],
+         "rotation_deg": [180, 0, 0])"));
+  const SceneObject& cone = scene.objects[0];
+  const Eigen::Isometry3d pose = cone.pose();
+  CHECK(pose.linear() == rotationFromDegrees({180, 0, 0}));
+  CHECK(pose.translation() == Eigen::Vector3d(0.5, -1, 3.75));
+
+  const TriangleMesh world = cone.worldMesh();
+  REQUIRE(world.vertexCount() == cone.localMesh.vertexCount());
+  CHECK(world.triangles == cone.localMesh.triangles);  // a rotation keeps the winding
+  for (std::size_t i = 0; i < world.vertexCount(); ++i) {
+    const Eigen::Vector3d& p = cone.localMesh.vertices[i];
+    CHECK(world.vertices[i] == Eigen::Vector3d(p.x() + 0.5, -p.y() - 1, 3.75 - p.z()));
+  }
+  // The apex (last vertex) turned downward: exactly 3.75 - 2.
+  CHECK(world.vertices.back() == Eigen::Vector3d(0.5, -1, 1.75));
+  CHECK(signedVolume(world) > 0.0);
+}
+
+// ---- files -------------------------------------------------------------------------------
+
+TEST_CASE("loadScene: mesh paths are relative to the scene file", "[scene]") {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "scenes" / "meshes");
+  (void)dir.write("scenes/meshes/tet.obj",
+                  "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 2 1 4\nf 3 2 4\nf 1 3 4\n");
+  const auto file =
+      dir.write("scenes/scene.json",
+                R"({"objects": [{"name": "t", "mesh": "meshes/tet.obj"}, {"mesh": "meshes/tet.obj",
+          "position": [3, 0, 0]}]})");
+  const Scene scene = loadScene(file);
+  CHECK(scene.sourceName == file.string());
+  REQUIRE(scene.objects.size() == 2);
+  CHECK(scene.objects[0].localMesh.vertexCount() == 4);
+  CHECK(scene.objects[1].worldMesh().vertices[0] == Eigen::Vector3d(4, 1, 1));
+}
+
+TEST_CASE("loadScene: the example scenes in data/scenes", "[scene]") {
+  const Scene cones = loadScene(dataFile("scenes/cones-tip-to-tip.json"));
+  CHECK(cones.view.axis == ViewAxis::X);
+  CHECK_FALSE(cones.view.window.has_value());
+  CHECK((cones.view.resolution == std::array<int, 2>{256, 256}));
+  REQUIRE(cones.objects.size() == 2);
+  const TriangleMesh a = cones.objects[0].worldMesh();
+  const TriangleMesh b = cones.objects[1].worldMesh();
+  // A's apex at z = 2, B's (turned upside down) 0.25 below it; bases at z = 0 and 3.75.
+  CHECK(a.vertices.back() == Eigen::Vector3d(0, 0, 2));
+  CHECK(b.vertices.back() == Eigen::Vector3d(0, 0, 1.75));
+  CHECK(boundingBox(a).min.z() == 0.0);
+  CHECK(boundingBox(b).max.z() == 3.75);
+
+  const Scene boxes = loadScene(dataFile("scenes/box-on-box.json"));
+  CHECK(boxes.view.axis == ViewAxis::Z);
+  REQUIRE(boxes.objects.size() == 2);
+  // Face on face: the top of the lower box is the bottom of the upper one.
+  CHECK(boundingBox(boxes.objects[0].worldMesh()).max.z() ==
+        boundingBox(boxes.objects[1].worldMesh()).min.z());
+}
+
+TEST_CASE("loadScene: a missing or unreadable scene file", "[scene][errors]") {
+  TempDir dir;
+  const std::string missing = (dir.path() / "nope.json").string();
+  try {
+    (void)loadScene(missing);
+    FAIL("no error");
+  } catch (const SceneError& e) {
+    CHECK_THAT(e.what(), StartsWith(missing + ": "));
+    CHECK_THAT(e.what(), Contains("cannot open scene file"));
+    CHECK(e.file() == missing);
+    CHECK(e.jsonPath().empty());
+  }
+  CHECK_THROWS_WITH(loadScene(dir.path()),
+                    Contains("cannot open scene file") && Contains("directory"));
+}
+
+// ---- errors ------------------------------------------------------------------------------
+
+TEST_CASE("scene errors: malformed JSON gives line and column", "[scene][errors]") {
+  // Missing comma: the unexpected '"' is line 3, column 3.
+  const std::string text = "{\n  \"frames\": 2\n  \"objects\": []\n}\n";
+  try {
+    (void)parse(text);
+    FAIL("no error");
+  } catch (const SceneError& e) {
+    CHECK_THAT(e.what(), StartsWith("s.json:3:3: invalid JSON: "));
+    CHECK_THAT(e.what(), Contains("syntax error"));
+    CHECK(e.line() == 3);
+    CHECK(e.column() == 3);
+    CHECK(e.jsonPath().empty());
+  }
+  CHECK_THAT(errorOf(""), StartsWith("s.json:1:1: invalid JSON: "));
+  // Errors point at the start of the offending token.
+  CHECK_THAT(errorOf("{\"objects\":\n   tru}"), StartsWith("s.json:2:7: invalid JSON: "));
+  CHECK_THAT(errorOf("{\"objects\": [1, 2"), StartsWith("s.json:1:18: invalid JSON: "));
+  CHECK_THAT(errorOf("{\"a\": 1 \"b\": 2}"), StartsWith("s.json:1:9: invalid JSON: "));
+  CHECK_THAT(errorOf("{\"objects\": [1, 2,]}"), StartsWith("s.json:1:19: invalid JSON: "));
+  CHECK_THAT(errorOf("{\"objects\": []} x"), StartsWith("s.json:1:17: invalid JSON: "));
+  // A number beyond the double range is rejected, not read as infinity.
+  const std::string huge =
+      errorOf("{\n\"frames\": 1,\n\"objects\": [{\"position\": [0, 1e400, 0]}]}");
+  CHECK_THAT(huge, StartsWith("s.json:3:"));
+  CHECK_THAT(huge, Contains("1e400"));
+}
+
+TEST_CASE("scene errors: duplicate keys", "[scene][errors]") {
+  CHECK_THAT(errorOf(R"({"frames": 1, "frames": 2, "objects": []})"),
+             StartsWith("s.json: frames: duplicate key"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "sphere", "radius": 1, "radius": 2)")),
+             StartsWith("s.json: objects[0].shape.radius: duplicate key"));
+}
+
+TEST_CASE("scene errors: unknown keys", "[scene][errors]") {
+  const std::string box = R"("shape": {"type": "box", "size": [1, 1, 1]})";
+  CHECK_THAT(errorOf(R"({"objects": [{)" + box + R"(}], "camera": {}})"),
+             StartsWith("s.json: camera: unknown key (allowed: view, objects, frames, parts)"));
+  CHECK_THAT(errorOf(R"({"view": {"axis": "z", "zoom": 2}, "objects": [{)" + box + "}]}"),
+             StartsWith("s.json: view.zoom: unknown key"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "color": "red")")),
+             StartsWith("s.json: objects[0].color: unknown key"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "cone", "radius": 1, "height": 1, "rings": 4)")),
+             StartsWith("s.json: objects[0].shape.rings: unknown key for a cone shape "
+                        "(allowed: type, radius, height, segments)"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "box", "size": [1, 1, 1], "radius": 1)")),
+             StartsWith("s.json: objects[0].shape.radius: unknown key for a box shape"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "motion": {"velocity": [0, 0, 1], "spin": 3})")),
+             StartsWith("s.json: objects[0].motion.spin: unknown key"));
+  // A key that is not an identifier is quoted in the path.
+  CHECK_THAT(errorOf(oneObject(box + R"(, "my key": 1)")),
+             StartsWith("s.json: objects[0][\"my key\"]: unknown key"));
+}
+
+TEST_CASE("scene errors: wrong types name what was expected and found", "[scene][errors]") {
+  const std::string box = R"("shape": {"type": "box", "size": [1, 1, 1]})";
+  CHECK_THAT(errorOf("[]"), StartsWith("s.json: (root): expected an object, got an array"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "sphere", "radius": "2")")),
+             StartsWith("s.json: objects[0].shape.radius: expected a positive number, got a "
+                        "string"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "position": [0, "1", 0])")),
+             StartsWith("s.json: objects[0].position[1]: expected a number, got a string"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "position": [0, null, 0])")),
+             StartsWith("s.json: objects[0].position[1]: expected a number, got null"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "position": [0, 1])")),
+             StartsWith("s.json: objects[0].position: expected an array of 3 numbers [x, y, z], "
+                        "got 2 elements"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "rotation_deg": {"x": 1})")),
+             StartsWith("s.json: objects[0].rotation_deg: expected an array of 3 numbers"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "name": 7)")),
+             StartsWith("s.json: objects[0].name: expected a string, got 7"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "motion": [1, 2, 3])")),
+             StartsWith("s.json: objects[0].motion: expected an object, got an array"));
+  CHECK_THAT(errorOf(oneObject(box + R"(, "motion": {"angular_velocity_deg": [0, true, 0]})")),
+             StartsWith("s.json: objects[0].motion.angular_velocity_deg[1]: expected a number, "
+                        "got true"));
+  CHECK_THAT(errorOf(R"({"objects": {"a": 1}})"),
+             StartsWith("s.json: objects: expected an array of objects, got an object"));
+  CHECK_THAT(errorOf(R"({"objects": ["cube.obj"]})"),
+             StartsWith("s.json: objects[0]: expected an object, got a string"));
+  CHECK_THAT(errorOf(R"({"view": 3, "objects": [{)" + box + "}]}"),
+             StartsWith("s.json: view: expected an object, got 3"));
+  CHECK_THAT(errorOf(oneObject(R"("shape": "cone")")),
+             StartsWith("s.json: objects[0].shape: expected an object, got a string"));
+  CHECK_THAT(errorOf(oneObject(R"("mesh": ["a.obj"])")),
+             StartsWith("s.json: objects[0].mesh: expected a string, got an array"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "sphere", "radius": 1, "segments": 12.5)")),
+             StartsWith("s.json: objects[0].shape.segments: expected an integer in "
+                        "3..2147483647, got 12.5"));
+}
+
+TEST_CASE("scene errors: view axis and window", "[scene][errors]") {
+  const auto withView = [](const std::string& view) {
+    return errorOf(R"({"view": )" + view +
+                   R"(, "objects": [{"shape": {"type": "box", "size": [1, 1, 1]}}]})");
+  };
+  CHECK_THAT(withView(R"({"axis": "w"})"),
+             StartsWith(R"(s.json: view.axis: expected "x", "y" or "z", got "w")"));
+  CHECK_THAT(withView(R"({"axis": "Z"})"), StartsWith("s.json: view.axis: expected"));
+  CHECK_THAT(withView(R"({"axis": 2})"),
+             StartsWith(R"(s.json: view.axis: expected "x", "y" or "z", got 2)"));
+  CHECK_THAT(withView(R"({"window": [0, 0, 1]})"),
+             StartsWith("s.json: view.window: expected an array of 4 numbers [umin, vmin, umax, "
+                        "vmax], got 3 elements"));
+  CHECK_THAT(withView(R"({"window": [0, 0, "1", 1]})"),
+             StartsWith("s.json: view.window[2]: expected a number, got a string"));
+  CHECK_THAT(withView(R"({"window": [2, 0, 1, 1]})"),
+             StartsWith("s.json: view.window: umin (2) must be less than umax (1)"));
+  CHECK_THAT(withView(R"({"window": [0, 1, 1, 1]})"),
+             StartsWith("s.json: view.window: vmin (1) must be less than vmax (1)"));
+  CHECK_THAT(withView(R"({"window": [-1e308, 0, 1e308, 1]})"),
+             StartsWith("s.json: view.window: the window's width or height overflows"));
+}
+
+TEST_CASE("scene errors: resolution and pixel size", "[scene][errors]") {
+  const auto withView = [](const std::string& view) {
+    return errorOf(R"({"view": )" + view +
+                   R"(, "objects": [{"shape": {"type": "box", "size": [1, 1, 1]}}]})");
+  };
+  CHECK_THAT(withView(R"({"resolution": [0, 100]})"),
+             StartsWith("s.json: view.resolution[0]: expected an integer in 1..16384, got 0"));
+  CHECK_THAT(withView(R"({"resolution": [100, 16385]})"),
+             StartsWith("s.json: view.resolution[1]: expected an integer in 1..16384, got 16385"));
+  CHECK_THAT(withView(R"({"resolution": [100, -3]})"),
+             StartsWith("s.json: view.resolution[1]: expected an integer in 1..16384, got -3"));
+  CHECK_THAT(withView(R"({"resolution": [100, 18446744073709551615]})"),
+             StartsWith("s.json: view.resolution[1]: expected an integer in 1..16384"));
+  CHECK_THAT(withView(R"({"resolution": [100.5, 100]})"),
+             StartsWith("s.json: view.resolution[0]: expected an integer in 1..16384, got 100.5"));
+  CHECK_THAT(withView(R"({"resolution": [100]})"),
+             StartsWith("s.json: view.resolution: expected an array of 2 integers [W, H], got 1 "
+                        "element"));
+  CHECK_THAT(withView(R"({"resolution": [100, 100], "pixel_size": 0.1})"),
+             StartsWith("s.json: view.pixel_size: cannot be given together with \"resolution\""));
+  CHECK_THAT(withView(R"({"pixel_size": 0})"),
+             StartsWith("s.json: view.pixel_size: expected a positive number, got 0"));
+  CHECK_THAT(withView(R"({"pixel_size": -0.5})"),
+             StartsWith("s.json: view.pixel_size: expected a positive number, got -0.5"));
+}
+
+TEST_CASE("scene errors: the objects list", "[scene][errors]") {
+  CHECK_THAT(errorOf(R"({"view": {}})"), StartsWith("s.json: (root): missing key \"objects\""));
+  CHECK_THAT(errorOf(R"({"objects": []})"),
+             StartsWith("s.json: objects: expected at least one object, got an empty array"));
+  CHECK_THAT(errorOf(oneObject(
+                 R"("mesh": "meshes/octahedron.obj", "shape": {"type": "sphere", "radius": 1})")),
+             StartsWith("s.json: objects[0]: give exactly one of \"mesh\", \"shape\", "
+                        "\"children\" and \"part\", got \"mesh\" and \"shape\""));
+  CHECK_THAT(errorOf(oneObject(R"("name": "nothing", "position": [0, 0, 0])")),
+             StartsWith("s.json: objects[0]: missing \"mesh\", \"shape\", \"children\" or "
+                        "\"part\""));
+  CHECK_THAT(errorOf(R"({"objects": [{"mesh": "meshes/octahedron.obj"},
+                                     {"name": "group", "children": []}]})"),
+             StartsWith("s.json: objects[1].children: expected at least one child, got an empty "
+                        "array"));
+  CHECK_THAT(errorOf(oneObject(R"("name": "", "mesh": "meshes/octahedron.obj")")),
+             StartsWith("s.json: objects[0].name: expected a non-empty string"));
+}
+
+TEST_CASE("scene errors: frames", "[scene][errors]") {
+  const std::string objects = R"("objects": [{"shape": {"type": "box", "size": [1, 1, 1]}}])";
+  CHECK_THAT(errorOf(R"({"frames": 0, )" + objects + "}"),
+             StartsWith("s.json: frames: expected an integer in 1..2147483647, got 0"));
+  CHECK_THAT(errorOf(R"({"frames": 2.5, )" + objects + "}"),
+             StartsWith("s.json: frames: expected an integer in 1..2147483647, got 2.5"));
+  CHECK_THAT(errorOf(R"({"frames": "10", )" + objects + "}"),
+             StartsWith("s.json: frames: expected an integer in 1..2147483647, got a string"));
+  CHECK(parse(R"({"frames": 1, )" + objects + "}").frames == 1);
+}
+
+TEST_CASE("scene errors: shape types and sizes", "[scene][errors]") {
+  CHECK_THAT(errorOf(oneShape(R"("type": "pyramid", "radius": 1)")),
+             StartsWith("s.json: objects[0].shape.type: unknown shape type \"pyramid\" (expected "
+                        "one of cone, cylinder, capped_cone, ellipsoid, sphere, box)"));
+  CHECK_THAT(errorOf(oneShape(R"("radius": 1)")),
+             StartsWith("s.json: objects[0].shape: missing key \"type\""));
+  CHECK_THAT(errorOf(oneShape(R"("type": "cone", "radius": -2, "height": 1)")),
+             StartsWith("s.json: objects[0].shape.radius: expected a positive number, got -2"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "cylinder", "radius": 1, "height": 0)")),
+             StartsWith("s.json: objects[0].shape.height: expected a positive number, got 0"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "cone", "radius": 1)")),
+             StartsWith("s.json: objects[0].shape: missing key \"height\" for a cone shape"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "ellipsoid", "radii": [1, -1, 1])")),
+             StartsWith("s.json: objects[0].shape.radii[1]: expected a positive number, got -1"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "ellipsoid", "radii": 1)")),
+             StartsWith("s.json: objects[0].shape.radii: expected an array of 3 positive numbers"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "box", "size": [1, 1, 0])")),
+             StartsWith("s.json: objects[0].shape.size[2]: expected a positive number, got 0"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "sphere", "radius": 1, "segments": 2)")),
+             StartsWith("s.json: objects[0].shape.segments: expected an integer in 3..2147483647, "
+                        "got 2"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "sphere", "radius": 1, "rings": 1)")),
+             StartsWith("s.json: objects[0].shape.rings: expected an integer in 2..2147483647, "
+                        "got 1"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "capped_cone", "radius0": 1, "radius1": 1, "height": 1,
+                                  "rings": 0)")),
+             StartsWith("s.json: objects[0].shape.rings: expected an integer in 1..2147483647"));
+}
+
+TEST_CASE("scene errors: a capped cone whose spheres nest", "[scene][errors]") {
+  CHECK_THAT(errorOf(oneShape(R"("type": "capped_cone", "radius0": 2, "radius1": 0.5,
+                                  "height": 1)")),
+             StartsWith("s.json: objects[0].shape.height: must exceed |radius0 - radius1| = 1.5"));
+  CHECK_THAT(errorOf(oneShape(R"("type": "capped_cone", "radius0": 0.5, "radius1": 2,
+                                  "height": 1.5)")),
+             StartsWith("s.json: objects[0].shape.height: must exceed"));
+}
+
+TEST_CASE("scene errors: generator limits are reported at the shape", "[scene][errors]") {
+  // Too many triangles for one generator call: the generator's own message, at the shape.
+  CHECK_THAT(errorOf(oneShape(R"("type": "sphere", "radius": 1, "segments": 100000,
+                                  "rings": 100000)")),
+             StartsWith("s.json: objects[0].shape: ") && Contains("makeSphere"));
+}
+
+TEST_CASE("scene errors: mesh files", "[scene][errors]") {
+  TempDir dir;
+  // A closed, outward octahedron whose top apex is pushed below the equator: a dent.
+  (void)dir.write("dented.obj",
+                  "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 -0.5\nv 0 0 -1\n"
+                  "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\n"
+                  "f 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n");
+  (void)dir.write("broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  (void)dir.write("mesh.stl", "solid x\nendsolid x\n");
+  const auto errorIn = [&](const std::string& mesh) {
+    try {
+      (void)parseScene(R"({"objects": [{"shape": {"type": "box", "size": [1, 1, 1]}},
+                                      {"mesh": ")" +
+                           mesh + R"("}]})",
+                       "s.json", dir.path());
+    } catch (const SceneError& e) {
+      CHECK(e.jsonPath() == "objects[1].mesh");
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string missing = errorIn("missing.obj");
+  CHECK_THAT(missing, StartsWith("s.json: objects[1].mesh: "));
+  CHECK_THAT(missing, Contains("missing.obj") && Contains("file not found"));
+  const std::string dented = errorIn("dented.obj");
+  CHECK_THAT(dented, StartsWith("s.json: objects[1].mesh: "));
+  CHECK_THAT(dented, Contains("dented.obj") && Contains("convex"));
+  CHECK_THAT(errorIn("broken.off"), StartsWith("s.json: objects[1].mesh: ") &&
+                                        Contains("broken.off:6: ") && Contains("7"));
+  CHECK_THAT(errorIn("mesh.stl"),
+             StartsWith("s.json: objects[1].mesh: ") && Contains("unknown mesh file extension"));
+  CHECK_THAT(errorIn(""), StartsWith("s.json: objects[1].mesh: expected a non-empty string"));
+}

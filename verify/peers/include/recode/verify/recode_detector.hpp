@@ -1,0 +1,49 @@
+#pragma once
+// RECODE as one of the bench's detectors (scene_detector.hpp): core::Simulation -- sort and
+// sweep, box descent, the pair algorithm per leaf pair -- drawing on the CPU reference device
+// or on real OpenGL (GlDevice, llvmpipe), so the bench compares both on the same work.
+
+#include <memory>
+#include <string>
+
+#include "recode/scene/scene.hpp"
+#include "recode/sim/simulation.hpp"
+#include "recode/verify/scene_detector.hpp"
+
+namespace recode::verify {
+
+enum class RecodeDevice {
+  Cpu,  // raster::CpuDevice
+  Gl,   // verify::GlDevice; needs RECODE_HAVE_OSMESA
+};
+
+class RecodeDetector final : public SceneDetector {
+ public:
+  // The simulation of `scene` with `options` (options.deviceFactory is replaced for the GL
+  // device). Throws std::runtime_error for RecodeDevice::Gl in a build without OSMesa.
+  RecodeDetector(const core::Scene& scene, core::RunOptions options, RecodeDevice device,
+                 std::string name);
+
+  [[nodiscard]] std::string name() const override { return name_; }
+
+  // Poses and runs its own trees (built from the same scene, so node indices match the
+  // caller's), outside the timer; collisionUs is FrameReport::collisionUs, which leaves out
+  // posing and the making of devices.
+  [[nodiscard]] Detection detect(const std::vector<core::ObjectTree>& objects, int frame) override;
+
+  // The counters of the last frame detected (box tests, pair tests, pixels read: Table 1).
+  [[nodiscard]] const core::FrameReport& lastReport() const { return last_; }
+  [[nodiscard]] const core::Simulation& simulation() const { return simulation_; }
+
+ private:
+  core::Simulation simulation_;
+  std::string name_;
+  core::FrameReport last_;
+};
+
+// The factory RecodeDevice::Gl uses: a GlDevice of the size, warmed by one small colliding
+// pair so that llvmpipe compiles its shaders before any timed frame. Throws
+// std::runtime_error in a build without OSMesa.
+[[nodiscard]] core::DeviceFactory warmGlDeviceFactory();
+
+}  // namespace recode::verify
