@@ -36,6 +36,36 @@ void replay(const std::vector<Command>& commands, DepthStencilDevice& device) {
   }
 }
 
+bool applyToState(const Command& command, RenderState& state, int width, int height) {
+  return std::visit(
+      [&](const auto& c) {
+        using T = std::decay_t<decltype(c)>;
+        if constexpr (std::is_same_v<T, cmd::Scissor>) {
+          state.setScissor(c.rect, width, height);
+        } else if constexpr (std::is_same_v<T, cmd::DepthFunc>) {
+          state.depthFunc = c.func;
+        } else if constexpr (std::is_same_v<T, cmd::DepthWriteMask>) {
+          state.depthWrite = c.write;
+        } else if constexpr (std::is_same_v<T, cmd::StencilFunc>) {
+          state.stencilFunc = c.func;
+          state.stencilRef = c.ref;
+          state.stencilValueMask = c.valueMask;
+        } else if constexpr (std::is_same_v<T, cmd::StencilOpsCmd>) {
+          state.setStencilOps(c.face, c.ops);
+        } else if constexpr (std::is_same_v<T, cmd::StencilWriteMask>) {
+          state.stencilWriteMask = c.mask;
+        } else if constexpr (std::is_same_v<T, cmd::Cull>) {
+          state.cull = c.mode;
+        } else {
+          static_assert(std::is_same_v<T, cmd::ClearDepth> ||
+                        std::is_same_v<T, cmd::ClearStencil> || std::is_same_v<T, cmd::Draw>);
+          return false;  // changes the buffers, not the state
+        }
+        return true;
+      },
+      command);
+}
+
 RecordingDevice::RecordingDevice(DepthStencilDevice& inner) : inner_(inner) {
   stream_.width = inner.width();
   stream_.height = inner.height();

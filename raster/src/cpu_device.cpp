@@ -6,41 +6,48 @@
 
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
-#include "recode/raster/triangle_setup.hpp"
+#include "recode/raster/fragment_stage.hpp"
+#include "recode/raster/invariants.hpp"
+#include "recode/raster/pipeline.hpp"
 
 namespace recode::raster {
 
 namespace {
 
-// Writes the fragments of one triangle into the buffers.
-class FragmentWriter final : public BlockSink {
+// The fragment stage on the device's buffers: each covered pixel's depth from the triangle's
+// plane, then the stencil and depth tests and writes.
+class FragmentWriter final : public TriangleSink {
  public:
-  FragmentWriter(const TriangleSetup& tri, const DepthStencilState& state, int stride,
-                 std::uint32_t* depth, std::uint8_t* stencil)
-      : tri_(tri),
-        state_(state),
-        ops_(tri.frontFacing ? state.frontOps : state.backOps),
-        stride_(static_cast<std::size_t>(stride)),
-        depth_(depth),
-        stencil_(stencil) {}
+  FragmentWriter(const RenderState& state, int width, int height, std::uint32_t* depth,
+                 std::uint8_t* stencil)
+      : state_(state), width_(width), height_(height), depth_(depth), stencil_(stencil) {}
+
+  void beginTriangle(const TriangleSetup& triangle,
+                     const std::array<FixedVertex, 3>& /*snapped*/) override {
+    plane_ = &triangle.depth;
+    ops_ = &state_.opsFor(triangle.frontFacing);
+  }
 
   void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
+    RECODE_INVARIANT(blockX >= 0 && blockY >= 0 && blockX < width_ && blockY < height_,
+                     "covered blocks start inside the framebuffer");
     // The contract's z = (z0 + tx) + ty with tx depending only on the column and ty only on
     // the row: precomputing both per block gives the same roundings, so the same bits.
-    const DepthPlane& p = tri_.depth;
+    const DepthPlane& p = *plane_;
     double zx[kBlockSize], ty[kBlockSize];
     for (int k = 0; k < kBlockSize; ++k) {
       zx[k] = p.z0 + p.dzdx * static_cast<double>(pixelCentreFixed(blockX + k) - p.x0);
       ty[k] = p.dzdy * static_cast<double>(pixelCentreFixed(blockY + k) - p.y0);
     }
+    const auto stride = static_cast<std::size_t>(width_);
     while (mask != 0) {
       const int bit = __builtin_ctzll(mask);
       mask &= mask - 1;
       const int col = bit & (kBlockSize - 1), row = bit / kBlockSize;
       const std::uint32_t z = quantizeDepth(zx[col] + ty[row]);
       const std::size_t i =
-          static_cast<std::size_t>(blockY + row) * stride_ + static_cast<std::size_t>(blockX + col);
-      applyFragment(state_, ops_, z, depth_[i], stencil_[i]);
+          static_cast<std::size_t>(blockY + row) * stride + static_cast<std::size_t>(blockX + col);
+      applyFragment(state_, *ops_, z, depth_[i], stencil_[i]);
       ++fragments;
     }
   }
@@ -48,12 +55,13 @@ class FragmentWriter final : public BlockSink {
   std::uint64_t fragments = 0;
 
  private:
-  const TriangleSetup& tri_;
-  const DepthStencilState& state_;
-  const StencilOps& ops_;
-  std::size_t stride_;
+  const RenderState& state_;
+  int width_;
+  int height_;
   std::uint32_t* depth_;
   std::uint8_t* stencil_;
+  const DepthPlane* plane_ = nullptr;
+  const StencilOps* ops_ = nullptr;
 };
 
 }  // namespace
@@ -63,11 +71,11 @@ CpuDevice::CpuDevice(int width, int height) : width_(width), height_(height) {
   const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   depth_.assign(n, kDepthMax);
   stencil_.assign(n, 0);
-  scissor_ = framebufferRect();
+  state_ = initialRenderState(width, height);
 }
 
 void CpuDevice::setScissor(const PixelRect& rect) {
-  scissor_ = rect.intersect(framebufferRect());
+  state_.setScissor(rect, width_, height_);
 }
 
 void CpuDevice::clearDepth(double depth) {
@@ -76,19 +84,20 @@ void CpuDevice::clearDepth(double depth) {
   if (!state_.depthWrite)
     return;  // GL's depth mask applies to clears as well
   const std::uint32_t q = quantizeDepth(depth);
-  for (int y = scissor_.y0; y < scissor_.y1; ++y) {
-    std::fill(depth_.begin() + static_cast<std::ptrdiff_t>(index(scissor_.x0, y)),
-              depth_.begin() + static_cast<std::ptrdiff_t>(index(scissor_.x1, y)), q);
+  const PixelRect& r = state_.scissor;
+  for (int y = r.y0; y < r.y1; ++y) {
+    std::fill(depth_.begin() + static_cast<std::ptrdiff_t>(index(r.x0, y)),
+              depth_.begin() + static_cast<std::ptrdiff_t>(index(r.x1, y)), q);
   }
 }
 
 void CpuDevice::clearStencil(std::uint8_t value) {
   // GL applies the stencil write mask to clears as well.
-  const std::uint8_t wm = state_.stencilWriteMask;
-  for (int y = scissor_.y0; y < scissor_.y1; ++y) {
-    for (int x = scissor_.x0; x < scissor_.x1; ++x) {
+  const PixelRect& r = state_.scissor;
+  for (int y = r.y0; y < r.y1; ++y) {
+    for (int x = r.x0; x < r.x1; ++x) {
       std::uint8_t& s = stencil_[index(x, y)];
-      s = static_cast<std::uint8_t>((value & wm) | (s & static_cast<std::uint8_t>(~wm)));
+      s = writeThroughMask(s, value, state_.stencilWriteMask);
     }
   }
 }
@@ -100,35 +109,17 @@ void CpuDevice::setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t 
 }
 
 void CpuDevice::setStencilOps(Face face, const StencilOps& ops) {
-  if (face != Face::Back)
-    state_.frontOps = ops;
-  if (face != Face::Front)
-    state_.backOps = ops;
+  state_.setStencilOps(face, ops);
 }
 
 void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,
                               std::span<const std::uint32_t> indices) {
-  checkDraw(vertices, indices);
   // The draw is validated as a whole before any pixel changes, so an error leaves the
   // buffers untouched.
-  for (std::size_t k = 0; k < indices.size(); k += 3) {
-    ++counters_.trianglesSubmitted;
-    const auto tri =
-        setupTriangle(snapVertex(vertices[indices[k]]), snapVertex(vertices[indices[k + 1]]),
-                      snapVertex(vertices[indices[k + 2]]));
-    if (!tri) {
-      ++counters_.trianglesDegenerate;
-      continue;
-    }
-    if ((state_.cull == CullMode::Front && tri->frontFacing) ||
-        (state_.cull == CullMode::Back && !tri->frontFacing)) {
-      ++counters_.trianglesCulled;
-      continue;
-    }
-    FragmentWriter writer(*tri, state_, width_, depth_.data(), stencil_.data());
-    traverseTriangle(*tri, scissor_, writer, &counters_.traversal);
-    counters_.fragments += writer.fragments;
-  }
+  checkDraw(vertices, indices);
+  FragmentWriter writer(state_, width_, height_, depth_.data(), stencil_.data());
+  raster::drawTriangles(state_, vertices, indices, writer, &counters_);
+  counters_.fragments += writer.fragments;
 }
 
 std::vector<std::uint8_t> CpuDevice::readStencil(const PixelRect& rect) const {

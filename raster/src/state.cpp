@@ -14,48 +14,21 @@ PixelRect PixelRect::intersect(const PixelRect& o) const {
   return r;
 }
 
-bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored) {
-  switch (func) {
-    case CompareFunc::Never:
-      return false;
-    case CompareFunc::Less:
-      return incoming < stored;
-    case CompareFunc::Equal:
-      return incoming == stored;
-    case CompareFunc::LEqual:
-      return incoming <= stored;
-    case CompareFunc::Greater:
-      return incoming > stored;
-    case CompareFunc::NotEqual:
-      return incoming != stored;
-    case CompareFunc::GEqual:
-      return incoming >= stored;
-    case CompareFunc::Always:
-      return true;
-  }
-  return false;
+void RenderState::setStencilOps(Face face, const StencilOps& ops) {
+  if (face != Face::Back)
+    frontOps = ops;
+  if (face != Face::Front)
+    backOps = ops;
 }
 
-std::uint8_t applyStencilOp(StencilOp op, std::uint8_t value, std::uint8_t ref) {
-  switch (op) {
-    case StencilOp::Keep:
-      return value;
-    case StencilOp::Zero:
-      return 0;
-    case StencilOp::Replace:
-      return ref;
-    case StencilOp::Incr:
-      return value == 0xFF ? value : static_cast<std::uint8_t>(value + 1);
-    case StencilOp::IncrWrap:
-      return static_cast<std::uint8_t>(value + 1);
-    case StencilOp::Decr:
-      return value == 0 ? value : static_cast<std::uint8_t>(value - 1);
-    case StencilOp::DecrWrap:
-      return static_cast<std::uint8_t>(value - 1);
-    case StencilOp::Invert:
-      return static_cast<std::uint8_t>(~value);
-  }
-  return value;
+void RenderState::setScissor(const PixelRect& rect, int width, int height) {
+  scissor = rect.intersect({0, 0, width, height});
+}
+
+RenderState initialRenderState(int width, int height) {
+  RenderState state;
+  state.scissor = {0, 0, width, height};
+  return state;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/invariants.hpp"
 
 namespace recode::raster {
 
@@ -77,6 +78,9 @@ int alignDown(int v, int a) {
 
 void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink& sink,
                       TraversalStats* stats) {
+  RECODE_INVARIANT(clip.x0 >= 0 && clip.y0 >= 0 && clip.x1 <= kMaxFramebufferSize &&
+                       clip.y1 <= kMaxFramebufferSize,
+                   "the clip rectangle lies inside the largest framebuffer");
   const PixelRect area = tri.bounds.intersect(clip);
   if (area.empty())
     return;
@@ -118,8 +122,12 @@ void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink
               mask = coverageMask(tri, bx, by) & inClip;
             }
           }
-          if (mask != 0)
-            sink.coveredBlock(bx, by, mask);
+          if (mask == 0)
+            continue;
+          RECODE_INVARIANT(bx % kBlockSize == 0 && by % kBlockSize == 0,
+                           "blocks are aligned to the 8x8 grid");
+          RECODE_INVARIANT((mask & ~inClip) == 0, "a block's coverage lies inside the clip");
+          sink.coveredBlock(bx, by, mask);
         }
       }
     }

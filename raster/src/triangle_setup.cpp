@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/invariants.hpp"
 
 namespace recode::raster {
 
@@ -38,6 +39,14 @@ FixedVertex snapVertex(const WindowVertex& v) {
 
 std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0, const FixedVertex& v1,
                                            const FixedVertex& v2) {
+  // The device refuses vertices beyond kMaxWindowCoordinate, which keeps every product of the
+  // edge functions below 2^49 (docs/rasterization.md, section 3).
+  constexpr std::int64_t kMaxFixed = static_cast<std::int64_t>(kMaxWindowCoordinate) * kSubpixelOne;
+  for (const FixedVertex* v : {&v0, &v1, &v2}) {
+    RECODE_INVARIANT(
+        v->x >= -kMaxFixed && v->x <= kMaxFixed && v->y >= -kMaxFixed && v->y <= kMaxFixed,
+        "snapped vertices lie within the fixed-point range |X|, |Y| <= 2^23");
+  }
   const std::int64_t e1x = v1.x - v0.x, e1y = v1.y - v0.y;
   const std::int64_t e2x = v2.x - v0.x, e2y = v2.y - v0.y;
   const std::int64_t area2 = e1x * e2y - e2x * e1y;  // twice the signed area, exact

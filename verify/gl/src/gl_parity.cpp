@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -22,9 +23,8 @@
 
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
-#include "recode/raster/fragment_ops.hpp"
-#include "recode/raster/traversal.hpp"
-#include "recode/raster/triangle_setup.hpp"
+#include "recode/raster/fragment_stage.hpp"
+#include "recode/raster/pipeline.hpp"
 #include "recode/verify/gl_device.hpp"
 
 namespace recode::verify {
@@ -123,18 +123,22 @@ struct RegionState {
   }
 };
 
-// Re-runs one triangle's fragments on the reference's values with the contract's arithmetic
+// Re-runs each triangle's fragments on the reference's values with the contract's arithmetic
 // and marks the pixels whose depth test was within reach of GL's rounding.
-class NearDecisionSink final : public raster::BlockSink {
+class NearDecisionSink final : public raster::TriangleSink {
  public:
-  NearDecisionSink(const raster::TriangleSetup& tri, const DepthErrorBound* bound,
-                   const raster::DepthStencilState& state, std::uint32_t floor, RegionState& region)
-      : tri_(tri),
-        bound_(bound),
-        state_(state),
-        ops_(tri.frontFacing ? state.frontOps : state.backOps),
-        floor_(floor),
-        r_(region) {}
+  NearDecisionSink(const raster::RenderState& state, const GlParityOptions& options, int height,
+                   RegionState& region)
+      : state_(state), options_(options), height_(height), r_(region) {}
+
+  void beginTriangle(const raster::TriangleSetup& triangle,
+                     const std::array<raster::FixedVertex, 3>& snapped) override {
+    tri_ = &triangle;
+    ops_ = &state_.opsFor(triangle.frontFacing);
+    bound_.reset();
+    if (options_.planeErrorBound)
+      bound_.emplace(snapped, height_);
+  }
 
   void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
     const bool depthDecides = state_.depthFunc != raster::CompareFunc::Always &&
@@ -146,12 +150,10 @@ class NearDecisionSink final : public raster::BlockSink {
       const int y = blockY + bit / raster::kBlockSize;
       const std::size_t i = r_.index(x, y);
       const std::uint32_t q = raster::quantizeDepth(
-          tri_.depth.at(raster::pixelCentreFixed(x), raster::pixelCentreFixed(y)));
+          tri_->depth.at(raster::pixelCentreFixed(x), raster::pixelCentreFixed(y)));
       const std::uint32_t tolerance = toleranceAt(x, y);
       const std::uint32_t d = r_.depth[i];
-      const bool stencilPasses =
-          raster::compare(state_.stencilFunc, state_.stencilRef & state_.stencilValueMask,
-                          r_.stencil[i] & state_.stencilValueMask);
+      const bool stencilPasses = raster::stencilTestPasses(state_, r_.stencil[i]);
       const bool writes =
           stencilPasses && state_.depthWrite && raster::compare(state_.depthFunc, q, d);
       // The candidate's outcome may differ when its stencil may already differ (a pixel left
@@ -173,26 +175,28 @@ class NearDecisionSink final : public raster::BlockSink {
         r_.depthSlack[i] = tolerance;  // the candidate wrote its own depth for this fragment
         r_.written[i] = 1;
       }
-      raster::applyFragment(state_, ops_, q, r_.depth[i], r_.stencil[i]);
+      raster::applyFragment(state_, *ops_, q, r_.depth[i], r_.stencil[i]);
     }
   }
 
  private:
   [[nodiscard]] std::uint32_t toleranceAt(int x, int y) const {
-    if (bound_ == nullptr)
-      return floor_;
+    const std::uint32_t floor = options_.depthTolerance;
+    if (!bound_)
+      return floor;
     const double b = std::ceil(bound_->at(x, y));
     return b >= static_cast<double>(raster::kDepthMax)
                ? raster::kDepthMax
-               : std::max(floor_, static_cast<std::uint32_t>(b));
+               : std::max(floor, static_cast<std::uint32_t>(b));
   }
 
-  const raster::TriangleSetup& tri_;
-  const DepthErrorBound* bound_;
-  const raster::DepthStencilState& state_;
-  const raster::StencilOps& ops_;
-  std::uint32_t floor_;
+  const raster::RenderState& state_;
+  const GlParityOptions& options_;
+  int height_;
   RegionState& r_;
+  const raster::TriangleSetup* tri_ = nullptr;
+  const raster::StencilOps* ops_ = nullptr;
+  std::optional<DepthErrorBound> bound_;  // when options_.planeErrorBound
 };
 
 class Comparer {
@@ -205,60 +209,24 @@ class Comparer {
     state_.depthSlack.assign(n, 0);
     state_.near.assign(n, 0);
     state_.written.assign(n, 0);
-    scissor_ = {0, 0, reference.width(), reference.height()};
+    gl_ = raster::initialRenderState(reference.width(), reference.height());
   }
 
   // Follows the state commands so that draws can be re-evaluated.
   void track(const raster::Command& command) {
-    std::visit(
-        [this](const auto& c) {
-          using T = std::decay_t<decltype(c)>;
-          if constexpr (std::is_same_v<T, raster::cmd::Scissor>) {
-            scissor_ = c.rect.intersect({0, 0, reference_.width(), reference_.height()});
-          } else if constexpr (std::is_same_v<T, raster::cmd::DepthFunc>) {
-            gl_.depthFunc = c.func;
-          } else if constexpr (std::is_same_v<T, raster::cmd::DepthWriteMask>) {
-            gl_.depthWrite = c.write;
-          } else if constexpr (std::is_same_v<T, raster::cmd::StencilFunc>) {
-            gl_.stencilFunc = c.func;
-            gl_.stencilRef = c.ref;
-            gl_.stencilValueMask = c.valueMask;
-          } else if constexpr (std::is_same_v<T, raster::cmd::StencilOpsCmd>) {
-            if (c.face != raster::Face::Back)
-              gl_.frontOps = c.ops;
-            if (c.face != raster::Face::Front)
-              gl_.backOps = c.ops;
-          } else if constexpr (std::is_same_v<T, raster::cmd::StencilWriteMask>) {
-            gl_.stencilWriteMask = c.mask;
-          } else if constexpr (std::is_same_v<T, raster::cmd::Cull>) {
-            gl_.cull = c.mode;
-          }
-        },
-        command);
+    (void)raster::applyToState(command, gl_, reference_.width(), reference_.height());
   }
 
   // Marks the pixels where this draw's depth tests were near, from the reference's values
-  // before the draw. Call only for a draw the reference has accepted (indices in range).
+  // before the draw: the draw runs through the same pipeline as the CPU device's, clipped to
+  // the compared region. Call only for a draw the reference has accepted (a valid draw).
   void analyseDraw(const raster::cmd::Draw& draw) {
-    const PixelRect clip = scissor_.intersect(state_.region);
-    if (clip.empty())
+    raster::RenderState clipped = gl_;
+    clipped.scissor = gl_.scissor.intersect(state_.region);
+    if (clipped.scissor.empty())
       return;
-    for (std::size_t k = 0; k + 2 < draw.indices.size(); k += 3) {
-      const std::array<raster::FixedVertex, 3> v = {
-          raster::snapVertex(draw.vertices[draw.indices[k]]),
-          raster::snapVertex(draw.vertices[draw.indices[k + 1]]),
-          raster::snapVertex(draw.vertices[draw.indices[k + 2]])};
-      const auto tri = raster::setupTriangle(v[0], v[1], v[2]);
-      if (!tri || (gl_.cull == raster::CullMode::Front && tri->frontFacing) ||
-          (gl_.cull == raster::CullMode::Back && !tri->frontFacing)) {
-        continue;
-      }
-      std::optional<DepthErrorBound> bound;
-      if (options_.planeErrorBound)
-        bound.emplace(v, reference_.height());
-      NearDecisionSink sink(*tri, bound ? &*bound : nullptr, gl_, options_.depthTolerance, state_);
-      raster::traverseTriangle(*tri, clip, sink);
-    }
+    NearDecisionSink sink(clipped, options_, reference_.height(), state_);
+    raster::drawTriangles(clipped, draw.vertices, draw.indices, sink);
   }
 
   // Reads both devices over the region and classifies every pixel.
@@ -323,8 +291,7 @@ class Comparer {
   raster::DepthStencilDevice& candidate_;
   const GlParityOptions& options_;
   RegionState state_;
-  raster::DepthStencilState gl_;  // the stream's state so far (GL's defaults to start)
-  PixelRect scissor_;
+  raster::RenderState gl_;  // the stream's state so far (GL's defaults to start)
 };
 
 bool changesBuffers(const raster::Command& command) {

@@ -61,6 +61,11 @@ struct CommandStream {
 // Sends every command to `device`, in order. The device's size is not changed.
 void replay(const std::vector<Command>& commands, DepthStencilDevice& device);
 
+// Applies a state command to `state` as every device does (the scissor clamped to a width x
+// height framebuffer). Returns false, changing nothing, for a command that changes the buffers
+// (a clear or a draw): for tools that follow a stream's state without a device.
+bool applyToState(const Command& command, RenderState& state, int width, int height);
+
 // Forwards every call to an inner device and appends it to a stream.
 class RecordingDevice final : public DepthStencilDevice {
  public:

@@ -1,14 +1,15 @@
 #pragma once
 // The reference depth/stencil machine: a 24-bit depth buffer and an 8-bit stencil buffer in
-// memory, drawn by the fixed-point tile rasterizer. Single-threaded and deterministic.
+// memory and a RenderState, drawn by the raster pipeline (pipeline.hpp). Single-threaded and
+// deterministic.
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "recode/raster/device.hpp"
-#include "recode/raster/fragment_ops.hpp"
-#include "recode/raster/traversal.hpp"
+#include "recode/raster/pipeline.hpp"
+#include "recode/raster/state.hpp"
 
 namespace recode::raster {
 
@@ -38,16 +39,12 @@ class CpuDevice final : public DepthStencilDevice {
   // Direct views of the whole buffers (row-major, bottom row first), for tools and tests.
   [[nodiscard]] std::span<const std::uint8_t> stencilBuffer() const { return stencil_; }
   [[nodiscard]] std::span<const std::uint32_t> depthBuffer() const { return depth_; }
-  [[nodiscard]] const DepthStencilState& state() const { return state_; }
-  [[nodiscard]] const PixelRect& scissor() const { return scissor_; }
+  [[nodiscard]] const RenderState& state() const { return state_; }
+  [[nodiscard]] const PixelRect& scissor() const { return state_.scissor; }
 
   // Counters since construction (or the last reset): useful for benchmarks and teaching.
-  struct Counters {
-    std::uint64_t trianglesSubmitted = 0;
-    std::uint64_t trianglesDegenerate = 0;
-    std::uint64_t trianglesCulled = 0;
+  struct Counters : PipelineCounters {
     std::uint64_t fragments = 0;
-    TraversalStats traversal;
   };
   [[nodiscard]] const Counters& counters() const { return counters_; }
   void resetCounters() { counters_ = {}; }
@@ -75,8 +72,7 @@ class CpuDevice final : public DepthStencilDevice {
   int height_;
   std::vector<std::uint32_t> depth_;
   std::vector<std::uint8_t> stencil_;
-  DepthStencilState state_;
-  PixelRect scissor_;
+  RenderState state_;
   Counters counters_;
 };
 

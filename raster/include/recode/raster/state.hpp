@@ -1,6 +1,8 @@
 #pragma once
-// Plain state types of the depth/stencil machine, shared by every device and by the
-// command-stream format. Names follow OpenGL's so that a back end maps them one to one.
+// The state of the depth/stencil machine: its plain types and RenderState, everything a draw
+// or a clear depends on, as one value. Shared by every device, the pipeline (pipeline.hpp),
+// which reads it and never changes it, and the command-stream format. Names follow OpenGL's
+// so that a back end maps them one to one.
 
 #include <cstdint>
 #include <optional>
@@ -62,10 +64,36 @@ struct PixelRect {
   friend bool operator==(const PixelRect&, const PixelRect&) = default;
 };
 
-// The pure functions of the per-fragment stage (GL's compare and stencil-op tables). The
-// tests hold them against a longhand model of their own (tests/raster/reference_model.cpp).
-[[nodiscard]] bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored);
-[[nodiscard]] std::uint8_t applyStencilOp(StencilOp op, std::uint8_t value, std::uint8_t ref);
+// Everything a draw or a clear depends on, with GL's defaults. The scissor is kept clamped to
+// the framebuffer (setScissor), so the stages after it never see a pixel outside.
+struct RenderState {
+  PixelRect scissor;
+  CompareFunc depthFunc = CompareFunc::Less;
+  bool depthWrite = true;
+  CompareFunc stencilFunc = CompareFunc::Always;
+  std::uint8_t stencilRef = 0;
+  std::uint8_t stencilValueMask = 0xFF;
+  std::uint8_t stencilWriteMask = 0xFF;
+  StencilOps frontOps;
+  StencilOps backOps;
+  CullMode cull = CullMode::None;
+
+  // The ops for a triangle of this facing (GL's glStencilOpSeparate).
+  [[nodiscard]] const StencilOps& opsFor(bool frontFacing) const {
+    return frontFacing ? frontOps : backOps;
+  }
+  // Whether a triangle of this facing is discarded before rasterization.
+  [[nodiscard]] bool culls(bool frontFacing) const {
+    return (cull == CullMode::Front && frontFacing) || (cull == CullMode::Back && !frontFacing);
+  }
+  // The state changes of the device interface whose meaning is more than an assignment: ops for
+  // Front, Back or Both faces; the scissor clamped to a width x height framebuffer.
+  void setStencilOps(Face face, const StencilOps& ops);
+  void setScissor(const PixelRect& rect, int width, int height);
+};
+
+// GL's initial state for a width x height framebuffer (the scissor is the whole of it).
+[[nodiscard]] RenderState initialRenderState(int width, int height);
 
 // Names as they appear in the golden-vector files and in messages ("LEQUAL", "INCR_WRAP",
 // "front", ...). Parsing is case-sensitive and returns nullopt for an unknown name.

@@ -7,6 +7,7 @@
 #include "raster_test_support.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/fragment_stage.hpp"
 #include "reference_model.hpp"
 
 using namespace recode::raster;

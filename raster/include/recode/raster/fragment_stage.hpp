@@ -1,0 +1,50 @@
+#pragma once
+// The per-fragment stage, in GL's order: stencil test (-> sfail op), depth test (-> dpfail op),
+// then dppass op and the depth write, the stencil written through its write mask
+// (docs/rasterization.md, section 6). Pure functions of the state and the stored values; the
+// tests hold them against a longhand model of their own (tests/raster/reference_model.cpp).
+
+#include <cstdint>
+
+#include "recode/raster/state.hpp"
+
+namespace recode::raster {
+
+// GL's compare and stencil-op tables.
+[[nodiscard]] bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored);
+[[nodiscard]] std::uint8_t applyStencilOp(StencilOp op, std::uint8_t value, std::uint8_t ref);
+
+// The bits of `updated` under the write mask, the rest of `old`: how GL writes the stencil,
+// for fragments and clears alike.
+[[nodiscard]] inline std::uint8_t writeThroughMask(std::uint8_t old, std::uint8_t updated,
+                                                   std::uint8_t writeMask) {
+  return static_cast<std::uint8_t>((updated & writeMask) |
+                                   (old & static_cast<std::uint8_t>(~writeMask)));
+}
+
+// Whether the stencil test passes against a stored value.
+[[nodiscard]] inline bool stencilTestPasses(const RenderState& s, std::uint8_t stored) {
+  return compare(s.stencilFunc, s.stencilRef & s.stencilValueMask, stored & s.stencilValueMask);
+}
+
+// Applies one fragment of depth `incomingDepth` (24-bit) to a stored depth and stencil; `ops`
+// are the state's ops for the triangle's facing (RenderState::opsFor).
+inline void applyFragment(const RenderState& s, const StencilOps& ops, std::uint32_t incomingDepth,
+                          std::uint32_t& depth, std::uint8_t& stencil) {
+  const std::uint8_t old = stencil;
+  StencilOp op;
+  bool writeDepth = false;
+  if (!stencilTestPasses(s, old)) {
+    op = ops.stencilFail;
+  } else if (!compare(s.depthFunc, incomingDepth, depth)) {
+    op = ops.depthFail;
+  } else {
+    op = ops.depthPass;
+    writeDepth = s.depthWrite;
+  }
+  stencil = writeThroughMask(old, applyStencilOp(op, old, s.stencilRef), s.stencilWriteMask);
+  if (writeDepth)
+    depth = incomingDepth;
+}
+
+}  // namespace recode::raster
