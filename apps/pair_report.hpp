@@ -1,5 +1,5 @@
 #pragma once
-// The output of `recode pair`: the JSON object of DESIGN.md section 6 and the text report.
+// The output of `recode pair`: the JSON object of docs/cli.md ("recode pair") and the report.
 
 #include <nlohmann/json.hpp>
 #include <ostream>

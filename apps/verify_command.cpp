@@ -29,8 +29,8 @@ struct VerifyOptions {
   int frame = 0;
 };
 
-// The oracles named on the command line; none named means Embree and CGAL (issue 4's default:
-// the GL replay is asked for explicitly, as it needs OSMesa at run time).
+// The oracles named on the command line; none named means Embree and CGAL (docs/cli.md,
+// "recode verify": the GL replay is asked for explicitly, as it needs OSMesa at run time).
 verify::OracleSelection selectedOracles(const VerifyOptions& o) {
   verify::OracleSelection s{o.embree, o.cgal, o.gl};
   if (!s.embree && !s.cgal && !s.gl)

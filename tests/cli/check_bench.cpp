@@ -1,4 +1,4 @@
-// Checks what `recode bench --quick` wrote, against the requirements and against
+// Checks what `recode bench --quick` wrote, against docs/benchmarks.md and against
 // facts derived independently of the bench:
 // - bench.csv has the documented header and exactly one row per experiment, scene and
 //   algorithm (the expected lists are written here from the experiment definitions in

@@ -1,4 +1,4 @@
-// The case table itself (DESIGN.md section 5) and its stencil encoding, without a device.
+// The case table itself (docs/algorithm.md section 1) and its stencil encoding, no device.
 
 #include <catch2/catch.hpp>
 #include <optional>
@@ -11,7 +11,7 @@ using recode::core::DepthInterval;
 
 namespace {
 
-// The rows of the table exactly as written in DESIGN.md, one predicate each.
+// The rows of the table exactly as written in docs/algorithm.md, one predicate each.
 bool row(int c, long amin, long amax, long bmin, long bmax) {
   switch (c) {
     case 2:

@@ -1,4 +1,4 @@
-// The world-to-window view of DESIGN.md section 3: image planes per axis, depth direction,
+// The world-to-window view (docs/algorithm.md section 2): image planes per axis, depth direction,
 // pre-snapping, the inverse mapping, facing preserved, and the errors.
 
 #include <catch2/catch.hpp>

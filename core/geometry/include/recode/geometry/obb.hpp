@@ -1,5 +1,5 @@
 #pragma once
-// Oriented bounding boxes for the object hierarchies (DESIGN.md section 5, "Hierarchies"):
+// Oriented bounding boxes for the object hierarchies (docs/cli.md "recode run", steps 2-4):
 // fitted once to a node's geometry in the node's own coordinates, then moved rigidly with the
 // node, and tested against each other with the separating-axis theorem. Boxes are closed:
 // boxes that only touch overlap, as blocks that only touch interfere in the pair algorithm.

@@ -1,6 +1,6 @@
 #pragma once
 // The frame a pair is rendered in: view axis, window and resolution. A scene may leave the
-// window and resolution out; these functions supply the defaults of DESIGN.md section 6 and
+// window and resolution out; these functions supply the defaults of docs/scenes.md ("view") and
 // turn "pixel size in world units" into a resolution (the paper's accuracy/time knob).
 
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-// RECODE for one pair of convex blocks (DESIGN.md section 5, docs/algorithm.md): the MOR,
+// RECODE for one pair of convex blocks (docs/algorithm.md): the MOR,
 // the depth/stencil passes, the per-pixel cases 0-8 and the contact region, all through
 // raster::DepthStencilDevice so any back end can replay the command stream. Queries follow
 // a request -> result shape.

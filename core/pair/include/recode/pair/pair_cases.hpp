@@ -1,5 +1,5 @@
 #pragma once
-// The nine per-pixel cases of RECODE for a pair of convex blocks A, B (DESIGN.md section 5)
+// The nine per-pixel cases of RECODE for convex blocks A, B (docs/algorithm.md section 1)
 // and the stencil encoding the pair algorithm leaves behind (docs/algorithm.md, "Stencil
 // encoding"). Back-end authors decode their own stencil read-back with caseFromStencil().
 

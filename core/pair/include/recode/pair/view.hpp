@@ -1,5 +1,5 @@
 #pragma once
-// World -> window mapping of DESIGN.md section 3: an orthographic view along a world axis,
+// World -> window mapping (docs/algorithm.md section 2): an orthographic view along a world axis,
 // GL conventions (the viewer on the + side of the axis looking toward -, so depth grows as
 // the coordinate along the axis decreases), the scene window onto W x H pixels, window x and
 // y pre-snapped to the 1/256-pixel grid so every back end starts from the same vertices.

@@ -1,5 +1,5 @@
 #pragma once
-// Scene files (DESIGN.md section 6, documented field by field in docs/scenes.md): the view,
+// Scene files (documented field by field in docs/scenes.md): the view,
 // and a list of objects, each a convex block given by a mesh file or a shape generator, or a
 // tree of such blocks ("children"), placed by a position and a rotation and moved per frame
 // by a motion, keyframes or a joint. Loading checks every field; any problem throws

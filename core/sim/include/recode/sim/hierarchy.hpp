@@ -1,5 +1,5 @@
 #pragma once
-// An object as a tree of nodes with rigid transforms (DESIGN.md section 5, "Hierarchies"):
+// An object as a tree of nodes with rigid transforms (docs/scenes.md, docs/cli.md "recode run"):
 // leaves are convex blocks, every node carries a world AABB (recomputed per frame) and an
 // OBB. Pairs of objects descend their trees while both kinds of box overlap; the leaf pairs
 // that remain go to the pair algorithm.

@@ -1,5 +1,5 @@
 #pragma once
-// The Embree per-pixel interval oracle (issue 4, docs/verification.md "Embree"): an
+// The Embree per-pixel interval oracle (docs/verification.md "Embree"): an
 // independent measurement of each block's depth interval at every pixel centre, by ray casts
 // along the view axis through the same snapped window-space geometry the device draws, with
 // the depth of the hit triangle re-evaluated in double. It checks a PairResult's case map
