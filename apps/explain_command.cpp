@@ -69,8 +69,8 @@ void append(std::vector<explain::Picture>& to, std::vector<explain::Picture> pic
 // The section of one step: its explanation, and pictures of the buffers it is about or
 // changed (the case map after the read-back).
 explain::Section stepSection(const explain::StepSnapshot& snap,
-                             const std::vector<std::uint8_t>& prevStencil,
-                             const std::vector<std::uint32_t>& prevDepth,
+                             const raster::PixelBuffer<std::uint8_t>& prevStencil,
+                             const raster::PixelBuffer<std::uint32_t>& prevDepth,
                              const core::PairResult& result, explain::PictureWriter& pictures,
                              int number) {
   explain::Section s;
@@ -105,11 +105,10 @@ std::vector<explain::Section> buildSections(const core::PairResult& result,
   first.text = explain::silhouettesText(result, mor, boxTest, frame);
   first.pictures = pictures.silhouettes(next());
   sections.push_back(std::move(first));
-  const auto pixels = static_cast<std::size_t>(frame.area());
-  const std::vector<std::uint8_t> noStencil(pixels, 0);
-  const std::vector<std::uint32_t> farDepth(pixels, raster::kDepthMax);
-  const std::vector<std::uint8_t>* prevStencil = &noStencil;
-  const std::vector<std::uint32_t>* prevDepth = &farDepth;
+  const raster::PixelBuffer<std::uint8_t> noStencil(frame, std::uint8_t{0});
+  const raster::PixelBuffer<std::uint32_t> farDepth(frame, raster::kDepthMax);
+  const raster::PixelBuffer<std::uint8_t>* prevStencil = &noStencil;
+  const raster::PixelBuffer<std::uint32_t>* prevDepth = &farDepth;
   for (const explain::StepSnapshot& snap : snapshots) {
     sections.push_back(stepSection(snap, *prevStencil, *prevDepth, result, pictures, next()));
     prevStencil = &snap.stencil;
@@ -150,7 +149,8 @@ int runExplain(const ExplainOptions& options) {
   const core::PairResult result = core::collidePair(device, setup.a, setup.b, request, &recorder);
   const auto range =
       core::pairDepthRange(f.axis, core::boundingBox(setup.a), core::boundingBox(setup.b));
-  const std::vector<std::uint8_t> coverage = explain::blockCoverage(setup, range[0], range[1]);
+  const raster::PixelBuffer<std::uint8_t> coverage =
+      explain::blockCoverage(setup, range[0], range[1]);
 
   explain::PictureWriter pictures(dir, setup, result, coverage);
   const std::vector<explain::Section> sections =

@@ -39,11 +39,6 @@ Rgb depthColour(std::uint32_t depth, std::uint32_t nearest = 0,
   return {g, g, g};
 }
 
-std::size_t pixelIndex(int x, int y, int width) {
-  return static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-         static_cast<std::size_t>(x);
-}
-
 bool contains(const PixelRect& r, int x, int y) {
   return x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
 }
@@ -104,7 +99,7 @@ void Painter::hatchOutside(RgbImage& image, const PixelRect& active) const {
 
 PictureWriter::PictureWriter(std::filesystem::path dir, const PairSetup& setup,
                              const core::PairResult& result,
-                             const std::vector<std::uint8_t>& coverage)
+                             const raster::PixelBuffer<std::uint8_t>& coverage)
     : dir_(std::move(dir)),
       setup_(setup),
       result_(result),
@@ -114,12 +109,10 @@ PictureWriter::PictureWriter(std::filesystem::path dir, const PairSetup& setup,
       zoom_(zoomPainter()) {}
 
 std::vector<Picture> PictureWriter::silhouettes(int section) {
-  const int w = frameWidth();
-  RgbImage image =
-      painter_.paint([&](int x, int y) { return coverageColour(coverage_[pixelIndex(x, y, w)]); });
+  RgbImage image = painter_.paint([&](int x, int y) { return coverageColour(coverage_.at(x, y)); });
   painter_.outline(image, mor(), kMorOutline);
   std::array<long long, 4> counts{};
-  for (std::uint8_t c : coverage_)
+  for (std::uint8_t c : coverage_.data)
     ++counts[c & 3u];
   Picture p = makePicture(painter_, fileStem(section, "silhouettes"), "silhouettes", image);
   p.caption = "Coverage of A and B over the whole frame; cyan: the MOR.";
@@ -159,11 +152,10 @@ std::vector<Picture> PictureWriter::contact(int section) {
 std::optional<Painter> PictureWriter::zoomPainter() const {
   if (result_.mor.empty())
     return std::nullopt;
-  const int w = frameWidth();
   PixelRect c{frame_.x1, frame_.y1, frame_.x0, frame_.y0};
   for (int y = 0; y < frame_.y1; ++y)
     for (int x = 0; x < frame_.x1; ++x)
-      if ((coverage_[pixelIndex(x, y, w)] & 3u) == 3u)
+      if ((coverage_.at(x, y) & 3u) == 3u)
         c = {std::min(c.x0, x), std::min(c.y0, y), std::max(c.x1, x + 1), std::max(c.y1, y + 1)};
   if (c.empty())
     return std::nullopt;
@@ -215,7 +207,6 @@ RgbImage PictureWriter::bufferImage(const Painter& painter, const PixelRect& act
 }
 
 Picture PictureWriter::depthPicture(const Painter& painter, const StepSnapshot& snap, int number) {
-  const int w = frameWidth();
   const PixelRect active = activeRect(snap.step);
   const bool zoom = painter.region() != frame_;
   // A close-up stretches the grey levels over the depths inside the step's rectangle
@@ -226,7 +217,7 @@ Picture PictureWriter::depthPicture(const Painter& painter, const StepSnapshot& 
     const PixelRect shown = active.intersect(painter.region());
     for (int y = shown.y0; y < shown.y1; ++y)
       for (int x = shown.x0; x < shown.x1; ++x) {
-        const std::uint32_t d = snap.depth[pixelIndex(x, y, w)];
+        const std::uint32_t d = snap.depth.at(x, y);
         if (d != 0 && d != raster::kDepthMax) {
           lo = std::min(lo, d);
           hi = std::max(hi, d);
@@ -238,7 +229,7 @@ Picture PictureWriter::depthPicture(const Painter& painter, const StepSnapshot& 
     }
   }
   const RgbImage image = bufferImage(painter, active, [&](int x, int y) {
-    return depthColour(snap.depth[pixelIndex(x, y, w)], nearest, farthest);
+    return depthColour(snap.depth.at(x, y), nearest, farthest);
   });
   Picture p = makePicture(
       painter,
@@ -256,11 +247,9 @@ Picture PictureWriter::depthPicture(const Painter& painter, const StepSnapshot& 
 
 Picture PictureWriter::stencilPicture(const Painter& painter, const StepSnapshot& snap,
                                       int number) {
-  const int w = frameWidth();
   const PixelRect active = activeRect(snap.step);
-  const RgbImage image = bufferImage(painter, active, [&](int x, int y) {
-    return stencilColour(snap.stencil[pixelIndex(x, y, w)]);
-  });
+  const RgbImage image = bufferImage(
+      painter, active, [&](int x, int y) { return stencilColour(snap.stencil.at(x, y)); });
   const bool zoom = painter.region() != frame_;
   if (zoom) {
     Picture p = makePicture(
@@ -272,7 +261,7 @@ Picture PictureWriter::stencilPicture(const Painter& painter, const StepSnapshot
   std::array<long long, 256> counts{};
   for (int y = active.y0; y < active.y1; ++y)
     for (int x = active.x0; x < active.x1; ++x)
-      ++counts[snap.stencil[pixelIndex(x, y, w)]];
+      ++counts[snap.stencil.at(x, y)];
   Picture p =
       makePicture(painter, fileStem(number, std::string(core::toString(snap.step)) + "-stencil"),
                   "stencil", image);
@@ -296,7 +285,7 @@ int PictureWriter::caseAt(int x, int y) const {
   const PixelRect& m = mor();
   if (!contains(m, x, y))
     return -1;
-  return result_.caseMap[pixelIndex(x - m.x0, y - m.y0, m.width())];
+  return result_.caseMap.at(x, y);
 }
 
 Picture PictureWriter::casePicture(const Painter& painter, int number) {
@@ -329,11 +318,10 @@ Picture PictureWriter::casePicture(const Painter& painter, int number) {
 }
 
 Picture PictureWriter::contactPicture(const Painter& painter, int number) {
-  const int w = frameWidth();
   RgbImage image = painter.paint([&](int x, int y) {
     if (core::isInterfering(caseAt(x, y)))
       return kInterfering;
-    return dimmed(coverageColour(coverage_[pixelIndex(x, y, w)]), 0.4);
+    return dimmed(coverageColour(coverage_.at(x, y)), 0.4);
   });
   painter.outline(image, mor(), kMorOutline);
   painter.outline(image, result_.contactRect, kContactOutline);

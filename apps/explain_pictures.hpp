@@ -75,7 +75,7 @@ class Painter {
 class PictureWriter {
  public:
   PictureWriter(std::filesystem::path dir, const PairSetup& setup, const core::PairResult& result,
-                const std::vector<std::uint8_t>& coverage);
+                const raster::PixelBuffer<std::uint8_t>& coverage);
 
   // The whole frame, and picture pixels per framebuffer pixel in the whole-frame pictures.
   [[nodiscard]] const raster::PixelRect& frame() const { return frame_; }
@@ -109,7 +109,7 @@ class PictureWriter {
   std::filesystem::path dir_;
   const PairSetup& setup_;
   const core::PairResult& result_;
-  const std::vector<std::uint8_t>& coverage_;
+  const raster::PixelBuffer<std::uint8_t>& coverage_;
   raster::PixelRect frame_;
   Painter painter_;
   std::optional<Painter> zoom_;

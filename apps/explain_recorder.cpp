@@ -9,10 +9,12 @@ namespace recode::app::explain {
 
 void StepRecorder::afterStep(core::PairStep step, raster::DepthStencilDevice& device) {
   const raster::PixelRect all{0, 0, device.width(), device.height()};
-  snapshots_.push_back({step, device.readStencil(all), device.readDepth(all)});
+  snapshots_.push_back(
+      {step, raster::readStencilBuffer(device, all), raster::readDepthBuffer(device, all)});
 }
 
-std::vector<std::uint8_t> blockCoverage(const PairSetup& setup, double depthMin, double depthMax) {
+raster::PixelBuffer<std::uint8_t> blockCoverage(const PairSetup& setup, double depthMin,
+                                                double depthMax) {
   const core::FrameSpec& f = setup.frame;
   const core::OrthoView view(f.axis, f.window, f.width, f.height, depthMin, depthMax);
   raster::CpuDevice device(f.width, f.height);
@@ -33,7 +35,7 @@ std::vector<std::uint8_t> blockCoverage(const PairSetup& setup, double depthMin,
   };
   draw(setup.a, 1);
   draw(setup.b, 2);
-  return device.readStencil({0, 0, f.width, f.height});
+  return raster::readStencilBuffer(device, {0, 0, f.width, f.height});
 }
 
 }  // namespace recode::app::explain

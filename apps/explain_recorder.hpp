@@ -6,14 +6,15 @@
 
 #include "pair_setup.hpp"
 #include "recode/pair/pair.hpp"
+#include "recode/raster/pixel_buffer.hpp"
 
 namespace recode::app::explain {
 
-// Both buffers over the whole frame after one step, bottom row first.
+// Both buffers over the whole frame after one step.
 struct StepSnapshot {
   core::PairStep step;
-  std::vector<std::uint8_t> stencil;
-  std::vector<std::uint32_t> depth;
+  raster::PixelBuffer<std::uint8_t> stencil;
+  raster::PixelBuffer<std::uint32_t> depth;
 };
 
 // Keeps a full-frame copy of the stencil and depth buffers after every step of the pair
@@ -27,11 +28,11 @@ class StepRecorder final : public core::PairObserver {
   std::vector<StepSnapshot> snapshots_;
 };
 
-// Coverage of A (bit 0) and B (bit 1) over the whole frame, bottom row first, drawn through
+// Coverage of A (bit 0) and B (bit 1) over the whole frame, drawn through
 // the device interface on a device of its own: depth test ALWAYS, no depth writes, each
 // block setting its own stencil bit. [depthMin, depthMax] is the world range along the view
 // axis that the view maps onto depth.
-[[nodiscard]] std::vector<std::uint8_t> blockCoverage(const PairSetup& setup, double depthMin,
-                                                      double depthMax);
+[[nodiscard]] raster::PixelBuffer<std::uint8_t> blockCoverage(const PairSetup& setup,
+                                                              double depthMin, double depthMax);
 
 }  // namespace recode::app::explain

@@ -134,7 +134,7 @@ void printPairReport(std::ostream& out, const PairSetup& setup, const core::Pair
       int shown = 0;
       for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
-          const int c = r.caseMap[static_cast<std::size_t>(y) * r.mor.width() + x];
+          const int c = r.caseMap.at(r.mor.x0 + x, r.mor.y0 + y);
           if (cellPriority(c) > cellPriority(shown))
             shown = c;
         }
@@ -145,12 +145,11 @@ void printPairReport(std::ostream& out, const PairSetup& setup, const core::Pair
 }
 
 std::vector<std::uint8_t> frameCaseImage(const core::FrameSpec& frame, const core::PairResult& r) {
-  std::vector<std::uint8_t> image(static_cast<std::size_t>(frame.width) * frame.height, 255);
+  raster::PixelBuffer<std::uint8_t> image({0, 0, frame.width, frame.height}, std::uint8_t{255});
   for (int y = r.mor.y0; y < r.mor.y1; ++y)
     for (int x = r.mor.x0; x < r.mor.x1; ++x)
-      image[static_cast<std::size_t>(y) * frame.width + x] =
-          r.caseMap[static_cast<std::size_t>(y - r.mor.y0) * r.mor.width() + (x - r.mor.x0)];
-  return image;
+      image.at(x, y) = r.caseMap.at(x, y);
+  return std::move(image.data);
 }
 
 }  // namespace recode::app

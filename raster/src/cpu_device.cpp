@@ -18,9 +18,9 @@ namespace {
 // plane, then the stencil and depth tests and writes.
 class FragmentWriter final : public TriangleSink {
  public:
-  FragmentWriter(const RenderState& state, int width, int height, std::uint32_t* depth,
-                 std::uint8_t* stencil)
-      : state_(state), width_(width), height_(height), depth_(depth), stencil_(stencil) {}
+  FragmentWriter(const RenderState& state, PixelBuffer<std::uint32_t>& depth,
+                 PixelBuffer<std::uint8_t>& stencil)
+      : state_(state), depth_(depth), stencil_(stencil) {}
 
   void beginTriangle(const TriangleSetup& triangle,
                      const std::array<FixedVertex, 3>& /*snapped*/) override {
@@ -29,7 +29,7 @@ class FragmentWriter final : public TriangleSink {
   }
 
   void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
-    RECODE_INVARIANT(blockX >= 0 && blockY >= 0 && blockX < width_ && blockY < height_,
+    RECODE_INVARIANT(depth_.contains(blockX, blockY),
                      "covered blocks start inside the framebuffer");
     // The contract's z = (z0 + tx) + ty with tx depending only on the column and ty only on
     // the row: precomputing both per block gives the same roundings, so the same bits.
@@ -39,15 +39,14 @@ class FragmentWriter final : public TriangleSink {
       zx[k] = p.z0 + p.dzdx * static_cast<double>(pixelCentreFixed(blockX + k) - p.x0);
       ty[k] = p.dzdy * static_cast<double>(pixelCentreFixed(blockY + k) - p.y0);
     }
-    const auto stride = static_cast<std::size_t>(width_);
     while (mask != 0) {
       const int bit = __builtin_ctzll(mask);
       mask &= mask - 1;
       const int col = bit & (kBlockSize - 1), row = bit / kBlockSize;
       const std::uint32_t z = quantizeDepth(zx[col] + ty[row]);
-      const std::size_t i =
-          static_cast<std::size_t>(blockY + row) * stride + static_cast<std::size_t>(blockX + col);
-      applyFragment(state_, *ops_, z, depth_[i], stencil_[i]);
+      // Depth and stencil share the framebuffer's rectangle, so one index serves both.
+      const std::size_t i = depth_.index(blockX + col, blockY + row);
+      applyFragment(state_, *ops_, z, depth_.data[i], stencil_.data[i]);
       ++fragments;
     }
   }
@@ -56,10 +55,8 @@ class FragmentWriter final : public TriangleSink {
 
  private:
   const RenderState& state_;
-  int width_;
-  int height_;
-  std::uint32_t* depth_;
-  std::uint8_t* stencil_;
+  PixelBuffer<std::uint32_t>& depth_;
+  PixelBuffer<std::uint8_t>& stencil_;
   const DepthPlane* plane_ = nullptr;
   const StencilOps* ops_ = nullptr;
 };
@@ -68,9 +65,9 @@ class FragmentWriter final : public TriangleSink {
 
 CpuDevice::CpuDevice(int width, int height) : width_(width), height_(height) {
   checkFramebufferSize(width, height);
-  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  depth_.assign(n, kDepthMax);
-  stencil_.assign(n, 0);
+  const PixelRect framebuffer{0, 0, width, height};
+  depth_ = PixelBuffer<std::uint32_t>(framebuffer, kDepthMax);
+  stencil_ = PixelBuffer<std::uint8_t>(framebuffer, std::uint8_t{0});
   state_ = initialRenderState(width, height);
 }
 
@@ -84,11 +81,7 @@ void CpuDevice::clearDepth(double depth) {
   if (!state_.depthWrite)
     return;  // GL's depth mask applies to clears as well
   const std::uint32_t q = quantizeDepth(depth);
-  const PixelRect& r = state_.scissor;
-  for (int y = r.y0; y < r.y1; ++y) {
-    std::fill(depth_.begin() + static_cast<std::ptrdiff_t>(index(r.x0, y)),
-              depth_.begin() + static_cast<std::ptrdiff_t>(index(r.x1, y)), q);
-  }
+  depth_.fill(state_.scissor, q);
 }
 
 void CpuDevice::clearStencil(std::uint8_t value) {
@@ -96,7 +89,7 @@ void CpuDevice::clearStencil(std::uint8_t value) {
   const PixelRect& r = state_.scissor;
   for (int y = r.y0; y < r.y1; ++y) {
     for (int x = r.x0; x < r.x1; ++x) {
-      std::uint8_t& s = stencil_[index(x, y)];
+      std::uint8_t& s = stencil_.at(x, y);
       s = writeThroughMask(s, value, state_.stencilWriteMask);
     }
   }
@@ -117,17 +110,17 @@ void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,
   // The draw is validated as a whole before any pixel changes, so an error leaves the
   // buffers untouched.
   checkDraw(vertices, indices);
-  FragmentWriter writer(state_, width_, height_, depth_.data(), stencil_.data());
+  FragmentWriter writer(state_, depth_, stencil_);
   raster::drawTriangles(state_, vertices, indices, writer, &counters_);
   counters_.fragments += writer.fragments;
 }
 
 std::vector<std::uint8_t> CpuDevice::readStencil(const PixelRect& rect) const {
-  return copyRect(stencil_, rect);
+  return stencil_.copy(rect);
 }
 
 std::vector<std::uint32_t> CpuDevice::readDepth(const PixelRect& rect) const {
-  return copyRect(depth_, rect);
+  return depth_.copy(rect);
 }
 
 }  // namespace recode::raster

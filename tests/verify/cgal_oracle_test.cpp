@@ -235,8 +235,7 @@ TEST_CASE("cgal judge: a collision claimed between blocks far apart is a disagre
 
   // Pixel (16, 16), centre (0.53125, 0.53125) on the plane, lies over both blocks (case 7, B
   // in front of A); claim interference there.
-  const std::size_t overBothIndex = static_cast<std::size_t>(16 * result.mor.width() + 16);
-  result.caseMap[overBothIndex] = 3;
+  result.caseMap.at(16, 16) = 3;
   result.collide = true;
   const verify::CgalJudgement overBoth = verify::judgePair(exact, frame, a, b, result);
   CHECK(overBoth.verdict == verify::VerdictCheck::Disagree);
@@ -245,8 +244,8 @@ TEST_CASE("cgal judge: a collision claimed between blocks far apart is a disagre
   CHECK(contains(overBoth.reason, "depth steps"));
 
   // Pixel (1, 1), centre (-0.40625, -0.40625), lies over neither block: claim it instead.
-  result.caseMap[overBothIndex] = 7;
-  result.caseMap[static_cast<std::size_t>(1 * result.mor.width() + 1)] = 5;
+  result.caseMap.at(16, 16) = 7;
+  result.caseMap.at(1, 1) = 5;
   const verify::CgalJudgement overNone = verify::judgePair(exact, frame, a, b, result);
   CHECK(overNone.verdict == verify::VerdictCheck::Disagree);
   CHECK(contains(overNone.reason, "does not come within"));
@@ -305,8 +304,8 @@ TEST_CASE("cgal judge: faces a hair apart along the view axis are touching withi
   core::PairResult claimed =
       test::runPair(a, far, frame, core::MorMode::Min, /*contact=*/true, /*boxTest=*/false);
   REQUIRE_FALSE(claimed.collide);
-  REQUIRE(claimed.caseMap.size() > 0);
-  claimed.caseMap[claimed.caseMap.size() / 2] = 6;
+  REQUIRE(claimed.caseMap.data.size() > 0);
+  claimed.caseMap.data[claimed.caseMap.data.size() / 2] = 6;
   claimed.collide = true;
   const verify::CgalJudgement k =
       verify::judgePair(verify::exactIntersection(a, far), frame, a, far, claimed);
@@ -410,9 +409,7 @@ TEST_CASE("cgal judge: the tolerance rules hold at every pixel of the suite's de
       REQUIRE(j.pixelX < m.x1);
       REQUIRE(j.pixelY >= m.y0);
       REQUIRE(j.pixelY < m.y1);
-      const std::size_t k =
-          static_cast<std::size_t>(j.pixelY - m.y0) * m.width() + (j.pixelX - m.x0);
-      CHECK(core::isInterfering(result.caseMap[k]));
+      CHECK(core::isInterfering(result.caseMap.at(j.pixelX, j.pixelY)));
     }
   }
   // Most colliding pairs overlap clearly, so rule (a) must have found must-see pixels.

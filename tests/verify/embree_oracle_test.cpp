@@ -32,11 +32,6 @@ core::FrameSpec frame16() {
   return test::frameZ(0.0, 0.0, 16.0, 16.0, 16, 16);
 }
 
-std::size_t morIndex(const core::PairResult& r, int x, int y) {
-  return static_cast<std::size_t>(y - r.mor.y0) * static_cast<std::size_t>(r.mor.width()) +
-         static_cast<std::size_t>(x - r.mor.x0);
-}
-
 bool inRange(int v, int lo, int hi) {
   return v >= lo && v <= hi;
 }
@@ -128,9 +123,9 @@ TEST_CASE("embree oracle: faces touching exactly interfere, and a tie explains t
   CHECK(r.caseCounts[6] == 16);
 
   // "B in front of A" (Bmax < Amin) is one step away from the oracle's Bmax = Amin: a tie.
-  r.caseMap[morIndex(r, 7, 6)] = 7;
+  r.caseMap.at(7, 6) = 7;
   // "A spans B" needs Amin <= Bmin, 8388608 steps away: unexplained.
-  r.caseMap[morIndex(r, 8, 7)] = 5;
+  r.caseMap.at(8, 7) = 5;
   const verify::EmbreeReport bad = oracle.check(frame, a, b, r);
   CHECK(bad.counts.pixels == 16);
   CHECK(bad.counts.agree == 14);
@@ -160,7 +155,7 @@ TEST_CASE("embree oracle: a corrupted case and a shrunken MOR are reported unexp
 
   SECTION("one pixel flipped from 4 to 7") {
     core::PairResult bad = r;
-    bad.caseMap[morIndex(bad, 7, 6)] = 7;
+    bad.caseMap.at(7, 6) = 7;
     const verify::EmbreeReport rep = oracle.check(frame, a, b, bad);
     CHECK(rep.counts.pixels == 16);
     CHECK(rep.counts.agree == 15);
@@ -185,10 +180,11 @@ TEST_CASE("embree oracle: a corrupted case and a shrunken MOR are reported unexp
   SECTION("the MOR's right column dropped: its interfering pixels were missed") {
     core::PairResult bad = r;
     bad.mor.x1 -= 1;
-    bad.caseMap.clear();
+    std::vector<std::uint8_t> kept;
     for (int y = r.mor.y0; y < r.mor.y1; ++y)
       for (int x = r.mor.x0; x < bad.mor.x1; ++x)
-        bad.caseMap.push_back(r.caseMap[morIndex(r, x, y)]);
+        kept.push_back(r.caseMap.at(x, y));
+    bad.caseMap = raster::PixelBuffer<std::uint8_t>(bad.mor, std::move(kept));
     const verify::EmbreeReport rep = oracle.check(frame, a, b, bad);
     CHECK(rep.counts.pixels == 16);  // the dropped column is still under both footprints
     CHECK(rep.counts.agree == 12);
@@ -222,8 +218,8 @@ TEST_CASE("embree oracle: a disagreement on a pixel centre that lies on an edge 
 
   // Pixel (6, 6) is on the edge, (7, 6) is not. "B in front of A" is neither block's
   // coverage nor within a tie of B spanning A, so only the edge can explain it.
-  r.caseMap[morIndex(r, 6, 6)] = 7;
-  r.caseMap[morIndex(r, 7, 6)] = 7;
+  r.caseMap.at(6, 6) = 7;
+  r.caseMap.at(7, 6) = 7;
   const verify::EmbreeReport rep = oracle.check(frame, a, b, r);
   CHECK(rep.counts.pixels == 16);
   CHECK(rep.counts.edges >= 1);
@@ -260,7 +256,7 @@ TEST_CASE("embree oracle: outside the MOR and where the box test skipped the pas
     const core::TriangleMesh b = boxBetween({6, 5, 1}, {13, 13, 3});
     core::PairResult r = runPair(a, b, frame);
     r.mor = {};
-    r.caseMap.clear();
+    r.caseMap = {};
     r.boxesOverlap = false;
     const verify::EmbreeReport rep = oracle.check(frame, a, b, r);
     CHECK(rep.counts.pixels == 16);
@@ -276,15 +272,15 @@ TEST_CASE("embree oracle: results that cannot belong to the pair are rejected") 
   verify::EmbreeOracle oracle;
   const core::PairResult r = runPair(a, b, frame);
   core::PairResult shortMap = r;
-  shortMap.caseMap.pop_back();
+  shortMap.caseMap.data.pop_back();
   CHECK_THROWS_WITH(oracle.check(frame, a, b, shortMap),
                     Catch::Contains("case map has 15 pixels but its MOR has 16"));
   core::PairResult outside = r;
   outside.mor = {10, 10, 18, 12};
-  outside.caseMap.assign(16, 0);
+  outside.caseMap.data.assign(16, 0);
   CHECK_THROWS_WITH(oracle.check(frame, a, b, outside), Catch::Contains("does not lie in"));
   core::PairResult badCase = r;
-  badCase.caseMap[3] = 9;
+  badCase.caseMap.data[3] = 9;
   CHECK_THROWS_WITH(oracle.check(frame, a, b, badCase), Catch::Contains("holds 9 at index 3"));
   const core::TriangleMesh taller = boxBetween({6, 5, 1}, {13, 13, 4});
   CHECK_THROWS_WITH(oracle.check(frame, a, taller, r), Catch::Contains("another pair"));

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/pixel_buffer.hpp"
 #include "recode/raster/state.hpp"
 
 namespace recode::core {
@@ -221,123 +223,77 @@ PixelRect pixelFootprint(std::span<const raster::WindowVertex> vertices, int wid
   return PixelRect{first(xmin), first(ymin), last(xmax), last(ymax)}.intersect(frame);
 }
 
-PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a,
-                       const TriangleMesh& b, const PairRequest& request, PairObserver* observer) {
-  const Clock::time_point start = Clock::now();
-  const FrameSpec& frame = request.frame;
+namespace {
+
+void requireDeviceSize(const raster::DepthStencilDevice& device, const FrameSpec& frame) {
   if (device.width() != frame.width || device.height() != frame.height) {
     std::ostringstream m;
     m << "device is " << device.width() << "x" << device.height() << " but the pair's frame is "
       << frame.width << "x" << frame.height;
     throw std::invalid_argument(m.str());
   }
-  PairResult r;
-  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, boundingBox(a), boundingBox(b));
-  r.depthMin = depthMin;
-  r.depthMax = depthMax;
-  const OrthoView view(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
-  const std::vector<raster::WindowVertex> va = view.toWindow(a), vb = view.toWindow(b);
-  const std::vector<std::uint32_t> ia = triangleIndices(a), ib = triangleIndices(b);
+}
 
-  // The box test on the snapped geometry the device will draw: the projected boxes must share
-  // a pixel centre and the depth ranges must come within one step of each other. Nothing
-  // that fails it can interfere, so skipping the passes then gives the verdict they would.
-  const PixelRect footA = pixelFootprint(va, frame.width, frame.height);
-  const PixelRect footB = pixelFootprint(vb, frame.width, frame.height);
-  const PixelRect overlap = footA.intersect(footB);
-  r.boxesOverlap = !overlap.empty() && depthSpansMeet(depthSpan(va), depthSpan(vb));
-  if (request.boxTest && !r.boxesOverlap) {
-    r.timing.totalUs = microsecondsSince(start);
-    return r;
-  }
-  switch (request.mor) {
+// Both blocks as the device will draw them: snapped window vertices and index lists.
+struct DrawnPair {
+  std::vector<raster::WindowVertex> va, vb;
+  std::vector<std::uint32_t> ia, ib;
+};
+
+// The rectangle the passes run over (the paper's Table 1). MIN is empty when the footprints do
+// not overlap; MAX only when both blocks lie off the frame.
+PixelRect chooseMor(MorMode mode, const PixelRect& footA, const PixelRect& footB,
+                    const FrameSpec& frame) {
+  switch (mode) {
     case MorMode::Min:
-      r.mor = overlap;
-      if (r.mor.empty()) {  // only reachable without the box test
-        r.timing.totalUs = microsecondsSince(start);
-        return r;
-      }
-      break;
+      return footA.intersect(footB);
     case MorMode::Max:
-      r.mor = boundingRect(footA, footB);
-      break;
+      return boundingRect(footA, footB);
     case MorMode::Full:
-      r.mor = {0, 0, frame.width, frame.height};
       break;
   }
+  return {0, 0, frame.width, frame.height};
+}
 
-  PassRunner passes(device, va, ia, vb, ib);
-  const auto timed = [&](PairStep step, auto&& body) {
-    const Clock::time_point t = Clock::now();
-    body();
-    r.timing.stepUs[static_cast<std::size_t>(step)] += microsecondsSince(t);
-    if (observer)
-      observer->afterStep(step, device);
-  };
-  timed(PairStep::SetZ, [&] { passes.setZ(r.mor); });
-  timed(PairStep::TestZ, [&] { passes.testZ(); });
-  timed(PairStep::LoadAmin, [&] { passes.loadAmin(); });
-  timed(PairStep::TestAminFront, [&] { passes.testAmin(CullMode::Back, kFrontBehindAminBit); });
-  timed(PairStep::TestAminBack, [&] { passes.testAmin(CullMode::Front, kBackBehindAminBit); });
-  std::vector<std::uint8_t> stencil;
-  timed(PairStep::ReadStencil, [&] { stencil = device.readStencil(r.mor); });
-  r.stencilPixelsRead = r.mor.area();
-
-  Clock::time_point t = Clock::now();
-  r.caseMap.resize(stencil.size());
-  int cx0 = r.mor.x1, cy0 = r.mor.y1, cx1 = r.mor.x0, cy1 = r.mor.y0;
-  const int morWidth = r.mor.width();
+// Decodes the stencil read over the MOR into the case map and the case counts, and returns the
+// bounding rectangle of the interfering pixels.
+PixelRect classifyStencil(const raster::PixelBuffer<std::uint8_t>& stencil, PairResult& r) {
   const std::array<std::uint8_t, 256>& table = caseTable();
-  for (std::size_t i = 0; i < stencil.size(); ++i) {
-    const int c = table[stencil[i]];
-    r.caseMap[i] = static_cast<std::uint8_t>(c);
-    ++r.caseCounts[static_cast<std::size_t>(c)];
-    if (isInterfering(c)) {
-      const int x = r.mor.x0 + static_cast<int>(i % static_cast<std::size_t>(morWidth));
-      const int y = r.mor.y0 + static_cast<int>(i / static_cast<std::size_t>(morWidth));
-      cx0 = std::min(cx0, x);
-      cy0 = std::min(cy0, y);
-      cx1 = std::max(cx1, x + 1);
-      cy1 = std::max(cy1, y + 1);
+  r.caseMap = raster::PixelBuffer<std::uint8_t>(stencil.rect, std::uint8_t{0});
+  const PixelRect& m = stencil.rect;
+  int cx0 = m.x1, cy0 = m.y1, cx1 = m.x0, cy1 = m.y0;
+  std::size_t i = 0;  // both buffers share the rectangle, so one running index serves both
+  for (int y = m.y0; y < m.y1; ++y) {
+    for (int x = m.x0; x < m.x1; ++x, ++i) {
+      const std::uint8_t c = table[stencil.data[i]];
+      r.caseMap.data[i] = c;
+      ++r.caseCounts[c];
+      if (isInterfering(c)) {
+        cx0 = std::min(cx0, x);
+        cy0 = std::min(cy0, y);
+        cx1 = std::max(cx1, x + 1);
+        cy1 = std::max(cy1, y + 1);
+      }
     }
   }
   for (int c = 3; c <= 6; ++c)
     r.interferingPixels += r.caseCounts[static_cast<std::size_t>(c)];
-  r.collide = r.interferingPixels > 0;
-  r.contact.pixels = r.interferingPixels;
-  r.contact.area =
-      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
-  r.timing.classifyUs += microsecondsSince(t);
-  if (!r.collide || !request.contact) {
-    r.timing.totalUs = microsecondsSince(start);
-    return r;
-  }
+  return r.interferingPixels > 0 ? PixelRect{cx0, cy0, cx1, cy1} : PixelRect{};
+}
 
-  r.contactRect = {cx0, cy0, cx1, cy1};
-  std::vector<std::uint32_t> nearDepth, farDepth;
-  timed(PairStep::ContactNear, [&] {
-    passes.overlapEnd(r.contactRect, true);
-    nearDepth = device.readDepth(r.contactRect);
-  });
-  timed(PairStep::ContactFar, [&] {
-    passes.overlapEnd(r.contactRect, false);
-    farDepth = device.readDepth(r.contactRect);
-  });
-  r.depthPixelsRead = 2 * r.contactRect.area();
-
-  t = Clock::now();
+// The contact region from the two ends of the overlap interval over the contact rectangle.
+void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
+                    const raster::PixelBuffer<std::uint32_t>& farDepth, const OrthoView& view,
+                    PairResult& r) {
   const double depthScale = 1.0 / static_cast<double>(raster::kDepthMax);
-  const double worldPerStep = (depthMax - depthMin) * depthScale;
+  const double worldPerStep = (r.depthMax - r.depthMin) * depthScale;
   r.contact.points.reserve(static_cast<std::size_t>(r.interferingPixels));
-  const int rectWidth = r.contactRect.width();
-  for (int y = r.contactRect.y0; y < r.contactRect.y1; ++y) {
-    for (int x = r.contactRect.x0; x < r.contactRect.x1; ++x) {
-      const std::size_t m = static_cast<std::size_t>(y - r.mor.y0) * morWidth + (x - r.mor.x0);
-      if (!isInterfering(r.caseMap[m]))
+  const PixelRect& rect = nearDepth.rect;
+  for (int y = rect.y0; y < rect.y1; ++y) {
+    for (int x = rect.x0; x < rect.x1; ++x) {
+      if (!isInterfering(r.caseMap.at(x, y)))
         continue;
-      const std::size_t k =
-          static_cast<std::size_t>(y - r.contactRect.y0) * rectWidth + (x - r.contactRect.x0);
-      std::uint32_t lo = nearDepth[k], hi = farDepth[k];
+      std::uint32_t lo = nearDepth.at(x, y), hi = farDepth.at(x, y);
       // The near end can only pass the far end by rounding (the intervals touch within a
       // step at this pixel): the overlap is then taken as the single depth between them.
       if (lo > hi) {
@@ -353,9 +309,82 @@ PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a
       r.contact.maxDepth = std::max(r.contact.maxDepth, (hi - lo) * worldPerStep);
     }
   }
+}
+
+}  // namespace
+
+PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a,
+                       const TriangleMesh& b, const PairRequest& request, PairObserver* observer) {
+  const Clock::time_point start = Clock::now();
+  const FrameSpec& frame = request.frame;
+  requireDeviceSize(device, frame);
+  PairResult r;
+  const auto finish = [&r, start]() -> PairResult {
+    r.timing.totalUs = microsecondsSince(start);
+    return std::move(r);
+  };
+  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, boundingBox(a), boundingBox(b));
+  r.depthMin = depthMin;
+  r.depthMax = depthMax;
+  const OrthoView view(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
+  const DrawnPair drawn{view.toWindow(a), view.toWindow(b), triangleIndices(a), triangleIndices(b)};
+
+  // The box test on the snapped geometry the device will draw: the projected boxes must share
+  // a pixel centre and the depth ranges must come within one step of each other. Nothing
+  // that fails it can interfere, so skipping the passes then gives the verdict they would.
+  const PixelRect footA = pixelFootprint(drawn.va, frame.width, frame.height);
+  const PixelRect footB = pixelFootprint(drawn.vb, frame.width, frame.height);
+  r.boxesOverlap =
+      !footA.intersect(footB).empty() && depthSpansMeet(depthSpan(drawn.va), depthSpan(drawn.vb));
+  if (request.boxTest && !r.boxesOverlap)
+    return finish();
+  r.mor = chooseMor(request.mor, footA, footB, frame);
+  if (request.mor == MorMode::Min && r.mor.empty())
+    return finish();  // only reachable without the box test
+
+  PassRunner passes(device, drawn.va, drawn.ia, drawn.vb, drawn.ib);
+  const auto timed = [&](PairStep step, auto&& body) {
+    const Clock::time_point t = Clock::now();
+    body();
+    r.timing.stepUs[static_cast<std::size_t>(step)] += microsecondsSince(t);
+    if (observer)
+      observer->afterStep(step, device);
+  };
+  timed(PairStep::SetZ, [&] { passes.setZ(r.mor); });
+  timed(PairStep::TestZ, [&] { passes.testZ(); });
+  timed(PairStep::LoadAmin, [&] { passes.loadAmin(); });
+  timed(PairStep::TestAminFront, [&] { passes.testAmin(CullMode::Back, kFrontBehindAminBit); });
+  timed(PairStep::TestAminBack, [&] { passes.testAmin(CullMode::Front, kBackBehindAminBit); });
+  raster::PixelBuffer<std::uint8_t> stencil;
+  timed(PairStep::ReadStencil, [&] { stencil = raster::readStencilBuffer(device, r.mor); });
+  r.stencilPixelsRead = r.mor.area();
+
+  Clock::time_point t = Clock::now();
+  const PixelRect contactRect = classifyStencil(stencil, r);
+  r.collide = r.interferingPixels > 0;
+  r.contact.pixels = r.interferingPixels;
+  r.contact.area =
+      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
   r.timing.classifyUs += microsecondsSince(t);
-  r.timing.totalUs = microsecondsSince(start);
-  return r;
+  if (!r.collide || !request.contact)
+    return finish();
+
+  r.contactRect = contactRect;
+  raster::PixelBuffer<std::uint32_t> nearDepth, farDepth;
+  timed(PairStep::ContactNear, [&] {
+    passes.overlapEnd(r.contactRect, true);
+    nearDepth = raster::readDepthBuffer(device, r.contactRect);
+  });
+  timed(PairStep::ContactFar, [&] {
+    passes.overlapEnd(r.contactRect, false);
+    farDepth = raster::readDepthBuffer(device, r.contactRect);
+  });
+  r.depthPixelsRead = 2 * r.contactRect.area();
+
+  t = Clock::now();
+  measureContact(nearDepth, farDepth, view, r);
+  r.timing.classifyUs += microsecondsSince(t);
+  return finish();
 }
 
 }  // namespace recode::core

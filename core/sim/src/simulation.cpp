@@ -145,8 +145,7 @@ FrameReport Simulation::runFrame(int frame) {
       report.stencilPixelsRead += result.stencilPixelsRead;
       report.depthPixelsRead += result.depthPixelsRead;
       if (result.collide) {
-        result.caseMap.clear();
-        result.caseMap.shrink_to_fit();
+        result.caseMap = {};
         report.contacts.push_back({ia, ib, lp.leafA, lp.leafB, std::move(result)});
       }
     }

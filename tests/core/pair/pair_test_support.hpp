@@ -58,10 +58,7 @@ inline core::TriangleMesh flippedAndMoved(const core::TriangleMesh& m,
 
 // The case of pixel (x, y); -1 when it lies outside the MOR.
 inline int caseAt(const core::PairResult& r, int x, int y) {
-  if (x < r.mor.x0 || x >= r.mor.x1 || y < r.mor.y0 || y >= r.mor.y1)
-    return -1;
-  const std::size_t i = static_cast<std::size_t>(y - r.mor.y0) * r.mor.width() + (x - r.mor.x0);
-  return r.caseMap[i];
+  return r.caseMap.contains(x, y) ? r.caseMap.at(x, y) : -1;
 }
 
 }  // namespace recode::test

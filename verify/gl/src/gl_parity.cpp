@@ -25,6 +25,7 @@
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/fragment_stage.hpp"
 #include "recode/raster/pipeline.hpp"
+#include "recode/raster/pixel_buffer.hpp"
 #include "recode/verify/gl_device.hpp"
 
 namespace recode::verify {
@@ -106,22 +107,27 @@ class DepthErrorBound {
   double gx_ = 0.0, gy_ = 0.0;
 };
 
-// The reference's buffers over the region, and what is known about the candidate's.
-struct RegionState {
-  PixelRect region;
-  std::vector<std::uint32_t> depth;  // reference, row-major from the region's bottom row
-  std::vector<std::uint8_t> stencil;
+// What is known at one pixel of the compared region: the reference's values, and how far the
+// candidate's may be from them.
+struct PixelKnowledge {
+  std::uint32_t depth = 0;  // the reference's
+  std::uint8_t stencil = 0;
   // Bound on |candidate depth - reference depth|: the read-back difference, or the tolerance
   // of the fragment that wrote the depth since.
-  std::vector<std::uint32_t> depthSlack;
-  std::vector<std::uint8_t> near;     // 1: a test here may have gone the other way
-  std::vector<std::uint8_t> written;  // 1: depthSlack is a fragment's tolerance from this draw
-
-  [[nodiscard]] std::size_t index(int x, int y) const {
-    return static_cast<std::size_t>(y - region.y0) * static_cast<std::size_t>(region.width()) +
-           static_cast<std::size_t>(x - region.x0);
-  }
+  std::uint32_t depthSlack = 0;
+  bool near = false;     // a test here may have gone the other way
+  bool written = false;  // depthSlack is a fragment's tolerance from this draw
 };
+using RegionState = raster::PixelBuffer<PixelKnowledge>;
+
+// A read-back of the region, checked before it is trusted: the candidate is the device under
+// test, so a wrong size is its fault, reported, not an invariant of ours.
+template <class T>
+raster::PixelBuffer<T> checkedReadBack(std::vector<T> values, const PixelRect& region) {
+  if (values.size() != static_cast<std::size_t>(region.area()))
+    throw std::runtime_error("GL parity: a device returned a read-back of the wrong size");
+  return {region, std::move(values)};
+}
 
 // Re-runs each triangle's fragments on the reference's values with the contract's arithmetic
 // and marks the pixels whose depth test was within reach of GL's rounding.
@@ -148,12 +154,12 @@ class NearDecisionSink final : public raster::TriangleSink {
       mask &= mask - 1;
       const int x = blockX + (bit & (raster::kBlockSize - 1));
       const int y = blockY + bit / raster::kBlockSize;
-      const std::size_t i = r_.index(x, y);
+      PixelKnowledge& p = r_.at(x, y);
       const std::uint32_t q = raster::quantizeDepth(
           tri_->depth.at(raster::pixelCentreFixed(x), raster::pixelCentreFixed(y)));
       const std::uint32_t tolerance = toleranceAt(x, y);
-      const std::uint32_t d = r_.depth[i];
-      const bool stencilPasses = raster::stencilTestPasses(state_, r_.stencil[i]);
+      const std::uint32_t d = p.depth;
+      const bool stencilPasses = raster::stencilTestPasses(state_, p.stencil);
       const bool writes =
           stencilPasses && state_.depthWrite && raster::compare(state_.depthFunc, q, d);
       // The candidate's outcome may differ when its stencil may already differ (a pixel left
@@ -161,21 +167,20 @@ class NearDecisionSink final : public raster::TriangleSink {
       const std::uint32_t margin = absDiff(q, d);
       const bool depthNear =
           depthDecides && static_cast<std::uint64_t>(margin) <=
-                              static_cast<std::uint64_t>(tolerance) + r_.depthSlack[i];
-      if (r_.near[i] != 0 || (stencilPasses && depthNear)) {
-        r_.near[i] = 1;
-        r_.written[i] = 0;
+                              static_cast<std::uint64_t>(tolerance) + p.depthSlack;
+      if (p.near || (stencilPasses && depthNear)) {
+        p.near = true;
+        p.written = false;
         // Either side may or may not write: the candidate keeps d' (within s of d) or writes
         // q' (within t of q), the reference keeps d or writes q.
         if (state_.depthWrite) {
-          r_.depthSlack[i] =
-              std::min(raster::kDepthMax, std::max(r_.depthSlack[i], tolerance) + margin);
+          p.depthSlack = std::min(raster::kDepthMax, std::max(p.depthSlack, tolerance) + margin);
         }
       } else if (writes) {
-        r_.depthSlack[i] = tolerance;  // the candidate wrote its own depth for this fragment
-        r_.written[i] = 1;
+        p.depthSlack = tolerance;  // the candidate wrote its own depth for this fragment
+        p.written = true;
       }
-      raster::applyFragment(state_, *ops_, q, r_.depth[i], r_.stencil[i]);
+      raster::applyFragment(state_, *ops_, q, p.depth, p.stencil);
     }
   }
 
@@ -203,12 +208,10 @@ class Comparer {
  public:
   Comparer(raster::DepthStencilDevice& reference, raster::DepthStencilDevice& candidate,
            const PixelRect& region, const GlParityOptions& options)
-      : reference_(reference), candidate_(candidate), options_(options) {
-    state_.region = region;
-    const auto n = static_cast<std::size_t>(region.area());
-    state_.depthSlack.assign(n, 0);
-    state_.near.assign(n, 0);
-    state_.written.assign(n, 0);
+      : reference_(reference),
+        candidate_(candidate),
+        options_(options),
+        state_(region, PixelKnowledge{}) {
     gl_ = raster::initialRenderState(reference.width(), reference.height());
   }
 
@@ -222,7 +225,7 @@ class Comparer {
   // the compared region. Call only for a draw the reference has accepted (a valid draw).
   void analyseDraw(const raster::cmd::Draw& draw) {
     raster::RenderState clipped = gl_;
-    clipped.scissor = gl_.scissor.intersect(state_.region);
+    clipped.scissor = gl_.scissor.intersect(state_.rect);
     if (clipped.scissor.empty())
       return;
     NearDecisionSink sink(clipped, options_, reference_.height(), state_);
@@ -231,31 +234,26 @@ class Comparer {
 
   // Reads both devices over the region and classifies every pixel.
   void compare(int command, GlParityReport& report) {
-    const PixelRect& r = state_.region;
+    const PixelRect& r = state_.rect;
     ++report.comparisons;
     if (r.empty())
       return;
-    const auto depth = candidate_.readDepth(r);
-    const auto stencil = candidate_.readStencil(r);
-    auto refDepth = reference_.readDepth(r);
-    auto refStencil = reference_.readStencil(r);
-    const auto n = static_cast<std::size_t>(r.area());
-    if (refDepth.size() != n || refStencil.size() != n || depth.size() != n ||
-        stencil.size() != n) {
-      throw std::runtime_error("GL parity: a device returned a read-back of the wrong size");
-    }
+    const auto depth = checkedReadBack(candidate_.readDepth(r), r);
+    const auto stencil = checkedReadBack(candidate_.readStencil(r), r);
+    const auto refDepth = checkedReadBack(reference_.readDepth(r), r);
+    const auto refStencil = checkedReadBack(reference_.readStencil(r), r);
     GlParityCounts& c = report.counts;
     for (int y = r.y0; y < r.y1; ++y) {
       for (int x = r.x0; x < r.x1; ++x) {
-        const std::size_t i = state_.index(x, y);
-        const std::uint32_t dd = absDiff(refDepth[i], depth[i]);
-        const std::uint32_t allowed = std::max(options_.depthTolerance, state_.depthSlack[i]);
-        const bool stencilEqual = refStencil[i] == stencil[i];
+        PixelKnowledge& p = state_.at(x, y);
+        const std::uint32_t dd = absDiff(refDepth.at(x, y), depth.at(x, y));
+        const std::uint32_t allowed = std::max(options_.depthTolerance, p.depthSlack);
+        const bool stencilEqual = refStencil.at(x, y) == stencil.at(x, y);
         ++c.pixels;
         bool keepNear = false;
         if (stencilEqual && dd == 0) {
           ++c.identical;
-        } else if (dd <= allowed && (stencilEqual || state_.near[i] != 0)) {
+        } else if (dd <= allowed && (stencilEqual || p.near)) {
           ++c.depthTies;
           if (!stencilEqual) {
             ++report.stencilTies;
@@ -265,7 +263,7 @@ class Comparer {
           }
           if (stencilEqual)
             report.maxDepthDifference = std::max(report.maxDepthDifference, dd);
-          if (stencilEqual && state_.written[i] != 0) {
+          if (stencilEqual && p.written) {
             report.maxToleranceFraction =
                 std::max(report.maxToleranceFraction,
                          static_cast<double>(dd) / static_cast<double>(allowed));
@@ -273,17 +271,17 @@ class Comparer {
         } else {
           ++c.unexplained;
           if (static_cast<int>(report.examples.size()) < options_.maxExamples) {
-            report.examples.push_back(
-                {command, x, y, refStencil[i], stencil[i], refDepth[i], depth[i]});
+            report.examples.push_back({command, x, y, refStencil.at(x, y), stencil.at(x, y),
+                                       refDepth.at(x, y), depth.at(x, y)});
           }
         }
-        state_.near[i] = keepNear ? 1 : 0;
-        state_.written[i] = 0;
-        state_.depthSlack[i] = dd;
+        p.near = keepNear;
+        p.written = false;
+        p.depthSlack = dd;
+        p.depth = refDepth.at(x, y);
+        p.stencil = refStencil.at(x, y);
       }
     }
-    state_.depth = std::move(refDepth);
-    state_.stencil = std::move(refStencil);
   }
 
  private:

@@ -150,9 +150,9 @@ void judgeTouch(const JudgeFrame& f, const core::TriangleMesh& a, const core::Tr
   std::ostringstream s;
   s.precision(6);
   s << "CGAL: the blocks are apart; RECODE: collide; ";
-  if (r.caseMap.size() != expected) {
+  if (r.caseMap.rect != m || r.caseMap.data.size() != expected) {
     j.verdict = VerdictCheck::Disagree;
-    s << "the case map holds " << r.caseMap.size() << " pixels, the MOR " << expected;
+    s << "the case map holds " << r.caseMap.data.size() << " pixels, the MOR " << expected;
     j.reason = s.str();
     return;
   }
@@ -164,8 +164,7 @@ void judgeTouch(const JudgeFrame& f, const core::TriangleMesh& a, const core::Tr
   std::optional<std::string> missing;  // a block absent from an interfering pixel's square
   for (int y = m.y0; y < m.y1; ++y) {
     for (int x = m.x0; x < m.x1; ++x) {
-      const std::size_t k = static_cast<std::size_t>(y - m.y0) * m.width() + (x - m.x0);
-      if (!core::isInterfering(r.caseMap[k]))
+      if (!core::isInterfering(r.caseMap.at(x, y)))
         continue;
       ++interfering;
       const double cu = f.centreU(x), cv = f.centreV(y);
@@ -247,14 +246,14 @@ void judgeContactBox(const ExactIntersection& exact, const JudgeFrame& f,
 
   PlaneBox allowed = widened;
   const raster::PixelRect& m = r.mor;
-  if (r.caseMap.size() == static_cast<std::size_t>(m.area()) && !m.empty()) {
+  if (r.caseMap.rect == m && r.caseMap.data.size() == static_cast<std::size_t>(m.area()) &&
+      !m.empty()) {
     const double u0 = f.centreU(m.x0) - f.edgeU, u1 = f.centreU(m.x1 - 1) + f.edgeU;
     const double v0 = f.centreV(m.y0) - f.edgeV, v1 = f.centreV(m.y1 - 1) + f.edgeV;
     const ViewLineProbe pa(a, f.view, u0, v0, u1, v1), pb(b, f.view, u0, v0, u1, v1);
     for (int y = m.y0; y < m.y1; ++y) {
       for (int x = m.x0; x < m.x1; ++x) {
-        const std::size_t k = static_cast<std::size_t>(y - m.y0) * m.width() + (x - m.x0);
-        if (!core::isInterfering(r.caseMap[k]))
+        if (!core::isInterfering(r.caseMap.at(x, y)))
           continue;
         const double cu = f.centreU(x), cv = f.centreV(y);
         const auto ra = pa.prism(cu - f.edgeU, cv - f.edgeV, cu + f.edgeU, cv + f.edgeV);

@@ -126,13 +126,14 @@ void requireResultFits(const core::FrameSpec& frame, const core::PairResult& r) 
   if (!m.empty() && (m.x0 < 0 || m.y0 < 0 || m.x1 > frame.width || m.y1 > frame.height)) {
     msg << "pair result's MOR [" << m.x0 << ", " << m.y0 << ", " << m.x1 << ", " << m.y1
         << "] does not lie in the " << frame.width << "x" << frame.height << " frame";
-  } else if (static_cast<long long>(r.caseMap.size()) != m.area()) {
-    msg << "pair result's case map has " << r.caseMap.size() << " pixels but its MOR has "
+  } else if (static_cast<long long>(r.caseMap.data.size()) != m.area() ||
+             (!m.empty() && r.caseMap.rect != m)) {
+    msg << "pair result's case map has " << r.caseMap.data.size() << " pixels but its MOR has "
         << m.area();
   } else {
-    for (std::size_t i = 0; i < r.caseMap.size(); ++i) {
-      if (r.caseMap[i] >= core::kCaseCount) {
-        msg << "pair result's case map holds " << int{r.caseMap[i]} << " at index " << i
+    for (std::size_t i = 0; i < r.caseMap.data.size(); ++i) {
+      if (r.caseMap.data[i] >= core::kCaseCount) {
+        msg << "pair result's case map holds " << int{r.caseMap.data[i]} << " at index " << i
             << " (cases are 0-8)";
         break;
       }
@@ -194,13 +195,10 @@ EmbreeReport EmbreeOracle::check(const core::FrameSpec& frame, const core::Trian
   for (int y = mor.y0; y < mor.y1; ++y)
     for (int x = mor.x0; x < mor.x1; ++x)
       s.pixels.push_back({x, y});
-  deviceCases.assign(result.caseMap.begin(), result.caseMap.end());
-  const auto inMor = [&mor](int x, int y) {
-    return x >= mor.x0 && x < mor.x1 && y >= mor.y0 && y < mor.y1;
-  };
+  deviceCases.assign(result.caseMap.data.begin(), result.caseMap.data.end());
   for (int y = overlap.y0; y < overlap.y1; ++y)
     for (int x = overlap.x0; x < overlap.x1; ++x)
-      if (!inMor(x, y)) {
+      if (!result.caseMap.contains(x, y)) {
         s.pixels.push_back({x, y});
         deviceCases.push_back(kOutsideMor);
       }

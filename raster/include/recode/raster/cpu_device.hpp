@@ -9,6 +9,7 @@
 
 #include "recode/raster/device.hpp"
 #include "recode/raster/pipeline.hpp"
+#include "recode/raster/pixel_buffer.hpp"
 #include "recode/raster/state.hpp"
 
 namespace recode::raster {
@@ -37,8 +38,8 @@ class CpuDevice final : public DepthStencilDevice {
   [[nodiscard]] std::vector<std::uint32_t> readDepth(const PixelRect& rect) const override;
 
   // Direct views of the whole buffers (row-major, bottom row first), for tools and tests.
-  [[nodiscard]] std::span<const std::uint8_t> stencilBuffer() const { return stencil_; }
-  [[nodiscard]] std::span<const std::uint32_t> depthBuffer() const { return depth_; }
+  [[nodiscard]] std::span<const std::uint8_t> stencilBuffer() const { return stencil_.data; }
+  [[nodiscard]] std::span<const std::uint32_t> depthBuffer() const { return depth_.data; }
   [[nodiscard]] const RenderState& state() const { return state_; }
   [[nodiscard]] const PixelRect& scissor() const { return state_.scissor; }
 
@@ -50,28 +51,10 @@ class CpuDevice final : public DepthStencilDevice {
   void resetCounters() { counters_ = {}; }
 
  private:
-  [[nodiscard]] PixelRect framebufferRect() const { return {0, 0, width_, height_}; }
-  [[nodiscard]] std::size_t index(int x, int y) const {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
-           static_cast<std::size_t>(x);
-  }
-
-  template <class T>
-  [[nodiscard]] std::vector<T> copyRect(const std::vector<T>& buffer, const PixelRect& rect) const {
-    const PixelRect r = rect.intersect(framebufferRect());
-    std::vector<T> out;
-    out.reserve(static_cast<std::size_t>(r.area()));
-    for (int y = r.y0; y < r.y1; ++y) {
-      const auto row = buffer.begin() + static_cast<std::ptrdiff_t>(index(r.x0, y));
-      out.insert(out.end(), row, row + r.width());
-    }
-    return out;
-  }
-
   int width_;
   int height_;
-  std::vector<std::uint32_t> depth_;
-  std::vector<std::uint8_t> stencil_;
+  PixelBuffer<std::uint32_t> depth_;  // the whole framebuffer
+  PixelBuffer<std::uint8_t> stencil_;
   RenderState state_;
   Counters counters_;
 };

@@ -18,6 +18,7 @@
 #include "recode/pair/pair_cases.hpp"
 #include "recode/pair/view.hpp"
 #include "recode/raster/device.hpp"
+#include "recode/raster/pixel_buffer.hpp"
 
 namespace recode::core {
 
@@ -90,8 +91,8 @@ struct PairResult {
   raster::PixelRect mor;      // the rectangle the passes ran over (empty if none)
   std::array<long long, kCaseCount> caseCounts{};  // pixels of each case inside the MOR
   long long interferingPixels = 0;
-  // Case of every MOR pixel, row-major from the MOR's bottom row up.
-  std::vector<std::uint8_t> caseMap;
+  // Case of every MOR pixel (rect == mor; empty when nothing was drawn).
+  raster::PixelBuffer<std::uint8_t> caseMap;
   raster::PixelRect contactRect;  // bounding rectangle of the interfering pixels
   ContactRegion contact;
   long long stencilPixelsRead = 0;
