@@ -30,19 +30,19 @@ class OffReader {
   // One line's tokens (comments stripped, at least one token).
   void readLine(const std::vector<std::string_view>& tokens, std::size_t line) {
     switch (stage_) {
-      case Stage::kHeader:
+      case Stage::Header:
         readHeader(tokens, line);
         return;
-      case Stage::kCounts:
+      case Stage::Counts:
         readCounts(tokens, 0, line);
         return;
-      case Stage::kVertices:
+      case Stage::Vertices:
         readVertex(tokens, line);
         return;
-      case Stage::kFaces:
+      case Stage::Faces:
         readFace(tokens, line);
         return;
-      case Stage::kDone:
+      case Stage::Done:
         failAt(path_, line,
                "unexpected content after the last face (the counts line declares " +
                    std::to_string(faceCount_) + " faces)");
@@ -54,19 +54,19 @@ class OffReader {
   TriangleMesh finish(std::size_t lineCount) {
     const std::size_t lastLine = std::max<std::size_t>(lineCount, 1);
     switch (stage_) {
-      case Stage::kHeader:
+      case Stage::Header:
         failAt(path_, lastLine, "unexpected end of file: expected the header 'OFF'");
-      case Stage::kCounts:
+      case Stage::Counts:
         failAt(path_, lastLine, "unexpected end of file: expected the counts line");
-      case Stage::kVertices:
+      case Stage::Vertices:
         failAt(path_, lastLine,
                "unexpected end of file: expected " + std::to_string(vertexCount_) +
                    " vertices, read " + std::to_string(mesh_.vertices.size()));
-      case Stage::kFaces:
+      case Stage::Faces:
         failAt(path_, lastLine,
                "unexpected end of file: expected " + std::to_string(faceCount_) + " faces, read " +
                    std::to_string(facesRead_));
-      case Stage::kDone:
+      case Stage::Done:
         break;
     }
     if (mesh_.triangles.empty()) {
@@ -76,7 +76,7 @@ class OffReader {
   }
 
  private:
-  enum class Stage { kHeader, kCounts, kVertices, kFaces, kDone };
+  enum class Stage { Header, Counts, Vertices, Faces, Done };
 
   // "OFF", optionally followed by the counts on the same line.
   void readHeader(const std::vector<std::string_view>& tokens, std::size_t line) {
@@ -86,7 +86,7 @@ class OffReader {
     if (tokens.size() > 1) {
       readCounts(tokens, 1, line);
     } else {
-      stage_ = Stage::kCounts;
+      stage_ = Stage::Counts;
     }
   }
 
@@ -121,7 +121,7 @@ class OffReader {
     constexpr std::size_t kMaxReserve = std::size_t{1} << 20;
     mesh_.vertices.reserve(std::min(vertexCount_, kMaxReserve));
     mesh_.triangles.reserve(std::min(faceCount_, kMaxReserve));
-    stage_ = vertexCount_ > 0 ? Stage::kVertices : (faceCount_ > 0 ? Stage::kFaces : Stage::kDone);
+    stage_ = vertexCount_ > 0 ? Stage::Vertices : (faceCount_ > 0 ? Stage::Faces : Stage::Done);
   }
 
   // "x y z", exactly three finite numbers.
@@ -136,7 +136,7 @@ class OffReader {
     }
     mesh_.vertices.push_back(p);
     if (mesh_.vertices.size() == vertexCount_) {
-      stage_ = faceCount_ > 0 ? Stage::kFaces : Stage::kDone;
+      stage_ = faceCount_ > 0 ? Stage::Faces : Stage::Done;
     }
   }
 
@@ -168,12 +168,12 @@ class OffReader {
     }
     appendFan(mesh_.triangles, polygon_);
     if (++facesRead_ == faceCount_) {
-      stage_ = Stage::kDone;
+      stage_ = Stage::Done;
     }
   }
 
   const fs::path& path_;
-  Stage stage_ = Stage::kHeader;
+  Stage stage_ = Stage::Header;
   std::size_t vertexCount_ = 0;
   std::size_t faceCount_ = 0;
   std::size_t facesRead_ = 0;

@@ -26,7 +26,7 @@ using detail::triangleName;
 // Returns true if it found a problem.
 bool checkHasTriangles(const TriangleMesh& mesh, Recorder& recorder) {
   if (mesh.triangles.empty()) {
-    recorder.add(MeshProblemKind::kNoTriangles, "the mesh has no triangles");
+    recorder.add(MeshProblemKind::NoTriangles, "the mesh has no triangles");
     return true;
   }
   return false;
@@ -40,9 +40,9 @@ bool checkCoordinatesAndIndices(const TriangleMesh& mesh, Recorder& recorder) {
   const std::size_t vertexCount = mesh.vertices.size();
   for (std::size_t i = 0; i < vertexCount; ++i) {
     if (!mesh.vertices[i].allFinite()) {
-      if (recorder.add(MeshProblemKind::kNonFiniteCoordinate, "vertex " + std::to_string(i) +
-                                                                  " has a non-finite coordinate " +
-                                                                  formatPoint(mesh.vertices[i]))) {
+      if (recorder.add(MeshProblemKind::NonFiniteCoordinate, "vertex " + std::to_string(i) +
+                                                                 " has a non-finite coordinate " +
+                                                                 formatPoint(mesh.vertices[i]))) {
         return true;
       }
     }
@@ -50,7 +50,7 @@ bool checkCoordinatesAndIndices(const TriangleMesh& mesh, Recorder& recorder) {
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     for (const VertexIndex v : mesh.triangles[t]) {
       if (v >= vertexCount) {
-        if (recorder.add(MeshProblemKind::kIndexOutOfRange,
+        if (recorder.add(MeshProblemKind::IndexOutOfRange,
                          "triangle " + std::to_string(t) + " has vertex index " +
                              std::to_string(v) + " out of range (" + std::to_string(vertexCount) +
                              " vertices)")) {
@@ -89,7 +89,7 @@ bool checkTriangleShapes(const TriangleMesh& mesh, const CentredPoints& centred,
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
       const VertexIndex repeated = tri[0] == tri[1] || tri[0] == tri[2] ? tri[0] : tri[1];
       if (recorder.add(
-              MeshProblemKind::kDegenerateTriangle,
+              MeshProblemKind::DegenerateTriangle,
               triangleName(t, tri) + " repeats vertex index " + std::to_string(repeated))) {
         return true;
       }
@@ -101,7 +101,7 @@ bool checkTriangleShapes(const TriangleMesh& mesh, const CentredPoints& centred,
     const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
     const double height = longest > 0.0 ? (b - a).cross(c - a).norm() / longest : 0.0;
     if (!(height > centred.tolerance)) {
-      if (recorder.add(MeshProblemKind::kDegenerateTriangle,
+      if (recorder.add(MeshProblemKind::DegenerateTriangle,
                        triangleName(t, tri) + " has zero area: its height over its longest " +
                            "edge is " + formatDouble(height) + " (tolerance " +
                            formatDouble(centred.tolerance) + ")")) {
@@ -130,9 +130,9 @@ bool checkUnusedVertices(const TriangleMesh& mesh, const std::vector<bool>& used
                          Recorder& recorder) {
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     if (!used[i] &&
-        recorder.add(MeshProblemKind::kUnusedVertex, "vertex " + std::to_string(i) + " " +
-                                                         formatPoint(mesh.vertices[i]) +
-                                                         " is not used by any triangle")) {
+        recorder.add(MeshProblemKind::UnusedVertex, "vertex " + std::to_string(i) + " " +
+                                                        formatPoint(mesh.vertices[i]) +
+                                                        " is not used by any triangle")) {
       return true;
     }
   }
@@ -145,7 +145,7 @@ bool checkUnusedVertices(const TriangleMesh& mesh, const std::vector<bool>& used
 bool checkOutwardOrientation(const TriangleMesh& mesh, Recorder& recorder) {
   const double volume = signedVolume(mesh);
   if (!(volume > 0.0)) {
-    recorder.add(MeshProblemKind::kInwardOrientation,
+    recorder.add(MeshProblemKind::InwardOrientation,
                  "signed volume is " + formatDouble(volume) +
                      " (must be > 0): the faces point inward" +
                      (volume == 0.0 ? " or the mesh is flat" : ""));
@@ -158,29 +158,29 @@ bool checkOutwardOrientation(const TriangleMesh& mesh, Recorder& recorder) {
 
 std::string_view toString(MeshProblemKind kind) {
   switch (kind) {
-    case MeshProblemKind::kNoTriangles:
+    case MeshProblemKind::NoTriangles:
       return "no triangles";
-    case MeshProblemKind::kNonFiniteCoordinate:
+    case MeshProblemKind::NonFiniteCoordinate:
       return "non-finite coordinate";
-    case MeshProblemKind::kIndexOutOfRange:
+    case MeshProblemKind::IndexOutOfRange:
       return "index out of range";
-    case MeshProblemKind::kDegenerateTriangle:
+    case MeshProblemKind::DegenerateTriangle:
       return "degenerate triangle";
-    case MeshProblemKind::kUnusedVertex:
+    case MeshProblemKind::UnusedVertex:
       return "unused vertex";
-    case MeshProblemKind::kOpenEdge:
+    case MeshProblemKind::OpenEdge:
       return "open edge";
-    case MeshProblemKind::kNonManifoldEdge:
+    case MeshProblemKind::NonManifoldEdge:
       return "non-manifold edge";
-    case MeshProblemKind::kInconsistentOrientation:
+    case MeshProblemKind::InconsistentOrientation:
       return "inconsistent orientation";
-    case MeshProblemKind::kNotSingleSurface:
+    case MeshProblemKind::NotSingleSurface:
       return "not a single surface";
-    case MeshProblemKind::kInwardOrientation:
+    case MeshProblemKind::InwardOrientation:
       return "inward orientation";
-    case MeshProblemKind::kNotConvex:
+    case MeshProblemKind::NotConvex:
       return "not convex";
-    case MeshProblemKind::kMultipleWinding:
+    case MeshProblemKind::MultipleWinding:
       return "multiple winding";
   }
   return "unknown problem";

@@ -213,7 +213,7 @@ bool checkConvexity(const TriangleMesh& mesh, const CentredPoints& centred, Reco
     const PointTree::Farthest far = tree.farthestAbove(normal, offset, tolerance, slack);
     if (far.found) {
       found = true;
-      if (recorder.add(MeshProblemKind::kNotConvex,
+      if (recorder.add(MeshProblemKind::NotConvex,
                        "vertex " + std::to_string(far.index) + " " +
                            formatPoint(mesh.vertices[far.index]) + " lies " +
                            formatDouble(far.distance) + " outside the plane of " +
@@ -253,7 +253,7 @@ void checkSingleWinding(const TriangleMesh& mesh, const CentredPoints& centred,
   }
   const double windings = total / (4.0 * std::numbers::pi);
   if (std::abs(windings - 1.0) > 0.5) {
-    recorder.add(MeshProblemKind::kMultipleWinding,
+    recorder.add(MeshProblemKind::MultipleWinding,
                  "the surface winds " + formatDouble(std::round(windings)) +
                      " times around its interior (total solid angle " + formatDouble(total) +
                      "); a convex block's surface winds once");

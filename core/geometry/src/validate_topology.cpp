@@ -84,10 +84,10 @@ bool recordEdgeProblem(const std::vector<HalfEdge>& halfEdges, std::size_t first
   }
   const std::uint64_t key = halfEdges[first].key;
   if (uses == 1) {
-    return recorder.add(MeshProblemKind::kOpenEdge, edgeName(key) +
-                                                        " is used by only one triangle (triangle " +
-                                                        std::to_string(halfEdges[first].triangle) +
-                                                        "): the mesh is not closed");
+    return recorder.add(MeshProblemKind::OpenEdge, edgeName(key) +
+                                                       " is used by only one triangle (triangle " +
+                                                       std::to_string(halfEdges[first].triangle) +
+                                                       "): the mesh is not closed");
   }
   if (uses > 2) {
     std::string list;
@@ -97,12 +97,12 @@ bool recordEdgeProblem(const std::vector<HalfEdge>& halfEdges, std::size_t first
     if (uses > 4) {
       list += ", ...";
     }
-    return recorder.add(MeshProblemKind::kNonManifoldEdge,
+    return recorder.add(MeshProblemKind::NonManifoldEdge,
                         edgeName(key) + " is used by " + std::to_string(uses) +
                             " triangles (triangles " + list + "); a closed surface uses it twice");
   }
   if (forward != 1) {
-    return recorder.add(MeshProblemKind::kInconsistentOrientation,
+    return recorder.add(MeshProblemKind::InconsistentOrientation,
                         edgeName(key) + " is used twice in the same direction (triangles " +
                             std::to_string(halfEdges[first].triangle) + " and " +
                             std::to_string(halfEdges[first + 1].triangle) +
@@ -163,7 +163,7 @@ bool checkSingleSurface(const TriangleMesh& mesh, std::size_t usedVertexCount,
                         std::size_t edgeCount, Recorder& recorder) {
   const std::size_t components = countComponents(mesh);
   if (components > 1) {
-    recorder.add(MeshProblemKind::kNotSingleSurface,
+    recorder.add(MeshProblemKind::NotSingleSurface,
                  "the mesh has " + std::to_string(components) +
                      " connected components; a convex block is one closed surface");
     return true;
@@ -172,7 +172,7 @@ bool checkSingleSurface(const TriangleMesh& mesh, std::size_t usedVertexCount,
   const long long euler = static_cast<long long>(usedVertexCount) -
                           static_cast<long long>(edgeCount) + static_cast<long long>(faceCount);
   if (euler != 2) {
-    recorder.add(MeshProblemKind::kNotSingleSurface,
+    recorder.add(MeshProblemKind::NotSingleSurface,
                  "Euler characteristic V - E + F = " + std::to_string(usedVertexCount) + " - " +
                      std::to_string(edgeCount) + " + " + std::to_string(faceCount) + " = " +
                      std::to_string(euler) + ", expected 2 (a closed surface without handles)");
