@@ -101,7 +101,7 @@ TEST_CASE("no triangles", "[validate]") {
   onlyVertices.vertices = makeBox(1, 1, 1).vertices;
   const ValidationReport report = checkConvexBlock(onlyVertices);
   REQUIRE(report.problems.size() == 1);
-  CHECK(report.problems[0].kind == MeshProblemKind::kNoTriangles);
+  CHECK(report.problems[0].kind == MeshProblemKind::NoTriangles);
 }
 
 TEST_CASE("non-finite coordinates name the vertex", "[validate]") {
@@ -112,7 +112,7 @@ TEST_CASE("non-finite coordinates name the vertex", "[validate]") {
   mesh.vertices[6].z() = -std::numeric_limits<double>::infinity();
   const ValidationReport report = checkConvexBlock(mesh);
   REQUIRE(report.problems.size() == 2);
-  CHECK(report.problems[1].kind == MeshProblemKind::kNonFiniteCoordinate);
+  CHECK(report.problems[1].kind == MeshProblemKind::NonFiniteCoordinate);
   CHECK(report.problems[1].message == "vertex 6 has a non-finite coordinate (-1, 1, -inf)");
 }
 
@@ -153,7 +153,7 @@ TEST_CASE("open mesh: a box with one side removed", "[validate]") {
   const ValidationReport report = checkConvexBlock(mesh);
   REQUIRE(report.problems.size() == 4);  // the rim 4-5, 4-6, 5-7, 6-7
   for (const MeshProblem& p : report.problems) {
-    CHECK(p.kind == MeshProblemKind::kOpenEdge);
+    CHECK(p.kind == MeshProblemKind::OpenEdge);
   }
   CHECK_THAT(report.problems[3].message, StartsWith("edge (6, 7) is used by only one"));
 }
@@ -167,7 +167,7 @@ TEST_CASE("flipped face: inconsistent orientation", "[validate]") {
   const ValidationReport report = checkConvexBlock(mesh);
   CHECK(report.problems.size() == 3);  // the three edges of the flipped triangle
   for (const MeshProblem& p : report.problems) {
-    CHECK(p.kind == MeshProblemKind::kInconsistentOrientation);
+    CHECK(p.kind == MeshProblemKind::InconsistentOrientation);
   }
 }
 
@@ -208,7 +208,7 @@ TEST_CASE("inward orientation", "[validate]") {
         "inward: signed volume is -48 (must be > 0): the faces point inward");
   const ValidationReport report = checkConvexBlock(mesh);
   REQUIRE(report.problems.size() == 1);
-  CHECK(report.problems[0].kind == MeshProblemKind::kInwardOrientation);
+  CHECK(report.problems[0].kind == MeshProblemKind::InwardOrientation);
 }
 
 TEST_CASE("non-convex: a box with one corner pushed in", "[validate]") {
@@ -232,7 +232,7 @@ TEST_CASE("non-convex: a box with one corner pushed in", "[validate]") {
   CHECK_FALSE(report.truncated);
   CHECK(report.problems.size() >= 3);
   for (const MeshProblem& p : report.problems) {
-    CHECK(p.kind == MeshProblemKind::kNotConvex);
+    CHECK(p.kind == MeshProblemKind::NotConvex);
   }
 }
 
@@ -283,7 +283,7 @@ TEST_CASE("convexity search agrees with brute force on perturbed spheres", "[val
     }
     ++violations;
     REQUIRE(report.problems.size() == 1);
-    CHECK(report.problems[0].kind == MeshProblemKind::kNotConvex);
+    CHECK(report.problems[0].kind == MeshProblemKind::NotConvex);
     CHECK_THAT(report.problems[0].message,
                StartsWith("vertex " + std::to_string(expected.vertex) + " "));
     CHECK_THAT(report.problems[0].message,
@@ -312,7 +312,7 @@ TEST_CASE("a surface wound twice around a convex solid", "[validate]") {
   }
   const ValidationReport report = checkConvexBlock(mesh);
   REQUIRE(report.problems.size() == 1);
-  CHECK(report.problems[0].kind == MeshProblemKind::kMultipleWinding);
+  CHECK(report.problems[0].kind == MeshProblemKind::MultipleWinding);
   CHECK_THAT(validationMessage(mesh, "double"),
              StartsWith("double: the surface winds 2 times around its interior") &&
                  Contains("a convex block's surface winds once"));
@@ -327,6 +327,6 @@ TEST_CASE("report limits and problem names", "[validate]") {
   CHECK(limited.problems.size() == 5);
   CHECK(limited.truncated);
   CHECK_THAT(limited.problems[4].message, StartsWith("vertex 4 has a non-finite coordinate"));
-  CHECK(toString(MeshProblemKind::kNotConvex) == "not convex");
-  CHECK(toString(MeshProblemKind::kOpenEdge) == "open edge");
+  CHECK(toString(MeshProblemKind::NotConvex) == "not convex");
+  CHECK(toString(MeshProblemKind::OpenEdge) == "open edge");
 }

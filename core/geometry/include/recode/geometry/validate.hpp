@@ -35,18 +35,18 @@
 namespace recode::core {
 
 enum class MeshProblemKind {
-  kNoTriangles,
-  kNonFiniteCoordinate,
-  kIndexOutOfRange,
-  kDegenerateTriangle,
-  kUnusedVertex,
-  kOpenEdge,                 // an edge used by one triangle only: the mesh is not closed
-  kNonManifoldEdge,          // an edge used by more than two triangles
-  kInconsistentOrientation,  // an edge used twice in the same direction
-  kNotSingleSurface,         // disconnected, or Euler characteristic != 2
-  kInwardOrientation,        // signed volume <= 0
-  kNotConvex,
-  kMultipleWinding,
+  NoTriangles,
+  NonFiniteCoordinate,
+  IndexOutOfRange,
+  DegenerateTriangle,
+  UnusedVertex,
+  OpenEdge,                 // an edge used by one triangle only: the mesh is not closed
+  NonManifoldEdge,          // an edge used by more than two triangles
+  InconsistentOrientation,  // an edge used twice in the same direction
+  NotSingleSurface,         // disconnected, or Euler characteristic != 2
+  InwardOrientation,        // signed volume <= 0
+  NotConvex,
+  MultipleWinding,
 };
 
 // Short name of a problem kind, e.g. "not convex".

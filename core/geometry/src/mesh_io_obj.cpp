@@ -1,0 +1,216 @@
+// The OBJ reader: tinyobjloader parses the file, after a line check of our own that gives
+// every malformed `v` or `f` line a message with its line and reads the positions with
+// correct rounding. docs/geometry.md describes what is read and lists the messages.
+
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstddef>
+#include <optional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "format.hpp"
+#include "mesh_io_text.hpp"
+
+namespace recode::core::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What the line check learned: the positions of the `v` records (parsed with correct
+// rounding by std::from_chars) and the number of `f` records.
+struct ObjLineSummary {
+  std::vector<Eigen::Vector3d> positions;
+  std::size_t faceCount = 0;
+};
+
+// A `v` line: at least three coordinates, each finite; more values (w, a colour) are
+// allowed and ignored.
+Eigen::Vector3d checkObjVertex(const fs::path& path, const std::vector<std::string_view>& tokens,
+                               std::size_t line) {
+  if (tokens.size() < 4) {
+    failAt(path, line,
+           "expected 3 coordinates, found " + std::to_string(tokens.size() - 1) + " values");
+  }
+  Eigen::Vector3d p;
+  if (const std::optional<std::string> problem = parseCoordinates(tokens, 1, p)) {
+    failAt(path, line, *problem);
+  }
+  return p;
+}
+
+// An `f` line: at least three references, each with a non-zero integer vertex index; a
+// negative index must name one of the vertexCount vertices defined so far. Returns the
+// largest positive index (0 if none), which can only be checked once the file has ended.
+long long checkObjFace(const fs::path& path, const std::vector<std::string_view>& tokens,
+                       std::size_t line, std::size_t vertexCount) {
+  if (tokens.size() < 4) {
+    failAt(path, line,
+           "face has " + std::to_string(tokens.size() - 1) + " vertices, at least 3 required");
+  }
+  long long largest = 0;
+  for (std::size_t k = 1; k < tokens.size(); ++k) {
+    const std::string_view ref = tokens[k];
+    const std::string_view vertexPart = ref.substr(0, ref.find('/'));
+    const std::optional<long long> index = parseInteger(vertexPart);
+    if (!index) {
+      failAt(path, line, "invalid face vertex reference " + quote(ref));
+    }
+    if (*index == 0) {
+      failAt(path, line, "face index 0 is invalid (OBJ indices start at 1)");
+    }
+    if (*index < 0) {
+      // Relative to the vertices defined so far: -1 is the last one.
+      if (static_cast<unsigned long long>(-(*index + 1)) >= vertexCount) {
+        failAt(path, line,
+               "face index " + std::to_string(*index) + " out of range (" +
+                   std::to_string(vertexCount) + " vertices defined so far)");
+      }
+    } else {
+      largest = std::max(largest, *index);
+    }
+  }
+  return largest;
+}
+
+// Checks every `v` and `f` line (tinyobjloader accepts malformed numbers silently, and
+// reports out-of-range indices without the line). Throws MeshError on the first problem.
+ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
+  ObjLineSummary summary;
+  struct ForwardReference {
+    std::size_t line;
+    long long index;  // 1-based, positive
+  };
+  std::vector<ForwardReference> largestPerFace;
+
+  forEachLine(text, [&](std::string_view raw, std::size_t line) {
+    const std::vector<std::string_view> tokens = tokenize(raw);
+    if (tokens.empty()) {
+      return;
+    }
+    if (tokens[0] == "v") {
+      summary.positions.push_back(checkObjVertex(path, tokens, line));
+    } else if (tokens[0] == "f") {
+      const long long largest = checkObjFace(path, tokens, line, summary.positions.size());
+      if (largest > 0) {
+        largestPerFace.push_back({line, largest});
+      }
+      ++summary.faceCount;
+    }
+  });
+
+  const std::size_t vertexCount = summary.positions.size();
+  for (const ForwardReference& ref : largestPerFace) {
+    if (static_cast<unsigned long long>(ref.index) > vertexCount) {
+      failAt(path, ref.line, outOfRange(ref.index, vertexCount));
+    }
+  }
+  if (vertexCount > kMaxVertices) {
+    fail(path, "vertex count " + std::to_string(vertexCount) + " exceeds the limit of " +
+                   std::to_string(kMaxVertices));
+  }
+  return summary;
+}
+
+// Turns tinyobjloader's error text into our message form, using a "line N" it mentions.
+[[noreturn]] void failFromTinyObj(const fs::path& path, std::string text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())) != 0) {
+    text.pop_back();
+  }
+  if (text.empty()) {
+    text = "tinyobjloader could not parse the file";
+  }
+  static const std::regex kLine(R"(line:?\s*(\d+))", std::regex::icase);
+  std::smatch match;
+  if (std::regex_search(text, match, kLine)) {
+    failAt(path, static_cast<std::size_t>(std::stoull(match[1].str())), text);
+  }
+  fail(path, text);
+}
+
+// tinyobjloader's number parser is not correctly rounded (it can be 1 ulp off), so the
+// positions come from the line check; tinyobjloader's values must agree with them to
+// within rounding, which confirms that both counted the same vertices.
+void crossCheckVertices(const fs::path& path, const tinyobj::attrib_t& attrib,
+                        const std::vector<Eigen::Vector3d>& positions) {
+  const std::size_t vertexCount = attrib.vertices.size() / 3;
+  if (vertexCount != positions.size()) {
+    fail(path, "internal error: tinyobjloader read " + std::to_string(vertexCount) +
+                   " vertices where the line check counted " + std::to_string(positions.size()));
+  }
+  for (std::size_t i = 0; i < vertexCount; ++i) {
+    const Eigen::Vector3d theirs(attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
+                                 attrib.vertices[3 * i + 2]);
+    const Eigen::Vector3d& ours = positions[i];
+    if (!((theirs - ours).cwiseAbs().array() <= 1e-12 * ours.cwiseAbs().array() + 1e-300).all()) {
+      fail(path, "internal error: tinyobjloader read vertex " + std::to_string(i) + " as " +
+                     formatPoint(theirs) + " where the line check read " + formatPoint(ours));
+    }
+  }
+}
+
+// Appends the fan triangulation of every face of every shape to triangles; returns the
+// number of faces, which must match the line check's count.
+std::size_t appendShapeFaces(const fs::path& path, const std::vector<tinyobj::shape_t>& shapes,
+                             std::size_t vertexCount, std::vector<Triangle>& triangles) {
+  std::size_t faceCount = 0;
+  std::vector<VertexIndex> polygon;
+  for (const tinyobj::shape_t& shape : shapes) {
+    std::size_t offset = 0;
+    for (const unsigned int size : shape.mesh.num_face_vertices) {
+      polygon.clear();
+      for (std::size_t k = 0; k < size; ++k) {
+        const int index = shape.mesh.indices[offset + k].vertex_index;
+        if (index < 0 || static_cast<std::size_t>(index) >= vertexCount) {
+          fail(path, "internal error: tinyobjloader returned " + outOfRange(index, vertexCount));
+        }
+        polygon.push_back(static_cast<VertexIndex>(index));
+      }
+      offset += size;
+      appendFan(triangles, polygon);
+      ++faceCount;
+    }
+  }
+  return faceCount;
+}
+
+}  // namespace
+
+TriangleMesh parseObj(const fs::path& path, const std::string& text) {
+  ObjLineSummary summary = checkObjLines(path, text);
+
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warnings;
+  std::string errors;
+  std::istringstream stream(text);
+  const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warnings, &errors, &stream,
+                                   /*readMatFn=*/nullptr, /*triangulate=*/false,
+                                   /*default_vcols_fallback=*/false);
+  if (!ok || !errors.empty()) {
+    failFromTinyObj(path, errors);
+  }
+
+  crossCheckVertices(path, attrib, summary.positions);
+  TriangleMesh mesh;
+  mesh.vertices = std::move(summary.positions);
+  const std::size_t faceCount =
+      appendShapeFaces(path, shapes, mesh.vertices.size(), mesh.triangles);
+  if (faceCount != summary.faceCount) {
+    fail(path, "internal error: tinyobjloader returned " + std::to_string(faceCount) +
+                   " faces where the line check counted " + std::to_string(summary.faceCount));
+  }
+  if (mesh.triangles.empty()) {
+    fail(path, "the file has no faces (empty mesh)");
+  }
+  return mesh;
+}
+
+}  // namespace recode::core::detail
