@@ -23,32 +23,18 @@
 #include "recode/geometry/mesh_error.hpp"
 #include "recode/geometry/mesh_io.hpp"
 #include "recode/geometry/validate.hpp"
-
-#include "json_document.hpp"
+#include "recode/json/document.hpp"
 
 namespace recode::core {
 
-SceneError::SceneError(const std::string& file, const std::string& jsonPath,
-                       const std::string& problem)
-    : std::runtime_error(file + ": " + (jsonPath.empty() ? "" : jsonPath + ": ") + problem),
-      file_(file),
-      jsonPath_(jsonPath) {}
-
-SceneError::SceneError(const std::string& file, int line, int column, const std::string& problem)
-    : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
-                         problem),
-      file_(file),
-      line_(line),
-      column_(column) {}
-
 namespace {
 
-using detail::childPath;
-using detail::describeJsonValue;
-using detail::JsonFieldReader;
-using detail::jsonText;
-using detail::parseJsonDocument;
 using nlohmann::json;
+using recode::json::childPath;
+using recode::json::describeJsonValue;
+using recode::json::JsonFieldReader;
+using recode::json::jsonText;
+using recode::json::parseJsonDocument;
 namespace fs = std::filesystem;
 
 struct ShapeSpec {
@@ -296,9 +282,9 @@ class SceneReader {
   // position, rotation_deg, motion, keyframes, joint.
   void placement(const json& v, const std::string& path, SceneObject& object) const {
     if (v.contains("position"))
-      object.position = fields_.vector3(v.at("position"), childPath(path, "position"));
+      object.position = vector3(v.at("position"), childPath(path, "position"));
     if (v.contains("rotation_deg"))
-      object.rotationDeg = fields_.vector3(v.at("rotation_deg"), childPath(path, "rotation_deg"));
+      object.rotationDeg = vector3(v.at("rotation_deg"), childPath(path, "rotation_deg"));
     if (v.contains("motion") && v.contains("keyframes"))
       fields_.fail(path, "give at most one of \"motion\" and \"keyframes\"");
     if (v.contains("motion"))
@@ -314,18 +300,18 @@ class SceneReader {
     fields_.requireOnlyKeys(v, path, {"velocity", "angular_velocity_deg", "bounce_within"});
     Motion m;
     if (v.contains("velocity"))
-      m.velocity = fields_.vector3(v.at("velocity"), childPath(path, "velocity"));
+      m.velocity = vector3(v.at("velocity"), childPath(path, "velocity"));
     if (v.contains("angular_velocity_deg")) {
       m.angularVelocityDeg =
-          fields_.vector3(v.at("angular_velocity_deg"), childPath(path, "angular_velocity_deg"));
+          vector3(v.at("angular_velocity_deg"), childPath(path, "angular_velocity_deg"));
     }
     if (v.contains("bounce_within")) {
       const std::string p = childPath(path, "bounce_within");
       const json& box = fields_.arrayOfSize(v.at("bounce_within"), p, 2,
                                             "2 corners [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
       Aabb bounds;
-      bounds.min = fields_.vector3(box[0], childPath(p, 0));
-      bounds.max = fields_.vector3(box[1], childPath(p, 1));
+      bounds.min = vector3(box[0], childPath(p, 0));
+      bounds.max = vector3(box[1], childPath(p, 1));
       for (int i = 0; i < 3; ++i) {
         if (!(bounds.min[i] <= bounds.max[i])) {
           fields_.fail(p, "the first corner must not exceed the second (" +
@@ -365,11 +351,10 @@ class SceneReader {
                                                 std::to_string(key.frame) + " after " +
                                                 std::to_string(keys.back().frame));
       }
-      key.position = k.contains("position")
-                         ? fields_.vector3(k.at("position"), childPath(p, "position"))
-                         : object.position;
+      key.position = k.contains("position") ? vector3(k.at("position"), childPath(p, "position"))
+                                            : object.position;
       key.rotationDeg = k.contains("rotation_deg")
-                            ? fields_.vector3(k.at("rotation_deg"), childPath(p, "rotation_deg"))
+                            ? vector3(k.at("rotation_deg"), childPath(p, "rotation_deg"))
                             : object.rotationDeg;
       keys.push_back(key);
     }
@@ -383,7 +368,7 @@ class SceneReader {
       fields_.fail(path, "missing key \"axis\" (the hinge direction [x, y, z])");
     Joint j;
     const std::string axisPath = childPath(path, "axis");
-    const Eigen::Vector3d axis = fields_.vector3(v.at("axis"), axisPath);
+    const Eigen::Vector3d axis = vector3(v.at("axis"), axisPath);
     const double length = axis.norm();
     if (!(length > 0.0) || !std::isfinite(length))
       fields_.fail(axisPath, "expected a non-zero direction, got " + jsonText(v.at("axis")));
@@ -408,6 +393,14 @@ class SceneReader {
                        "] (min_deg, max_deg)");
     }
     return j;
+  }
+
+  // An array of 3 finite numbers [x, y, z].
+  Eigen::Vector3d vector3(const json& value, const std::string& path) const {
+    fields_.arrayOfSize(value, path, 3, "3 numbers [x, y, z]");
+    return {fields_.finiteNumber(value[0], childPath(path, 0)),
+            fields_.finiteNumber(value[1], childPath(path, 1)),
+            fields_.finiteNumber(value[2], childPath(path, 2))};
   }
 
   // The shape's mesh; *typeName is set to its "type".
@@ -527,10 +520,18 @@ TriangleMesh SceneObject::worldMesh() const {
   return transformed(localMesh, pose());
 }
 
+// The JSON reading layer throws its own error; callers catch SceneError, whose message it
+// keeps byte for byte.
 Scene parseScene(std::string_view jsonText, const std::string& sourceName,
                  const std::filesystem::path& baseDir) {
-  const json doc = parseJsonDocument(jsonText, sourceName);
-  return SceneReader(sourceName, baseDir).scene(doc);
+  try {
+    const json doc = parseJsonDocument(jsonText, sourceName);
+    return SceneReader(sourceName, baseDir).scene(doc);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const recode::json::JsonError& e) {
+    throw SceneError(e);
+  }
 }
 
 Scene loadScene(const std::filesystem::path& file) {
