@@ -10,13 +10,13 @@
 #include <array>
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "recode/geometry/mesh.hpp"
 #include "recode/geometry/projection.hpp"
+#include "recode/json/error.hpp"
 #include "recode/scene/motion.hpp"
 
 namespace recode::core {
@@ -25,21 +25,12 @@ namespace recode::core {
 // positive number, got -2". The JSON path is also available on its own.
 // A problem with the file as a whole has an empty JSON path and reads "<file>: <problem>";
 // malformed JSON reads "<file>:<line>:<column>: invalid JSON: ..." (line() and column() are
-// then 1-based, counted in bytes; both are 0 for every other error).
-class SceneError : public std::runtime_error {
+// then 1-based, counted in bytes; both are 0 for every other error). The message and its
+// parts are those of the JSON reading layer's error, which the scene reader's become.
+class SceneError : public recode::json::JsonError {
  public:
-  SceneError(const std::string& file, const std::string& jsonPath, const std::string& problem);
-  SceneError(const std::string& file, int line, int column, const std::string& problem);
-  [[nodiscard]] const std::string& file() const { return file_; }
-  [[nodiscard]] const std::string& jsonPath() const { return jsonPath_; }
-  [[nodiscard]] int line() const { return line_; }
-  [[nodiscard]] int column() const { return column_; }
-
- private:
-  std::string file_;
-  std::string jsonPath_;
-  int line_ = 0;
-  int column_ = 0;
+  using recode::json::JsonError::JsonError;
+  explicit SceneError(const recode::json::JsonError& error) : recode::json::JsonError(error) {}
 };
 
 // A node of an object: a convex block (a leaf, with localMesh) or a group of child nodes

@@ -9,11 +9,15 @@
 #include <sstream>
 #include <type_traits>
 
+#include "recode/json/document.hpp"
+
 namespace recode::raster {
 
 namespace {
 
 using nlohmann::json;
+using recode::json::childPath;
+using recode::json::JsonFieldReader;
 
 constexpr std::string_view kGoldenFormat = "recode-golden-1";
 constexpr std::string_view kStreamFormat = "recode-commands-1";
@@ -81,14 +85,14 @@ json rows(const std::vector<T>& buffer, int width, int height) {
 
 // ---- reading -------------------------------------------------------------------------
 
-// Walks a parsed document, remembering the JSON pointer of every value it reads so that
-// each error names where it is.
+// Walks a parsed document, remembering the JSON path of every value it reads so that each
+// error names where it is. The problems are worded here; the layer words the paths.
 class Reader {
  public:
-  explicit Reader(std::string_view source) : source_(source) {}
+  explicit Reader(std::string_view source) : fields_(std::string(source)) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
-    throw FormatError(std::string(source_) + ": " + (path.empty() ? "/" : path) + ": " + problem);
+    fields_.fail(path, problem);
   }
 
   const json& member(const json& obj, const std::string& path, const char* key) const {
@@ -106,7 +110,7 @@ class Reader {
       for (std::string_view a : allowed)
         known = known || a == key;
       if (!known)
-        fail(path + "/" + key, "unknown key");
+        fail(childPath(path, key), "unknown key");
     }
   }
 
@@ -151,9 +155,9 @@ class Reader {
   Command command(const json& c, const std::string& path) const {
     if (!c.is_object())
       fail(path, "expected an object");
-    const std::string op = string(member(c, path, "op"), path + "/op");
+    const std::string op = string(member(c, path, "op"), childPath(path, "op"));
     const auto field = [&](const char* key) -> const json& { return member(c, path, key); };
-    const auto at = [&](const char* key) { return path + "/" + key; };
+    const auto at = [&](const char* key) { return childPath(path, key); };
     if (op == "scissor") {
       onlyKeys(c, path, {"op", "rect"});
       const json& r = field("rect");
@@ -162,7 +166,7 @@ class Reader {
       PixelRect rect;
       int* dst[4] = {&rect.x0, &rect.y0, &rect.x1, &rect.y1};
       for (std::size_t i = 0; i < 4; ++i) {
-        *dst[i] = static_cast<int>(integer(r[i], at("rect") + "/" + std::to_string(i),
+        *dst[i] = static_cast<int>(integer(r[i], childPath(at("rect"), i),
                                            std::numeric_limits<int>::min(),
                                            std::numeric_limits<int>::max()));
       }
@@ -214,55 +218,54 @@ class Reader {
       onlyKeys(c, path, {"op", "vertices_fixed", "indices"});
       return draw(c, path);
     }
-    fail(path + "/op", "unknown command \"" + op + "\"");
+    fail(childPath(path, "op"), "unknown command \"" + op + "\"");
   }
 
   cmd::Draw draw(const json& c, const std::string& path) const {
     cmd::Draw d;
     const json& vs = member(c, path, "vertices_fixed");
-    const std::string vpath = path + "/vertices_fixed";
+    const std::string vpath = childPath(path, "vertices_fixed");
     if (!vs.is_array())
       fail(vpath, "expected an array of [x_fixed, y_fixed, z]");
     const std::int64_t limit = static_cast<std::int64_t>(kMaxWindowCoordinate) * kSubpixelOne;
     for (std::size_t i = 0; i < vs.size(); ++i) {
-      const std::string p = vpath + "/" + std::to_string(i);
+      const std::string p = childPath(vpath, i);
       if (!vs[i].is_array() || vs[i].size() != 3)
         fail(p, "expected [x_fixed, y_fixed, z]");
       WindowVertex v;
-      v.x = static_cast<float>(integer(vs[i][0], p + "/0", -limit, limit)) / kSubpixelOne;
-      v.y = static_cast<float>(integer(vs[i][1], p + "/1", -limit, limit)) / kSubpixelOne;
-      const double z = number(vs[i][2], p + "/2");
+      v.x = static_cast<float>(integer(vs[i][0], childPath(p, 0), -limit, limit)) / kSubpixelOne;
+      v.y = static_cast<float>(integer(vs[i][1], childPath(p, 1), -limit, limit)) / kSubpixelOne;
+      const double z = number(vs[i][2], childPath(p, 2));
       if (!(z >= 0.0 && z <= 1.0))
-        fail(p + "/2", "depth outside [0, 1]");
+        fail(childPath(p, 2), "depth outside [0, 1]");
       v.z = static_cast<float>(z);
       if (static_cast<double>(v.z) != z)
-        fail(p + "/2", "depth is not a single-precision float");
+        fail(childPath(p, 2), "depth is not a single-precision float");
       d.vertices.push_back(v);
     }
     const json& is = member(c, path, "indices");
-    const std::string ipath = path + "/indices";
+    const std::string ipath = childPath(path, "indices");
     if (!is.is_array())
       fail(ipath, "expected an array of vertex indices");
     if (is.size() % 3 != 0)
       fail(ipath, "index count " + std::to_string(is.size()) + " is not a multiple of 3");
     for (std::size_t i = 0; i < is.size(); ++i) {
-      d.indices.push_back(
-          static_cast<std::uint32_t>(integer(is[i], ipath + "/" + std::to_string(i), 0,
-                                             static_cast<std::int64_t>(d.vertices.size()) - 1)));
+      d.indices.push_back(static_cast<std::uint32_t>(integer(
+          is[i], childPath(ipath, i), 0, static_cast<std::int64_t>(d.vertices.size()) - 1)));
     }
     return d;
   }
 
   CommandStream stream(const json& doc) const {
     CommandStream s;
-    s.width = static_cast<int>(integer(member(doc, "", "width"), "/width", 1, kMaxFramebufferSize));
+    s.width = static_cast<int>(integer(member(doc, "", "width"), "width", 1, kMaxFramebufferSize));
     s.height =
-        static_cast<int>(integer(member(doc, "", "height"), "/height", 1, kMaxFramebufferSize));
+        static_cast<int>(integer(member(doc, "", "height"), "height", 1, kMaxFramebufferSize));
     const json& commands = member(doc, "", "commands");
     if (!commands.is_array())
-      fail("/commands", "expected an array");
+      fail("commands", "expected an array");
     for (std::size_t i = 0; i < commands.size(); ++i) {
-      s.commands.push_back(command(commands[i], "/commands/" + std::to_string(i)));
+      s.commands.push_back(command(commands[i], childPath("commands", i)));
     }
     return s;
   }
@@ -276,36 +279,61 @@ class Reader {
     std::vector<T> out;
     out.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
     for (std::size_t y = 0; y < v.size(); ++y) {
-      const std::string rp = path + "/" + std::to_string(y);
+      const std::string rp = childPath(path, y);
       if (!v[y].is_array() || v[y].size() != static_cast<std::size_t>(width)) {
         fail(rp, "expected a row of " + std::to_string(width) + " values");
       }
       for (std::size_t x = 0; x < v[y].size(); ++x) {
-        out.push_back(static_cast<T>(integer(v[y][x], rp + "/" + std::to_string(x), 0, maxValue)));
+        out.push_back(static_cast<T>(integer(v[y][x], childPath(rp, x), 0, maxValue)));
       }
     }
     return out;
   }
 
   void format(const json& doc, std::string_view expected) const {
-    const std::string f = string(member(doc, "", "format"), "/format");
+    const std::string f = string(member(doc, "", "format"), "format");
     if (f != expected)
-      fail("/format", "expected \"" + std::string(expected) + "\", got \"" + f + "\"");
+      fail("format", "expected \"" + std::string(expected) + "\", got \"" + f + "\"");
   }
 
  private:
-  std::string_view source_;
+  JsonFieldReader fields_;
 };
 
+// Through the layer: malformed JSON and repeated keys are refused there, with line:column
+// or the JSON path.
 json parseDocument(std::string_view text, std::string_view source) {
+  json doc = recode::json::parseJsonDocument(text, std::string(source));
+  if (!doc.is_object())
+    Reader(source).fail("", "expected an object");
+  return doc;
+}
+
+GoldenVector readGoldenDocument(const json& doc, std::string_view source) {
+  const Reader r(source);
+  r.onlyKeys(doc, "", {"format", "description", "width", "height", "commands", "expected"});
+  r.format(doc, kGoldenFormat);
+  GoldenVector g;
+  g.description = r.string(r.member(doc, "", "description"), "description");
+  g.stream = r.stream(doc);
+  const json& expected = r.member(doc, "", "expected");
+  r.onlyKeys(expected, "expected", {"depth", "stencil"});
+  g.depth = r.buffer<std::uint32_t>(r.member(expected, "expected", "depth"), "expected.depth",
+                                    g.stream.width, g.stream.height, kDepthMax);
+  g.stencil = r.buffer<std::uint8_t>(r.member(expected, "expected", "stencil"), "expected.stencil",
+                                     g.stream.width, g.stream.height, 255);
+  return g;
+}
+
+// The layer throws JsonError; callers of this header catch FormatError.
+template <class Read>
+auto asFormatError(Read read) -> decltype(read()) {
   try {
-    json doc = json::parse(text);
-    if (!doc.is_object())
-      throw FormatError(std::string(source) + ": /: expected an object");
-    return doc;
-  } catch (const json::parse_error& e) {
-    throw FormatError(std::string(source) + ": invalid JSON at byte " + std::to_string(e.byte) +
-                      ": " + e.what());
+    return read();
+  } catch (const FormatError&) {
+    throw;
+  } catch (const recode::json::JsonError& e) {
+    throw FormatError(e);
   }
 }
 
@@ -318,11 +346,13 @@ std::string commandStreamToJson(const CommandStream& stream) {
 }
 
 CommandStream commandStreamFromJson(std::string_view text, std::string_view source) {
-  const json doc = parseDocument(text, source);
-  const Reader r(source);
-  r.onlyKeys(doc, "", {"format", "width", "height", "commands"});
-  r.format(doc, kStreamFormat);
-  return r.stream(doc);
+  return asFormatError([&] {
+    const json doc = parseDocument(text, source);
+    const Reader r(source);
+    r.onlyKeys(doc, "", {"format", "width", "height", "commands"});
+    r.format(doc, kStreamFormat);
+    return r.stream(doc);
+  });
 }
 
 std::string goldenToJson(const GoldenVector& golden) {
@@ -334,20 +364,7 @@ std::string goldenToJson(const GoldenVector& golden) {
 }
 
 GoldenVector goldenFromJson(std::string_view text, std::string_view source) {
-  const json doc = parseDocument(text, source);
-  const Reader r(source);
-  r.onlyKeys(doc, "", {"format", "description", "width", "height", "commands", "expected"});
-  r.format(doc, kGoldenFormat);
-  GoldenVector g;
-  g.description = r.string(r.member(doc, "", "description"), "/description");
-  g.stream = r.stream(doc);
-  const json& expected = r.member(doc, "", "expected");
-  r.onlyKeys(expected, "/expected", {"depth", "stencil"});
-  g.depth = r.buffer<std::uint32_t>(r.member(expected, "/expected", "depth"), "/expected/depth",
-                                    g.stream.width, g.stream.height, kDepthMax);
-  g.stencil = r.buffer<std::uint8_t>(r.member(expected, "/expected", "stencil"),
-                                     "/expected/stencil", g.stream.width, g.stream.height, 255);
-  return g;
+  return asFormatError([&] { return readGoldenDocument(parseDocument(text, source), source); });
 }
 
 namespace {
@@ -355,7 +372,7 @@ namespace {
 std::string readFileText(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw FormatError(path.string() + ": cannot open file");
+    throw FormatError(path.string(), "", "cannot open file");
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -370,24 +387,26 @@ GoldenVector readGolden(const std::filesystem::path& path) {
 CommandFile readCommandFile(const std::filesystem::path& path) {
   const std::string text = readFileText(path);
   const std::string source = path.string();
-  const json doc = parseDocument(text, source);
-  const Reader r(source);
-  const std::string format = r.string(r.member(doc, "", "format"), "/format");
+  const std::string format = asFormatError([&] {
+    const json doc = parseDocument(text, source);
+    return Reader(source).string(Reader(source).member(doc, "", "format"), "format");
+  });
   if (format == kGoldenFormat)
     return {goldenFromJson(text, source), true};
   if (format == kStreamFormat)
     return {{{}, commandStreamFromJson(text, source), {}, {}}, false};
-  r.fail("/format", "expected \"" + std::string(kGoldenFormat) + "\" or \"" +
+  throw FormatError(source, "format",
+                    "expected \"" + std::string(kGoldenFormat) + "\" or \"" +
                         std::string(kStreamFormat) + "\", got \"" + format + "\"");
 }
 
 void writeGolden(const std::filesystem::path& path, const GoldenVector& golden) {
   std::ofstream out(path, std::ios::binary);
   if (!out)
-    throw FormatError(path.string() + ": cannot open file for writing");
+    throw FormatError(path.string(), "", "cannot open file for writing");
   out << goldenToJson(golden) << '\n';
   if (!out)
-    throw FormatError(path.string() + ": write failed");
+    throw FormatError(path.string(), "", "write failed");
 }
 
 }  // namespace recode::raster

@@ -5,20 +5,23 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "recode/json/error.hpp"
 #include "recode/raster/command_stream.hpp"
 
 namespace recode::raster {
 
-// A malformed command-stream or golden file. The message names the source and the JSON
-// path of the problem, e.g. "case.json: /commands/3/func: unknown compare function "LESSER"".
-class FormatError : public std::runtime_error {
+// A malformed, unreadable or unwritable command-stream or golden file. The message names the
+// source and the JSON path of the problem in the notation of scene files, e.g.
+// "case.json: commands[3].func: unknown compare function "LESSER"" ("(root)" for the top
+// level); malformed JSON reads "case.json:<line>:<column>: invalid JSON: ...".
+class FormatError : public recode::json::JsonError {
  public:
-  using std::runtime_error::runtime_error;
+  using recode::json::JsonError::JsonError;
+  explicit FormatError(const recode::json::JsonError& error) : recode::json::JsonError(error) {}
 };
 
 struct GoldenVector {

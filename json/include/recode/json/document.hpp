@@ -1,5 +1,6 @@
 #pragma once
-// JSON reading layer (private to core): parsing with line:column, typed readers with JSON paths.
+// The JSON reading layer: parsing with line:column, typed readers with JSON paths. Every
+// problem throws JsonError (recode/json/error.hpp) naming the file and the JSON path.
 
 #include <cstddef>
 #include <cstdint>
@@ -8,10 +9,11 @@
 #include <string_view>
 #include <utility>
 
-#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-namespace recode::core::detail {
+#include "recode/json/error.hpp"
+
+namespace recode::json {
 
 // A JSON path as shown in messages: "(root)" for the top level, else the path itself.
 [[nodiscard]] std::string displayJsonPath(const std::string& path);
@@ -30,15 +32,15 @@ namespace recode::core::detail {
 [[nodiscard]] std::string describeJsonValue(const nlohmann::json& value);
 
 // Parses JSON text into a document. Malformed JSON throws
-// SceneError(sourceName, line, column, "invalid JSON: ...") pointing at the offending
+// JsonError(sourceName, line, column, "invalid JSON: ...") pointing at the offending
 // character (or at the start of the offending string or number); a key repeated within one
-// object throws SceneError(sourceName, <path of the repeated key>, "duplicate key").
+// object throws JsonError(sourceName, <path of the repeated key>, "duplicate key").
 [[nodiscard]] nlohmann::json parseJsonDocument(std::string_view text,
                                                const std::string& sourceName);
 
 // Typed readers for the fields of a parsed document. `path` is the JSON path of the value
 // being read ("" for the top level); every problem throws
-// SceneError(sourceName, displayJsonPath(path), problem).
+// JsonError(sourceName, displayJsonPath(path), problem).
 class JsonFieldReader {
  public:
   explicit JsonFieldReader(std::string sourceName) : sourceName_(std::move(sourceName)) {}
@@ -68,11 +70,9 @@ class JsonFieldReader {
   // elements, e.g. "3 numbers [x, y, z]".
   const nlohmann::json& arrayOfSize(const nlohmann::json& value, const std::string& path,
                                     std::size_t size, const char* what) const;
-  // An array of 3 finite numbers [x, y, z].
-  [[nodiscard]] Eigen::Vector3d vector3(const nlohmann::json& value, const std::string& path) const;
 
  private:
   std::string sourceName_;
 };
 
-}  // namespace recode::core::detail
+}  // namespace recode::json

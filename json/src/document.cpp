@@ -1,5 +1,5 @@
 // JSON reading layer: text -> document with positions and no duplicate keys; typed field readers.
-#include "json_document.hpp"
+#include "recode/json/document.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -7,9 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "recode/scene/scene.hpp"
-
-namespace recode::core::detail {
+namespace recode::json {
 
 using nlohmann::json;
 
@@ -199,7 +197,7 @@ json parseJsonDocument(std::string_view text, const std::string& sourceName) {
   if (ok)
     return std::move(builder.document());
   if (builder.duplicatePath())
-    throw SceneError(sourceName, *builder.duplicatePath(), "duplicate key");
+    throw JsonError(sourceName, *builder.duplicatePath(), "duplicate key");
   // nlohmann's position counts the characters read, up to the last one it looked at (one
   // more when it read the end of input). Point there, or at the first character of the
   // offending string or number when nlohmann reports one that ends at that position.
@@ -216,15 +214,15 @@ json parseJsonDocument(std::string_view text, const std::string& sourceName) {
   const std::size_t lineStart = lastNewline == std::string_view::npos ? 0 : lastNewline + 1;
   const auto line = 1 + std::count(before.begin(), before.end(), '\n');
   const std::size_t column = offending - lineStart + 1;
-  throw SceneError(sourceName, static_cast<int>(std::min<std::ptrdiff_t>(line, INT_MAX)),
-                   static_cast<int>(std::min<std::size_t>(column, INT_MAX)),
-                   "invalid JSON: " + plainParseMessage(builder.errorMessage()));
+  throw JsonError(sourceName, static_cast<int>(std::min<std::ptrdiff_t>(line, INT_MAX)),
+                  static_cast<int>(std::min<std::size_t>(column, INT_MAX)),
+                  "invalid JSON: " + plainParseMessage(builder.errorMessage()));
 }
 
 // ---- document -> typed values ---------------------------------------------------------
 
 void JsonFieldReader::fail(const std::string& path, const std::string& problem) const {
-  throw SceneError(sourceName_, displayJsonPath(path), problem);
+  throw JsonError(sourceName_, displayJsonPath(path), problem);
 }
 
 void JsonFieldReader::requireObject(const json& value, const std::string& path) const {
@@ -300,10 +298,4 @@ const json& JsonFieldReader::arrayOfSize(const json& value, const std::string& p
   return value;
 }
 
-Eigen::Vector3d JsonFieldReader::vector3(const json& value, const std::string& path) const {
-  arrayOfSize(value, path, 3, "3 numbers [x, y, z]");
-  return {finiteNumber(value[0], childPath(path, 0)), finiteNumber(value[1], childPath(path, 1)),
-          finiteNumber(value[2], childPath(path, 2))};
-}
-
-}  // namespace recode::core::detail
+}  // namespace recode::json

@@ -1,0 +1,198 @@
+// The block of a leaf: a mesh file or a generated shape (cone, cylinder, capped cone,
+// ellipsoid, sphere, box), validated closed and convex.
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "recode/geometry/generators.hpp"
+#include "recode/geometry/mesh_error.hpp"
+#include "recode/geometry/mesh_io.hpp"
+#include "recode/geometry/validate.hpp"
+
+#include "scene_reader.hpp"
+
+namespace recode::core::detail {
+
+namespace {
+
+namespace fs = std::filesystem;
+using recode::json::childPath;
+using recode::json::describeJsonValue;
+using recode::json::jsonText;
+
+struct ShapeSpec {
+  std::string_view type;
+  std::initializer_list<std::string_view> keys;  // besides "type"
+};
+
+constexpr std::string_view kShapeTypesText = "cone, cylinder, capped_cone, ellipsoid, sphere, box";
+
+const ShapeSpec kShapes[] = {
+    {"cone", {"radius", "height", "segments"}},
+    {"cylinder", {"radius", "height", "segments"}},
+    {"capped_cone", {"radius0", "radius1", "height", "segments", "rings"}},
+    {"ellipsoid", {"radii", "segments", "rings"}},
+    {"sphere", {"radius", "segments", "rings"}},
+    {"box", {"size"}},
+};
+
+// The size and count fields of one shape object, whose type is known and keys checked.
+class ShapeFields {
+ public:
+  ShapeFields(const JsonFieldReader& fields, const json& v, const std::string& path,
+              const std::string& type)
+      : fields_(fields), v_(v), path_(path), type_(type) {}
+
+  // A required positive number.
+  [[nodiscard]] double size(const char* key) const {
+    require(key);
+    return fields_.positiveNumber(v_.at(key), childPath(path_, key));
+  }
+  // An optional integer of at least `lo`.
+  [[nodiscard]] int count(const char* key, int fallback, int lo) const {
+    if (!v_.contains(key))
+      return fallback;
+    return static_cast<int>(fields_.integerInRange(v_.at(key), childPath(path_, key), lo, INT_MAX));
+  }
+  // A required array of 3 positive numbers.
+  [[nodiscard]] Eigen::Vector3d sizes3(const char* key, const char* what) const {
+    require(key);
+    const std::string p = childPath(path_, key);
+    const json& a = fields_.arrayOfSize(v_.at(key), p, 3, what);
+    return {fields_.positiveNumber(a[0], childPath(p, 0)),
+            fields_.positiveNumber(a[1], childPath(p, 1)),
+            fields_.positiveNumber(a[2], childPath(p, 2))};
+  }
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+    fields_.fail(path, problem);
+  }
+
+ private:
+  void require(const char* key) const {
+    if (!v_.contains(key))
+      fields_.fail(path_, std::string("missing key \"") + key + "\" for a " + type_ + " shape");
+  }
+
+  const JsonFieldReader& fields_;
+  const json& v_;
+  const std::string& path_;
+  const std::string& type_;
+};
+
+// A capped cone's spheres must not contain one another.
+TriangleMesh cappedCone(const ShapeFields& f, const json& v, const std::string& path) {
+  const double r0 = f.size("radius0");
+  const double r1 = f.size("radius1");
+  const double height = f.size("height");
+  const int segments = f.count("segments", 32, 3);
+  const int rings = f.count("rings", 8, 1);
+  if (!(height > std::abs(r0 - r1))) {
+    f.fail(childPath(path, "height"),
+           "must exceed |radius0 - radius1| = " + jsonText(json(std::abs(r0 - r1))) +
+               " (otherwise one sphere contains the other), got " + jsonText(v.at("height")));
+  }
+  return makeCappedCone(r0, r1, height, segments, rings);
+}
+
+// The mesh of a shape of a known type. The fields are read in the order the messages rely on
+// (the first missing or bad one is reported).
+TriangleMesh generate(const ShapeFields& f, const json& v, const std::string& path,
+                      const std::string& type) {
+  if (type == "cone" || type == "cylinder") {
+    const double radius = f.size("radius");
+    const double height = f.size("height");
+    const int segments = f.count("segments", 32, 3);
+    return type == "cone" ? makeCone(radius, height, segments)
+                          : makeCylinder(radius, height, segments);
+  }
+  if (type == "capped_cone")
+    return cappedCone(f, v, path);
+  if (type == "ellipsoid") {
+    const Eigen::Vector3d radii = f.sizes3("radii", "3 positive numbers [a, b, c]");
+    const int segments = f.count("segments", 32, 3);
+    const int rings = f.count("rings", 16, 2);
+    return makeEllipsoid(radii.x(), radii.y(), radii.z(), segments, rings);
+  }
+  if (type == "sphere") {
+    const double radius = f.size("radius");
+    const int segments = f.count("segments", 32, 3);
+    const int rings = f.count("rings", 16, 2);
+    return makeSphere(radius, segments, rings);
+  }
+  const Eigen::Vector3d full = f.sizes3("size", "3 positive numbers [sx, sy, sz]");
+  return makeBox(full / 2.0);
+}
+
+}  // namespace
+
+TriangleMesh ShapeReader::leafMesh(const json& v, const std::string& path) const {
+  if (v.contains("mesh"))
+    return meshFile(v.at("mesh"), childPath(path, "mesh"));
+  const std::string p = childPath(path, "shape");
+  std::string type;
+  TriangleMesh mesh = shape(v.at("shape"), p, &type);
+  try {
+    validateConvexBlock(mesh, "the generated " + type);
+  } catch (const MeshError& e) {
+    fields_.fail(p, e.what());
+  }
+  return mesh;
+}
+
+// Relative to the scene file's directory; the mesh reader's and validator's messages are kept.
+TriangleMesh ShapeReader::meshFile(const json& v, const std::string& path) const {
+  const fs::path file = baseDir_ / fs::path(fields_.nonEmptyString(v, path));
+  try {
+    TriangleMesh mesh = readMesh(file);
+    validateConvexBlock(mesh, file.string());
+    return mesh;
+  } catch (const MeshError& e) {
+    fields_.fail(path, e.what());
+  }
+}
+
+TriangleMesh ShapeReader::shape(const json& v, const std::string& path,
+                                std::string* typeName) const {
+  fields_.requireObject(v, path);
+  const std::string type = shapeType(v, path);
+  *typeName = type;
+  try {
+    return generate(ShapeFields(fields_, v, path, type), v, path, type);
+  } catch (const std::invalid_argument& e) {
+    fields_.fail(path, e.what());
+  }
+}
+
+std::string ShapeReader::shapeType(const json& v, const std::string& path) const {
+  if (!v.contains("type"))
+    fields_.fail(path, "missing key \"type\" (one of " + std::string(kShapeTypesText) + ")");
+  const std::string typePath = childPath(path, "type");
+  const json& t = v.at("type");
+  if (!t.is_string()) {
+    fields_.fail(typePath, "expected a shape type (" + std::string(kShapeTypesText) + "), got " +
+                               describeJsonValue(t));
+  }
+  const std::string type = t.get<std::string>();
+  const auto spec = std::find_if(std::begin(kShapes), std::end(kShapes),
+                                 [&](const ShapeSpec& s) { return s.type == type; });
+  if (spec == std::end(kShapes)) {
+    fields_.fail(typePath, "unknown shape type " + jsonText(t) + " (expected one of " +
+                               std::string(kShapeTypesText) + ")");
+  }
+  for (const auto& [key, value] : v.items()) {
+    if (key == "type" || std::find(spec->keys.begin(), spec->keys.end(), key) != spec->keys.end())
+      continue;
+    std::string list = "type";
+    for (std::string_view k : spec->keys)
+      list += ", " + std::string(k);
+    fields_.fail(childPath(path, key),
+                 "unknown key for a " + type + " shape (allowed: " + list + ")");
+  }
+  return type;
+}
+
+}  // namespace recode::core::detail
