@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "core_test_support.hpp"
 #include "recode/geometry/mesh_io.hpp"
 #include "recode/geometry/validate.hpp"
-#include "test_support.hpp"
 
 using namespace recode::core;
 using Catch::Matchers::Contains;

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "core_test_support.hpp"
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/validate.hpp"
-#include "test_support.hpp"
 
 using namespace recode::core;
 using Catch::Matchers::Contains;

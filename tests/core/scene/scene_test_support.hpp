@@ -3,8 +3,8 @@
 
 #include <string>
 
+#include "core_test_support.hpp"
 #include "recode/scene/scene.hpp"
-#include "test_support.hpp"
 
 namespace recode::core::test {
 

@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core_test_support.hpp"
 #include "recode/scene/experiment_scenes.hpp"
 #include "recode/sim/hierarchy.hpp"
-#include "test_support.hpp"
 
 using namespace recode::core;
 using Catch::Matchers::StartsWith;

@@ -1,6 +1,6 @@
 # The CGAL exact-intersection oracle: exact facts by construction, the judgement's power to
 # fail on corrupted results, and the generated pair suite judged pair by pair.
-add_executable(recode_verify_cgal_tests cgal_oracle_test.cpp)
+add_executable(recode_verify_cgal_tests oracles/cgal_oracle_test.cpp)
 target_link_libraries(recode_verify_cgal_tests PRIVATE recode_verify recode_warnings
                                                        Catch2::Catch2WithMain)
 # pair_test_support.hpp: running a pair, boxes and frames, shared with the pair suites.
