@@ -31,6 +31,7 @@ class FragmentWriter final : public TriangleSink {
   void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
     RECODE_INVARIANT(depth_.contains(blockX, blockY),
                      "covered blocks start inside the framebuffer");
+    RECODE_INVARIANT(mask != 0, "covered blocks have a non-empty coverage mask");
     // The contract's z = (z0 + tx) + ty with tx depending only on the column and ty only on
     // the row: precomputing both per block gives the same roundings, so the same bits.
     const DepthPlane& p = *plane_;

@@ -23,4 +23,22 @@ inline std::string sceneErrorOf(const std::string& text, const std::string& name
   return "";
 }
 
+// Parses a scene called "s.json"; the message of the error it throws ("" if none).
+inline Scene parse(const std::string& text) {
+  return parseSceneText(text, "s.json");
+}
+inline std::string errorOf(const std::string& text) {
+  return sceneErrorOf(text, "s.json");
+}
+
+// A scene with one object whose members are `objectBody` (JSON members, without braces).
+inline std::string oneObject(const std::string& objectBody) {
+  return R"({"objects": [{)" + objectBody + "}]}";
+}
+
+// A scene with one object of the given shape (the shape object's members, without braces).
+inline std::string oneShape(const std::string& shapeBody) {
+  return oneObject(R"("shape": {)" + shapeBody + "}");
+}
+
 }  // namespace recode::core::test

@@ -1,6 +1,7 @@
 // The Embree interval oracle: hand-made box pairs whose every pixel is known by hand, its
 // power to fail (corrupted case maps, a shrunken MOR), the tie rule on its own, its depth
-// tolerance against the device's own depth buffer, and the generated pair suite.
+// tolerance against the device's own depth buffer, and the generated pair suite. Over 400
+// lines: the hand-made pairs spell out their expected pixels.
 
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
