@@ -89,40 +89,19 @@ Viewport viewportFor(int framebuffer, GLint maxSize, GLint lowestOrigin) {
   return v;
 }
 
-}  // namespace
-
-struct GlDevice::Impl {
-  std::unique_ptr<detail::GlContext> context;
-  std::vector<GLfloat> vertexScratch;  // snapped x, y, z per vertex, reused between draws
-
-  // Makes the context current and returns it; every public entry point starts here.
-  void use() { context->makeCurrent(); }
-
-  // A GL error here is a bug in this file (every input was validated), so it is reported
-  // loudly rather than ignored.
-  static void check(const char* what) {
-    const GLenum error = glGetError();
-    if (error != GL_NO_ERROR) {
-      char code[16];
-      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(error));
-      throw std::runtime_error(std::string("GlDevice: GL error ") + code + " in " + what);
-    }
-  }
+// Both axes: the projection must undo exactly the viewport that was set.
+struct WindowViewport {
+  Viewport x, y;
 };
 
-GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
-  raster::checkFramebufferSize(width, height);
-  impl_ = std::make_unique<Impl>();
-  impl_->context = detail::makeOsMesaContext(width, height);
-  impl_->use();
-
-  // Window coordinates must reach the rasterizer unchanged, and must not be clipped: llvmpipe
-  // clips x and y at the viewport's edges (no guard band), and a clipped triangle gets new,
-  // off-grid vertices. So the viewport is as large as GL allows, P x Q with P, Q powers of
-  // two, and placed around the framebuffer with a band of (P - W) / 2 pixels on either side
-  // (about 8,000 for small frames). Vertices inside it are drawn exactly as given: with c the
-  // viewport's centre, x_ndc = (x - c) * 2/P and x_w = x_ndc * P/2 + c are exact in float for
-  // every x on the 1/256 grid within +-32768 (x - c has at most 24 significant bits).
+// Window coordinates must reach the rasterizer unchanged, and must not be clipped: llvmpipe
+// clips x and y at the viewport's edges (no guard band), and a clipped triangle gets new,
+// off-grid vertices. So the viewport is as large as GL allows, P x Q with P, Q powers of
+// two, and placed around the framebuffer with a band of (P - W) / 2 pixels on either side
+// (about 8,000 for small frames). Vertices inside it are drawn exactly as given: with c the
+// viewport's centre, x_ndc = (x - c) * 2/P and x_w = x_ndc * P/2 + c are exact in float for
+// every x on the 1/256 grid within +-32768 (x - c has at most 24 significant bits).
+WindowViewport placeUnclippedViewport(int width, int height) {
   GLint maxViewport[2] = {0, 0};
   GLint bounds[2] = {0, 0};
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
@@ -135,18 +114,27 @@ GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
                              std::to_string(width) + "x" + std::to_string(height) + " framebuffer");
   }
   glViewport(vx.origin, vy.origin, vx.size, vy.size);
+  return {vx, vy};
+}
 
-  // Depth: with glClipControl's ZERO_TO_ONE convention window z = z_ndc, so a projection that
-  // passes z through leaves it unchanged. (GL's default -1..1 convention needs z_ndc = 2z - 1,
-  // which loses low bits of small z before the rasterizer sees them.)
+// Depth: with glClipControl's ZERO_TO_ONE convention window z = z_ndc, so a projection that
+// passes z through leaves it unchanged. (GL's default -1..1 convention needs z_ndc = 2z - 1,
+// which loses low bits of small z before the rasterizer sees them.)
+void passDepthThrough(detail::GlContext& context) {
   const auto clipControl =
-      reinterpret_cast<PFNGLCLIPCONTROLPROC>(impl_->context->procAddress("glClipControl"));
+      reinterpret_cast<PFNGLCLIPCONTROLPROC>(context.procAddress("glClipControl"));
   if (clipControl == nullptr)
     throw std::runtime_error("GlDevice: the GL implementation has no glClipControl (GL 4.5)");
   clipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDepthRange(0.0, 1.0);
+}
 
-  // Column-major: x_clip = (x - cx) * 2/P, y_clip = (y - cy) * 2/Q, z_clip = z, w = 1.
+// The projection that undoes the viewport transform, so that window coordinates come out as
+// they went in. Column-major: x_clip = (x - cx) * 2/P, y_clip = (y - cy) * 2/Q, z_clip = z,
+// w = 1.
+void loadWindowProjection(const WindowViewport& viewport) {
+  const Viewport& vx = viewport.x;
+  const Viewport& vy = viewport.y;
   const GLfloat sx = 2.0f / static_cast<GLfloat>(vx.size);
   const GLfloat sy = 2.0f / static_cast<GLfloat>(vy.size);
   const GLfloat projection[16] = {sx,
@@ -169,9 +157,11 @@ GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
   glLoadMatrixf(projection);
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
+}
 
-  // The tests are always on; "off" is ALWAYS, as docs/rasterization.md section 6 says. No
-  // colour is written, and nothing else in the fragment pipeline may change a fragment.
+// The tests are always on; "off" is ALWAYS, as docs/rasterization.md section 6 says. No
+// colour is written, and nothing else in the fragment pipeline may change a fragment.
+void setFixedFragmentState(int width, int height) {
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_STENCIL_TEST);
   glEnable(GL_SCISSOR_TEST);
@@ -191,11 +181,48 @@ GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
   glScissor(0, 0, width, height);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glEnableClientState(GL_VERTEX_ARRAY);
+}
 
-  // Start as CpuDevice starts: depth 1.0, stencil 0 (OSMesa's buffers start undefined).
+// Start as CpuDevice starts: depth 1.0, stencil 0 (OSMesa's buffers start undefined).
+void clearAsCpuDeviceStarts() {
   glClearDepth(1.0);
   glClearStencil(0);
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
+}  // namespace
+
+struct GlDevice::Impl {
+  std::unique_ptr<detail::GlContext> context;
+  std::vector<GLfloat> vertexScratch;  // snapped x, y, z per vertex, reused between draws
+
+  // Makes the context current; every public entry point starts here.
+  void use() { context->makeCurrent(); }
+
+  // A GL error here is a bug in this file (every input was validated), so it is reported
+  // loudly rather than ignored.
+  static void check(const char* what) {
+    const GLenum error = glGetError();
+    if (error != GL_NO_ERROR) {
+      char code[16];
+      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(error));
+      throw std::runtime_error(std::string("GlDevice: GL error ") + code + " in " + what);
+    }
+  }
+};
+
+GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
+  raster::checkFramebufferSize(width, height);
+  impl_ = std::make_unique<Impl>();
+  impl_->context = detail::makeOsMesaContext(width, height);
+  impl_->use();
+  // Each step below sets GL state the device relies on from here on; none is changed again
+  // except through the device interface.
+  const WindowViewport viewport = placeUnclippedViewport(width, height);
+  passDepthThrough(*impl_->context);
+  loadWindowProjection(viewport);
+  setFixedFragmentState(width, height);
+  clearAsCpuDeviceStarts();
   impl_->check("GlDevice setup");
 }
 

@@ -143,6 +143,80 @@ void requireResultFits(const core::FrameSpec& frame, const core::PairResult& r) 
     throw std::invalid_argument(msg.str());
 }
 
+// A result whose depth range is not the one these blocks give was computed for another pair:
+// comparing its cases with these blocks' intervals would report nonsense as disagreements.
+void requireSameDepthRange(const core::OrthoView& view, const core::PairResult& result) {
+  if (view.depthMin() != result.depthMin || view.depthMax() != result.depthMax) {
+    std::ostringstream m;
+    m << "pair result maps depth over [" << result.depthMin << ", " << result.depthMax
+      << "] but these blocks span [" << view.depthMin() << ", " << view.depthMax()
+      << "] along the view axis: the result belongs to another pair";
+    throw std::invalid_argument(m.str());
+  }
+}
+
+// The MOR, where the device gives a case, then every pixel outside it whose centre lies in
+// both blocks' footprints, where the device's answer is "not interfering". No pixel outside
+// both footprints can hold both blocks. Fills `pixels` and returns the device's case at each
+// (kOutsideMor outside the MOR).
+std::vector<int> pixelsToExamine(const core::FrameSpec& frame, const WindowBlock& blockA,
+                                 const WindowBlock& blockB, const core::PairResult& result,
+                                 std::vector<PixelXY>& pixels) {
+  const raster::PixelRect& mor = result.mor;
+  const raster::PixelRect overlap =
+      detail::footprint(blockA, frame.width, frame.height)
+          .intersect(detail::footprint(blockB, frame.width, frame.height));
+  pixels.clear();
+  std::vector<int> deviceCases;
+  for (int y = mor.y0; y < mor.y1; ++y)
+    for (int x = mor.x0; x < mor.x1; ++x)
+      pixels.push_back({x, y});
+  deviceCases.assign(result.caseMap.data.begin(), result.caseMap.data.end());
+  for (int y = overlap.y0; y < overlap.y1; ++y)
+    for (int x = overlap.x0; x < overlap.x1; ++x)
+      if (!result.caseMap.contains(x, y)) {
+        pixels.push_back({x, y});
+        deviceCases.push_back(kOutsideMor);
+      }
+  return deviceCases;
+}
+
+// Counts every pixel as an agreement, an edge, a tie or an unexplained disagreement, in that
+// order of precedence, and lists the first unexplained ones.
+void classifyPixels(std::span<const PixelXY> pixels,
+                    const std::vector<std::optional<core::DepthInterval>>& a,
+                    const std::vector<std::optional<core::DepthInterval>>& b,
+                    const std::vector<int>& deviceCases, const WindowBlock& blockA,
+                    const WindowBlock& blockB, EmbreeReport& report) {
+  EmbreeCounts& c = report.counts;
+  for (std::size_t k = 0; k < pixels.size(); ++k) {
+    ++c.pixels;
+    const int oracleCase = core::caseFromIntervals(a[k], b[k]);
+    const int deviceCase = deviceCases[k];
+    const bool agree =
+        deviceCase == kOutsideMor ? !core::isInterfering(oracleCase) : deviceCase == oracleCase;
+    if (agree) {
+      ++c.agree;
+      continue;
+    }
+    const std::int64_t px = centreFixed(pixels[k].x), py = centreFixed(pixels[k].y);
+    // Coverage first: at an edge sample the fill rule and Embree's float test may both be
+    // right and still differ, and nothing about depth can be concluded there.
+    if (detail::nearProjectedEdge(blockA, px, py) || detail::nearProjectedEdge(blockB, px, py)) {
+      ++c.edges;
+      continue;
+    }
+    if (caseWithinTolerance(a[k], b[k], deviceCase, kEmbreeDepthTolerance)) {
+      ++c.ties;
+      continue;
+    }
+    ++c.unexplained;
+    if (report.unexplained.size() < kMaxListedDisagreements)
+      report.unexplained.push_back({pixels[k].x, pixels[k].y, deviceCase, oracleCase,
+                                    DisagreementKind::Unexplained, a[k], b[k]});
+  }
+}
+
 }  // namespace
 
 struct EmbreeOracle::Impl {
@@ -172,66 +246,14 @@ EmbreeReport EmbreeOracle::check(const core::FrameSpec& frame, const core::Trian
                                  const core::TriangleMesh& worldB, const core::PairResult& result) {
   requireResultFits(frame, result);
   const core::OrthoView view = pairView(frame, worldA, worldB);
-  if (view.depthMin() != result.depthMin || view.depthMax() != result.depthMax) {
-    std::ostringstream m;
-    m << "pair result maps depth over [" << result.depthMin << ", " << result.depthMax
-      << "] but these blocks span [" << view.depthMin() << ", " << view.depthMax()
-      << "] along the view axis: the result belongs to another pair";
-    throw std::invalid_argument(m.str());
-  }
+  requireSameDepthRange(view, result);
   const WindowBlock blockA = detail::makeWindowBlock(view, worldA, "A");
   const WindowBlock blockB = detail::makeWindowBlock(view, worldB, "B");
-
-  // The MOR, where the device gives a case, then every pixel outside it whose centre lies in
-  // both blocks' footprints, where the device's answer is "not interfering". No pixel outside
-  // both footprints can hold both blocks.
-  const raster::PixelRect& mor = result.mor;
-  const raster::PixelRect overlap =
-      detail::footprint(blockA, frame.width, frame.height)
-          .intersect(detail::footprint(blockB, frame.width, frame.height));
   Impl& s = *impl_;
-  s.pixels.clear();
-  std::vector<int> deviceCases;
-  for (int y = mor.y0; y < mor.y1; ++y)
-    for (int x = mor.x0; x < mor.x1; ++x)
-      s.pixels.push_back({x, y});
-  deviceCases.assign(result.caseMap.data.begin(), result.caseMap.data.end());
-  for (int y = overlap.y0; y < overlap.y1; ++y)
-    for (int x = overlap.x0; x < overlap.x1; ++x)
-      if (!result.caseMap.contains(x, y)) {
-        s.pixels.push_back({x, y});
-        deviceCases.push_back(kOutsideMor);
-      }
-
+  const std::vector<int> deviceCases = pixelsToExamine(frame, blockA, blockB, result, s.pixels);
   EmbreeReport report;
   report.rays = s.intervals(blockA, blockB, report.fallbackPixels);
-  EmbreeCounts& c = report.counts;
-  for (std::size_t k = 0; k < s.pixels.size(); ++k) {
-    ++c.pixels;
-    const int oracleCase = core::caseFromIntervals(s.a[k], s.b[k]);
-    const int deviceCase = deviceCases[k];
-    const bool agree =
-        deviceCase == kOutsideMor ? !core::isInterfering(oracleCase) : deviceCase == oracleCase;
-    if (agree) {
-      ++c.agree;
-      continue;
-    }
-    const std::int64_t px = centreFixed(s.pixels[k].x), py = centreFixed(s.pixels[k].y);
-    // Coverage first: at an edge sample the fill rule and Embree's float test may both be
-    // right and still differ, and nothing about depth can be concluded there.
-    if (detail::nearProjectedEdge(blockA, px, py) || detail::nearProjectedEdge(blockB, px, py)) {
-      ++c.edges;
-      continue;
-    }
-    if (caseWithinTolerance(s.a[k], s.b[k], deviceCase, kEmbreeDepthTolerance)) {
-      ++c.ties;
-      continue;
-    }
-    ++c.unexplained;
-    if (report.unexplained.size() < kMaxListedDisagreements)
-      report.unexplained.push_back({s.pixels[k].x, s.pixels[k].y, deviceCase, oracleCase,
-                                    DisagreementKind::Unexplained, s.a[k], s.b[k]});
-  }
+  classifyPixels(s.pixels, s.a, s.b, deviceCases, blockA, blockB, report);
   return report;
 }
 

@@ -33,6 +33,61 @@ struct SceneHandle {
   }
 };
 
+// The device's own vertices: snapped x and y, float depth.
+void copyBlock(const WindowBlock& block, float* vertices, std::uint32_t* indices) {
+  for (std::size_t i = 0; i < block.x.size(); ++i) {
+    vertices[3 * i] = block.x[i];
+    vertices[3 * i + 1] = block.y[i];
+    vertices[3 * i + 2] = block.zf[i];
+  }
+  for (std::size_t t = 0; t < block.triangles.size(); ++t)
+    std::memcpy(indices + 3 * t, block.triangles[t].data(), 3 * sizeof(std::uint32_t));
+}
+
+// One chunk's rays, all entry rays first and then all exit rays (kChunkPixels says why): for
+// each pixel a ray through its centre from in front of depth 0 toward +z, and one from behind
+// depth 1 toward -z.
+void aimRays(std::span<const PixelXY> pixels, std::vector<RTCRayHit>& rays) {
+  const std::size_t count = pixels.size();
+  rays.resize(2 * count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const PixelXY& p = pixels[k];
+    const float cx = static_cast<float>(p.x) + 0.5f, cy = static_cast<float>(p.y) + 0.5f;
+    for (std::size_t side = 0; side < 2; ++side) {
+      RTCRayHit& r = rays[side * count + k];
+      r.ray.org_x = cx;
+      r.ray.org_y = cy;
+      r.ray.org_z = side == 0 ? kFrontOrigin : kBackOrigin;
+      r.ray.dir_x = 0.0f;
+      r.ray.dir_y = 0.0f;
+      r.ray.dir_z = side == 0 ? 1.0f : -1.0f;
+      r.ray.tnear = 0.0f;
+      r.ray.tfar = std::numeric_limits<float>::infinity();
+      r.ray.time = 0.0f;
+      r.ray.mask = 0xFFFFFFFFu;
+      r.ray.id = 0;
+      r.ray.flags = 0;
+      r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      r.hit.primID = RTC_INVALID_GEOMETRY_ID;
+      r.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    }
+  }
+}
+
+// The triangle each of a chunk's `count` pixels was entered and left by, laid out as aimRays
+// laid the rays out; a ray that met nothing leaves its kNoHit in place.
+void recordHits(const std::vector<RTCRayHit>& rays, std::size_t count, std::int32_t* entry,
+                std::int32_t* exit) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const RTCHit& front = rays[k].hit;
+    const RTCHit& back = rays[count + k].hit;
+    if (front.geomID != RTC_INVALID_GEOMETRY_ID)
+      entry[k] = static_cast<std::int32_t>(front.primID);
+    if (back.geomID != RTC_INVALID_GEOMETRY_ID)
+      exit[k] = static_cast<std::int32_t>(back.primID);
+  }
+}
+
 }  // namespace
 
 RayCaster::RayCaster() {
@@ -57,18 +112,9 @@ void RayCaster::throwIfFailed(const char* what) {
   }
 }
 
-long long RayCaster::cast(const WindowBlock& block, std::span<const PixelXY> pixels,
-                          std::vector<std::int32_t>& entry, std::vector<std::int32_t>& exit) {
-  entry.assign(pixels.size(), kNoHit);
-  exit.assign(pixels.size(), kNoHit);
-  if (pixels.empty() || block.triangles.empty())
-    return 0;
-
-  SceneHandle handle;
-  handle.scene = rtcNewScene(device_);
-  throwIfFailed("rtcNewScene");
+void RayCaster::buildScene(RTCScene scene, const WindowBlock& block) {
   // Robust mode makes the triangle test watertight, so a ray through a shared edge is not lost.
-  rtcSetSceneFlags(handle.scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   throwIfFailed("rtcNewGeometry");
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
@@ -81,19 +127,25 @@ long long RayCaster::cast(const WindowBlock& block, std::span<const PixelXY> pix
     throwIfFailed("rtcSetNewGeometryBuffer");
     throw std::runtime_error("Embree: rtcSetNewGeometryBuffer returned no buffer");
   }
-  // The device's own vertices: snapped x and y, float depth.
-  for (std::size_t i = 0; i < block.x.size(); ++i) {
-    vertices[3 * i] = block.x[i];
-    vertices[3 * i + 1] = block.y[i];
-    vertices[3 * i + 2] = block.zf[i];
-  }
-  for (std::size_t t = 0; t < block.triangles.size(); ++t)
-    std::memcpy(indices + 3 * t, block.triangles[t].data(), 3 * sizeof(std::uint32_t));
+  copyBlock(block, vertices, indices);
   rtcCommitGeometry(geometry);
-  rtcAttachGeometry(handle.scene, geometry);
+  rtcAttachGeometry(scene, geometry);
   rtcReleaseGeometry(geometry);
-  rtcCommitScene(handle.scene);
+  rtcCommitScene(scene);
   throwIfFailed("building the scene");
+}
+
+long long RayCaster::cast(const WindowBlock& block, std::span<const PixelXY> pixels,
+                          std::vector<std::int32_t>& entry, std::vector<std::int32_t>& exit) {
+  entry.assign(pixels.size(), kNoHit);
+  exit.assign(pixels.size(), kNoHit);
+  if (pixels.empty() || block.triangles.empty())
+    return 0;
+
+  SceneHandle handle;
+  handle.scene = rtcNewScene(device_);
+  throwIfFailed("rtcNewScene");
+  buildScene(handle.scene, block);
 
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -103,40 +155,11 @@ long long RayCaster::cast(const WindowBlock& block, std::span<const PixelXY> pix
   long long rays = 0;
   for (std::size_t first = 0; first < pixels.size(); first += kChunkPixels) {
     const std::size_t count = std::min(kChunkPixels, pixels.size() - first);
-    rays_.resize(2 * count);
-    for (std::size_t k = 0; k < count; ++k) {
-      const PixelXY& p = pixels[first + k];
-      const float cx = static_cast<float>(p.x) + 0.5f, cy = static_cast<float>(p.y) + 0.5f;
-      for (std::size_t side = 0; side < 2; ++side) {
-        RTCRayHit& r = rays_[side * count + k];
-        r.ray.org_x = cx;
-        r.ray.org_y = cy;
-        r.ray.org_z = side == 0 ? kFrontOrigin : kBackOrigin;
-        r.ray.dir_x = 0.0f;
-        r.ray.dir_y = 0.0f;
-        r.ray.dir_z = side == 0 ? 1.0f : -1.0f;
-        r.ray.tnear = 0.0f;
-        r.ray.tfar = std::numeric_limits<float>::infinity();
-        r.ray.time = 0.0f;
-        r.ray.mask = 0xFFFFFFFFu;
-        r.ray.id = 0;
-        r.ray.flags = 0;
-        r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        r.hit.primID = RTC_INVALID_GEOMETRY_ID;
-        r.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-      }
-    }
+    aimRays(pixels.subspan(first, count), rays_);
     rtcIntersect1M(handle.scene, &context, rays_.data(), static_cast<unsigned int>(2 * count),
                    sizeof(RTCRayHit));
     rays += static_cast<long long>(2 * count);
-    for (std::size_t k = 0; k < count; ++k) {
-      const RTCHit& front = rays_[k].hit;
-      const RTCHit& back = rays_[count + k].hit;
-      if (front.geomID != RTC_INVALID_GEOMETRY_ID)
-        entry[first + k] = static_cast<std::int32_t>(front.primID);
-      if (back.geomID != RTC_INVALID_GEOMETRY_ID)
-        exit[first + k] = static_cast<std::int32_t>(back.primID);
-    }
+    recordHits(rays_, count, entry.data() + first, exit.data() + first);
   }
   throwIfFailed("rtcIntersect1M");
   return rays;

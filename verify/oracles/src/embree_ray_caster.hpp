@@ -37,6 +37,8 @@ class RayCaster {
 
  private:
   void throwIfFailed(const char* what);
+  // Fills an empty scene with the block's triangles and commits it; throws on Embree errors.
+  void buildScene(RTCScene scene, const WindowBlock& block);
 
   RTCDevice device_ = nullptr;
   std::string lastError_;

@@ -280,6 +280,76 @@ Generated justSeparated(int k, Random& rnd) {
   return g;
 }
 
+// Rejected up front, naming the option, so that a bad request never yields a partial suite.
+void requireValidOptions(const PairSuiteOptions& options) {
+  if (options.count < 1)
+    throw std::invalid_argument("generatePairSuite: count must be at least 1, got " +
+                                std::to_string(options.count));
+  if (options.width < 1 || options.width > 4096)
+    throw std::invalid_argument("generatePairSuite: width must be in 1..4096, got " +
+                                std::to_string(options.width));
+}
+
+// The view axes, taken in turn by successive pairs so that every configuration is seen along
+// each of them.
+constexpr std::array<core::ViewAxis, 3> kAxes = {core::ViewAxis::X, core::ViewAxis::Y,
+                                                 core::ViewAxis::Z};
+
+// The blocks, in local coordinates, of the `round`-th pair of `configuration`; the touching
+// configurations step through kGaps round by round.
+Generated generateConfiguration(PairConfiguration configuration, int round, Random& rnd) {
+  const int gap = round % static_cast<int>(kGaps.size());
+  switch (configuration) {
+    case PairConfiguration::Random:
+      return randomPair(rnd);
+    case PairConfiguration::TipOnTip:
+      return tipOnTip(gap, rnd);
+    case PairConfiguration::TipOnFace:
+      return tipOnFace(gap, rnd);
+    case PairConfiguration::FaceOnFace:
+      return faceOnFace(gap, rnd);
+    case PairConfiguration::EdgeOnEdge:
+      return edgeOnEdge(gap, rnd);
+    case PairConfiguration::Inside:
+      return inside(rnd);
+    case PairConfiguration::JustSeparated:
+      return justSeparated(round, rnd);
+  }
+  return {};
+}
+
+// The pair's name in reports: configuration/round, the two shapes and the view axis, which
+// together make it unique within a suite.
+std::string pairLabel(PairConfiguration configuration, int round, const Generated& g,
+                      core::ViewAxis axis) {
+  char label[96];
+  std::snprintf(
+      label, sizeof label, "%s/%03d %s-%s %s", std::string(toString(configuration)).c_str(), round,
+      kShapeNames[static_cast<std::size_t>(g.a.shape)],
+      kShapeNames[static_cast<std::size_t>(g.b.shape)], std::string(core::toString(axis)).c_str());
+  return label;
+}
+
+// Moves both blocks by the pair's world placement (drawn after the blocks, so the suite's
+// random sequence is fixed) and frames them along `axis` at `width` pixels.
+SuitePair placePair(PairConfiguration configuration, int round, const Generated& g,
+                    core::ViewAxis axis, int width, Random& rnd) {
+  const Eigen::Isometry3d world = worldPlacement(round, rnd);
+  SuitePair pair;
+  pair.configuration = configuration;
+  pair.a = core::transformed(g.a.mesh, world);
+  pair.b = core::transformed(g.b.mesh, world);
+  core::Aabb bounds = core::boundingBox(pair.a);
+  bounds.extend(core::boundingBox(pair.b));
+  core::ViewSpec view;
+  view.axis = axis;
+  core::FrameOverrides overrides;
+  overrides.width = width;
+  pair.frame = core::resolveFrame(view, bounds, overrides);
+  pair.label = pairLabel(configuration, round, g, axis);
+  return pair;
+}
+
 }  // namespace
 
 std::string_view toString(PairConfiguration configuration) {
@@ -303,65 +373,16 @@ std::string_view toString(PairConfiguration configuration) {
 }
 
 std::vector<SuitePair> generatePairSuite(const PairSuiteOptions& options) {
-  if (options.count < 1)
-    throw std::invalid_argument("generatePairSuite: count must be at least 1, got " +
-                                std::to_string(options.count));
-  if (options.width < 1 || options.width > 4096)
-    throw std::invalid_argument("generatePairSuite: width must be in 1..4096, got " +
-                                std::to_string(options.width));
+  requireValidOptions(options);
   Random rnd(options.seed);
   std::vector<SuitePair> suite;
   suite.reserve(static_cast<std::size_t>(options.count));
-  static constexpr std::array<core::ViewAxis, 3> kAxes = {core::ViewAxis::X, core::ViewAxis::Y,
-                                                          core::ViewAxis::Z};
   for (int i = 0; i < options.count; ++i) {
     const auto configuration = static_cast<PairConfiguration>(i % kPairConfigurationCount);
     const int round = i / kPairConfigurationCount;  // how many of this configuration so far
-    const int gap = round % static_cast<int>(kGaps.size());
-    Generated g;
-    switch (configuration) {
-      case PairConfiguration::Random:
-        g = randomPair(rnd);
-        break;
-      case PairConfiguration::TipOnTip:
-        g = tipOnTip(gap, rnd);
-        break;
-      case PairConfiguration::TipOnFace:
-        g = tipOnFace(gap, rnd);
-        break;
-      case PairConfiguration::FaceOnFace:
-        g = faceOnFace(gap, rnd);
-        break;
-      case PairConfiguration::EdgeOnEdge:
-        g = edgeOnEdge(gap, rnd);
-        break;
-      case PairConfiguration::Inside:
-        g = inside(rnd);
-        break;
-      case PairConfiguration::JustSeparated:
-        g = justSeparated(round, rnd);
-        break;
-    }
-    const Eigen::Isometry3d world = worldPlacement(round, rnd);
-    SuitePair pair;
-    pair.configuration = configuration;
-    pair.a = core::transformed(g.a.mesh, world);
-    pair.b = core::transformed(g.b.mesh, world);
-    core::Aabb bounds = core::boundingBox(pair.a);
-    bounds.extend(core::boundingBox(pair.b));
-    core::ViewSpec view;
-    view.axis = kAxes[static_cast<std::size_t>(i) % kAxes.size()];
-    core::FrameOverrides overrides;
-    overrides.width = options.width;
-    pair.frame = core::resolveFrame(view, bounds, overrides);
-    char label[96];
-    std::snprintf(label, sizeof label, "%s/%03d %s-%s %s",
-                  std::string(toString(configuration)).c_str(), round,
-                  kShapeNames[static_cast<std::size_t>(g.a.shape)],
-                  kShapeNames[static_cast<std::size_t>(g.b.shape)],
-                  std::string(core::toString(view.axis)).c_str());
-    pair.label = label;
-    suite.push_back(std::move(pair));
+    const Generated g = generateConfiguration(configuration, round, rnd);
+    const core::ViewAxis axis = kAxes[static_cast<std::size_t>(i) % kAxes.size()];
+    suite.push_back(placePair(configuration, round, g, axis, options.width, rnd));
   }
   return suite;
 }

@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "recode/verify/peer_detectors.hpp"
@@ -91,7 +92,7 @@ class BulletDetector final : public SceneDetector {
   [[nodiscard]] Detection detect(const std::vector<core::ObjectTree>& objects,
                                  int /*frame*/) override {
     leaves_.checkSameShape(objects);
-    Detection detection;
+    std::vector<LeafPairId> pairs;
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < leaves_.size(); ++i)
       bodies_[static_cast<std::size_t>(i)]->setWorldTransform(
@@ -104,13 +105,10 @@ class BulletDetector final : public SceneDetector {
       for (int c = 0; c < manifold->getNumContacts() && !touching; ++c)
         touching = manifold->getContactPoint(c).getDistance() <= 0;
       if (touching)
-        detection.pairs.push_back(orderedPair(leaves_[manifold->getBody0()->getUserIndex()],
-                                              leaves_[manifold->getBody1()->getUserIndex()]));
+        pairs.push_back(orderedPair(leaves_[manifold->getBody0()->getUserIndex()],
+                                    leaves_[manifold->getBody1()->getUserIndex()]));
     }
-    const auto stop = std::chrono::steady_clock::now();
-    sortUnique(detection.pairs);
-    detection.collisionUs = std::chrono::duration<double, std::micro>(stop - start).count();
-    return detection;
+    return finishDetection(std::move(pairs), start);
   }
 
  private:

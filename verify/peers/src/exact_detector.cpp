@@ -9,6 +9,7 @@
 #include <chrono>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "recode/verify/cgal_oracle.hpp"
@@ -34,7 +35,7 @@ class ExactDetector final : public SceneDetector {
   [[nodiscard]] Detection detect(const std::vector<core::ObjectTree>& objects,
                                  int /*frame*/) override {
     leaves_.checkSameShape(objects);
-    Detection detection;
+    std::vector<LeafPairId> pairs;
     const auto start = std::chrono::steady_clock::now();
     const int n = leaves_.size();
     std::vector<core::TriangleMesh> meshes;
@@ -65,13 +66,10 @@ class ExactDetector final : public SceneDetector {
           continue;
         if (exactlyIntersect(meshes[static_cast<std::size_t>(a)],
                              meshes[static_cast<std::size_t>(b)]))
-          detection.pairs.push_back(orderedPair(leaves_[a], leaves_[b]));
+          pairs.push_back(orderedPair(leaves_[a], leaves_[b]));
       }
     }
-    const auto stop = std::chrono::steady_clock::now();
-    sortUnique(detection.pairs);
-    detection.collisionUs = std::chrono::duration<double, std::micro>(stop - start).count();
-    return detection;
+    return finishDetection(std::move(pairs), start);
   }
 
  private:

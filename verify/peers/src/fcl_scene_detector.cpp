@@ -65,13 +65,7 @@ Detection FclSceneDetector::detect(const std::vector<core::ObjectTree>& objects,
   }
   manager_.update();
   manager_.collide(&state, collideCandidate);
-  const auto stop = std::chrono::steady_clock::now();
-
-  Detection detection;
-  detection.pairs = std::move(state.pairs);
-  sortUnique(detection.pairs);
-  detection.collisionUs = std::chrono::duration<double, std::micro>(stop - start).count();
-  return detection;
+  return finishDetection(std::move(state.pairs), start);
 }
 
 }  // namespace recode::verify

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace recode::verify {
 
@@ -47,6 +48,16 @@ LeafPairId orderedPair(const LeafRef& a, const LeafRef& b) {
 void sortUnique(std::vector<LeafPairId>& pairs) {
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+}
+
+Detection finishDetection(std::vector<LeafPairId> pairs,
+                          std::chrono::steady_clock::time_point start) {
+  const auto stop = std::chrono::steady_clock::now();
+  Detection detection;
+  detection.pairs = std::move(pairs);
+  sortUnique(detection.pairs);
+  detection.collisionUs = std::chrono::duration<double, std::micro>(stop - start).count();
+  return detection;
 }
 
 }  // namespace recode::verify

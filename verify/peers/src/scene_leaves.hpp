@@ -1,8 +1,9 @@
 #pragma once
 // What every scene detector of the bench does alike (scene_detector.hpp): list the leaves of
 // the trees it was made from, refuse trees of another shape at detect(), and hand back leaf
-// pairs in the interface's order. Internal to verify/peers.
+// pairs in the interface's order with the time they took. Internal to verify/peers.
 
+#include <chrono>
 #include <cstddef>
 #include <vector>
 
@@ -46,5 +47,10 @@ class SceneLeaves {
 
 // Sorts and drops repeats (a library may report a pair more than once).
 void sortUnique(std::vector<LeafPairId>& pairs);
+
+// The end of a detect() timed from `start`: stops the clock first, so that collisionUs is the
+// detector's own work and not this bookkeeping, then hands back `pairs` sorted, without repeats.
+[[nodiscard]] Detection finishDetection(std::vector<LeafPairId> pairs,
+                                        std::chrono::steady_clock::time_point start);
 
 }  // namespace recode::verify
