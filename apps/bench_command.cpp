@@ -96,30 +96,23 @@ std::string compilerName() {
 #endif
 }
 
-int runBench(const BenchOptions& o) {
-  if (o.list) {
-    printList();
-    return 0;
-  }
-  const std::vector<const Experiment*> experiments = selectExperiments(o.experiments);
-  requireEverything();
-
+std::vector<BenchCase> listCases(const std::vector<const Experiment*>& experiments, bool quick) {
   std::vector<BenchCase> cases;
   for (const Experiment* e : experiments)
     for (const std::string& scene : e->scenes)
-      for (int t : o.quick ? e->quickTrianglesPerBlock : e->trianglesPerBlock)
+      for (int t : quick ? e->quickTrianglesPerBlock : e->trianglesPerBlock)
         cases.push_back({e, scene, t});
+  return cases;
+}
 
-  const std::filesystem::path dir(o.out);
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path csvPath = dir / "bench.csv";
-  std::ofstream csv(csvPath);
-  if (!csv)
-    throw std::runtime_error("--out " + o.out + ": cannot write " + csvPath.string());
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
+// Runs the cases in order, a line each as it ends, under one progress bar for them all.
+std::vector<BenchRow> runCases(const std::vector<BenchCase>& cases) {
   std::vector<BenchRow> rows;
   ProgressBar progress(static_cast<int>(cases.size()) * 1000);
-  const auto started = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const BenchCase& c = cases[i];
     const auto caseStart = std::chrono::steady_clock::now();
@@ -127,8 +120,7 @@ int runBench(const BenchOptions& o) {
         runBenchCase(*c.experiment, c.scene, c.trianglesPerBlock, [&](double share) {
           progress.update(static_cast<int>(1000.0 * (static_cast<double>(i) + share)));
         });
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - caseStart).count();
+    const double seconds = secondsSince(caseStart);
     progress.finish();
     std::cout << "[" << i + 1 << "/" << cases.size() << "] " << c.experiment->name << ": "
               << c.scene << ", " << c.trianglesPerBlock << " triangles per block ("
@@ -137,11 +129,13 @@ int runBench(const BenchOptions& o) {
               << std::defaultfloat << std::flush;
     rows.insert(rows.end(), caseRows.begin(), caseRows.end());
   }
-  writeBenchCsv(csv, rows);
-  csv.close();
-  if (!csv)
-    throw std::runtime_error("error while writing " + csvPath.string());
+  return rows;
+}
 
+// Writes summary.md and returns its text, which is also printed.
+std::string writeSummary(const std::filesystem::path& path, const BenchOptions& o,
+                         const std::vector<const Experiment*>& experiments,
+                         const std::vector<BenchRow>& rows) {
   BenchContext context;
   context.command = commandLine(o);
   context.machine = describeMachine();
@@ -149,14 +143,41 @@ int runBench(const BenchOptions& o) {
   context.quick = o.quick;
   std::ostringstream summary;
   writeBenchSummary(summary, experiments, rows, context);
-  const std::filesystem::path summaryPath = dir / "summary.md";
-  std::ofstream(summaryPath) << summary.str();
+  std::ofstream(path) << summary.str();
+  return summary.str();
+}
 
+int runBench(const BenchOptions& o) {
+  if (o.list) {
+    printList();
+    return 0;
+  }
+  const std::vector<const Experiment*> experiments = selectExperiments(o.experiments);
+  requireEverything();
+  const std::vector<BenchCase> cases = listCases(experiments, o.quick);
+
+  // The output directory is made and bench.csv opened before the first case runs, so that a
+  // directory that cannot be written fails at once rather than after the whole bench.
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path csvPath = dir / "bench.csv";
+  std::ofstream csv(csvPath);
+  if (!csv)
+    throw std::runtime_error("--out " + o.out + ": cannot write " + csvPath.string());
+
+  const auto started = std::chrono::steady_clock::now();
+  const std::vector<BenchRow> rows = runCases(cases);
+  writeBenchCsv(csv, rows);
+  csv.close();
+  if (!csv)
+    throw std::runtime_error("error while writing " + csvPath.string());
+
+  const std::filesystem::path summaryPath = dir / "summary.md";
+  const std::string summary = writeSummary(summaryPath, o, experiments, rows);
   const PlotOutcome plots = writeBenchPlots(dir, experiments, rows);
-  const double total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double total = secondsSince(started);
   std::cout << '\n'
-            << summary.str() << "\nrecode bench: " << rows.size() << " rows in " << std::fixed
+            << summary << "\nrecode bench: " << rows.size() << " rows in " << std::fixed
             << std::setprecision(1) << total << " s; wrote " << csvPath.string() << ", "
             << summaryPath.string() << " and " << plots.pngs.size() << " plots\n";
   if (!plots.problem.empty()) {

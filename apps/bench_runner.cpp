@@ -38,22 +38,127 @@ void pose(std::vector<core::ObjectTree>& trees, int frame) {
     t.setFrame(frame);
 }
 
-BenchRow rowFor(const Experiment& experiment, const std::string& scene, int trianglesPerBlock,
-                long long triangles, const std::string& algorithm) {
-  BenchRow row;
-  row.experiment = experiment.name;
-  row.scene = scene;
-  row.trianglesPerBlock = trianglesPerBlock;
-  row.triangles = triangles;
-  row.algorithm = algorithm;
-  return row;
-}
-
 void setTimes(BenchRow& row, const std::vector<double>& us) {
   const core::Moments m = core::moments(us);
   row.totalMs = m.total / 1000.0;
   row.meanMs = m.mean / 1000.0;
   row.sdMs = m.sd / 1000.0;
+}
+
+void addCounters(RecodeCounters& sum, const core::FrameReport& r) {
+  sum.boxTests += r.boxTests;
+  sum.pairTests += r.pairTests;
+  sum.stencilPixelsRead += r.stencilPixelsRead;
+  sum.depthPixelsRead += r.depthPixelsRead;
+}
+
+// What every detector of one case shares: the scene and its object trees, which each run poses
+// frame by frame in turn.
+struct LoadedCase {
+  LoadedCase(const Experiment& e, const std::string& name, int perBlock)
+      : experiment(e),
+        sceneName(name),
+        trianglesPerBlock(perBlock),
+        scene(core::builtinExperimentScene(name, perBlock)) {
+    trees.reserve(scene.objects.size());
+    for (const core::SceneObject& o : scene.objects) {
+      trees.emplace_back(o);
+      triangles += static_cast<long long>(trees.back().triangleCount());
+    }
+    frames = scene.frames.value_or(core::kDefaultRunFrames);
+  }
+
+  BenchRow row(const std::string& algorithm) const {
+    BenchRow r;
+    r.experiment = experiment.name;
+    r.scene = sceneName;
+    r.trianglesPerBlock = trianglesPerBlock;
+    r.triangles = triangles;
+    r.algorithm = algorithm;
+    return r;
+  }
+
+  const Experiment& experiment;
+  std::string sceneName;
+  int trianglesPerBlock;
+  core::Scene scene;
+  std::vector<core::ObjectTree> trees;
+  long long triangles = 0;
+  int frames = 0;
+};
+
+// Counts detections (one a frame, the judge's and every algorithm's) and reports the share done.
+class CaseSteps {
+ public:
+  CaseSteps(const CaseProgress& progress, double work) : progress_(progress), work_(work) {}
+  void operator()() {
+    done_ += 1.0;
+    if (progress_)
+      progress_(done_ / work_);
+  }
+
+ private:
+  const CaseProgress& progress_;
+  double work_;
+  double done_ = 0.0;
+};
+
+// The judge's answers on the frames it judged: the truth the algorithms are scored against.
+struct GroundTruth {
+  explicit GroundTruth(int frames)
+      : pairs(static_cast<std::size_t>(frames)), judged(static_cast<std::size_t>(frames), false) {}
+  std::vector<std::vector<verify::LeafPairId>> pairs;  // by frame; empty where not judged
+  std::vector<bool> judged;
+};
+
+BenchRow runJudge(LoadedCase& c, const std::vector<int>& judged, GroundTruth& truth,
+                  CaseSteps& step) {
+  const std::unique_ptr<verify::SceneDetector> judge = verify::makeExactDetector(c.trees);
+  BenchRow row = c.row(judge->name());
+  std::vector<double> us;
+  for (int k : judged) {
+    pose(c.trees, k);
+    verify::Detection d = judge->detect(c.trees, k);
+    us.push_back(d.collisionUs);
+    row.contacts += static_cast<long long>(d.pairs.size());
+    row.score += verify::scoreDetection(d.pairs, d.pairs);
+    truth.pairs[static_cast<std::size_t>(k)] = std::move(d.pairs);
+    truth.judged[static_cast<std::size_t>(k)] = true;
+    step();
+  }
+  row.frames = static_cast<int>(judged.size());
+  row.judgedFrames = row.frames;
+  setTimes(row, us);
+  return row;
+}
+
+BenchRow runAlgorithm(LoadedCase& c, const AlgorithmSpec& spec, const GroundTruth& truth,
+                      CaseSteps& step) {
+  const std::unique_ptr<verify::SceneDetector> detector = makeDetector(spec, c.scene, c.trees);
+  auto* recode = dynamic_cast<verify::RecodeDetector*>(detector.get());
+  BenchRow row = c.row(spec.name);
+  if (recode)
+    row.recode = RecodeCounters{};
+  pose(c.trees, 0);
+  (void)detector->detect(c.trees, 0);  // warm-up, untimed
+  std::vector<double> us;
+  us.reserve(static_cast<std::size_t>(c.frames));
+  for (int k = 0; k < c.frames; ++k) {
+    pose(c.trees, k);
+    const verify::Detection d = detector->detect(c.trees, k);
+    us.push_back(d.collisionUs);
+    row.contacts += static_cast<long long>(d.pairs.size());
+    if (truth.judged[static_cast<std::size_t>(k)]) {
+      row.score += verify::scoreDetection(truth.pairs[static_cast<std::size_t>(k)], d.pairs);
+      ++row.judgedFrames;
+    }
+    if (recode)
+      addCounters(*row.recode, recode->lastReport());
+    step();
+  }
+  row.frames = c.frames;
+  setTimes(row, us);
+  return row;
 }
 
 }  // namespace
@@ -68,82 +173,17 @@ std::vector<int> judgedFrames(long long triangles, int frames) {
 
 std::vector<BenchRow> runBenchCase(const Experiment& experiment, const std::string& sceneName,
                                    int trianglesPerBlock, const CaseProgress& progress) {
-  const core::Scene scene = core::builtinExperimentScene(sceneName, trianglesPerBlock);
-  std::vector<core::ObjectTree> trees;
-  trees.reserve(scene.objects.size());
-  long long triangles = 0;
-  for (const core::SceneObject& o : scene.objects) {
-    trees.emplace_back(o);
-    triangles += static_cast<long long>(trees.back().triangleCount());
-  }
-  const int frames = scene.frames.value_or(core::kDefaultRunFrames);
-  const std::vector<int> judged = judgedFrames(triangles, frames);
+  LoadedCase c(experiment, sceneName, trianglesPerBlock);
+  const std::vector<int> judged = judgedFrames(c.triangles, c.frames);
   const double work =
       static_cast<double>(judged.size()) +
-      static_cast<double>(frames) * static_cast<double>(experiment.algorithms.size());
-  double done = 0.0;
-  const auto step = [&]() {
-    done += 1.0;
-    if (progress)
-      progress(done / work);
-  };
-
-  // The judge: its answers on the judged frames are the ground truth.
+      static_cast<double>(c.frames) * static_cast<double>(experiment.algorithms.size());
+  CaseSteps step(progress, work);
+  GroundTruth truth(c.frames);
   std::vector<BenchRow> rows;
-  std::vector<std::vector<verify::LeafPairId>> truth(static_cast<std::size_t>(frames));
-  std::vector<bool> isJudged(static_cast<std::size_t>(frames), false);
-  {
-    const std::unique_ptr<verify::SceneDetector> judge = verify::makeExactDetector(trees);
-    BenchRow row = rowFor(experiment, sceneName, trianglesPerBlock, triangles, judge->name());
-    std::vector<double> us;
-    for (int k : judged) {
-      pose(trees, k);
-      verify::Detection d = judge->detect(trees, k);
-      us.push_back(d.collisionUs);
-      row.contacts += static_cast<long long>(d.pairs.size());
-      row.score += verify::scoreDetection(d.pairs, d.pairs);
-      truth[static_cast<std::size_t>(k)] = std::move(d.pairs);
-      isJudged[static_cast<std::size_t>(k)] = true;
-      step();
-    }
-    row.frames = static_cast<int>(judged.size());
-    row.judgedFrames = row.frames;
-    setTimes(row, us);
-    rows.push_back(std::move(row));
-  }
-
-  for (const AlgorithmSpec& spec : experiment.algorithms) {
-    const std::unique_ptr<verify::SceneDetector> detector = makeDetector(spec, scene, trees);
-    auto* recode = dynamic_cast<verify::RecodeDetector*>(detector.get());
-    BenchRow row = rowFor(experiment, sceneName, trianglesPerBlock, triangles, spec.name);
-    if (recode)
-      row.recode = RecodeCounters{};
-    pose(trees, 0);
-    (void)detector->detect(trees, 0);  // warm-up, untimed
-    std::vector<double> us;
-    us.reserve(static_cast<std::size_t>(frames));
-    for (int k = 0; k < frames; ++k) {
-      pose(trees, k);
-      const verify::Detection d = detector->detect(trees, k);
-      us.push_back(d.collisionUs);
-      row.contacts += static_cast<long long>(d.pairs.size());
-      if (isJudged[static_cast<std::size_t>(k)]) {
-        row.score += verify::scoreDetection(truth[static_cast<std::size_t>(k)], d.pairs);
-        ++row.judgedFrames;
-      }
-      if (recode) {
-        const core::FrameReport& r = recode->lastReport();
-        row.recode->boxTests += r.boxTests;
-        row.recode->pairTests += r.pairTests;
-        row.recode->stencilPixelsRead += r.stencilPixelsRead;
-        row.recode->depthPixelsRead += r.depthPixelsRead;
-      }
-      step();
-    }
-    row.frames = frames;
-    setTimes(row, us);
-    rows.push_back(std::move(row));
-  }
+  rows.push_back(runJudge(c, judged, truth, step));
+  for (const AlgorithmSpec& spec : experiment.algorithms)
+    rows.push_back(runAlgorithm(c, spec, truth, step));
   return rows;
 }
 

@@ -30,35 +30,28 @@ nlohmann::json colourJson(Rgb c) {
   return nlohmann::json::array({c.r, c.g, c.b});
 }
 
-}  // namespace
+// The page's head: its title and the style every section shares.
+constexpr const char* kPageHead =
+    "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+    "<title>RECODE step by step</title><style>\n"
+    "body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;"
+    "line-height:1.45;color:#222}\n"
+    "section{border-top:1px solid #ccc;margin-top:2em;padding-top:.5em}\n"
+    "figure{display:inline-block;vertical-align:top;margin:.5em 1.5em .5em 0}\n"
+    "img{image-rendering:pixelated;max-width:100%;height:auto;border:1px solid #888}\n"
+    "figcaption{font-size:.9em;color:#444;max-width:520px}\n"
+    ".sw{display:inline-block;width:1.1em;height:1.1em;border:1px solid #555;"
+    "vertical-align:middle;margin-right:.4em}\n"
+    ".grad{display:inline-block;width:12em;height:1.1em;border:1px solid #555;"
+    "vertical-align:middle;background:linear-gradient(to right,#ffffff,#000000)}\n"
+    "ul.legend{list-style:none;padding-left:0;font-size:.9em}\n"
+    "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #bbb;"
+    "padding:.2em .5em;text-align:left}tr.hit{background:#fff3d6}\n"
+    ".verdict{font-size:1.3em;font-weight:bold}.verdict.yes{color:#b3261e}"
+    ".verdict.no{color:#1e6b2e}\ncode{background:#f2f2f2;padding:0 .2em}\n"
+    "</style></head><body>\n";
 
-void writeIndexHtml(const fs::path& dir, const Page& page) {
-  const core::FrameSpec& f = page.setup.frame;
-  const std::string source = escapeHtml(page.setup.source);
-  std::ostringstream h;
-  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-       "<title>RECODE step by step</title><style>\n"
-       "body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;"
-       "line-height:1.45;color:#222}\n"
-       "section{border-top:1px solid #ccc;margin-top:2em;padding-top:.5em}\n"
-       "figure{display:inline-block;vertical-align:top;margin:.5em 1.5em .5em 0}\n"
-       "img{image-rendering:pixelated;max-width:100%;height:auto;border:1px solid #888}\n"
-       "figcaption{font-size:.9em;color:#444;max-width:520px}\n"
-       ".sw{display:inline-block;width:1.1em;height:1.1em;border:1px solid #555;"
-       "vertical-align:middle;margin-right:.4em}\n"
-       ".grad{display:inline-block;width:12em;height:1.1em;border:1px solid #555;"
-       "vertical-align:middle;background:linear-gradient(to right,#ffffff,#000000)}\n"
-       "ul.legend{list-style:none;padding-left:0;font-size:.9em}\n"
-       "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #bbb;"
-       "padding:.2em .5em;text-align:left}tr.hit{background:#fff3d6}\n"
-       ".verdict{font-size:1.3em;font-weight:bold}.verdict.yes{color:#b3261e}"
-       ".verdict.no{color:#1e6b2e}\ncode{background:#f2f2f2;padding:0 .2em}\n"
-       "</style></head><body>\n";
-  h << "<h1>RECODE step by step</h1>\n<p>Block A: <b>" << escapeHtml(page.setup.nameA)
-    << "</b>, block B: <b>" << escapeHtml(page.setup.nameB) << "</b>, from " << source << ". View "
-    << "along the " << core::toString(f.axis) << " axis, " << f.width << " &times; " << f.height
-    << " pixels, MOR mode <code>" << escapeHtml(page.morMode) << "</code>.</p>\n"
-    << verdictHtml(page.result) << '\n';
+void writeHowItWorks(std::ostream& h, int scale) {
   h << "<h2>How RECODE works, and how to read the pictures</h2>\n"
        "<p>RECODE (REndered COllision DEtection, Baciu, Wong and Sun 1999) decides whether "
        "two convex blocks A and B touch by <i>drawing</i> them, as a graphics card would, "
@@ -79,70 +72,50 @@ void writeIndexHtml(const fs::path& dir, const Page& page) {
        "pass runs on the reference CPU depth/stencil machine, exactly as a GPU back end "
        "would run it.</p>\n"
        "<p>Pictures: each framebuffer pixel is shown as a "
-    << page.scale << " &times; " << page.scale
+    << scale << " &times; " << scale
     << " block (close-ups magnify more), the top of the picture is the top of the frame. "
        "The cyan frame is the MOR; dimmed, hatched pixels are outside the rectangle a step "
        "works in (the step does not touch them). Depth pictures show near as bright and far "
        "as dark. Notation: A<sub>min</sub> and A<sub>max</sub> are the depths where a "
        "pixel's ray enters and leaves A, likewise B<sub>min</sub>, B<sub>max</sub>.</p>\n";
-  for (const Section& s : page.sections) {
-    h << "<section id=\"" << s.id << "\"><h2>" << s.title << "</h2>\n" << s.text << '\n';
-    for (const Picture& p : s.pictures) {
-      h << "<figure><img src=\"" << p.file << "\" width=\"" << p.width << "\" height=\"" << p.height
-        << "\" alt=\"" << p.kind << (p.zoom ? " close-up" : "") << "\"><figcaption>" << p.caption
-        << "<ul class=\"legend\">";
-      if (p.depthLegend)
-        h << "<li>near (" << formatNumber(p.depthNear) << ") <span class=\"grad\"></span> far ("
-          << formatNumber(p.depthFar) << ")</li><li>" << swatch(kDepthZero)
-          << "exactly 0: a clear to 0 left it (nothing drawn here)</li><li>" << swatch(kHatch)
-          << "hatched, dimmed: outside the rectangle this step draws in</li>";
-      for (const LegendEntry& e : p.legend) {
-        h << "<li>" << swatch(e.colour) << e.label;
-        if (e.pixels >= 0)
-          h << " &mdash; " << e.pixels << " px";
-        h << "</li>";
-      }
-      h << "</ul></figcaption></figure>\n";
-    }
-    h << "</section>\n";
-  }
-  h << "<section id=\"verdict\"><h2>Verdict</h2>" << verdictHtml(page.result) << "</section>\n"
-    << "</body></html>\n";
-  writeText(dir / "index.html", h.str());
 }
 
-void writeExplainJson(const fs::path& dir, const Page& page) {
-  nlohmann::json j;
-  const core::FrameSpec& f = page.setup.frame;
-  const core::PairResult& result = page.result;
-  const auto rect = [](const PixelRect& r) {
-    return nlohmann::json::array({r.x0, r.y0, r.x1, r.y1});
-  };
-  j["source"] = page.setup.source;
-  j["objects"] = {page.setup.nameA, page.setup.nameB};
-  j["axis"] = core::toString(f.axis);
-  j["width"] = f.width;
-  j["height"] = f.height;
-  j["scale"] = page.scale;
-  j["mor_mode"] = page.morMode;
-  j["collide"] = result.collide;
-  j["boxes_overlap"] = result.boxesOverlap;
-  j["mor"] = rect(result.mor);
-  j["contact_rect"] = rect(result.contactRect);
-  nlohmann::json counts = nlohmann::json::object();
-  for (int c = 0; c < core::kCaseCount; ++c)
-    counts[std::to_string(c)] = result.caseCounts[static_cast<std::size_t>(c)];
-  j["case_counts"] = counts;
-  j["interfering_pixels"] = result.interferingPixels;
-  nlohmann::json contact;
-  contact["pixels"] = result.contact.pixels;
-  contact["area"] = result.contact.area;
-  contact["max_depth"] = result.contact.maxDepth;
-  if (!result.contact.box.isEmpty()) {
-    const auto& b = result.contact.box;
-    contact["box"] = {{b.min.x(), b.min.y(), b.min.z()}, {b.max.x(), b.max.y(), b.max.z()}};
+void writeFigure(std::ostream& h, const Picture& p) {
+  h << "<figure><img src=\"" << p.file << "\" width=\"" << p.width << "\" height=\"" << p.height
+    << "\" alt=\"" << p.kind << (p.zoom ? " close-up" : "") << "\"><figcaption>" << p.caption
+    << "<ul class=\"legend\">";
+  if (p.depthLegend)
+    h << "<li>near (" << formatNumber(p.depthNear) << ") <span class=\"grad\"></span> far ("
+      << formatNumber(p.depthFar) << ")</li><li>" << swatch(kDepthZero)
+      << "exactly 0: a clear to 0 left it (nothing drawn here)</li><li>" << swatch(kHatch)
+      << "hatched, dimmed: outside the rectangle this step draws in</li>";
+  for (const LegendEntry& e : p.legend) {
+    h << "<li>" << swatch(e.colour) << e.label;
+    if (e.pixels >= 0)
+      h << " &mdash; " << e.pixels << " px";
+    h << "</li>";
   }
-  j["contact"] = contact;
+  h << "</ul></figcaption></figure>\n";
+}
+
+nlohmann::json rectJson(const PixelRect& r) {
+  return nlohmann::json::array({r.x0, r.y0, r.x1, r.y1});
+}
+
+nlohmann::json contactJson(const core::ContactRegion& contact) {
+  nlohmann::json j;
+  j["pixels"] = contact.pixels;
+  j["area"] = contact.area;
+  j["max_depth"] = contact.maxDepth;
+  if (!contact.box.isEmpty()) {
+    const auto& b = contact.box;
+    j["box"] = {{b.min.x(), b.min.y(), b.min.z()}, {b.max.x(), b.max.y(), b.max.z()}};
+  }
+  return j;
+}
+
+// The colours the pictures use, so that a reader of explain.json can decode them.
+nlohmann::json palettesJson() {
   nlohmann::json palettes;
   nlohmann::json cases = nlohmann::json::object();
   for (int c = 0; c < core::kCaseCount; ++c)
@@ -157,10 +130,14 @@ void writeExplainJson(const fs::path& dir, const Page& page) {
                              {"both", colourJson(kColourBoth)},
                              {"neither", colourJson(kEmpty)}};
   palettes["interfering"] = colourJson(kInterfering);
-  j["palettes"] = palettes;
+  return palettes;
+}
+
+// "sections" names each section's files; "pictures" describes every file once.
+void addSectionsJson(nlohmann::json& j, const std::vector<Section>& sectionList) {
   nlohmann::json sections = nlohmann::json::array();
   nlohmann::json pictures = nlohmann::json::array();
-  for (const Section& s : page.sections) {
+  for (const Section& s : sectionList) {
     nlohmann::json files = nlohmann::json::array();
     for (const Picture& p : s.pictures) {
       files.push_back(p.file);
@@ -168,7 +145,7 @@ void writeExplainJson(const fs::path& dir, const Page& page) {
                           {"kind", p.kind},
                           {"section", s.id},
                           {"zoom", p.zoom},
-                          {"region", rect(p.region)},
+                          {"region", rectJson(p.region)},
                           {"scale", p.scale},
                           {"width", p.width},
                           {"height", p.height}});
@@ -177,6 +154,55 @@ void writeExplainJson(const fs::path& dir, const Page& page) {
   }
   j["sections"] = sections;
   j["pictures"] = pictures;
+}
+
+}  // namespace
+
+void writeIndexHtml(const fs::path& dir, const Page& page) {
+  const core::FrameSpec& f = page.setup.frame;
+  const std::string source = escapeHtml(page.setup.source);
+  std::ostringstream h;
+  h << kPageHead;
+  h << "<h1>RECODE step by step</h1>\n<p>Block A: <b>" << escapeHtml(page.setup.nameA)
+    << "</b>, block B: <b>" << escapeHtml(page.setup.nameB) << "</b>, from " << source << ". View "
+    << "along the " << core::toString(f.axis) << " axis, " << f.width << " &times; " << f.height
+    << " pixels, MOR mode <code>" << escapeHtml(page.morMode) << "</code>.</p>\n"
+    << verdictHtml(page.result) << '\n';
+  writeHowItWorks(h, page.scale);
+  for (const Section& s : page.sections) {
+    h << "<section id=\"" << s.id << "\"><h2>" << s.title << "</h2>\n" << s.text << '\n';
+    for (const Picture& p : s.pictures)
+      writeFigure(h, p);
+    h << "</section>\n";
+  }
+  h << "<section id=\"verdict\"><h2>Verdict</h2>" << verdictHtml(page.result) << "</section>\n"
+    << "</body></html>\n";
+  writeText(dir / "index.html", h.str());
+}
+
+void writeExplainJson(const fs::path& dir, const Page& page) {
+  nlohmann::json j;
+  const core::FrameSpec& f = page.setup.frame;
+  const core::PairResult& result = page.result;
+  j["source"] = page.setup.source;
+  j["objects"] = {page.setup.nameA, page.setup.nameB};
+  j["axis"] = core::toString(f.axis);
+  j["width"] = f.width;
+  j["height"] = f.height;
+  j["scale"] = page.scale;
+  j["mor_mode"] = page.morMode;
+  j["collide"] = result.collide;
+  j["boxes_overlap"] = result.boxesOverlap;
+  j["mor"] = rectJson(result.mor);
+  j["contact_rect"] = rectJson(result.contactRect);
+  nlohmann::json counts = nlohmann::json::object();
+  for (int c = 0; c < core::kCaseCount; ++c)
+    counts[std::to_string(c)] = result.caseCounts[static_cast<std::size_t>(c)];
+  j["case_counts"] = counts;
+  j["interfering_pixels"] = result.interferingPixels;
+  j["contact"] = contactJson(result.contact);
+  j["palettes"] = palettesJson();
+  addSectionsJson(j, page.sections);
   writeText(dir / "explain.json", j.dump(2) + "\n");
 }
 

@@ -99,6 +99,7 @@ std::string stepTitle(PairStep step) {
   return "?";
 }
 
+// A declarative table, one paragraph per step: long, but each case reads on its own.
 std::string stepText(PairStep step) {
   switch (step) {
     case PairStep::SetZ:

@@ -53,6 +53,7 @@ cmd::Draw octahedron(float cx, float cy, float r, float cz, float rz) {
   return triangles(std::move(v), std::move(i));
 }
 
+// A declarative table, one block per golden vector: long, but each block reads on its own.
 std::vector<Case> cases() {
   std::vector<Case> out;
   {

@@ -30,6 +30,66 @@ int cellPriority(int c) {
   return kPriority[c];
 }
 
+void printCaseCounts(std::ostream& out, const core::PairResult& r) {
+  out << "  MOR [" << r.mor.x0 << ", " << r.mor.y0 << ") - [" << r.mor.x1 << ", " << r.mor.y1
+      << "): " << r.stencilPixelsRead << " stencil pixels read\n"
+      << "  cases inside the MOR:\n";
+  for (int c = 0; c < core::kCaseCount; ++c)
+    out << "    " << c << "  " << std::left << std::setw(26) << core::caseName(c) << std::right
+        << std::setw(9) << r.caseCounts[static_cast<std::size_t>(c)] << " px"
+        << (core::isInterfering(c) ? "  interference" : "") << "\n";
+}
+
+void printVerdict(std::ostream& out, const core::PairResult& r) {
+  if (!r.collide) {
+    out << "  verdict: no collision\n";
+    return;
+  }
+  out << "  verdict: COLLIDE, " << r.interferingPixels << " interfering pixels\n"
+      << "  contact region: area " << r.contact.area << " (world units^2)";
+  if (!r.contact.box.isEmpty()) {
+    const auto& lo = r.contact.box.min;
+    const auto& hi = r.contact.box.max;
+    out << ", box (" << lo.x() << ", " << lo.y() << ", " << lo.z() << ") - (" << hi.x() << ", "
+        << hi.y() << ", " << hi.z() << "), greatest overlap depth " << r.contact.maxDepth << ", "
+        << r.depthPixelsRead << " depth pixels read";
+  }
+  out << "\n";
+}
+
+void printTiming(std::ostream& out, const core::PairResult& r) {
+  out << "  time " << std::fixed << std::setprecision(0) << r.timing.totalUs << " us:";
+  for (int s = 0; s < core::kPairStepCount; ++s) {
+    const double us = r.timing.stepUs[static_cast<std::size_t>(s)];
+    if (us > 0.0)
+      out << " " << core::toString(static_cast<core::PairStep>(s)) << " " << us;
+  }
+  out << " classify " << r.timing.classifyUs << "\n" << std::defaultfloat;
+}
+
+// At most 72 x 30 characters, each cell the most telling case among its pixels.
+void printCasePicture(std::ostream& out, const core::PairResult& r) {
+  const int cols = std::min(r.mor.width(), 72), rows = std::min(r.mor.height(), 30);
+  out << "  cases in the MOR, top row first ('.' 0, 'a' A only or no contact, 'b' B only, "
+         "'3'-'6' interference):\n";
+  for (int row = rows - 1; row >= 0; --row) {
+    std::string line = "    ";
+    const int y0 = row * r.mor.height() / rows, y1 = (row + 1) * r.mor.height() / rows;
+    for (int col = 0; col < cols; ++col) {
+      const int x0 = col * r.mor.width() / cols, x1 = (col + 1) * r.mor.width() / cols;
+      int shown = 0;
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+          const int c = r.caseMap.at(r.mor.x0 + x, r.mor.y0 + y);
+          if (cellPriority(c) > cellPriority(shown))
+            shown = c;
+        }
+      line += caseGlyph(shown);
+    }
+    out << line << "\n";
+  }
+}
+
 }  // namespace
 
 ordered_json pairResultToJson(const PairSetup& setup, const core::PairRequest& request,
@@ -92,56 +152,11 @@ void printPairReport(std::ostream& out, const PairSetup& setup, const core::Pair
         << "  verdict: no collision\n";
     return;
   }
-  out << "  MOR [" << r.mor.x0 << ", " << r.mor.y0 << ") - [" << r.mor.x1 << ", " << r.mor.y1
-      << "): " << r.stencilPixelsRead << " stencil pixels read\n"
-      << "  cases inside the MOR:\n";
-  for (int c = 0; c < core::kCaseCount; ++c)
-    out << "    " << c << "  " << std::left << std::setw(26) << core::caseName(c) << std::right
-        << std::setw(9) << r.caseCounts[static_cast<std::size_t>(c)] << " px"
-        << (core::isInterfering(c) ? "  interference" : "") << "\n";
-  if (r.collide) {
-    out << "  verdict: COLLIDE, " << r.interferingPixels << " interfering pixels\n"
-        << "  contact region: area " << r.contact.area << " (world units^2)";
-    if (!r.contact.box.isEmpty()) {
-      const auto& lo = r.contact.box.min;
-      const auto& hi = r.contact.box.max;
-      out << ", box (" << lo.x() << ", " << lo.y() << ", " << lo.z() << ") - (" << hi.x() << ", "
-          << hi.y() << ", " << hi.z() << "), greatest overlap depth " << r.contact.maxDepth << ", "
-          << r.depthPixelsRead << " depth pixels read";
-    }
-    out << "\n";
-  } else {
-    out << "  verdict: no collision\n";
-  }
-  out << "  time " << std::fixed << std::setprecision(0) << r.timing.totalUs << " us:";
-  for (int s = 0; s < core::kPairStepCount; ++s) {
-    const double us = r.timing.stepUs[static_cast<std::size_t>(s)];
-    if (us > 0.0)
-      out << " " << core::toString(static_cast<core::PairStep>(s)) << " " << us;
-  }
-  out << " classify " << r.timing.classifyUs << "\n" << std::defaultfloat;
-  if (!picture || r.mor.empty())
-    return;
-  // At most 72 x 30 characters, each cell the most telling case among its pixels.
-  const int cols = std::min(r.mor.width(), 72), rows = std::min(r.mor.height(), 30);
-  out << "  cases in the MOR, top row first ('.' 0, 'a' A only or no contact, 'b' B only, "
-         "'3'-'6' interference):\n";
-  for (int row = rows - 1; row >= 0; --row) {
-    std::string line = "    ";
-    const int y0 = row * r.mor.height() / rows, y1 = (row + 1) * r.mor.height() / rows;
-    for (int col = 0; col < cols; ++col) {
-      const int x0 = col * r.mor.width() / cols, x1 = (col + 1) * r.mor.width() / cols;
-      int shown = 0;
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-          const int c = r.caseMap.at(r.mor.x0 + x, r.mor.y0 + y);
-          if (cellPriority(c) > cellPriority(shown))
-            shown = c;
-        }
-      line += caseGlyph(shown);
-    }
-    out << line << "\n";
-  }
+  printCaseCounts(out, r);
+  printVerdict(out, r);
+  printTiming(out, r);
+  if (picture)
+    printCasePicture(out, r);
 }
 
 std::vector<std::uint8_t> frameCaseImage(const core::FrameSpec& frame, const core::PairResult& r) {

@@ -57,11 +57,14 @@ std::ofstream openForWriting(const std::string& file, const char* option) {
   return out;
 }
 
-int runRunCommand(const RunOptions& o) {
-  if (o.list) {
-    printList();
-    return 0;
-  }
+// o.scene as a file or a built-in, after refusing a name that is neither and the options that
+// do not apply to its kind.
+struct SceneChoice {
+  bool isFile = false;
+  std::optional<int> triangles;  // --triangles-per-block, for a built-in
+};
+
+SceneChoice chooseScene(const RunOptions& o) {
   if (o.scene.empty())
     throw std::invalid_argument("give a scene file or a built-in scene (" + builtinNames() +
                                 "), or --list");
@@ -81,17 +84,36 @@ int runRunCommand(const RunOptions& o) {
   if (isFile && triangles)
     throw std::invalid_argument("--triangles-per-block applies to built-in scenes only; '" +
                                 o.scene + "' is a file");
-  if (!o.writeScene.empty()) {
-    if (!isBuiltin)
-      throw std::invalid_argument("--write-scene writes a built-in scene; '" + o.scene +
-                                  "' is a file");
-    openForWriting(o.writeScene, "--write-scene") << core::builtinSceneJson(o.scene, triangles);
-    std::cerr << "recode run: wrote " << o.scene << " to " << o.writeScene << "\n";
-    return 0;
-  }
-  const core::Scene scene =
-      isFile ? core::loadScene(o.scene) : core::builtinExperimentScene(o.scene, triangles);
+  if (!o.writeScene.empty() && !isBuiltin)
+    throw std::invalid_argument("--write-scene writes a built-in scene; '" + o.scene +
+                                "' is a file");
+  return {isFile, triangles};
+}
 
+// Runs the frames, each reported as the options ask, up to the first contact with
+// --stop-on-contact; under --json the frames' objects are collected into `frames`.
+core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulation& sim,
+                              std::ofstream* csv, nlohmann::ordered_json& frames) {
+  core::RunStatisticsAccumulator stats;
+  ProgressBar progress(frameCount);
+  for (int k = 0; k < frameCount; ++k) {
+    const core::FrameReport report = sim.runFrame(k);
+    stats.add(report);
+    if (csv)
+      *csv << csvRow(report);
+    if (o.json)
+      frames.push_back(frameToJson(sim, report));
+    else if (!o.quiet)
+      printFrame(std::cout, sim, report);
+    progress.update(k + 1);
+    if (o.stopOnContact && !report.contacts.empty())
+      break;
+  }
+  progress.finish();
+  return stats.result(static_cast<long long>(sim.triangleCount()));
+}
+
+void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   core::RunOptions options;
   options.overrides = o.frame.overrides();
   options.mor = o.frame.mor();
@@ -112,23 +134,7 @@ int runRunCommand(const RunOptions& o) {
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
   if (!o.json)
     printRunHeader(std::cout, run, sim);
-  core::RunStatisticsAccumulator stats;
-  ProgressBar progress(run.frames);
-  for (int k = 0; k < run.frames; ++k) {
-    const core::FrameReport report = sim.runFrame(k);
-    stats.add(report);
-    if (csv)
-      *csv << csvRow(report);
-    if (o.json)
-      frames.push_back(frameToJson(sim, report));
-    else if (!o.quiet)
-      printFrame(std::cout, sim, report);
-    progress.update(k + 1);
-    if (o.stopOnContact && !report.contacts.empty())
-      break;
-  }
-  progress.finish();
-  const core::RunStatistics result = stats.result(static_cast<long long>(sim.triangleCount()));
+  const core::RunStatistics result = runFrames(o, run.frames, sim, csv ? &*csv : nullptr, frames);
   if (o.json) {
     nlohmann::ordered_json j = runToJson(run, sim);
     j["frames"] = frames;
@@ -139,6 +145,24 @@ int runRunCommand(const RunOptions& o) {
   }
   if (csv && !*csv)
     throw std::runtime_error("--csv " + o.csv + ": error while writing");
+}
+
+int runRunCommand(const RunOptions& o) {
+  if (o.list) {
+    printList();
+    return 0;
+  }
+  const SceneChoice choice = chooseScene(o);
+  if (!o.writeScene.empty()) {
+    openForWriting(o.writeScene, "--write-scene")
+        << core::builtinSceneJson(o.scene, choice.triangles);
+    std::cerr << "recode run: wrote " << o.scene << " to " << o.writeScene << "\n";
+    return 0;
+  }
+  simulate(o,
+           choice.isFile ? core::loadScene(o.scene)
+                         : core::builtinExperimentScene(o.scene, choice.triangles),
+           choice.isFile);
   return 0;
 }
 

@@ -39,23 +39,37 @@ Json group(const std::string& name, std::vector<Json> children, const Json& posi
   return n;
 }
 
-std::vector<Json> makeObjects(int t) {
-  std::vector<Json> objects;
-  // Cylinders and cones stand on their local z = 0; Ry(90) lays one along x.
-  objects.push_back(
-      group("dumbbell", {node("bar", cylinderBlock(0.1, 1.6, t), vec(-0.8, 0, 0), vec(0, 90, 0)),
-                         node("left weight", sphereBlock(0.35, t), vec(-0.8, 0, 0)),
-                         node("right weight", sphereBlock(0.35, t), vec(0.8, 0, 0))}));
-  std::vector<Json> table = {node("top", cylinderBlock(0.7, 0.1, t), vec(0, 0, 0.35))};
+// Cylinders and cones stand on their local z = 0; Ry(90) lays one along x.
+
+Json dumbbell(int t) {
+  return group("dumbbell", {node("bar", cylinderBlock(0.1, 1.6, t), vec(-0.8, 0, 0), vec(0, 90, 0)),
+                            node("left weight", sphereBlock(0.35, t), vec(-0.8, 0, 0)),
+                            node("right weight", sphereBlock(0.35, t), vec(0.8, 0, 0))});
+}
+
+// Four legs of a table or chair, at (+-offset, +-offset, z).
+void addLegs(std::vector<Json>& parts, double radius, double length, double offset, double z,
+             int t) {
   for (int i = 0; i < 4; ++i)
-    table.push_back(node("leg " + std::to_string(i), cylinderBlock(0.06, 0.7, t),
-                         vec(i % 2 ? 0.4 : -0.4, i / 2 ? 0.4 : -0.4, -0.35)));
-  objects.push_back(group("table", table));
-  objects.push_back(
-      group("snowman", {node("base", sphereBlock(0.45, t), vec(0, 0, -0.5)),
-                        node("body", sphereBlock(0.35, t), vec(0, 0, 0.2)),
-                        node("head", sphereBlock(0.25, t), vec(0, 0, 0.75)),
-                        node("nose", coneBlock(0.06, 0.25, t), vec(0.2, 0, 0.75), vec(0, 90, 0))}));
+    parts.push_back(node("leg " + std::to_string(i), cylinderBlock(radius, length, t),
+                         vec(i % 2 ? offset : -offset, i / 2 ? offset : -offset, z)));
+}
+
+Json table(int t) {
+  std::vector<Json> parts = {node("top", cylinderBlock(0.7, 0.1, t), vec(0, 0, 0.35))};
+  addLegs(parts, 0.06, 0.7, 0.4, -0.35, t);
+  return group("table", parts);
+}
+
+Json snowman(int t) {
+  return group("snowman",
+               {node("base", sphereBlock(0.45, t), vec(0, 0, -0.5)),
+                node("body", sphereBlock(0.35, t), vec(0, 0, 0.2)),
+                node("head", sphereBlock(0.25, t), vec(0, 0, 0.75)),
+                node("nose", coneBlock(0.06, 0.25, t), vec(0.2, 0, 0.75), vec(0, 90, 0))});
+}
+
+Json rocket(int t) {
   std::vector<Json> fins;
   for (int i = 0; i < 3; ++i)
     fins.push_back(
@@ -65,41 +79,57 @@ std::vector<Json> makeObjects(int t) {
   for (int i = 0; i < 3; ++i)
     finGroups.push_back(group("fin " + std::to_string(i), {fins[static_cast<std::size_t>(i)]},
                               Json(), vec(0, 0, 120.0 * i)));
-  objects.push_back(
-      group("rocket", {node("body", cappedConeBlock(0.25, 0.25, 1.0, t), vec(0, 0, -0.6)),
-                       node("nose", coneBlock(0.25, 0.5, t), vec(0, 0, 0.4)),
-                       group("fins", std::move(finGroups), vec(0, 0, -0.6))}));
-  objects.push_back(
-      group("jack", {node("x", cappedConeBlock(0.1, 0.1, 1.2, t), vec(-0.6, 0, 0), vec(0, 90, 0)),
-                     node("y", cappedConeBlock(0.1, 0.1, 1.2, t), vec(0, -0.6, 0), vec(-90, 0, 0)),
-                     node("z", cappedConeBlock(0.1, 0.1, 1.2, t), vec(0, 0, -0.6)),
-                     node("hub", sphereBlock(0.2, t), vec(0, 0, 0))}));
-  objects.push_back(group("lamp", {node("base", cylinderBlock(0.4, 0.08, t), vec(0, 0, -0.6)),
-                                   node("pole", cylinderBlock(0.04, 0.9, t), vec(0, 0, -0.52)),
-                                   node("shade", coneBlock(0.35, 0.4, t), vec(0, 0, 0.2)),
-                                   node("bulb", sphereBlock(0.12, t), vec(0, 0, 0.3))}));
-  std::vector<Json> chair = {node("seat", cylinderBlock(0.45, 0.08, t), vec(0, 0, 0)),
+  return group("rocket", {node("body", cappedConeBlock(0.25, 0.25, 1.0, t), vec(0, 0, -0.6)),
+                          node("nose", coneBlock(0.25, 0.5, t), vec(0, 0, 0.4)),
+                          group("fins", std::move(finGroups), vec(0, 0, -0.6))});
+}
+
+Json jack(int t) {
+  return group("jack",
+               {node("x", cappedConeBlock(0.1, 0.1, 1.2, t), vec(-0.6, 0, 0), vec(0, 90, 0)),
+                node("y", cappedConeBlock(0.1, 0.1, 1.2, t), vec(0, -0.6, 0), vec(-90, 0, 0)),
+                node("z", cappedConeBlock(0.1, 0.1, 1.2, t), vec(0, 0, -0.6)),
+                node("hub", sphereBlock(0.2, t), vec(0, 0, 0))});
+}
+
+Json lamp(int t) {
+  return group("lamp", {node("base", cylinderBlock(0.4, 0.08, t), vec(0, 0, -0.6)),
+                        node("pole", cylinderBlock(0.04, 0.9, t), vec(0, 0, -0.52)),
+                        node("shade", coneBlock(0.35, 0.4, t), vec(0, 0, 0.2)),
+                        node("bulb", sphereBlock(0.12, t), vec(0, 0, 0.3))});
+}
+
+Json chair(int t) {
+  std::vector<Json> parts = {node("seat", cylinderBlock(0.45, 0.08, t), vec(0, 0, 0)),
                              node("back", ellipsoidBlock(0.05, 0.4, 0.35, t), vec(-0.42, 0, 0.4))};
-  for (int i = 0; i < 4; ++i)
-    chair.push_back(node("leg " + std::to_string(i), cylinderBlock(0.04, 0.55, t),
-                         vec(i % 2 ? 0.3 : -0.3, i / 2 ? 0.3 : -0.3, -0.55)));
-  objects.push_back(group("chair", chair));
+  addLegs(parts, 0.04, 0.55, 0.3, -0.55, t);
+  return group("chair", parts);
+}
+
+Json molecule(int t) {
   // Four arms in tetrahedral directions (109.47 degrees apart).
-  std::vector<Json> molecule = {node("core", sphereBlock(0.3, t), vec(0, 0, 0))};
+  std::vector<Json> parts = {node("core", sphereBlock(0.3, t), vec(0, 0, 0))};
   const double tilts[4][3] = {{0, 0, 0}, {109.47, 0, 0}, {109.47, 0, 120}, {109.47, 0, 240}};
   for (int i = 0; i < 4; ++i) {
     const auto& r = tilts[i];
-    molecule.push_back(group("arm " + std::to_string(i),
-                             {node("bond", cappedConeBlock(0.06, 0.06, 0.5, t), vec(0, 0, 0.25)),
-                              node("atom", sphereBlock(0.18, t), vec(0, 0, 0.9))},
-                             Json(), vec(r[0], r[1], r[2])));
+    parts.push_back(group("arm " + std::to_string(i),
+                          {node("bond", cappedConeBlock(0.06, 0.06, 0.5, t), vec(0, 0, 0.25)),
+                           node("atom", sphereBlock(0.18, t), vec(0, 0, 0.9))},
+                          Json(), vec(r[0], r[1], r[2])));
   }
-  objects.push_back(group("molecule", molecule));
-  objects.push_back(group("tree", {node("trunk", cylinderBlock(0.1, 0.5, t), vec(0, 0, -0.8)),
-                                   node("low", coneBlock(0.5, 0.6, t), vec(0, 0, -0.3)),
-                                   node("middle", coneBlock(0.4, 0.6, t), vec(0, 0, 0.0)),
-                                   node("top", coneBlock(0.3, 0.6, t), vec(0, 0, 0.3))}));
-  return objects;
+  return group("molecule", parts);
+}
+
+Json tree(int t) {
+  return group("tree", {node("trunk", cylinderBlock(0.1, 0.5, t), vec(0, 0, -0.8)),
+                        node("low", coneBlock(0.5, 0.6, t), vec(0, 0, -0.3)),
+                        node("middle", coneBlock(0.4, 0.6, t), vec(0, 0, 0.0)),
+                        node("top", coneBlock(0.3, 0.6, t), vec(0, 0, 0.3))});
+}
+
+std::vector<Json> makeObjects(int t) {
+  return {dumbbell(t), table(t), snowman(t),  rocket(t), jack(t),
+          lamp(t),     chair(t), molecule(t), tree(t)};
 }
 
 }  // namespace

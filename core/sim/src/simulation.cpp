@@ -25,6 +25,46 @@ int roundUpToGranule(int n) {
   return std::min(rounded, raster::kMaxFramebufferSize);
 }
 
+// Every object's boxes brought up to its pose; returns the roots' boxes for the broad phase.
+std::vector<Aabb> updateRootBoxes(std::vector<ObjectTree>& objects) {
+  std::vector<Aabb> roots;
+  roots.reserve(objects.size());
+  for (ObjectTree& object : objects) {
+    object.updateBounds();
+    roots.push_back(object.root().worldAabb);
+  }
+  return roots;
+}
+
+// World meshes of the leaves drawn this frame, made once per leaf.
+class LeafMeshes {
+ public:
+  explicit LeafMeshes(const std::vector<ObjectTree>& objects) : objects_(objects) {}
+
+  const TriangleMesh& of(int object, int leaf) {
+    auto [it, added] = meshes_.try_emplace({object, leaf});
+    if (added)
+      it->second = objects_[static_cast<std::size_t>(object)].worldMesh(leaf);
+    return it->second;
+  }
+
+ private:
+  const std::vector<ObjectTree>& objects_;
+  std::map<std::pair<int, int>, TriangleMesh> meshes_;
+};
+
+// Counts one pair test into the report; a contact keeps its result without the case map, to
+// keep reports small.
+void addPairTest(FrameReport& report, int ia, int ib, const LeafPair& lp, PairResult result) {
+  ++report.pairTests;
+  report.stencilPixelsRead += result.stencilPixelsRead;
+  report.depthPixelsRead += result.depthPixelsRead;
+  if (result.collide) {
+    result.caseMap = {};
+    report.contacts.push_back({ia, ib, lp.leafA, lp.leafB, std::move(result)});
+  }
+}
+
 }  // namespace
 
 double runPixelSize(const ViewSpec& view, const Aabb& bounds, const FrameOverrides& overrides) {
@@ -101,24 +141,10 @@ FrameReport Simulation::runFrame(int frame) {
     object.setFrame(frame);
   const Clock::time_point posed = Clock::now();
 
-  std::vector<Aabb> roots;
-  roots.reserve(objects_.size());
-  for (ObjectTree& object : objects_) {
-    object.updateBounds();
-    roots.push_back(object.root().worldAabb);
-  }
-  const std::vector<std::pair<int, int>> candidates = broadPhase_.update(roots);
+  const std::vector<std::pair<int, int>> candidates = broadPhase_.update(updateRootBoxes(objects_));
   report.objectPairs = static_cast<long long>(candidates.size());
 
-  // World meshes of the leaves drawn this frame, made once per leaf.
-  std::map<std::pair<int, int>, TriangleMesh> meshes;
-  const auto meshOf = [&](int object, int leaf) -> const TriangleMesh& {
-    auto [it, added] = meshes.try_emplace({object, leaf});
-    if (added)
-      it->second = objects_[static_cast<std::size_t>(object)].worldMesh(leaf);
-    return it->second;
-  };
-
+  LeafMeshes meshes(objects_);
   std::vector<LeafPair> leafPairs;
   for (const auto& [ia, ib] : candidates) {
     const ObjectTree& a = objects_[static_cast<std::size_t>(ia)];
@@ -136,18 +162,12 @@ FrameReport Simulation::runFrame(int frame) {
         request.contact = options_.contact;
         raster::DepthStencilDevice& device =
             deviceFor(request.frame.width, request.frame.height, report.deviceSetupUs);
-        result = collidePair(device, meshOf(ia, lp.leafA), meshOf(ib, lp.leafB), request);
+        result = collidePair(device, meshes.of(ia, lp.leafA), meshes.of(ib, lp.leafB), request);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument("frame " + std::to_string(frame) + ", blocks \"" + na.path +
                                     "\" and \"" + nb.path + "\": " + e.what());
       }
-      ++report.pairTests;
-      report.stencilPixelsRead += result.stencilPixelsRead;
-      report.depthPixelsRead += result.depthPixelsRead;
-      if (result.collide) {
-        result.caseMap = {};
-        report.contacts.push_back({ia, ib, lp.leafA, lp.leafB, std::move(result)});
-      }
+      addPairTest(report, ia, ib, lp, std::move(result));
     }
   }
   const Clock::time_point done = Clock::now();
