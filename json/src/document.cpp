@@ -278,10 +278,23 @@ std::int64_t JsonFieldReader::integerInRange(const json& value, const std::strin
   return x;
 }
 
-std::string JsonFieldReader::nonEmptyString(const json& value, const std::string& path) const {
+const json& JsonFieldReader::member(const json& object, const std::string& path,
+                                    std::string_view key) const {
+  requireObject(object, path);
+  const auto found = object.find(key);
+  if (found == object.end())
+    fail(path, "missing key \"" + std::string(key) + "\"");
+  return *found;
+}
+
+std::string JsonFieldReader::string(const json& value, const std::string& path) const {
   if (!value.is_string())
     fail(path, "expected a string, got " + describeJsonValue(value));
-  std::string s = value.get<std::string>();
+  return value.get<std::string>();
+}
+
+std::string JsonFieldReader::nonEmptyString(const json& value, const std::string& path) const {
+  std::string s = string(value, path);
   if (s.empty())
     fail(path, "expected a non-empty string, got \"\"");
   return s;

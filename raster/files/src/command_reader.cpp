@@ -63,8 +63,7 @@ class CommandFields {
 // Each command's keys are checked before any of its values, so an unknown key is reported
 // ahead of a wrong value.
 Command Reader::command(const json& c, const std::string& path) const {
-  if (!c.is_object())
-    fail(path, "expected an object");
+  requireObject(c, path);
   const std::string op = string(member(c, path, "op"), childPath(path, "op"));
   const CommandFields f(*this, c, path);
   if (op == "scissor") {

@@ -19,7 +19,8 @@ using nlohmann::json;
 using recode::json::childPath;
 
 // Walks a parsed document, remembering the JSON path of every value it reads so that each
-// error names where it is. The problems are worded here; the layer words the paths.
+// error names where it is. What is read and checked is the layer's (recode::json); the file
+// formats add their own rules (names of enumerations, buffer shapes, the format string).
 class Reader {
  public:
   explicit Reader(std::string_view source) : fields_(std::string(source)) {}
@@ -28,47 +29,33 @@ class Reader {
     fields_.fail(path, problem);
   }
 
+  // The typed reads are the JSON reading layer's, so golden and command-stream files word their
+  // problems as scene files do.
   const json& member(const json& obj, const std::string& path, const char* key) const {
-    if (!obj.contains(key))
-      fail(path, std::string("missing key \"") + key + "\"");
-    return obj.at(key);
+    return fields_.member(obj, path, key);
+  }
+
+  void requireObject(const json& value, const std::string& path) const {
+    fields_.requireObject(value, path);
   }
 
   void onlyKeys(const json& obj, const std::string& path,
                 std::initializer_list<std::string_view> allowed) const {
-    if (!obj.is_object())
-      fail(path, "expected an object");
-    for (const auto& [key, value] : obj.items()) {
-      bool known = false;
-      for (std::string_view a : allowed)
-        known = known || a == key;
-      if (!known)
-        fail(childPath(path, key), "unknown key");
-    }
+    fields_.requireObject(obj, path);
+    fields_.requireOnlyKeys(obj, path, allowed);
   }
 
   std::int64_t integer(const json& v, const std::string& path, std::int64_t lo,
                        std::int64_t hi) const {
-    if (!v.is_number_integer())
-      fail(path, "expected an integer");
-    const std::int64_t x = v.get<std::int64_t>();
-    if (x < lo || x > hi) {
-      fail(path, "value " + std::to_string(x) + " outside [" + std::to_string(lo) + ", " +
-                     std::to_string(hi) + "]");
-    }
-    return x;
+    return fields_.integerInRange(v, path, lo, hi);
   }
 
   double number(const json& v, const std::string& path) const {
-    if (!v.is_number())
-      fail(path, "expected a number");
-    return v.get<double>();
+    return fields_.finiteNumber(v, path);
   }
 
   std::string string(const json& v, const std::string& path) const {
-    if (!v.is_string())
-      fail(path, "expected a string");
-    return v.get<std::string>();
+    return fields_.string(v, path);
   }
 
   template <class Enum>

@@ -87,8 +87,7 @@ json rows(const std::vector<T>& buffer, int width, int height) {
 // or the JSON path.
 json parseDocument(std::string_view text, std::string_view source) {
   json doc = recode::json::parseJsonDocument(text, std::string(source));
-  if (!doc.is_object())
-    Reader(source).fail("", "expected an object");
+  Reader(source).requireObject(doc, "");
   return doc;
 }
 

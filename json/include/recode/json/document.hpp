@@ -64,6 +64,10 @@ class JsonFieldReader {
   // An integer in lo..hi.
   [[nodiscard]] std::int64_t integerInRange(const nlohmann::json& value, const std::string& path,
                                             std::int64_t lo, std::int64_t hi) const;
+  // The member `key` of the object at `path`; "missing key" names it when absent.
+  [[nodiscard]] const nlohmann::json& member(const nlohmann::json& object, const std::string& path,
+                                             std::string_view key) const;
+  [[nodiscard]] std::string string(const nlohmann::json& value, const std::string& path) const;
   [[nodiscard]] std::string nonEmptyString(const nlohmann::json& value,
                                            const std::string& path) const;
   // An array of exactly `size` elements (returned as is); `what` describes the expected
