@@ -57,13 +57,15 @@ std::string describe(const Eigen::Vector3d& p) {
   return s.str();
 }
 
-// Rule (a): CGAL says intersect, RECODE says apart. Looks for a pixel that the device must have
-// seen interfere; none means a resolution miss.
-void judgeMiss(const ExactIntersection& exact, const JudgeFrame& f, const core::TriangleMesh& a,
-               const core::TriangleMesh& b, CgalJudgement& j) {
-  // Pixels whose centres lie in the exact box's projection, one more on every side against
-  // rounding (the test below does not depend on the box: the box only limits the search). An
-  // empty or non-finite box (an inconsistent ExactIntersection) searches the whole frame.
+// Pixels, inclusive: the range that rule (a) searches.
+struct PixelSpan {
+  int x0, x1, y0, y1;
+};
+
+// Where rule (a) looks: pixels whose centres lie in the exact box's projection, one more on every
+// side against rounding (the test does not depend on the box: the box only limits the search). An
+// empty or non-finite box (an inconsistent ExactIntersection) searches the whole frame.
+PixelSpan missSearchSpan(const ExactIntersection& exact, const JudgeFrame& f) {
   const bool usable =
       !exact.box.isEmpty() && exact.box.min.allFinite() && exact.box.max.allFinite();
   const PlaneBox box = toPlane(f.view, exact.box);
@@ -76,67 +78,90 @@ void judgeMiss(const ExactIntersection& exact, const JudgeFrame& f, const core::
     const double i = std::floor((hi - origin) / size - 0.5) + 1.0;
     return static_cast<int>(std::clamp(i, -1.0, static_cast<double>(count - 1)));
   };
-  const int i0 = usable ? first(box.min.x(), w.umin, f.pixelU, f.view.width()) : 0;
-  const int i1 = usable ? last(box.max.x(), w.umin, f.pixelU, f.view.width()) : f.view.width() - 1;
-  const int j0 = usable ? first(box.min.y(), w.vmin, f.pixelV, f.view.height()) : 0;
-  const int j1 =
-      usable ? last(box.max.y(), w.vmin, f.pixelV, f.view.height()) : f.view.height() - 1;
+  if (!usable)
+    return {0, f.view.width() - 1, 0, f.view.height() - 1};
+  return {first(box.min.x(), w.umin, f.pixelU, f.view.width()),
+          last(box.max.x(), w.umin, f.pixelU, f.view.width()),
+          first(box.min.y(), w.vmin, f.pixelV, f.view.height()),
+          last(box.max.y(), w.vmin, f.pixelV, f.view.height())};
+}
 
+// The blocks' overlap along the axis that holds over pixel (x, y)'s whole +-1/256 px square, or
+// nullopt where a corner's line misses a block: only such an overlap must have been seen.
+std::optional<double> robustOverlap(const ViewLineProbe& pa, const ViewLineProbe& pb,
+                                    const JudgeFrame& f, int x, int y) {
+  double nearestFar = std::numeric_limits<double>::infinity();
+  double farthestNear = -std::numeric_limits<double>::infinity();
+  for (int corner = 0; corner < 4; ++corner) {
+    const double u = f.centreU(x) + ((corner & 1) ? f.edgeU : -f.edgeU);
+    const double v = f.centreV(y) + ((corner & 2) ? f.edgeV : -f.edgeV);
+    const std::optional<AxisRange> ra = pa.line(u, v), rb = pb.line(u, v);
+    if (!ra || !rb)
+      return std::nullopt;
+    nearestFar = std::min({nearestFar, ra->hi, rb->hi});
+    farthestNear = std::max({farthestNear, ra->lo, rb->lo});
+  }
+  // Over the square the near surfaces (convex functions of (u, v)) peak at a corner and the far
+  // surfaces (concave) bottom out at one: this overlap holds everywhere in it.
+  return nearestFar - farthestNear;
+}
+
+// What rule (a)'s search found: the largest robust overlap and how many pixels had one at all.
+struct MissScan {
   double best = -std::numeric_limits<double>::infinity();
   long long robustPixels = 0;  // pixels whose whole square lies over both blocks
-  if (i0 <= i1 && j0 <= j1) {
-    const double u0 = f.centreU(i0) - f.edgeU, u1 = f.centreU(i1) + f.edgeU;
-    const double v0 = f.centreV(j0) - f.edgeV, v1 = f.centreV(j1) + f.edgeV;
-    const ViewLineProbe pa(a, f.view, u0, v0, u1, v1), pb(b, f.view, u0, v0, u1, v1);
-    for (int y = j0; y <= j1; ++y) {
-      for (int x = i0; x <= i1; ++x) {
-        double nearestFar = std::numeric_limits<double>::infinity();
-        double farthestNear = -std::numeric_limits<double>::infinity();
-        bool covered = true;
-        for (int corner = 0; corner < 4 && covered; ++corner) {
-          const double u = f.centreU(x) + ((corner & 1) ? f.edgeU : -f.edgeU);
-          const double v = f.centreV(y) + ((corner & 2) ? f.edgeV : -f.edgeV);
-          const std::optional<AxisRange> ra = pa.line(u, v), rb = pb.line(u, v);
-          covered = ra && rb;
-          if (covered) {
-            nearestFar = std::min({nearestFar, ra->hi, rb->hi});
-            farthestNear = std::max({farthestNear, ra->lo, rb->lo});
-          }
-        }
-        if (!covered)
-          continue;
-        ++robustPixels;
-        // Over the square the near surfaces (convex functions of (u, v)) peak at a corner and
-        // the far surfaces (concave) bottom out at one: this overlap holds everywhere in it.
-        const double overlap = nearestFar - farthestNear;
-        if (overlap > best) {
-          best = overlap;
-          j.pixelX = x;
-          j.pixelY = y;
-        }
+};
+
+// Rule (a)'s search: the pixel with the largest robust overlap goes into j, as the one to show.
+MissScan scanMiss(const PixelSpan& span, const JudgeFrame& f, const core::TriangleMesh& a,
+                  const core::TriangleMesh& b, CgalJudgement& j) {
+  MissScan scan;
+  if (span.x0 > span.x1 || span.y0 > span.y1)
+    return scan;
+  const double u0 = f.centreU(span.x0) - f.edgeU, u1 = f.centreU(span.x1) + f.edgeU;
+  const double v0 = f.centreV(span.y0) - f.edgeV, v1 = f.centreV(span.y1) + f.edgeV;
+  const ViewLineProbe pa(a, f.view, u0, v0, u1, v1), pb(b, f.view, u0, v0, u1, v1);
+  for (int y = span.y0; y <= span.y1; ++y) {
+    for (int x = span.x0; x <= span.x1; ++x) {
+      const std::optional<double> overlap = robustOverlap(pa, pb, f, x, y);
+      if (!overlap)
+        continue;
+      ++scan.robustPixels;
+      if (*overlap > scan.best) {
+        scan.best = *overlap;
+        j.pixelX = x;
+        j.pixelY = y;
       }
     }
   }
+  return scan;
+}
+
+// Rule (a): CGAL says intersect, RECODE says apart. Looks for a pixel that the device must have
+// seen interfere; none means a resolution miss.
+void judgeMiss(const ExactIntersection& exact, const JudgeFrame& f, const core::TriangleMesh& a,
+               const core::TriangleMesh& b, CgalJudgement& j) {
+  const MissScan scan = scanMiss(missSearchSpan(exact, f), f, a, b, j);
   std::ostringstream s;
   s.precision(6);
   s << "CGAL: the blocks intersect (volume " << exact.volume << ", box " << describe(exact.box.min)
     << " to " << describe(exact.box.max) << "); RECODE: apart; ";
-  if (robustPixels == 0) {
+  if (scan.robustPixels == 0) {
     j.verdict = VerdictCheck::ResolutionMiss;
     s << "resolution miss: no pixel centre of the frame lies, with its +-1/256 px square, over "
          "both blocks near the intersection";
-  } else if (best <= f.tolerance) {
+  } else if (scan.best <= f.tolerance) {
     j.verdict = VerdictCheck::ResolutionMiss;
     s << "resolution miss: the largest overlap holding over a whole +-1/256 px pixel square is "
-      << best << " (" << f.inSteps(best) << " depth steps; negative: apart there) at pixel ("
-      << j.pixelX << ", " << j.pixelY << "), not above the tolerance " << f.tolerance << " ("
-      << kDepthToleranceLsb << " steps)";
+      << scan.best << " (" << f.inSteps(scan.best)
+      << " depth steps; negative: apart there) at pixel (" << j.pixelX << ", " << j.pixelY
+      << "), not above the tolerance " << f.tolerance << " (" << kDepthToleranceLsb << " steps)";
   } else {
     j.verdict = VerdictCheck::Disagree;
     s << "pixel (" << j.pixelX << ", " << j.pixelY << ") lies with its +-1/256 px square over "
-      << "both blocks, which overlap there by at least " << best << " (" << f.inSteps(best)
-      << " depth steps), beyond the tolerance " << f.tolerance << " (" << kDepthToleranceLsb
-      << " steps)";
+      << "both blocks, which overlap there by at least " << scan.best << " ("
+      << f.inSteps(scan.best) << " depth steps), beyond the tolerance " << f.tolerance << " ("
+      << kDepthToleranceLsb << " steps)";
   }
   j.reason = s.str();
 }
