@@ -166,58 +166,94 @@ void judgeMiss(const ExactIntersection& exact, const JudgeFrame& f, const core::
   j.reason = s.str();
 }
 
-// Rule (b): CGAL says apart, RECODE says collide. Every interfering pixel must be explained by
-// rounding: both blocks within its square, their depth ranges there within the tolerance.
-void judgeTouch(const JudgeFrame& f, const core::TriangleMesh& a, const core::TriangleMesh& b,
-                const core::PairResult& r, CgalJudgement& j) {
+// Whether the case map covers exactly the MOR: only then can its pixels be read by position.
+bool caseMapFitsMor(const core::PairResult& r) {
+  return r.caseMap.rect == r.mor && r.caseMap.data.size() == static_cast<std::size_t>(r.mor.area());
+}
+
+// An interfering pixel and the blocks' depth ranges within its +-1/256 px square (nullopt: absent).
+struct InterferingPixel {
+  int x, y;
+  double cu, cv;  // the centre on the image plane
+  std::optional<AxisRange> a, b;
+};
+
+// Visits every interfering pixel of the MOR in row order: rule (b) and the contact-box
+// explanation both test each such pixel's square, so one pair of probes over the MOR serves.
+template <typename Visit>
+void forEachInterferingPixel(const JudgeFrame& f, const core::TriangleMesh& a,
+                             const core::TriangleMesh& b, const core::PairResult& r,
+                             Visit&& visit) {
   const raster::PixelRect& m = r.mor;
-  const std::size_t expected = static_cast<std::size_t>(m.area());
-  std::ostringstream s;
-  s.precision(6);
-  s << "CGAL: the blocks are apart; RECODE: collide; ";
-  if (r.caseMap.rect != m || r.caseMap.data.size() != expected) {
-    j.verdict = VerdictCheck::Disagree;
-    s << "the case map holds " << r.caseMap.data.size() << " pixels, the MOR " << expected;
-    j.reason = s.str();
-    return;
-  }
   const double u0 = f.centreU(m.x0) - f.edgeU, u1 = f.centreU(m.x1 - 1) + f.edgeU;
   const double v0 = f.centreV(m.y0) - f.edgeV, v1 = f.centreV(m.y1 - 1) + f.edgeV;
   const ViewLineProbe pa(a, f.view, u0, v0, u1, v1), pb(b, f.view, u0, v0, u1, v1);
-  long long interfering = 0;
-  double worstGap = -std::numeric_limits<double>::infinity();
-  std::optional<std::string> missing;  // a block absent from an interfering pixel's square
   for (int y = m.y0; y < m.y1; ++y) {
     for (int x = m.x0; x < m.x1; ++x) {
       if (!core::isInterfering(r.caseMap.at(x, y)))
         continue;
-      ++interfering;
       const double cu = f.centreU(x), cv = f.centreV(y);
-      const auto ra = pa.prism(cu - f.edgeU, cv - f.edgeV, cu + f.edgeU, cv + f.edgeV);
-      const auto rb = pb.prism(cu - f.edgeU, cv - f.edgeV, cu + f.edgeU, cv + f.edgeV);
-      if (!ra || !rb) {
-        if (!missing) {
-          missing = std::string(!ra ? "A" : "B");
-          j.pixelX = x;
-          j.pixelY = y;
-        }
-        continue;
-      }
-      const double gap = std::max(ra->lo, rb->lo) - std::min(ra->hi, rb->hi);
-      if (!missing && gap > worstGap) {
-        worstGap = gap;
-        j.pixelX = x;
-        j.pixelY = y;
-      }
+      visit(InterferingPixel{x, y, cu, cv,
+                             pa.prism(cu - f.edgeU, cv - f.edgeV, cu + f.edgeU, cv + f.edgeV),
+                             pb.prism(cu - f.edgeU, cv - f.edgeV, cu + f.edgeU, cv + f.edgeV)});
     }
   }
-  if (interfering == 0) {
+}
+
+// What rule (b)'s scan found: the pixel it shows goes into the judgement.
+struct TouchScan {
+  long long interfering = 0;
+  double worstGap = -std::numeric_limits<double>::infinity();
+  std::optional<std::string> missing;  // a block absent from an interfering pixel's square
+};
+
+// Rule (b)'s scan: the first pixel a block is absent from, else the widest gap, is the one shown.
+TouchScan scanTouch(const JudgeFrame& f, const core::TriangleMesh& a, const core::TriangleMesh& b,
+                    const core::PairResult& r, CgalJudgement& j) {
+  TouchScan scan;
+  forEachInterferingPixel(f, a, b, r, [&](const InterferingPixel& p) {
+    ++scan.interfering;
+    if (!p.a || !p.b) {
+      if (!scan.missing) {
+        scan.missing = std::string(!p.a ? "A" : "B");
+        j.pixelX = p.x;
+        j.pixelY = p.y;
+      }
+      return;
+    }
+    const double gap = std::max(p.a->lo, p.b->lo) - std::min(p.a->hi, p.b->hi);
+    if (!scan.missing && gap > scan.worstGap) {
+      scan.worstGap = gap;
+      j.pixelX = p.x;
+      j.pixelY = p.y;
+    }
+  });
+  return scan;
+}
+
+// Rule (b): CGAL says apart, RECODE says collide. Every interfering pixel must be explained by
+// rounding: both blocks within its square, their depth ranges there within the tolerance.
+void judgeTouch(const JudgeFrame& f, const core::TriangleMesh& a, const core::TriangleMesh& b,
+                const core::PairResult& r, CgalJudgement& j) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "CGAL: the blocks are apart; RECODE: collide; ";
+  if (!caseMapFitsMor(r)) {
+    j.verdict = VerdictCheck::Disagree;
+    s << "the case map holds " << r.caseMap.data.size() << " pixels, the MOR "
+      << static_cast<std::size_t>(r.mor.area());
+    j.reason = s.str();
+    return;
+  }
+  const TouchScan scan = scanTouch(f, a, b, r, j);
+  const double worstGap = scan.worstGap;
+  if (scan.interfering == 0) {
     j.verdict = VerdictCheck::Disagree;
     s << "yet its case map holds no interfering pixel";
-  } else if (missing) {
+  } else if (scan.missing) {
     j.verdict = VerdictCheck::Disagree;
-    s << "block " << *missing << " does not come within 1/256 px of interfering pixel (" << j.pixelX
-      << ", " << j.pixelY << ")'s centre";
+    s << "block " << *scan.missing << " does not come within 1/256 px of interfering pixel ("
+      << j.pixelX << ", " << j.pixelY << ")'s centre";
   } else if (worstGap > f.tolerance) {
     j.verdict = VerdictCheck::Disagree;
     s << "at interfering pixel (" << j.pixelX << ", " << j.pixelY
@@ -226,13 +262,40 @@ void judgeTouch(const JudgeFrame& f, const core::TriangleMesh& a, const core::Tr
       << kDepthToleranceLsb << " steps)";
   } else {
     j.verdict = VerdictCheck::ResolutionMiss;
-    s << "resolution miss (touching within rounding): at all " << interfering
+    s << "resolution miss (touching within rounding): at all " << scan.interfering
       << " interfering pixels the blocks come within " << std::max(worstGap, 0.0) << " ("
       << f.inSteps(std::max(worstGap, 0.0)) << " depth steps, largest at pixel (" << j.pixelX
       << ", " << j.pixelY << ")) of each other near the centre, within the tolerance "
       << f.tolerance;
   }
   j.reason = s.str();
+}
+
+// The exact box widened by every touching pixel's square and depth range (rule (b)'s test): the
+// device's overlap ends at such a pixel may lie there. Counts those reaching beyond `widened`.
+PlaneBox allowTouchingPixels(const PlaneBox& widened, const JudgeFrame& f,
+                             const core::TriangleMesh& a, const core::TriangleMesh& b,
+                             const core::PairResult& r, CgalJudgement& j) {
+  PlaneBox allowed = widened;
+  if (!caseMapFitsMor(r) || r.mor.empty())
+    return allowed;
+  forEachInterferingPixel(f, a, b, r, [&](const InterferingPixel& p) {
+    if (!p.a || !p.b)
+      return;
+    const double nearEnd = std::max(p.a->lo, p.b->lo) - f.tolerance;
+    const double farEnd = std::min(p.a->hi, p.b->hi) + f.tolerance;
+    if (nearEnd > farEnd)
+      return;  // the blocks are apart here beyond the tolerance: nothing to add
+    // The square rather than the centre alone: the contact points' coordinates are computed by
+    // the device's own formula and may differ from ours in the last bit.
+    const Eigen::Vector3d lo(p.cu - f.edgeU, p.cv - f.edgeV, nearEnd);
+    const Eigen::Vector3d hi(p.cu + f.edgeU, p.cv + f.edgeV, farEnd);
+    if ((lo.array() < widened.min.array()).any() || (hi.array() > widened.max.array()).any())
+      ++j.touchingPixelsOutside;
+    allowed.min = allowed.min.cwiseMin(lo);
+    allowed.max = allowed.max.cwiseMax(hi);
+  });
+  return allowed;
 }
 
 // Both collide: the contact box must lie in the exact box widened by a pixel on the image plane
@@ -259,8 +322,8 @@ void judgeContactBox(const ExactIntersection& exact, const JudgeFrame& f,
   const auto beyondOf = [&](const PlaneBox& allowed) {
     return (c.max - allowed.max).cwiseMax(allowed.min - c.min).cwiseMax(0.0).eval();
   };
-  Eigen::Vector3d beyond = beyondOf(widened);
-  j.contactBoxInside = (beyond.array() <= 0.0).all();
+  const Eigen::Vector3d strictBeyond = beyondOf(widened);
+  j.contactBoxInside = (strictBeyond.array() <= 0.0).all();
   j.contactBoxExplained = j.contactBoxInside;
   if (j.contactBoxInside) {
     s << "; RECODE's contact box lies within the exact box widened by one pixel and " << f.tolerance
@@ -268,40 +331,7 @@ void judgeContactBox(const ExactIntersection& exact, const JudgeFrame& f,
     j.reason = s.str();
     return;
   }
-
-  PlaneBox allowed = widened;
-  const raster::PixelRect& m = r.mor;
-  if (r.caseMap.rect == m && r.caseMap.data.size() == static_cast<std::size_t>(m.area()) &&
-      !m.empty()) {
-    const double u0 = f.centreU(m.x0) - f.edgeU, u1 = f.centreU(m.x1 - 1) + f.edgeU;
-    const double v0 = f.centreV(m.y0) - f.edgeV, v1 = f.centreV(m.y1 - 1) + f.edgeV;
-    const ViewLineProbe pa(a, f.view, u0, v0, u1, v1), pb(b, f.view, u0, v0, u1, v1);
-    for (int y = m.y0; y < m.y1; ++y) {
-      for (int x = m.x0; x < m.x1; ++x) {
-        if (!core::isInterfering(r.caseMap.at(x, y)))
-          continue;
-        const double cu = f.centreU(x), cv = f.centreV(y);
-        const auto ra = pa.prism(cu - f.edgeU, cv - f.edgeV, cu + f.edgeU, cv + f.edgeV);
-        const auto rb = pb.prism(cu - f.edgeU, cv - f.edgeV, cu + f.edgeU, cv + f.edgeV);
-        if (!ra || !rb)
-          continue;
-        const double nearEnd = std::max(ra->lo, rb->lo) - f.tolerance;
-        const double farEnd = std::min(ra->hi, rb->hi) + f.tolerance;
-        if (nearEnd > farEnd)
-          continue;  // the blocks are apart here beyond the tolerance: nothing to add
-        // The square rather than the centre alone: the contact points' coordinates are
-        // computed by the device's own formula and may differ from ours in the last bit.
-        const Eigen::Vector3d lo(cu - f.edgeU, cv - f.edgeV, nearEnd);
-        const Eigen::Vector3d hi(cu + f.edgeU, cv + f.edgeV, farEnd);
-        if ((lo.array() < widened.min.array()).any() || (hi.array() > widened.max.array()).any())
-          ++j.touchingPixelsOutside;
-        allowed.min = allowed.min.cwiseMin(lo);
-        allowed.max = allowed.max.cwiseMax(hi);
-      }
-    }
-  }
-  const Eigen::Vector3d strictBeyond = beyond;
-  beyond = beyondOf(allowed);
+  const Eigen::Vector3d beyond = beyondOf(allowTouchingPixels(widened, f, a, b, r, j));
   j.contactBoxExplained = (beyond.array() <= 0.0).all();
   s << "; RECODE's contact box " << describe(r.contact.box.min) << " to "
     << describe(r.contact.box.max) << " reaches beyond the exact box " << describe(exact.box.min)
