@@ -57,15 +57,10 @@ std::string describe(const Eigen::Vector3d& p) {
   return s.str();
 }
 
-// Pixels, inclusive: the range that rule (a) searches.
-struct PixelSpan {
-  int x0, x1, y0, y1;
-};
-
-// Where rule (a) looks: pixels whose centres lie in the exact box's projection, one more on every
-// side against rounding (the test does not depend on the box: the box only limits the search). An
-// empty or non-finite box (an inconsistent ExactIntersection) searches the whole frame.
-PixelSpan missSearchSpan(const ExactIntersection& exact, const JudgeFrame& f) {
+// Rule (a)'s search: the pixels centred in the exact box's projection, one more each side.
+raster::PixelRect missSearchSpan(const ExactIntersection& exact, const JudgeFrame& f) {
+  // The extra pixel is against rounding; the test does not depend on the box, which only limits
+  // the search. An empty or non-finite box (an inconsistent ExactIntersection) searches it all.
   const bool usable =
       !exact.box.isEmpty() && exact.box.min.allFinite() && exact.box.max.allFinite();
   const PlaneBox box = toPlane(f.view, exact.box);
@@ -74,20 +69,19 @@ PixelSpan missSearchSpan(const ExactIntersection& exact, const JudgeFrame& f) {
     const double i = std::ceil((lo - origin) / size - 0.5) - 1.0;
     return static_cast<int>(std::clamp(i, 0.0, static_cast<double>(count)));
   };
-  const auto last = [](double hi, double origin, double size, int count) {
+  const auto pastLast = [](double hi, double origin, double size, int count) {
     const double i = std::floor((hi - origin) / size - 0.5) + 1.0;
-    return static_cast<int>(std::clamp(i, -1.0, static_cast<double>(count - 1)));
+    return static_cast<int>(std::clamp(i, -1.0, static_cast<double>(count - 1))) + 1;
   };
   if (!usable)
-    return {0, f.view.width() - 1, 0, f.view.height() - 1};
+    return {0, 0, f.view.width(), f.view.height()};
   return {first(box.min.x(), w.umin, f.pixelU, f.view.width()),
-          last(box.max.x(), w.umin, f.pixelU, f.view.width()),
           first(box.min.y(), w.vmin, f.pixelV, f.view.height()),
-          last(box.max.y(), w.vmin, f.pixelV, f.view.height())};
+          pastLast(box.max.x(), w.umin, f.pixelU, f.view.width()),
+          pastLast(box.max.y(), w.vmin, f.pixelV, f.view.height())};
 }
 
-// The blocks' overlap along the axis that holds over pixel (x, y)'s whole +-1/256 px square, or
-// nullopt where a corner's line misses a block: only such an overlap must have been seen.
+// The overlap holding over pixel (x, y)'s whole +-1/256 px square (the device must have seen it).
 std::optional<double> robustOverlap(const ViewLineProbe& pa, const ViewLineProbe& pb,
                                     const JudgeFrame& f, int x, int y) {
   double nearestFar = std::numeric_limits<double>::infinity();
@@ -113,16 +107,16 @@ struct MissScan {
 };
 
 // Rule (a)'s search: the pixel with the largest robust overlap goes into j, as the one to show.
-MissScan scanMiss(const PixelSpan& span, const JudgeFrame& f, const core::TriangleMesh& a,
+MissScan scanMiss(const raster::PixelRect& m, const JudgeFrame& f, const core::TriangleMesh& a,
                   const core::TriangleMesh& b, CgalJudgement& j) {
   MissScan scan;
-  if (span.x0 > span.x1 || span.y0 > span.y1)
+  if (m.empty())
     return scan;
-  const double u0 = f.centreU(span.x0) - f.edgeU, u1 = f.centreU(span.x1) + f.edgeU;
-  const double v0 = f.centreV(span.y0) - f.edgeV, v1 = f.centreV(span.y1) + f.edgeV;
+  const double u0 = f.centreU(m.x0) - f.edgeU, u1 = f.centreU(m.x1 - 1) + f.edgeU;
+  const double v0 = f.centreV(m.y0) - f.edgeV, v1 = f.centreV(m.y1 - 1) + f.edgeV;
   const ViewLineProbe pa(a, f.view, u0, v0, u1, v1), pb(b, f.view, u0, v0, u1, v1);
-  for (int y = span.y0; y <= span.y1; ++y) {
-    for (int x = span.x0; x <= span.x1; ++x) {
+  for (int y = m.y0; y < m.y1; ++y) {
+    for (int x = m.x0; x < m.x1; ++x) {
       const std::optional<double> overlap = robustOverlap(pa, pb, f, x, y);
       if (!overlap)
         continue;
@@ -178,8 +172,7 @@ struct InterferingPixel {
   std::optional<AxisRange> a, b;
 };
 
-// Visits every interfering pixel of the MOR in row order: rule (b) and the contact-box
-// explanation both test each such pixel's square, so one pair of probes over the MOR serves.
+// Each interfering pixel of the MOR, row by row: rule (b) and the contact box test them alike.
 template <typename Visit>
 void forEachInterferingPixel(const JudgeFrame& f, const core::TriangleMesh& a,
                              const core::TriangleMesh& b, const core::PairResult& r,
@@ -271,8 +264,7 @@ void judgeTouch(const JudgeFrame& f, const core::TriangleMesh& a, const core::Tr
   j.reason = s.str();
 }
 
-// The exact box widened by every touching pixel's square and depth range (rule (b)'s test): the
-// device's overlap ends at such a pixel may lie there. Counts those reaching beyond `widened`.
+// `widened` grown by each touching pixel's square and depth range: the device's ends may lie there.
 PlaneBox allowTouchingPixels(const PlaneBox& widened, const JudgeFrame& f,
                              const core::TriangleMesh& a, const core::TriangleMesh& b,
                              const core::PairResult& r, CgalJudgement& j) {
