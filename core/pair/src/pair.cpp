@@ -11,15 +11,14 @@
 #include "recode/raster/pixel_buffer.hpp"
 #include "recode/raster/state.hpp"
 
+#include "pair_passes.hpp"
+
 namespace recode::core {
 
 namespace {
 
-using raster::CompareFunc;
 using raster::CullMode;
-using raster::Face;
 using raster::PixelRect;
-using raster::StencilOp;
 using Clock = std::chrono::steady_clock;
 
 double microsecondsSince(Clock::time_point start) {
@@ -66,96 +65,6 @@ PixelRect boundingRect(const PixelRect& a, const PixelRect& b) {
     return a;
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
-
-// The command sequence of docs/algorithm.md ("The passes"). Each function sets every piece
-// of state its draws depend on, so the sequence does not rely on what the device held before.
-class PassRunner {
- public:
-  PassRunner(raster::DepthStencilDevice& device, std::span<const raster::WindowVertex> va,
-             std::span<const std::uint32_t> ia, std::span<const raster::WindowVertex> vb,
-             std::span<const std::uint32_t> ib)
-      : dev_(device), va_(va), ia_(ia), vb_(vb), ib_(ib) {}
-
-  // RenderSetZ(A, GEQUAL): depth cleared to 0 then raised to the farthest face of A, so the
-  // depth buffer holds Amax; stencil cleared to 0 and set to 1 wherever A is drawn. All of
-  // A's faces are drawn (the paper draws the back faces): the maximum over both is Amax even
-  // where rounding puts a silhouette pixel's front face a step behind its back face.
-  void setZ(const PixelRect& mor) {
-    dev_.setScissor(mor);
-    dev_.setDepthWriteMask(true);
-    dev_.setStencilWriteMask(0xFF);
-    dev_.clearDepth(0.0);
-    dev_.clearStencil(0);
-    dev_.setCullMode(CullMode::None);
-    dev_.setDepthFunc(CompareFunc::GEqual);
-    dev_.setStencilFunc(CompareFunc::Always, 1, 0xFF);
-    dev_.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Replace});
-    dev_.drawTriangles(va_, ia_);
-  }
-
-  // RenderTestZ(B, LEQUAL): where A is present (1 <= count), every face of B at or in front
-  // of Amax increments the count; depth is only tested, never written.
-  void testZ() {
-    dev_.setDepthWriteMask(false);
-    dev_.setDepthFunc(CompareFunc::LEqual);
-    dev_.setStencilFunc(CompareFunc::LEqual, 1, kCountBits);
-    dev_.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Incr});
-    dev_.setStencilWriteMask(kCountBits);
-    dev_.setCullMode(CullMode::None);
-    dev_.drawTriangles(vb_, ib_);
-  }
-
-  // Depth cleared to 1 and lowered to A's nearest face: the depth buffer holds Amin. The
-  // stencil write mask is 0 so the count survives.
-  void loadAmin() {
-    dev_.setStencilWriteMask(0);
-    dev_.setDepthWriteMask(true);
-    dev_.clearDepth(1.0);
-    dev_.setDepthFunc(CompareFunc::LEqual);
-    dev_.setStencilFunc(CompareFunc::Always, 0, 0xFF);
-    dev_.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Keep});
-    dev_.setCullMode(CullMode::None);
-    dev_.drawTriangles(va_, ia_);
-  }
-
-  // One of B's two faces (front: cull back faces; back: cull front faces) against Amin with
-  // GEQUAL. Where A is present the bit is flipped when the face is at or behind Amin; where
-  // A is absent the stencil test fails and the bit is flipped anyway, recording B's
-  // coverage. A convex block has one face of each orientation per pixel, so one flip sets
-  // the bit from 0.
-  void testAmin(CullMode culled, std::uint8_t bit) {
-    dev_.setDepthWriteMask(false);
-    dev_.setDepthFunc(CompareFunc::GEqual);
-    dev_.setStencilFunc(CompareFunc::LEqual, 1, kCountBits);
-    dev_.setStencilOps(Face::Both, {StencilOp::Invert, StencilOp::Keep, StencilOp::Invert});
-    dev_.setStencilWriteMask(bit);
-    dev_.setCullMode(culled);
-    dev_.drawTriangles(vb_, ib_);
-  }
-
-  // Depth over `rect` becomes, for the faces facing the viewer (near end: cull back, GEQUAL
-  // from 0) the later of A's and B's near ends, or for the faces facing away (far end: cull
-  // front, LEQUAL from 1) the earlier of their far ends: the two ends of the overlap interval.
-  void overlapEnd(const PixelRect& rect, bool nearEnd) {
-    dev_.setScissor(rect);
-    dev_.setStencilWriteMask(0);
-    dev_.setDepthWriteMask(true);
-    dev_.clearDepth(nearEnd ? 0.0 : 1.0);
-    dev_.setCullMode(nearEnd ? CullMode::Back : CullMode::Front);
-    dev_.setDepthFunc(nearEnd ? CompareFunc::GEqual : CompareFunc::LEqual);
-    dev_.setStencilFunc(CompareFunc::Always, 0, 0xFF);
-    dev_.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Keep});
-    dev_.drawTriangles(va_, ia_);
-    dev_.drawTriangles(vb_, ib_);
-  }
-
- private:
-  raster::DepthStencilDevice& dev_;
-  std::span<const raster::WindowVertex> va_;
-  std::span<const std::uint32_t> ia_;
-  std::span<const raster::WindowVertex> vb_;
-  std::span<const std::uint32_t> ib_;
-};
 
 }  // namespace
 
@@ -311,6 +220,44 @@ void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
   }
 }
 
+// Runs the algorithm's steps on the device, timing each and showing it to the observer.
+class StepRunner {
+ public:
+  StepRunner(raster::DepthStencilDevice& device, PairObserver* observer, PairTiming& timing)
+      : device_(device), observer_(observer), timing_(timing) {}
+
+  template <class Body>
+  void run(PairStep step, Body&& body) {
+    const Clock::time_point t = Clock::now();
+    body();
+    timing_.stepUs[static_cast<std::size_t>(step)] += microsecondsSince(t);
+    if (observer_)
+      observer_->afterStep(step, device_);
+  }
+
+ private:
+  raster::DepthStencilDevice& device_;
+  PairObserver* observer_;
+  PairTiming& timing_;
+};
+
+// The box test on the snapped geometry the device will draw: the projected boxes must share a
+// pixel centre and the depth ranges must come within one step of each other. Nothing that
+// fails it can interfere, so skipping the passes then gives the verdict they would. Sets
+// r.boxesOverlap and, when the passes are to run, r.mor; returns whether they are.
+bool choosePassRegion(const DrawnPair& drawn, const PairRequest& request, PairResult& r) {
+  const FrameSpec& frame = request.frame;
+  const PixelRect footA = pixelFootprint(drawn.va, frame.width, frame.height);
+  const PixelRect footB = pixelFootprint(drawn.vb, frame.width, frame.height);
+  r.boxesOverlap =
+      !footA.intersect(footB).empty() && depthSpansMeet(depthSpan(drawn.va), depthSpan(drawn.vb));
+  if (request.boxTest && !r.boxesOverlap)
+    return false;
+  r.mor = chooseMor(request.mor, footA, footB, frame);
+  // An empty MIN is only reachable without the box test; MAX and FULL draw even when empty.
+  return !(request.mor == MorMode::Min && r.mor.empty());
+}
+
 }  // namespace
 
 PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a,
@@ -328,35 +275,18 @@ PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a
   r.depthMax = depthMax;
   const OrthoView view(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
   const DrawnPair drawn{view.toWindow(a), view.toWindow(b), triangleIndices(a), triangleIndices(b)};
-
-  // The box test on the snapped geometry the device will draw: the projected boxes must share
-  // a pixel centre and the depth ranges must come within one step of each other. Nothing
-  // that fails it can interfere, so skipping the passes then gives the verdict they would.
-  const PixelRect footA = pixelFootprint(drawn.va, frame.width, frame.height);
-  const PixelRect footB = pixelFootprint(drawn.vb, frame.width, frame.height);
-  r.boxesOverlap =
-      !footA.intersect(footB).empty() && depthSpansMeet(depthSpan(drawn.va), depthSpan(drawn.vb));
-  if (request.boxTest && !r.boxesOverlap)
+  if (!choosePassRegion(drawn, request, r))
     return finish();
-  r.mor = chooseMor(request.mor, footA, footB, frame);
-  if (request.mor == MorMode::Min && r.mor.empty())
-    return finish();  // only reachable without the box test
 
-  PassRunner passes(device, drawn.va, drawn.ia, drawn.vb, drawn.ib);
-  const auto timed = [&](PairStep step, auto&& body) {
-    const Clock::time_point t = Clock::now();
-    body();
-    r.timing.stepUs[static_cast<std::size_t>(step)] += microsecondsSince(t);
-    if (observer)
-      observer->afterStep(step, device);
-  };
-  timed(PairStep::SetZ, [&] { passes.setZ(r.mor); });
-  timed(PairStep::TestZ, [&] { passes.testZ(); });
-  timed(PairStep::LoadAmin, [&] { passes.loadAmin(); });
-  timed(PairStep::TestAminFront, [&] { passes.testAmin(CullMode::Back, kFrontBehindAminBit); });
-  timed(PairStep::TestAminBack, [&] { passes.testAmin(CullMode::Front, kBackBehindAminBit); });
+  detail::PassRunner passes(device, drawn.va, drawn.ia, drawn.vb, drawn.ib);
+  StepRunner steps(device, observer, r.timing);
+  steps.run(PairStep::SetZ, [&] { passes.setZ(r.mor); });
+  steps.run(PairStep::TestZ, [&] { passes.testZ(); });
+  steps.run(PairStep::LoadAmin, [&] { passes.loadAmin(); });
+  steps.run(PairStep::TestAminFront, [&] { passes.testAmin(CullMode::Back, kFrontBehindAminBit); });
+  steps.run(PairStep::TestAminBack, [&] { passes.testAmin(CullMode::Front, kBackBehindAminBit); });
   raster::PixelBuffer<std::uint8_t> stencil;
-  timed(PairStep::ReadStencil, [&] { stencil = raster::readStencilBuffer(device, r.mor); });
+  steps.run(PairStep::ReadStencil, [&] { stencil = raster::readStencilBuffer(device, r.mor); });
   r.stencilPixelsRead = r.mor.area();
 
   Clock::time_point t = Clock::now();
@@ -371,11 +301,11 @@ PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a
 
   r.contactRect = contactRect;
   raster::PixelBuffer<std::uint32_t> nearDepth, farDepth;
-  timed(PairStep::ContactNear, [&] {
+  steps.run(PairStep::ContactNear, [&] {
     passes.overlapEnd(r.contactRect, true);
     nearDepth = raster::readDepthBuffer(device, r.contactRect);
   });
-  timed(PairStep::ContactFar, [&] {
+  steps.run(PairStep::ContactFar, [&] {
     passes.overlapEnd(r.contactRect, false);
     farDepth = raster::readDepthBuffer(device, r.contactRect);
   });

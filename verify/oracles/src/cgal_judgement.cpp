@@ -1,5 +1,7 @@
 // RECODE's verdict and contact box against the exact intersection (no CGAL here): the
-// tolerance rules of cgal_oracle.hpp and docs/verification.md, "The CGAL oracle".
+// tolerance rules of cgal_oracle.hpp and docs/verification.md, "The CGAL oracle". Just over
+// 400 lines: the three rules share the judging frame and the view-line probes, and read best
+// one after the other.
 
 #include <algorithm>
 #include <cmath>
