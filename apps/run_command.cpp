@@ -177,7 +177,7 @@ void addRunCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("scene", o->scene, "scene file (JSON, docs/scenes.md) or built-in scene name");
   cmd->add_option("--frames", o->frames,
                   "frames to run (default: the scene's \"frames\", else 100)")
-      ->check(CLI::Range(1, 1000000));
+      ->check(CLI::Range(1, core::kMaxFrames));
   cmd->add_flag("--stop-on-contact", o->stopOnContact, "stop after the first frame with contact");
   cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   cmd->add_option("--csv", o->csv, "write one CSV row of times and counters per frame to FILE");

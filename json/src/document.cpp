@@ -104,6 +104,7 @@ class DocumentBuilder : public nlohmann::json_sax<json> {
 
   [[nodiscard]] json& document() { return root_; }
   [[nodiscard]] const std::optional<std::string>& duplicatePath() const { return duplicatePath_; }
+  [[nodiscard]] bool tooDeep() const { return tooDeep_; }
   [[nodiscard]] std::size_t errorPosition() const { return errorPosition_; }
   [[nodiscard]] const std::string& errorToken() const { return errorToken_; }
   [[nodiscard]] const std::string& errorMessage() const { return errorMessage_; }
@@ -138,6 +139,12 @@ class DocumentBuilder : public nlohmann::json_sax<json> {
     return true;
   }
   bool open(json container) {
+    // Refused before the container is placed: each open container keeps its path, so the cost
+    // of a document grows with the square of its depth.
+    if (open_.size() >= kMaxJsonDepth) {
+      tooDeep_ = true;
+      return false;
+    }
     std::string path;
     json* placed = place(std::move(container), &path);
     open_.push_back({placed, std::move(path)});
@@ -148,6 +155,7 @@ class DocumentBuilder : public nlohmann::json_sax<json> {
   std::vector<Container> open_;
   std::string key_;
   std::optional<std::string> duplicatePath_;
+  bool tooDeep_ = false;
   std::size_t errorPosition_ = 0;
   std::string errorToken_;
   std::string errorMessage_;
@@ -198,6 +206,11 @@ json parseJsonDocument(std::string_view text, const std::string& sourceName) {
     return std::move(builder.document());
   if (builder.duplicatePath())
     throw JsonError(sourceName, *builder.duplicatePath(), "duplicate key");
+  if (builder.tooDeep()) {
+    throw JsonError(sourceName, "",
+                    "arrays and objects nested more than " + std::to_string(kMaxJsonDepth) +
+                        " deep");
+  }
   // nlohmann's position counts the characters read, up to the last one it looked at (one
   // more when it read the end of input). Point there, or at the first character of the
   // offending string or number when nlohmann reports one that ends at that position.

@@ -28,7 +28,7 @@ Scene readScene(const json& doc, const std::string& sourceName, const fs::path& 
   if (doc.contains("view"))
     scene.view = detail::readView(fields, doc.at("view"), "view");
   if (doc.contains("frames"))
-    scene.frames = static_cast<int>(fields.integerInRange(doc.at("frames"), "frames", 1, INT_MAX));
+    scene.frames = static_cast<int>(fields.integerInRange(doc.at("frames"), "frames", 1, kMaxFrames));
   detail::ObjectReader objects(fields, baseDir, doc.contains("parts") ? &doc.at("parts") : nullptr);
   if (!doc.contains("objects"))
     fields.fail("", "missing key \"objects\" (the list of objects)");

@@ -51,6 +51,17 @@ TEST_CASE("scene errors: malformed JSON gives line and column", "[scene][errors]
   CHECK_THAT(huge, Contains("1e400"));
 }
 
+TEST_CASE("scene errors: nesting deeper than the JSON layer reads", "[scene][errors]") {
+  // 100,000 nested arrays (a 200 KB file) are refused at once, before they cost memory.
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  CHECK(errorOf(deep) == "s.json: arrays and objects nested more than 128 deep");
+  const std::string deepObjects = R"({"objects": [{"children": )" + deep + "}]}";
+  CHECK(errorOf(deepObjects) == "s.json: arrays and objects nested more than 128 deep");
+  // 128 levels are still read (and then refused by the scene's own rules, not the layer's).
+  const std::string limit = std::string(127, '[') + std::string(127, ']');
+  CHECK_THAT(errorOf(R"({"objects": )" + limit + "}"), !Contains("nested more than 128"));
+}
+
 TEST_CASE("scene errors: duplicate keys", "[scene][errors]") {
   CHECK_THAT(errorOf(R"({"frames": 1, "frames": 2, "objects": []})"),
              StartsWith("s.json: frames: duplicate key"));
@@ -186,12 +197,16 @@ TEST_CASE("scene errors: the objects list", "[scene][errors]") {
 TEST_CASE("scene errors: frames", "[scene][errors]") {
   const std::string objects = R"("objects": [{"shape": {"type": "box", "size": [1, 1, 1]}}])";
   CHECK_THAT(errorOf(R"({"frames": 0, )" + objects + "}"),
-             StartsWith("s.json: frames: expected an integer in 1..2147483647, got 0"));
+             StartsWith("s.json: frames: expected an integer in 1..1000000, got 0"));
   CHECK_THAT(errorOf(R"({"frames": 2.5, )" + objects + "}"),
-             StartsWith("s.json: frames: expected an integer in 1..2147483647, got 2.5"));
+             StartsWith("s.json: frames: expected an integer in 1..1000000, got 2.5"));
   CHECK_THAT(errorOf(R"({"frames": "10", )" + objects + "}"),
-             StartsWith("s.json: frames: expected an integer in 1..2147483647, got a string"));
+             StartsWith("s.json: frames: expected an integer in 1..1000000, got a string"));
   CHECK(parse(R"({"frames": 1, )" + objects + "}").frames == 1);
+  // The same cap as `recode run --frames`.
+  CHECK(parse(R"({"frames": 1000000, )" + objects + "}").frames == 1000000);
+  CHECK_THAT(errorOf(R"({"frames": 2147483647, )" + objects + "}"),
+             StartsWith("s.json: frames: expected an integer in 1..1000000, got 2147483647"));
 }
 
 TEST_CASE("scene errors: shape types and sizes", "[scene][errors]") {

@@ -31,6 +31,11 @@ namespace recode::json {
 // "an object", or the number itself.
 [[nodiscard]] std::string describeJsonValue(const nlohmann::json& value);
 
+// The deepest nesting of arrays and objects a document may have. A scene's deepest legitimate
+// nesting (32 levels of children, two each, under a few levels of file structure) is about 70;
+// refusing more keeps a hostile file from costing time and memory that grow with its depth.
+inline constexpr std::size_t kMaxJsonDepth = 128;
+
 // Parses JSON text into a document. Malformed JSON throws
 // JsonError(sourceName, line, column, "invalid JSON: ...") pointing at the offending
 // character (or at the start of the offending string or number); a key repeated within one

@@ -47,13 +47,17 @@ struct SceneObject : Placement {
   [[nodiscard]] TriangleMesh worldMesh() const;
 };
 
+// The most frames a scene file or `recode run --frames` may ask for: a million frames of the
+// smallest scene already take minutes, and a larger count is far more likely a typo.
+inline constexpr int kMaxFrames = 1'000'000;
+
 // ViewSpec (the "view" object) is declared in recode/geometry/projection.hpp.
 
 struct Scene {
   std::string sourceName;  // the file name as given, for messages
   ViewSpec view;
   std::vector<SceneObject> objects;
-  std::optional<int> frames;  // "frames"
+  std::optional<int> frames;  // "frames", 1..kMaxFrames
 };
 
 // Reads and checks a scene file. Mesh paths are relative to the scene file's directory.
