@@ -24,10 +24,12 @@ namespace {
 namespace fs = std::filesystem;
 
 // What the line check learned: the positions of the `v` records (parsed with correct
-// rounding by std::from_chars) and the number of `f` records.
+// rounding by std::from_chars) and the vertex count of every `f` record, in file order.
+// tinyobjloader keeps a face's count in an unsigned char, so a face of 256 or more vertices
+// would be misread from its counts alone; these are the true ones.
 struct ObjLineSummary {
   std::vector<Eigen::Vector3d> positions;
-  std::size_t faceCount = 0;
+  std::vector<std::size_t> faceSizes;
 };
 
 // A `v` line: at least three coordinates, each finite; more values (w, a colour) are
@@ -101,7 +103,7 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
       if (largest > 0) {
         largestPerFace.push_back({line, largest});
       }
-      ++summary.faceCount;
+      summary.faceSizes.push_back(tokens.size() - 1);
     }
   });
 
@@ -155,15 +157,25 @@ void crossCheckVertices(const fs::path& path, const tinyobj::attrib_t& attrib,
   }
 }
 
-// Appends the fan triangulation of every face of every shape to triangles; returns the
-// number of faces, which must match the line check's count.
+// Appends the fan triangulation of every face of every shape to triangles, walking
+// tinyobjloader's indices with the line check's face sizes (its own counts wrap at 256);
+// returns the number of faces, which must match the line check's count.
 std::size_t appendShapeFaces(const fs::path& path, const std::vector<tinyobj::shape_t>& shapes,
-                             std::size_t vertexCount, std::vector<Triangle>& triangles) {
+                             const std::vector<std::size_t>& faceSizes, std::size_t vertexCount,
+                             std::vector<Triangle>& triangles) {
   std::size_t faceCount = 0;
   std::vector<VertexIndex> polygon;
   for (const tinyobj::shape_t& shape : shapes) {
     std::size_t offset = 0;
-    for (const unsigned int size : shape.mesh.num_face_vertices) {
+    for (const unsigned int wrappedSize : shape.mesh.num_face_vertices) {
+      if (faceCount >= faceSizes.size() || faceSizes[faceCount] % 256 != wrappedSize) {
+        fail(path, "internal error: tinyobjloader's face " + std::to_string(faceCount + 1) +
+                       " does not match the line check's");
+      }
+      const std::size_t size = faceSizes[faceCount];
+      if (offset + size > shape.mesh.indices.size()) {
+        fail(path, "internal error: tinyobjloader returned too few face indices");
+      }
       polygon.clear();
       for (std::size_t k = 0; k < size; ++k) {
         const int index = shape.mesh.indices[offset + k].vertex_index;
@@ -202,10 +214,11 @@ TriangleMesh parseObj(const fs::path& path, const std::string& text) {
   TriangleMesh mesh;
   mesh.vertices = std::move(summary.positions);
   const std::size_t faceCount =
-      appendShapeFaces(path, shapes, mesh.vertices.size(), mesh.triangles);
-  if (faceCount != summary.faceCount) {
+      appendShapeFaces(path, shapes, summary.faceSizes, mesh.vertices.size(), mesh.triangles);
+  if (faceCount != summary.faceSizes.size()) {
     fail(path, "internal error: tinyobjloader returned " + std::to_string(faceCount) +
-                   " faces where the line check counted " + std::to_string(summary.faceCount));
+                   " faces where the line check counted " +
+                   std::to_string(summary.faceSizes.size()));
   }
   if (mesh.triangles.empty()) {
     fail(path, "the file has no faces (empty mesh)");

@@ -251,3 +251,84 @@ TEST_CASE("read meshes that are not convex blocks are caught by validation", "[m
              StartsWith(path.string() + ": signed volume is -2.666") &&
                  EndsWith("(must be > 0): the faces point inward"));
 }
+
+namespace {
+
+// A prism over a regular n-gon (z = 0 and z = 1), both caps one face of n vertices, as OBJ
+// (1-based) and OFF (0-based) text. Caps wind so that their normals point out.
+std::string prismText(int n, bool obj) {
+  std::string text;
+  if (!obj) {
+    text += "OFF\n";
+    text += std::to_string(2 * n);
+    text += ' ';
+    text += std::to_string(n + 2);
+    text += " 0\n";
+  }
+  for (int z = 0; z < 2; ++z) {
+    for (int k = 0; k < n; ++k) {
+      const double a = 2.0 * 3.14159265358979323846 * k / n;
+      if (obj)
+        text += "v ";
+      text += std::to_string(std::cos(a));
+      text += ' ';
+      text += std::to_string(std::sin(a));
+      text += ' ';
+      text += std::to_string(z);
+      text += '\n';
+    }
+  }
+  const int base = obj ? 1 : 0;
+  const auto face = [&](const std::vector<int>& ids) {
+    if (obj)
+      text += 'f';
+    else
+      text += std::to_string(ids.size());
+    for (int id : ids) {
+      text += ' ';
+      text += std::to_string(id + base);
+    }
+    text += '\n';
+  };
+  std::vector<int> bottom, top;
+  for (int k = 0; k < n; ++k) {
+    bottom.push_back(n - 1 - k);  // clockwise seen from above: the normal points down
+    top.push_back(n + k);
+  }
+  face(bottom);
+  face(top);
+  for (int k = 0; k < n; ++k) {
+    const int next = (k + 1) % n;
+    face({k, next, n + next, n + k});
+  }
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("readObj: faces of 256 or more vertices are read whole, like OFF", "[mesh_io]") {
+  // tinyobjloader keeps a face's vertex count in a byte; the reader must not wrap it.
+  const TempDir dir;
+  for (const int n : {255, 256, 300}) {
+    INFO("n = " << n);
+    const TriangleMesh obj = readObj(dir.write("prism.obj", prismText(n, true)));
+    const TriangleMesh off = readOff(dir.write("prism.off", prismText(n, false)));
+    CHECK(obj.vertices == off.vertices);
+    CHECK(obj.triangles == off.triangles);
+    CHECK(obj.triangleCount() == static_cast<std::size_t>(2 * (n - 2) + 2 * n));
+    CHECK_NOTHROW(validateConvexBlock(obj, "prism.obj"));
+  }
+}
+
+TEST_CASE("readObj: a 259-vertex face is not taken for a triangle", "[mesh_io]") {
+  // A tetrahedron whose last face lists 259 references (259 = 3 mod 256): read whole, it is
+  // no closed block, and validation says so instead of accepting a tetrahedron.
+  const TempDir dir;
+  std::string text = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4";
+  for (int k = 0; k < 257; ++k)
+    text += k % 2 == 0 ? " 3" : " 2";
+  text += "\n";
+  const TriangleMesh mesh = readObj(dir.write("garbage.obj", text));
+  CHECK(mesh.triangleCount() == 3 + 257);
+  CHECK_THROWS(validateConvexBlock(mesh, "garbage.obj"));
+}
