@@ -1,8 +1,29 @@
 #include "frame_options.hpp"
 
+#include <charconv>
+#include <cmath>
+
 #include "pair_setup.hpp"
 
 namespace recode::app {
+
+namespace {
+
+// A pixel size must be a positive finite number: CLI11's PositiveNumber lets NaN through (every
+// comparison with it is false), and a NaN pixel size was then silently ignored.
+const CLI::Validator kPositiveFiniteNumber(
+    [](std::string& text) -> std::string {
+      double value = 0.0;
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+      if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
+          !(value > 0.0)) {
+        return "expected a positive finite number of world units, got " + text;
+      }
+      return "";
+    },
+    "POSITIVE");
+
+}  // namespace
 
 core::FrameOverrides FrameOptions::overrides() const {
   core::FrameOverrides o;
@@ -25,7 +46,7 @@ FrameOptionHandles addFrameOptions(CLI::App& cmd, FrameOptions& values,
               ->capture_default_str();
   h.resolution = cmd.add_option("--resolution", values.resolution, help.resolution);
   h.pixelSize = cmd.add_option("--pixel-size", values.pixelSize, help.pixelSize)
-                    ->check(CLI::PositiveNumber)
+                    ->check(kPositiveFiniteNumber)
                     ->excludes(h.resolution);
   return h;
 }
