@@ -92,7 +92,6 @@ class PictureWriter {
 
  private:
   [[nodiscard]] const raster::PixelRect& mor() const { return result_.mor; }
-  [[nodiscard]] int frameWidth() const { return setup_.frame.width; }
   [[nodiscard]] std::optional<Painter> zoomPainter() const;
   Picture makePicture(const Painter& painter, const std::string& stem, std::string kind,
                       const RgbImage& image);

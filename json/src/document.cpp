@@ -207,9 +207,9 @@ json parseJsonDocument(std::string_view text, const std::string& sourceName) {
   if (builder.duplicatePath())
     throw JsonError(sourceName, *builder.duplicatePath(), "duplicate key");
   if (builder.tooDeep()) {
-    throw JsonError(sourceName, "",
-                    "arrays and objects nested more than " + std::to_string(kMaxJsonDepth) +
-                        " deep");
+    throw JsonError(
+        sourceName, "",
+        "arrays and objects nested more than " + std::to_string(kMaxJsonDepth) + " deep");
   }
   // nlohmann's position counts the characters read, up to the last one it looked at (one
   // more when it read the end of input). Point there, or at the first character of the

@@ -64,7 +64,7 @@ class FragmentWriter final : public TriangleSink {
 
 }  // namespace
 
-CpuDevice::CpuDevice(int width, int height) : width_(width), height_(height) {
+CpuDevice::CpuDevice(int width, int height) {
   checkFramebufferSize(width, height);
   const PixelRect framebuffer{0, 0, width, height};
   depth_ = PixelBuffer<std::uint32_t>(framebuffer, kDepthMax);
@@ -73,7 +73,7 @@ CpuDevice::CpuDevice(int width, int height) : width_(width), height_(height) {
 }
 
 void CpuDevice::setScissor(const PixelRect& rect) {
-  state_.setScissor(rect, width_, height_);
+  state_.setScissor(rect, width(), height());
 }
 
 void CpuDevice::clearDepth(double depth) {

@@ -2,7 +2,6 @@
 // document by the section readers of scene_reader.hpp.
 #include "recode/scene/scene.hpp"
 
-#include <climits>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -28,7 +27,8 @@ Scene readScene(const json& doc, const std::string& sourceName, const fs::path& 
   if (doc.contains("view"))
     scene.view = detail::readView(fields, doc.at("view"), "view");
   if (doc.contains("frames"))
-    scene.frames = static_cast<int>(fields.integerInRange(doc.at("frames"), "frames", 1, kMaxFrames));
+    scene.frames =
+        static_cast<int>(fields.integerInRange(doc.at("frames"), "frames", 1, kMaxFrames));
   detail::ObjectReader objects(fields, baseDir, doc.contains("parts") ? &doc.at("parts") : nullptr);
   if (!doc.contains("objects"))
     fields.fail("", "missing key \"objects\" (the list of objects)");

@@ -20,8 +20,8 @@ class CpuDevice final : public DepthStencilDevice {
   // starts at 1.0 (2^24 - 1) and stencil at 0, as after GL's default clears.
   CpuDevice(int width, int height);
 
-  [[nodiscard]] int width() const override { return width_; }
-  [[nodiscard]] int height() const override { return height_; }
+  [[nodiscard]] int width() const override { return depth_.rect.width(); }
+  [[nodiscard]] int height() const override { return depth_.rect.height(); }
 
   void setScissor(const PixelRect& rect) override;
   void clearDepth(double depth) override;
@@ -51,9 +51,7 @@ class CpuDevice final : public DepthStencilDevice {
   void resetCounters() { counters_ = {}; }
 
  private:
-  int width_;
-  int height_;
-  PixelBuffer<std::uint32_t> depth_;  // the whole framebuffer
+  PixelBuffer<std::uint32_t> depth_;  // the whole framebuffer; its rectangle gives the size
   PixelBuffer<std::uint8_t> stencil_;
   RenderState state_;
   Counters counters_;
