@@ -34,4 +34,13 @@ class GlContext {
 // std::runtime_error when OSMesa cannot create it or gives other depth/stencil sizes.
 [[nodiscard]] std::unique_ptr<GlContext> makeOsMesaContext(int width, int height);
 
+// An OSMesa context of OpenGL 4.5 core profile with a 1x1 colour buffer and no depth or
+// stencil: for devices that render into their own framebuffer object.
+[[nodiscard]] std::unique_ptr<GlContext> makeOsMesaCoreContext();
+
+// A headless EGL context of OpenGL 4.5 core profile without any surface: Mesa's surfaceless
+// platform, or the first device of the EGL device platform. Throws std::runtime_error saying
+// what is missing. Defined only when the build has EGL (RECODE_HAVE_EGL).
+[[nodiscard]] std::unique_ptr<GlContext> makeEglHeadlessContext();
+
 }  // namespace recode::verify::detail

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "gl_context.hpp"
+#include "gl_enums.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 
@@ -25,53 +26,6 @@ namespace {
 
 using raster::CompareFunc;
 using raster::PixelRect;
-using raster::StencilOp;
-
-GLenum glCompare(CompareFunc f) {
-  switch (f) {
-    case CompareFunc::Never:
-      return GL_NEVER;
-    case CompareFunc::Less:
-      return GL_LESS;
-    case CompareFunc::Equal:
-      return GL_EQUAL;
-    case CompareFunc::LEqual:
-      return GL_LEQUAL;
-    case CompareFunc::Greater:
-      return GL_GREATER;
-    case CompareFunc::NotEqual:
-      return GL_NOTEQUAL;
-    case CompareFunc::GEqual:
-      return GL_GEQUAL;
-    case CompareFunc::Always:
-      return GL_ALWAYS;
-  }
-  throw std::invalid_argument("GlDevice: unknown compare function " +
-                              std::to_string(static_cast<int>(f)));
-}
-
-GLenum glStencilOpOf(StencilOp op) {
-  switch (op) {
-    case StencilOp::Keep:
-      return GL_KEEP;
-    case StencilOp::Zero:
-      return GL_ZERO;
-    case StencilOp::Replace:
-      return GL_REPLACE;
-    case StencilOp::Incr:
-      return GL_INCR;
-    case StencilOp::IncrWrap:
-      return GL_INCR_WRAP;
-    case StencilOp::Decr:
-      return GL_DECR;
-    case StencilOp::DecrWrap:
-      return GL_DECR_WRAP;
-    case StencilOp::Invert:
-      return GL_INVERT;
-  }
-  throw std::invalid_argument("GlDevice: unknown stencil op " +
-                              std::to_string(static_cast<int>(op)));
-}
 
 // One axis of the viewport: the largest power of two GL allows, centred on the framebuffer
 // (the origin kept within GL_VIEWPORT_BOUNDS_RANGE).
@@ -254,7 +208,7 @@ void GlDevice::clearStencil(std::uint8_t value) {
 }
 
 void GlDevice::setDepthFunc(CompareFunc func) {
-  const GLenum f = glCompare(func);
+  const GLenum f = detail::glCompareEnum(func);
   impl_->use();
   glDepthFunc(f);
 }
@@ -265,30 +219,16 @@ void GlDevice::setDepthWriteMask(bool write) {
 }
 
 void GlDevice::setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) {
-  const GLenum f = glCompare(func);
+  const GLenum f = detail::glCompareEnum(func);
   impl_->use();
   glStencilFunc(f, ref, valueMask);  // one func for both faces, as in the device interface
 }
 
 void GlDevice::setStencilOps(raster::Face face, const raster::StencilOps& ops) {
-  GLenum glFace = GL_FRONT_AND_BACK;
-  switch (face) {
-    case raster::Face::Front:
-      glFace = GL_FRONT;
-      break;
-    case raster::Face::Back:
-      glFace = GL_BACK;
-      break;
-    case raster::Face::Both:
-      glFace = GL_FRONT_AND_BACK;
-      break;
-    default:
-      throw std::invalid_argument("GlDevice: unknown face " +
-                                  std::to_string(static_cast<int>(face)));
-  }
-  const GLenum sfail = glStencilOpOf(ops.stencilFail);
-  const GLenum dpfail = glStencilOpOf(ops.depthFail);
-  const GLenum dppass = glStencilOpOf(ops.depthPass);
+  const GLenum glFace = detail::glFaceEnum(face);
+  const GLenum sfail = detail::glStencilOpEnum(ops.stencilFail);
+  const GLenum dpfail = detail::glStencilOpEnum(ops.depthFail);
+  const GLenum dppass = detail::glStencilOpEnum(ops.depthPass);
   impl_->use();
   glStencilOpSeparate(glFace, sfail, dpfail, dppass);
 }

@@ -1,0 +1,260 @@
+// The exact GL device against the reference, with no tolerance: the golden vectors, random
+// streams with sloped planes, slivers and every state, and the generated pair suite, on every
+// context platform this build has (OSMesa; EGL where its surfaceless platform works here).
+// Plus what the shared context must not leak between devices, and the errors.
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "recode/raster/command_stream.hpp"
+#include "recode/raster/cpu_device.hpp"
+#include "recode/raster/golden.hpp"
+#include "recode/verify/exact_parity.hpp"
+#include "recode/verify/gl_exact_device.hpp"
+#include "recode/verify/pair_suite.hpp"
+
+using namespace recode;
+using raster::CompareFunc;
+using raster::Face;
+using raster::StencilOp;
+using raster::WindowVertex;
+using verify::GlExactDevice;
+using verify::GlPlatform;
+
+namespace {
+
+// The platforms to test: OSMesa always (it is what this machine has); EGL when built and its
+// headless platform gives a context here.
+std::vector<GlPlatform> platforms() {
+  std::vector<GlPlatform> list;
+  if (verify::glPlatformBuilt(GlPlatform::OsMesa))
+    list.push_back(GlPlatform::OsMesa);
+  if (verify::glPlatformBuilt(GlPlatform::Egl)) {
+    try {
+      GlExactDevice probe(1, 1, GlPlatform::Egl);
+      list.push_back(GlPlatform::Egl);
+    } catch (const std::runtime_error& e) {
+      WARN("EGL exact device unavailable here: " << e.what());
+    }
+  }
+  return list;
+}
+
+std::vector<std::filesystem::path> goldenFiles() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(RECODE_DATA_DIR "/golden"))
+    if (entry.path().extension() == ".json")
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string describe(const verify::ExactParityReport& r) {
+  if (r.examples.empty())
+    return "no difference";
+  const auto& e = r.examples.front();
+  return "command " + std::to_string(e.command) + " pixel (" + std::to_string(e.x) + ", " +
+         std::to_string(e.y) + "): depth " + std::to_string(e.referenceDepth) + " vs " +
+         std::to_string(e.candidateDepth) + ", stencil " + std::to_string(e.referenceStencil) +
+         " vs " + std::to_string(e.candidateStencil);
+}
+
+// A random stream: every state, sloped planes with z anywhere in [0, 1], slivers, vertices far
+// outside the framebuffer (up to the +-32768 guard band), random sub-pixel positions.
+raster::CommandStream randomStream(std::mt19937& rng, int width, int height) {
+  const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  const auto unit = [&] { return std::uniform_real_distribution<float>(0.0f, 1.0f)(rng); };
+  raster::CommandStream stream;
+  stream.width = width;
+  stream.height = height;
+  for (int k = 0; k < 30; ++k) {
+    switch (pick(10)) {
+      case 0:
+        stream.commands.emplace_back(raster::cmd::Scissor{
+            {pick(width) - 4, pick(height) - 4, pick(width) + 8, pick(height) + 8}});
+        break;
+      case 1:
+        stream.commands.emplace_back(raster::cmd::ClearDepth{unit()});
+        break;
+      case 2:
+        stream.commands.emplace_back(raster::cmd::ClearStencil{std::uint8_t(pick(256))});
+        break;
+      case 3:
+        stream.commands.emplace_back(raster::cmd::DepthFunc{CompareFunc(pick(8))});
+        stream.commands.emplace_back(raster::cmd::DepthWriteMask{pick(4) != 0});
+        break;
+      case 4:
+        stream.commands.emplace_back(
+            raster::cmd::StencilFunc{CompareFunc(pick(8)), std::uint8_t(pick(256)),
+                                     std::uint8_t(pick(2) ? 0xFF : pick(256))});
+        break;
+      case 5:
+        stream.commands.emplace_back(raster::cmd::StencilOpsCmd{
+            Face(pick(3)), {StencilOp(pick(8)), StencilOp(pick(8)), StencilOp(pick(8))}});
+        break;
+      case 6:
+        stream.commands.emplace_back(
+            raster::cmd::StencilWriteMask{std::uint8_t(pick(2) ? 0xFF : pick(256))});
+        stream.commands.emplace_back(raster::cmd::Cull{raster::CullMode(pick(3))});
+        break;
+      default: {
+        raster::cmd::Draw draw;
+        const int triangles = 1 + pick(6);
+        for (int t = 0; t < triangles; ++t) {
+          const bool far = pick(5) == 0;     // a vertex in the guard band
+          const bool sliver = pick(3) == 0;  // a long thin triangle with a steep plane
+          // Positions on the 1/256 grid, or on pixel centres and edges (where the fill rule
+          // decides), or on whole pixels.
+          const int grid = std::vector<int>{1, 128, 256}[pick(3)];
+          const auto coordinate = [&](int extent) {
+            const int span = far ? 65536 * 256 : (extent + 8) * 256;
+            const int offset = far ? 32768 * 256 : 4 * 256;
+            return float((pick(span) - offset) / grid * grid) / 256.0f;
+          };
+          WindowVertex a{coordinate(width), coordinate(height), unit()};
+          WindowVertex b{coordinate(width), coordinate(height), unit()};
+          WindowVertex c = sliver ? WindowVertex{b.x + float(pick(5) - 2) / 256.0f,
+                                                 b.y + float(pick(5) - 2) / 256.0f, unit()}
+                                  : WindowVertex{coordinate(width), coordinate(height), unit()};
+          for (const WindowVertex& v : {a, b, c}) {
+            draw.indices.push_back(static_cast<std::uint32_t>(draw.vertices.size()));
+            draw.vertices.push_back(v);
+          }
+        }
+        stream.commands.emplace_back(std::move(draw));
+      }
+    }
+  }
+  return stream;
+}
+
+}  // namespace
+
+TEST_CASE("every golden vector replays bit for bit on the exact GL device", "[gl-exact][golden]") {
+  const auto files = goldenFiles();
+  REQUIRE(files.size() >= 7);
+  for (GlPlatform platform : platforms()) {
+    INFO("platform " << verify::toString(platform));
+    for (const auto& path : files) {
+      INFO(path.filename().string());
+      const raster::CommandFile file = raster::readCommandFile(path.string());
+      REQUIRE(file.hasExpected);
+      const raster::GoldenVector& g = file.content;
+      GlExactDevice device(g.stream.width, g.stream.height, platform);
+      raster::replay(g.stream.commands, device);
+      const raster::PixelRect all{0, 0, g.stream.width, g.stream.height};
+      CHECK(device.readDepth(all) == g.depth);
+      CHECK(device.readStencil(all) == g.stencil);
+    }
+  }
+}
+
+TEST_CASE("random sloped streams agree with the CPU device after every command",
+          "[gl-exact][random]") {
+  for (GlPlatform platform : platforms()) {
+    INFO("platform " << verify::toString(platform));
+    std::mt19937 rng(20261124);
+    verify::ExactParityCounts total;
+    for (int s = 0; s < 60; ++s) {
+      const int width = 8 + static_cast<int>(rng() % 90);
+      const int height = 8 + static_cast<int>(rng() % 70);
+      const raster::CommandStream stream = randomStream(rng, width, height);
+      raster::CpuDevice reference(width, height);
+      GlExactDevice candidate(width, height, platform);
+      const auto report = verify::compareStreamExactly(stream, reference, candidate);
+      INFO("stream " << s << ": " << describe(report));
+      CHECK(report.ok());
+      total += report.counts;
+    }
+    CHECK(total.pixels > 1000000);
+    CHECK(total.identical == total.pixels);
+  }
+}
+
+TEST_CASE("the generated pair suite is bit-identical on the exact GL device", "[gl-exact][suite]") {
+  const auto suite = verify::generatePairSuite();
+  REQUIRE(suite.size() == 504);
+  for (GlPlatform platform : platforms()) {
+    INFO("platform " << verify::toString(platform));
+    verify::ExactParityCounts total;
+    int compared = 0;
+    for (const verify::SuitePair& pair : suite) {
+      core::PairRequest request;
+      request.frame = pair.frame;
+      const auto report = verify::compareOnGlExact(pair.a, pair.b, request, platform);
+      INFO(pair.label << ": " << describe(report));
+      CHECK(report.ok());
+      total += report.counts;
+      compared += report.counts.pixels > 0;
+    }
+    CHECK(compared > 250);
+    CHECK(total.different == 0);
+  }
+}
+
+TEST_CASE("exact parity reports a device that differs", "[gl-exact][errors]") {
+  // The comparer itself must be able to fail: the same stream with one vertex moved by one
+  // sub-pixel step, replayed on a second CPU device, differs somewhere.
+  raster::CommandStream stream;
+  stream.width = stream.height = 16;
+  stream.commands.emplace_back(
+      raster::cmd::Draw{{{1.0f, 1.0f, 0.2f}, {15.0f, 2.0f, 0.9f}, {3.0f, 14.0f, 0.5f}}, {0, 1, 2}});
+  raster::CommandStream moved = stream;
+  std::get<raster::cmd::Draw>(moved.commands[0]).vertices[2].z = 0.51f;
+  raster::CpuDevice reference(16, 16);
+  raster::CpuDevice candidate(16, 16);
+  raster::replay(moved.commands, candidate);  // the candidate starts from a wrong state
+  const auto report = verify::compareStreamExactly(stream, reference, candidate);
+  CHECK_FALSE(report.ok());
+  CHECK(report.counts.different > 0);
+  REQUIRE_FALSE(report.examples.empty());
+  CHECK(report.examples.front().command == -1);
+}
+
+TEST_CASE("exact GL devices share one context without sharing state", "[gl-exact]") {
+  for (GlPlatform platform : platforms()) {
+    INFO("platform " << verify::toString(platform));
+    GlExactDevice a(6, 4, platform);
+    GlExactDevice b(5, 7, platform);
+    a.setStencilFunc(CompareFunc::Always, 9, 0xFF);
+    a.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Replace});
+    a.setScissor({0, 0, 2, 2});
+    b.setDepthFunc(CompareFunc::Never);
+    b.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::IncrWrap, StencilOp::Keep});
+    const WindowVertex quad[4] = {{-1, -1, 0.5f}, {9, -1, 0.5f}, {9, 9, 0.5f}, {-1, 9, 0.5f}};
+    const std::uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
+    a.drawTriangles(quad, indices);
+    b.drawTriangles(quad, indices);
+    a.drawTriangles(quad, indices);
+    const auto stencilA = a.readStencil({0, 0, 6, 4});
+    const auto stencilB = b.readStencil({0, 0, 5, 7});
+    CHECK(std::count(stencilA.begin(), stencilA.end(), 9) == 4);  // its scissor, its ref
+    CHECK(std::count(stencilA.begin(), stencilA.end(), 0) == 20);
+    CHECK(std::all_of(stencilB.begin(), stencilB.end(), [](auto s) { return s == 1; }));
+    const auto depthB = b.readDepth({0, 0, 5, 7});
+    CHECK(std::all_of(depthB.begin(), depthB.end(), [](auto d) { return d == 16777215u; }));
+  }
+}
+
+TEST_CASE("the exact GL device rejects what the CPU device rejects", "[gl-exact][errors]") {
+  for (GlPlatform platform : platforms()) {
+    CHECK_THROWS_AS(GlExactDevice(0, 4, platform), std::invalid_argument);
+    CHECK_THROWS_AS(GlExactDevice(16385, 4, platform), std::invalid_argument);
+    GlExactDevice device(4, 4, platform);
+    const WindowVertex v[3] = {{0, 0, 0.5f}, {4, 0, 1.5f}, {0, 4, 0.5f}};
+    const std::uint32_t bad[3] = {0, 1, 3};
+    const std::uint32_t good[3] = {0, 1, 2};
+    CHECK_THROWS_AS(device.drawTriangles(v, bad), std::invalid_argument);
+    CHECK_THROWS_AS(device.drawTriangles(v, good), std::invalid_argument);  // z = 1.5
+    CHECK_THROWS_AS(device.clearDepth(std::nan("")), std::invalid_argument);
+    const auto depth = device.readDepth({0, 0, 4, 4});
+    CHECK(std::all_of(depth.begin(), depth.end(), [](auto d) { return d == 16777215u; }));
+  }
+}

@@ -1,0 +1,75 @@
+#pragma once
+// The exact GL device: OpenGL 4.5 core with shaders that apply the rasterization contract
+// themselves (docs/rasterization.md; how, in docs/backends.md), so its depth and stencil match
+// raster::CpuDevice bit for bit on any conforming GL driver, where the fixed-function GlDevice
+// inherits the driver's own float depth. Each triangle is drawn as a proxy rectangle over its
+// candidate pixels; the fragment shader keeps the pixels the contract covers and writes the
+// contract's 24-bit depth q as q 2^-24 into a 32-bit float depth buffer. Stencil stays
+// fixed-function. No GL type appears here.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "recode/raster/device.hpp"
+
+namespace recode::verify {
+
+// Where the GL context comes from. Auto takes EGL when its headless platform works and falls
+// back to OSMesa, so the same program runs on Mesa's CPU driver and on a real GPU driver.
+enum class GlPlatform : std::uint8_t { Auto, OsMesa, Egl };
+
+[[nodiscard]] std::string_view toString(GlPlatform platform);  // "auto", "osmesa", "egl"
+[[nodiscard]] std::optional<GlPlatform> parseGlPlatform(std::string_view name);
+
+// Which platforms this build can use (OSMesa and EGL are separate build options).
+[[nodiscard]] bool glPlatformBuilt(GlPlatform platform);
+
+class GlExactDevice final : public raster::DepthStencilDevice {
+ public:
+  // A width x height framebuffer (depth 1.0, stencil 0, GL's default state). Throws
+  // std::invalid_argument unless 1 <= width, height <= 16384, and std::runtime_error when no
+  // context of the platform can be made or it lacks what the device needs (OpenGL 4.5 core,
+  // 64-bit integers in shaders, a 16384-pixel renderbuffer), saying which.
+  //
+  // A device must be used by one thread at a time; it makes its context current before every
+  // GL call. One process should use one platform: OSMesa and EGL share Mesa's dispatch.
+  GlExactDevice(int width, int height, GlPlatform platform = GlPlatform::Auto);
+  ~GlExactDevice() override;
+  GlExactDevice(const GlExactDevice&) = delete;
+  GlExactDevice& operator=(const GlExactDevice&) = delete;
+
+  [[nodiscard]] int width() const override;
+  [[nodiscard]] int height() const override;
+
+  void setScissor(const raster::PixelRect& rect) override;
+  void clearDepth(double depth) override;
+  void clearStencil(std::uint8_t value) override;
+  void setDepthFunc(raster::CompareFunc func) override;
+  void setDepthWriteMask(bool write) override;
+  void setStencilFunc(raster::CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) override;
+  void setStencilOps(raster::Face face, const raster::StencilOps& ops) override;
+  void setStencilWriteMask(std::uint8_t mask) override;
+  void setCullMode(raster::CullMode mode) override;
+  // Validated exactly as CpuDevice validates, then snapped, set up (facing, culling, candidate
+  // pixels) on the CPU, and drawn as one instanced draw of proxy rectangles.
+  void drawTriangles(std::span<const raster::WindowVertex> vertices,
+                     std::span<const std::uint32_t> indices) override;
+  [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
+  [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override;
+
+  // GL_RENDERER of the context ("llvmpipe (LLVM 15.0.6, 256 bits)") and the platform it came
+  // from (never Auto).
+  [[nodiscard]] std::string renderer() const;
+  [[nodiscard]] GlPlatform platform() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace recode::verify

@@ -1,0 +1,100 @@
+#include "recode/verify/exact_parity.hpp"
+
+#include <stdexcept>
+#include <variant>
+
+#include "recode/raster/cpu_device.hpp"
+
+namespace recode::verify {
+
+namespace {
+
+bool changesBuffers(const raster::Command& command) {
+  return std::holds_alternative<raster::cmd::Draw>(command) ||
+         std::holds_alternative<raster::cmd::ClearDepth>(command) ||
+         std::holds_alternative<raster::cmd::ClearStencil>(command);
+}
+
+void requireStreamSize(const raster::DepthStencilDevice& device,
+                       const raster::CommandStream& stream, const char* which) {
+  if (device.width() != stream.width || device.height() != stream.height) {
+    throw std::invalid_argument(std::string("exact parity: the ") + which + " device is " +
+                                std::to_string(device.width()) + "x" +
+                                std::to_string(device.height()) + " but the stream is " +
+                                std::to_string(stream.width) + "x" + std::to_string(stream.height));
+  }
+}
+
+void compareRegion(const raster::DepthStencilDevice& reference,
+                   const raster::DepthStencilDevice& candidate, const raster::PixelRect& region,
+                   int command, int maxExamples, ExactParityReport& report) {
+  const auto refDepth = reference.readDepth(region);
+  const auto refStencil = reference.readStencil(region);
+  const auto gotDepth = candidate.readDepth(region);
+  const auto gotStencil = candidate.readStencil(region);
+  ++report.comparisons;
+  for (std::size_t i = 0; i < refDepth.size(); ++i) {
+    ++report.counts.pixels;
+    if (refDepth[i] == gotDepth[i] && refStencil[i] == gotStencil[i]) {
+      ++report.counts.identical;
+      continue;
+    }
+    ++report.counts.different;
+    if (static_cast<int>(report.examples.size()) < maxExamples) {
+      const int w = region.width();
+      report.examples.push_back({command, region.x0 + static_cast<int>(i) % w,
+                                 region.y0 + static_cast<int>(i) / w, refStencil[i], gotStencil[i],
+                                 refDepth[i], gotDepth[i]});
+    }
+  }
+}
+
+}  // namespace
+
+ExactParityReport compareStreamExactly(const raster::CommandStream& stream,
+                                       raster::DepthStencilDevice& reference,
+                                       raster::DepthStencilDevice& candidate,
+                                       std::optional<raster::PixelRect> region, int maxExamples) {
+  requireStreamSize(reference, stream, "reference");
+  requireStreamSize(candidate, stream, "candidate");
+  const raster::PixelRect frame{0, 0, stream.width, stream.height};
+  const raster::PixelRect compared = region ? region->intersect(frame) : frame;
+  ExactParityReport report;
+  if (compared.empty())
+    return report;
+  compareRegion(reference, candidate, compared, -1, maxExamples, report);
+  for (std::size_t k = 0; k < stream.commands.size(); ++k) {
+    const std::vector<raster::Command> one{stream.commands[k]};
+    raster::replay(one, reference);
+    raster::replay(one, candidate);
+    if (changesBuffers(one.front()))
+      compareRegion(reference, candidate, compared, static_cast<int>(k), maxExamples, report);
+  }
+  return report;
+}
+
+#ifndef RECODE_HAVE_GL_EXACT
+ExactParityReport compareOnGlExact(const core::TriangleMesh&, const core::TriangleMesh&,
+                                   const core::PairRequest&, GlPlatform) {
+  throw std::runtime_error(
+      "this build has no exact GL device (Debian: apt-get install "
+      "libosmesa6-dev or libegl-dev, then reconfigure)");
+}
+#else
+ExactParityReport compareOnGlExact(const core::TriangleMesh& a, const core::TriangleMesh& b,
+                                   const core::PairRequest& request, GlPlatform platform) {
+  raster::CpuDevice cpu(request.frame.width, request.frame.height);
+  raster::RecordingDevice recorder(cpu);
+  const core::PairResult result = core::collidePair(recorder, a, b, request);
+  if (result.mor.empty())
+    return {};
+  const raster::CommandStream& stream = recorder.stream();
+  raster::CpuDevice reference(stream.width, stream.height);
+  GlExactDevice candidate(stream.width, stream.height, platform);
+  ExactParityReport report = compareStreamExactly(stream, reference, candidate, result.mor);
+  report.renderer = candidate.renderer();
+  return report;
+}
+#endif
+
+}  // namespace recode::verify

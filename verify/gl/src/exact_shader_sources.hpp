@@ -1,0 +1,11 @@
+#pragma once
+// The exact devices' GLSL, embedded at build time from verify/gl/shaders (embed_shaders.cmake).
+// Each is a body without a #version line: the device prepends the header its API needs.
+
+namespace recode::verify::detail {
+
+extern const char* const kExactContractGlsl;  // shaders/exact_contract.glsl
+extern const char* const kExactGlVertex;      // shaders/exact_gl.vert
+extern const char* const kExactGlFragment;    // shaders/exact_gl.frag
+
+}  // namespace recode::verify::detail
