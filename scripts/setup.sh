@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config clang-format
   libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libstb-dev
   catch2 libbenchmark-dev libtbb-dev
-  libembree-dev libcgal-dev libosmesa6-dev
+  libembree-dev libcgal-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libfcl-dev libbullet-dev gnuplot-nox
 )
 
