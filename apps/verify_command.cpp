@@ -23,6 +23,8 @@ struct VerifyOptions {
   bool embree = false;
   bool cgal = false;
   bool gl = false;
+  bool glExact = false;
+  std::string glPlatform = "auto";
   bool json = false;
   bool verbose = false;
   FrameOptions frameOptions;
@@ -32,8 +34,9 @@ struct VerifyOptions {
 // The oracles named on the command line; none named means Embree and CGAL (docs/cli.md,
 // "recode verify": the GL replay is asked for explicitly, as it needs OSMesa at run time).
 verify::OracleSelection selectedOracles(const VerifyOptions& o) {
-  verify::OracleSelection s{o.embree, o.cgal, o.gl};
-  if (!s.embree && !s.cgal && !s.gl)
+  verify::OracleSelection s{o.embree, o.cgal, o.gl, o.glExact,
+                            *verify::parseGlPlatform(o.glPlatform)};
+  if (!s.embree && !s.cgal && !s.gl && !s.glExact)
     s.embree = s.cgal = true;
   return s;
 }
@@ -55,6 +58,8 @@ int runVerifyCommand(const VerifyOptions& o) {
   run.oracles = selectedOracles(o);
   VerifyPairs input = pairsToVerify(o);        // the input's errors first, whatever the build
   verify::PairVerifier verifier(run.oracles);  // throws for an oracle this build lacks
+  if (run.oracles.glExact)
+    run.glPlatform = verify::resolveGlPlatform(run.oracles.glPlatform);  // no context: an error
   run.source = input.source;
   for (PairToVerify& p : input.pairs) {
     core::PairRequest request;
@@ -77,7 +82,8 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   CLI::App* cmd = app.add_subcommand(
       "verify",
       "Check RECODE against independent oracles: Embree ray casts per pixel, CGAL exact "
-      "intersection per pair, the same commands replayed on OpenGL (OSMesa). Exit status 2 when "
+      "intersection per pair, the same commands replayed on OpenGL (OSMesa fixed function, or "
+      "the exact GL device). Exit status 2 when "
       "anything is unexplained or disagrees");
   auto* scene = cmd->add_option("scene", o->scene,
                                 "scene file (JSON, docs/scenes.md): every pair of blocks of "
@@ -102,6 +108,14 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--cgal", o->cgal,
                 "per pair: CGAL exact intersection (naming no oracle runs --embree --cgal)");
   cmd->add_flag("--gl", o->gl, "replay every pair's commands on OSMesa and compare the buffers");
+  cmd->add_flag("--gl-exact", o->glExact,
+                "replay every pair's commands on the exact GL device (shaders, OpenGL 4.5) and "
+                "require bit-identical depth and stencil after every command");
+  cmd->add_option("--gl-platform", o->glPlatform,
+                  "where the exact GL device's context comes from: auto (EGL, else OSMesa), "
+                  "osmesa, egl")
+      ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
+      ->capture_default_str();
   cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   cmd->add_flag("--verbose", o->verbose, "list every pair, not only failures and misses");
   const FrameOptionHandles frameOptions =

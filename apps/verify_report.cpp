@@ -23,6 +23,19 @@ std::string glLine(const verify::GlParityCounts& c) {
   return s.str();
 }
 
+std::string glExactLine(const verify::ExactParityCounts& c) {
+  std::ostringstream s;
+  s << c.pixels << " px: " << c.identical << " identical, " << c.different << " different";
+  return s.str();
+}
+
+void printDifferences(std::ostream& out, const std::vector<verify::GlDifference>& differences) {
+  for (const verify::GlDifference& d : differences)
+    out << "          command " << d.command << " pixel (" << d.x << ", " << d.y << "): stencil "
+        << int{d.referenceStencil} << " vs " << int{d.candidateStencil} << ", depth "
+        << d.referenceDepth << " vs " << d.candidateDepth << '\n';
+}
+
 bool worthShowing(const verify::PairVerification& p) {
   return !p.passed() || (p.cgal && p.cgal->verdict == verify::VerdictCheck::ResolutionMiss);
 }
@@ -41,10 +54,11 @@ void printPair(std::ostream& out, const verify::PairVerification& p) {
         << verify::toString(p.cgal->verdict) << ": " << p.cgal->reason << '\n';
   if (p.gl) {
     out << "        gl     " << glLine(p.gl->counts) << '\n';
-    for (const verify::GlDifference& d : p.gl->examples)
-      out << "          command " << d.command << " pixel (" << d.x << ", " << d.y << "): stencil "
-          << int{d.referenceStencil} << " vs " << int{d.candidateStencil} << ", depth "
-          << d.referenceDepth << " vs " << d.candidateDepth << '\n';
+    printDifferences(out, p.gl->examples);
+  }
+  if (p.glExact) {
+    out << "        gl-exact " << glExactLine(p.glExact->counts) << '\n';
+    printDifferences(out, p.glExact->examples);
   }
 }
 
@@ -61,6 +75,10 @@ ordered_json glJson(const verify::GlParityCounts& c) {
           {"identical", c.identical},
           {"depth_ties", c.depthTies},
           {"unexplained", c.unexplained}};
+}
+
+ordered_json glExactJson(const verify::ExactParityCounts& c) {
+  return {{"pixels", c.pixels}, {"identical", c.identical}, {"different", c.different}};
 }
 
 ordered_json boxJson(const core::Aabb& box) {
@@ -88,6 +106,8 @@ ordered_json pairJson(const verify::PairVerification& p) {
   }
   if (p.gl)
     j["gl"] = glJson(p.gl->counts);
+  if (p.glExact)
+    j["gl_exact"] = glExactJson(p.glExact->counts);
   j["passed"] = p.passed();
   return j;
 }
@@ -116,6 +136,9 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
         << t.cgalSeconds << " s)\n";
   if (run.oracles.gl)
     out << "  gl      " << glLine(t.gl) << "  (" << t.glSeconds << " s)\n";
+  if (run.oracles.glExact)
+    out << "  gl-exact " << glExactLine(t.glExact) << "  (" << verify::toString(run.glPlatform)
+        << ", " << t.glExactSeconds << " s)\n";
   out << "verdict: "
       << (t.passed() ? "VERIFIED"
                      : "FAILED (" + std::to_string(t.failedPairs) +
@@ -148,6 +171,11 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
   if (run.oracles.gl) {
     j["gl"] = glJson(t.gl);
     j["gl"]["seconds"] = t.glSeconds;
+  }
+  if (run.oracles.glExact) {
+    j["gl_exact"] = glExactJson(t.glExact);
+    j["gl_exact"]["platform"] = verify::toString(run.glPlatform);
+    j["gl_exact"]["seconds"] = t.glExactSeconds;
   }
   j["passed"] = t.passed();
   return j;

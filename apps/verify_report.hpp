@@ -14,6 +14,7 @@ namespace recode::app {
 struct VerifyRun {
   std::string source;
   verify::OracleSelection oracles;
+  verify::GlPlatform glPlatform = verify::GlPlatform::Auto;  // the exact GL device's, resolved
   std::vector<verify::PairVerification> pairs;
   verify::VerificationTotals totals;
 };

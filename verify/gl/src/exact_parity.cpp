@@ -74,6 +74,12 @@ ExactParityReport compareStreamExactly(const raster::CommandStream& stream,
 }
 
 #ifndef RECODE_HAVE_GL_EXACT
+GlPlatform resolveGlPlatform(GlPlatform) {
+  throw std::runtime_error(
+      "this build has no exact GL device (Debian: apt-get install "
+      "libosmesa6-dev or libegl-dev, then reconfigure)");
+}
+
 ExactParityReport compareOnGlExact(const core::TriangleMesh&, const core::TriangleMesh&,
                                    const core::PairRequest&, GlPlatform) {
   throw std::runtime_error(

@@ -279,6 +279,10 @@ struct GlExactDevice::Impl {
   }
 };
 
+GlPlatform resolveGlPlatform(GlPlatform requested) {
+  return SharedGl::of(requested).platform;
+}
+
 GlExactDevice::GlExactDevice(int width, int height, GlPlatform platform)
     : impl_(std::make_unique<Impl>()) {
   raster::checkFramebufferSize(width, height);

@@ -21,6 +21,9 @@ std::string howToBuild(Oracle oracle) {
       return "install libcgal-dev and configure with -DRECODE_WITH_CGAL=ON";
     case Oracle::Gl:
       return "install libosmesa6-dev and configure with -DRECODE_WITH_OSMESA=ON";
+    case Oracle::GlExact:
+      return "install libosmesa6-dev or libegl-dev and configure with -DRECODE_WITH_OSMESA=ON "
+             "or -DRECODE_WITH_EGL=ON";
   }
   return "?";
 }
@@ -41,6 +44,8 @@ std::string_view toString(Oracle oracle) {
       return "cgal";
     case Oracle::Gl:
       return "gl";
+    case Oracle::GlExact:
+      return "gl-exact";
   }
   return "unknown";
 }
@@ -65,6 +70,12 @@ bool oracleBuilt(Oracle oracle) {
 #else
       return false;
 #endif
+    case Oracle::GlExact:
+#ifdef RECODE_HAVE_GL_EXACT
+      return true;
+#else
+      return false;
+#endif
   }
   return false;
 }
@@ -75,6 +86,8 @@ bool PairVerification::passed() const {
   if (cgal && cgal->verdict == VerdictCheck::Disagree)
     return false;
   if (gl && gl->counts.unexplained != 0)
+    return false;
+  if (glExact && !glExact->ok())
     return false;
   return true;
 }
@@ -91,9 +104,12 @@ void VerificationTotals::add(const PairVerification& pair) {
     cgal.add(*pair.cgal);
   if (pair.gl)
     gl += pair.gl->counts;
+  if (pair.glExact)
+    glExact += pair.glExact->counts;
   embreeSeconds += pair.embreeSeconds;
   cgalSeconds += pair.cgalSeconds;
   glSeconds += pair.glSeconds;
+  glExactSeconds += pair.glExactSeconds;
 }
 
 struct PairVerifier::State {
@@ -110,6 +126,8 @@ PairVerifier::PairVerifier(const OracleSelection& selection)
     requireBuilt(Oracle::Cgal);
   if (selection_.gl)
     requireBuilt(Oracle::Gl);
+  if (selection_.glExact)
+    requireBuilt(Oracle::GlExact);
 #ifdef RECODE_HAVE_EMBREE
   if (selection_.embree)
     state_->embree.emplace();
@@ -145,6 +163,13 @@ PairVerification PairVerifier::verify(std::string label, const core::TriangleMes
     const auto start = std::chrono::steady_clock::now();
     out.gl = compareOnGl(a, b, request);
     out.glSeconds = secondsSince(start);
+  }
+#endif
+#ifdef RECODE_HAVE_GL_EXACT
+  if (selection_.glExact) {
+    const auto start = std::chrono::steady_clock::now();
+    out.glExact = compareOnGlExact(a, b, request, selection_.glPlatform);
+    out.glExactSeconds = secondsSince(start);
   }
 #endif
   return out;

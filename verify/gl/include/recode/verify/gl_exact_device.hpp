@@ -29,6 +29,10 @@ enum class GlPlatform : std::uint8_t { Auto, OsMesa, Egl };
 // Which platforms this build can use (OSMesa and EGL are separate build options).
 [[nodiscard]] bool glPlatformBuilt(GlPlatform platform);
 
+// The platform that devices asking for `requested` get: makes the process's shared context for
+// it once (Auto resolves to EGL or OSMesa). Throws as the device's constructor does.
+[[nodiscard]] GlPlatform resolveGlPlatform(GlPlatform requested);
+
 class GlExactDevice final : public raster::DepthStencilDevice {
  public:
   // A width x height framebuffer (depth 1.0, stencil 0, GL's default state). Throws

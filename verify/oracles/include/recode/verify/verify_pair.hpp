@@ -13,12 +13,14 @@
 #include "recode/pair/pair.hpp"
 #include "recode/verify/cgal_oracle.hpp"
 #include "recode/verify/embree_oracle.hpp"
+#include "recode/verify/exact_parity.hpp"
 #include "recode/verify/gl_parity.hpp"
 
 namespace recode::verify {
 
-enum class Oracle { Embree, Cgal, Gl };
-[[nodiscard]] std::string_view toString(Oracle oracle);  // "embree", "cgal", "gl"
+enum class Oracle { Embree, Cgal, Gl, GlExact };
+// "embree", "cgal", "gl", "gl-exact"
+[[nodiscard]] std::string_view toString(Oracle oracle);
 // Whether this build contains the oracle.
 [[nodiscard]] bool oracleBuilt(Oracle oracle);
 
@@ -26,6 +28,8 @@ struct OracleSelection {
   bool embree = false;
   bool cgal = false;
   bool gl = false;
+  bool glExact = false;                      // bit-exact replay on GlExactDevice
+  GlPlatform glPlatform = GlPlatform::Auto;  // its context platform
 };
 
 struct PairVerification {
@@ -35,11 +39,14 @@ struct PairVerification {
   std::optional<ExactIntersection> exact;
   std::optional<CgalJudgement> cgal;
   std::optional<GlParityReport> gl;
+  std::optional<ExactParityReport> glExact;
   double embreeSeconds = 0.0;  // wall time of each oracle on this pair
   double cgalSeconds = 0.0;
   double glSeconds = 0.0;
+  double glExactSeconds = 0.0;
 
-  // No unexplained pixel, no CGAL disagreement, no unexplained GL difference.
+  // No unexplained pixel, no CGAL disagreement, no unexplained GL difference, no pixel of the
+  // exact GL device different.
   [[nodiscard]] bool passed() const;
 };
 
@@ -51,9 +58,11 @@ struct VerificationTotals {
   long long embreeRays = 0;
   CgalCounts cgal;
   GlParityCounts gl;
+  ExactParityCounts glExact;
   double embreeSeconds = 0.0;
   double cgalSeconds = 0.0;
   double glSeconds = 0.0;
+  double glExactSeconds = 0.0;
 
   void add(const PairVerification& pair);
   [[nodiscard]] bool passed() const { return failedPairs == 0; }
