@@ -15,6 +15,7 @@
 #include "recode/verify/cgal_oracle.hpp"
 #include "recode/verify/embree_oracle.hpp"
 #include "recode/verify/gl_device.hpp"
+#include "recode/verify/gl_exact_device.hpp"
 #include "recode/verify/pair_suite.hpp"
 
 namespace {
@@ -99,7 +100,7 @@ BENCHMARK(cgalSuite)->Unit(benchmark::kMillisecond);
 // timer paused. The figure is the steady state of a device in use, not a context's start-up
 // (about 5 ms for OSMesa). The pair algorithm sets all the state it relies on, so a device can
 // be reused; the collision count is the same as on fresh devices.
-template <class Device>
+template <class Device, auto... DeviceArguments>
 void pairsOnDevice(benchmark::State& state) {
   const int width = static_cast<int>(state.range(0));
   const SuiteRun& run = suiteAt(width);
@@ -110,7 +111,7 @@ void pairsOnDevice(benchmark::State& state) {
   for (auto _ : state)
     for (const auto& [height, pairs] : byHeight) {
       state.PauseTiming();
-      auto device = std::make_unique<Device>(width, height);
+      auto device = std::make_unique<Device>(width, height, DeviceArguments...);
       benchmark::DoNotOptimize(
           core::collidePair(*device, pairs[0]->a, pairs[0]->b, requestFor(*pairs[0])));
       state.ResumeTiming();
@@ -136,6 +137,40 @@ BENCHMARK(pairsOnDevice<verify::GlDevice>)
     ->Arg(512)
     ->ArgName("width")
     ->Unit(benchmark::kMillisecond);
+#endif
+#ifdef RECODE_HAVE_GL_EXACT
+BENCHMARK(pairsOnDevice<verify::GlExactDevice, verify::GlPlatform::OsMesa>)
+    ->Arg(64)
+    ->Arg(512)
+    ->ArgName("width")
+    ->Unit(benchmark::kMillisecond);
+#endif
+#ifdef RECODE_HAVE_EGL
+BENCHMARK(pairsOnDevice<verify::GlExactDevice, verify::GlPlatform::Egl>)
+    ->Arg(64)
+    ->Arg(512)
+    ->ArgName("width")
+    ->Unit(benchmark::kMillisecond);
+#endif
+
+#ifdef RECODE_HAVE_GL_EXACT
+// Making an exact GL device once the process's shared context and program exist (the first
+// device of a platform also pays for the context and the shader compilation; see
+// docs/backends.md for that figure).
+void exactDeviceCreation(benchmark::State& state) {
+  const auto platform = static_cast<verify::GlPlatform>(state.range(0));
+  const int size = static_cast<int>(state.range(1));
+  { verify::GlExactDevice warm(1, 1, platform); }
+  for (auto _ : state) {
+    verify::GlExactDevice device(size, size, platform);
+    benchmark::DoNotOptimize(device.width());
+  }
+}
+BENCHMARK(exactDeviceCreation)
+    ->Args({static_cast<int>(verify::GlPlatform::OsMesa), 64})
+    ->Args({static_cast<int>(verify::GlPlatform::OsMesa), 512})
+    ->ArgNames({"platform", "size"})
+    ->Unit(benchmark::kMicrosecond);
 #endif
 
 }  // namespace
