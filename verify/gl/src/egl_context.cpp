@@ -91,15 +91,17 @@ class EglContext final : public GlContext {
   }
 
   ~EglContext() override {
+    forget();
     if (eglGetCurrentContext() == context_)
       eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
     eglTerminate(display_);
   }
 
-  void makeCurrent() override {
+  void bind() override {
+    // GLVND skips a make-current of the context it thinks is current, so release it first.
     if (eglGetCurrentContext() == context_)
-      return;
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)
       throw std::runtime_error("EGL: eglMakeCurrent failed (" + eglErrorName(eglGetError()) + ")");
   }

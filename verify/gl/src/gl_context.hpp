@@ -19,7 +19,12 @@ class GlContext {
   GlContext& operator=(const GlContext&) = delete;
 
   // Makes this context current on the calling thread (cheap when it already is).
-  virtual void makeCurrent() = 0;
+  void makeCurrent() {
+    if (current_ == this)
+      return;
+    bind();
+    current_ = this;
+  }
 
   // Resolves a GL entry point that the library does not export under its own name
   // (glClipControl on OSMesa). Returns nullptr when there is none.
@@ -28,6 +33,22 @@ class GlContext {
 
   // The renderer's own name ("llvmpipe (LLVM 15, 256 bits)"), for reports.
   [[nodiscard]] virtual std::string renderer() = 0;
+
+ protected:
+  // Binds this context to the calling thread even if the API believes it is bound already:
+  // OSMesa and Mesa's EGL share one dispatch, so another library's context may have taken it
+  // over without the API's own "current context" noticing.
+  virtual void bind() = 0;
+  // For destructors: this context is no longer bound anywhere.
+  void forget() {
+    if (current_ == this)
+      current_ = nullptr;
+  }
+
+ private:
+  // The context this process last bound on this thread, whatever its kind: the only record that
+  // sees every switch, because every context goes through makeCurrent.
+  static inline thread_local const GlContext* current_ = nullptr;
 };
 
 // An OSMesa (Mesa llvmpipe) context rendering into memory the context owns. Throws

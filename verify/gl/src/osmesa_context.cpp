@@ -24,9 +24,7 @@ class OsMesaContext final : public GlContext {
 
   ~OsMesaContext() override { release(); }
 
-  void makeCurrent() override {
-    if (OSMesaGetCurrentContext() == context_)
-      return;
+  void bind() override {
     if (!OSMesaMakeCurrent(context_, colour_.data(), GL_UNSIGNED_BYTE, width_, height_))
       throw std::runtime_error("OSMesa: OSMesaMakeCurrent failed");
   }
@@ -43,6 +41,7 @@ class OsMesaContext final : public GlContext {
   void release() noexcept {
     if (context_ == nullptr)
       return;
+    forget();
     if (OSMesaGetCurrentContext() == context_)
       OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
     OSMesaDestroyContext(context_);

@@ -40,8 +40,9 @@ class GlExactDevice final : public raster::DepthStencilDevice {
   // context of the platform can be made or it lacks what the device needs (OpenGL 4.5 core,
   // 64-bit integers in shaders, a 16384-pixel renderbuffer), saying which.
   //
-  // A device must be used by one thread at a time; it makes its context current before every
-  // GL call. One process should use one platform: OSMesa and EGL share Mesa's dispatch.
+  // Devices of a platform share one context (made on first use): use them, and any other GL
+  // device of the process, from one thread at a time. Each makes the context current before
+  // its GL calls and re-applies its own state after another device used it.
   GlExactDevice(int width, int height, GlPlatform platform = GlPlatform::Auto);
   ~GlExactDevice() override;
   GlExactDevice(const GlExactDevice&) = delete;
