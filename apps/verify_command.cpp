@@ -25,6 +25,7 @@ struct VerifyOptions {
   bool gl = false;
   bool glExact = false;
   std::string glPlatform = "auto";
+  bool vulkan = false;
   bool json = false;
   bool verbose = false;
   FrameOptions frameOptions;
@@ -34,9 +35,9 @@ struct VerifyOptions {
 // The oracles named on the command line; none named means Embree and CGAL (docs/cli.md,
 // "recode verify": the GL replay is asked for explicitly, as it needs OSMesa at run time).
 verify::OracleSelection selectedOracles(const VerifyOptions& o) {
-  verify::OracleSelection s{o.embree, o.cgal, o.gl, o.glExact,
-                            *verify::parseGlPlatform(o.glPlatform)};
-  if (!s.embree && !s.cgal && !s.gl && !s.glExact)
+  verify::OracleSelection s{
+      o.embree, o.cgal, o.gl, o.glExact, *verify::parseGlPlatform(o.glPlatform), o.vulkan};
+  if (!s.embree && !s.cgal && !s.gl && !s.glExact && !s.vulkan)
     s.embree = s.cgal = true;
   return s;
 }
@@ -83,7 +84,7 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
       "verify",
       "Check RECODE against independent oracles: Embree ray casts per pixel, CGAL exact "
       "intersection per pair, the same commands replayed on OpenGL (OSMesa fixed function, or "
-      "the exact GL device). Exit status 2 when "
+      "the exact GL or Vulkan device). Exit status 2 when "
       "anything is unexplained or disagrees");
   auto* scene = cmd->add_option("scene", o->scene,
                                 "scene file (JSON, docs/scenes.md): every pair of blocks of "
@@ -116,6 +117,10 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
                   "osmesa, egl")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
       ->capture_default_str();
+  cmd->add_flag("--vulkan", o->vulkan,
+                "replay every pair's commands on the exact Vulkan device (headless Vulkan 1.3, "
+                "lavapipe or a GPU) and require bit-identical depth and stencil after every "
+                "command");
   cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   cmd->add_flag("--verbose", o->verbose, "list every pair, not only failures and misses");
   const FrameOptionHandles frameOptions =

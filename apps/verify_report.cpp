@@ -60,6 +60,10 @@ void printPair(std::ostream& out, const verify::PairVerification& p) {
     out << "        gl-exact " << glExactLine(p.glExact->counts) << '\n';
     printDifferences(out, p.glExact->examples);
   }
+  if (p.vulkan) {
+    out << "        vulkan " << glExactLine(p.vulkan->counts) << '\n';
+    printDifferences(out, p.vulkan->examples);
+  }
 }
 
 ordered_json embreeJson(const verify::EmbreeCounts& c) {
@@ -108,6 +112,8 @@ ordered_json pairJson(const verify::PairVerification& p) {
     j["gl"] = glJson(p.gl->counts);
   if (p.glExact)
     j["gl_exact"] = glExactJson(p.glExact->counts);
+  if (p.vulkan)
+    j["vulkan"] = glExactJson(p.vulkan->counts);
   j["passed"] = p.passed();
   return j;
 }
@@ -139,6 +145,8 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
   if (run.oracles.glExact)
     out << "  gl-exact " << glExactLine(t.glExact) << "  (" << verify::toString(run.glPlatform)
         << ", " << t.glExactSeconds << " s)\n";
+  if (run.oracles.vulkan)
+    out << "  vulkan  " << glExactLine(t.vulkan) << "  (" << t.vulkanSeconds << " s)\n";
   out << "verdict: "
       << (t.passed() ? "VERIFIED"
                      : "FAILED (" + std::to_string(t.failedPairs) +
@@ -176,6 +184,10 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
     j["gl_exact"] = glExactJson(t.glExact);
     j["gl_exact"]["platform"] = verify::toString(run.glPlatform);
     j["gl_exact"]["seconds"] = t.glExactSeconds;
+  }
+  if (run.oracles.vulkan) {
+    j["vulkan"] = glExactJson(t.vulkan);
+    j["vulkan"]["seconds"] = t.vulkanSeconds;
   }
   j["passed"] = t.passed();
   return j;

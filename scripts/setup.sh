@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libstb-dev
   catch2 libbenchmark-dev libtbb-dev
   libembree-dev libcgal-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
+  libvulkan-dev mesa-vulkan-drivers glslang-tools
   libfcl-dev libbullet-dev gnuplot-nox
 )
 

@@ -4,6 +4,9 @@
 #include <variant>
 
 #include "recode/raster/cpu_device.hpp"
+#ifdef RECODE_HAVE_VULKAN
+#include "recode/verify/vulkan_device.hpp"
+#endif
 
 namespace recode::verify {
 
@@ -49,6 +52,20 @@ void compareRegion(const raster::DepthStencilDevice& reference,
   }
 }
 
+// RECODE's command stream for the pair on the reference device, and the pair's MOR.
+struct RecordedPair {
+  raster::CommandStream stream;
+  raster::PixelRect mor;
+};
+
+[[maybe_unused]] RecordedPair recordPair(const core::TriangleMesh& a, const core::TriangleMesh& b,
+                                         const core::PairRequest& request) {
+  raster::CpuDevice cpu(request.frame.width, request.frame.height);
+  raster::RecordingDevice recorder(cpu);
+  const core::PairResult result = core::collidePair(recorder, a, b, request);
+  return {recorder.stream(), result.mor};
+}
+
 }  // namespace
 
 ExactParityReport compareStreamExactly(const raster::CommandStream& stream,
@@ -89,15 +106,35 @@ ExactParityReport compareOnGlExact(const core::TriangleMesh&, const core::Triang
 #else
 ExactParityReport compareOnGlExact(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                    const core::PairRequest& request, GlPlatform platform) {
-  raster::CpuDevice cpu(request.frame.width, request.frame.height);
-  raster::RecordingDevice recorder(cpu);
-  const core::PairResult result = core::collidePair(recorder, a, b, request);
-  if (result.mor.empty())
+  const RecordedPair pair = recordPair(a, b, request);
+  if (pair.mor.empty())
     return {};
-  const raster::CommandStream& stream = recorder.stream();
+  const raster::CommandStream& stream = pair.stream;
   raster::CpuDevice reference(stream.width, stream.height);
   GlExactDevice candidate(stream.width, stream.height, platform);
-  ExactParityReport report = compareStreamExactly(stream, reference, candidate, result.mor);
+  ExactParityReport report = compareStreamExactly(stream, reference, candidate, pair.mor);
+  report.renderer = candidate.renderer();
+  return report;
+}
+#endif
+
+#ifndef RECODE_HAVE_VULKAN
+ExactParityReport compareOnVulkan(const core::TriangleMesh&, const core::TriangleMesh&,
+                                  const core::PairRequest&) {
+  throw std::runtime_error(
+      "this build has no Vulkan device (Debian: apt-get install libvulkan-dev glslang-tools "
+      "mesa-vulkan-drivers, then reconfigure)");
+}
+#else
+ExactParityReport compareOnVulkan(const core::TriangleMesh& a, const core::TriangleMesh& b,
+                                  const core::PairRequest& request) {
+  const RecordedPair pair = recordPair(a, b, request);
+  if (pair.mor.empty())
+    return {};
+  const raster::CommandStream& stream = pair.stream;
+  raster::CpuDevice reference(stream.width, stream.height);
+  VulkanDevice candidate(stream.width, stream.height);
+  ExactParityReport report = compareStreamExactly(stream, reference, candidate, pair.mor);
   report.renderer = candidate.renderer();
   return report;
 }

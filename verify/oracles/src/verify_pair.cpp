@@ -24,6 +24,9 @@ std::string howToBuild(Oracle oracle) {
     case Oracle::GlExact:
       return "install libosmesa6-dev or libegl-dev and configure with -DRECODE_WITH_OSMESA=ON "
              "or -DRECODE_WITH_EGL=ON";
+    case Oracle::Vulkan:
+      return "install libvulkan-dev, glslang-tools and mesa-vulkan-drivers and configure with "
+             "-DRECODE_WITH_VULKAN=ON";
   }
   return "?";
 }
@@ -46,6 +49,8 @@ std::string_view toString(Oracle oracle) {
       return "gl";
     case Oracle::GlExact:
       return "gl-exact";
+    case Oracle::Vulkan:
+      return "vulkan";
   }
   return "unknown";
 }
@@ -76,6 +81,12 @@ bool oracleBuilt(Oracle oracle) {
 #else
       return false;
 #endif
+    case Oracle::Vulkan:
+#ifdef RECODE_HAVE_VULKAN
+      return true;
+#else
+      return false;
+#endif
   }
   return false;
 }
@@ -88,6 +99,8 @@ bool PairVerification::passed() const {
   if (gl && gl->counts.unexplained != 0)
     return false;
   if (glExact && !glExact->ok())
+    return false;
+  if (vulkan && !vulkan->ok())
     return false;
   return true;
 }
@@ -106,10 +119,13 @@ void VerificationTotals::add(const PairVerification& pair) {
     gl += pair.gl->counts;
   if (pair.glExact)
     glExact += pair.glExact->counts;
+  if (pair.vulkan)
+    vulkan += pair.vulkan->counts;
   embreeSeconds += pair.embreeSeconds;
   cgalSeconds += pair.cgalSeconds;
   glSeconds += pair.glSeconds;
   glExactSeconds += pair.glExactSeconds;
+  vulkanSeconds += pair.vulkanSeconds;
 }
 
 struct PairVerifier::State {
@@ -128,6 +144,8 @@ PairVerifier::PairVerifier(const OracleSelection& selection)
     requireBuilt(Oracle::Gl);
   if (selection_.glExact)
     requireBuilt(Oracle::GlExact);
+  if (selection_.vulkan)
+    requireBuilt(Oracle::Vulkan);
 #ifdef RECODE_HAVE_EMBREE
   if (selection_.embree)
     state_->embree.emplace();
@@ -170,6 +188,13 @@ PairVerification PairVerifier::verify(std::string label, const core::TriangleMes
     const auto start = std::chrono::steady_clock::now();
     out.glExact = compareOnGlExact(a, b, request, selection_.glPlatform);
     out.glExactSeconds = secondsSince(start);
+  }
+#endif
+#ifdef RECODE_HAVE_VULKAN
+  if (selection_.vulkan) {
+    const auto start = std::chrono::steady_clock::now();
+    out.vulkan = compareOnVulkan(a, b, request);
+    out.vulkanSeconds = secondsSince(start);
   }
 #endif
   return out;

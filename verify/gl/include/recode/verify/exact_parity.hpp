@@ -1,6 +1,6 @@
 #pragma once
 // Bit-exact parity: one command stream replayed on the reference (raster::CpuDevice) and on a
-// device that claims the contract exactly (GlExactDevice, later Vulkan), depth and stencil
+// device that claims the contract exactly (GlExactDevice, VulkanDevice), depth and stencil
 // compared after the fresh start and after every draw and clear. No tolerance: a pixel is
 // identical or different.
 
@@ -55,5 +55,11 @@ struct ExactParityReport {
                                                  const core::TriangleMesh& b,
                                                  const core::PairRequest& request,
                                                  GlPlatform platform = GlPlatform::Auto);
+
+// The same on a VulkanDevice (the process's shared Vulkan context). Throws std::runtime_error
+// when the build has no Vulkan device or no Vulkan driver is found.
+[[nodiscard]] ExactParityReport compareOnVulkan(const core::TriangleMesh& a,
+                                                const core::TriangleMesh& b,
+                                                const core::PairRequest& request);
 
 }  // namespace recode::verify

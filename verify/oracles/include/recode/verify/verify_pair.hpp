@@ -18,8 +18,8 @@
 
 namespace recode::verify {
 
-enum class Oracle { Embree, Cgal, Gl, GlExact };
-// "embree", "cgal", "gl", "gl-exact"
+enum class Oracle { Embree, Cgal, Gl, GlExact, Vulkan };
+// "embree", "cgal", "gl", "gl-exact", "vulkan"
 [[nodiscard]] std::string_view toString(Oracle oracle);
 // Whether this build contains the oracle.
 [[nodiscard]] bool oracleBuilt(Oracle oracle);
@@ -30,6 +30,7 @@ struct OracleSelection {
   bool gl = false;
   bool glExact = false;                      // bit-exact replay on GlExactDevice
   GlPlatform glPlatform = GlPlatform::Auto;  // its context platform
+  bool vulkan = false;                       // bit-exact replay on VulkanDevice
 };
 
 struct PairVerification {
@@ -40,13 +41,15 @@ struct PairVerification {
   std::optional<CgalJudgement> cgal;
   std::optional<GlParityReport> gl;
   std::optional<ExactParityReport> glExact;
+  std::optional<ExactParityReport> vulkan;
   double embreeSeconds = 0.0;  // wall time of each oracle on this pair
   double cgalSeconds = 0.0;
   double glSeconds = 0.0;
   double glExactSeconds = 0.0;
+  double vulkanSeconds = 0.0;
 
   // No unexplained pixel, no CGAL disagreement, no unexplained GL difference, no pixel of the
-  // exact GL device different.
+  // exact GL or Vulkan device different.
   [[nodiscard]] bool passed() const;
 };
 
@@ -59,10 +62,12 @@ struct VerificationTotals {
   CgalCounts cgal;
   GlParityCounts gl;
   ExactParityCounts glExact;
+  ExactParityCounts vulkan;
   double embreeSeconds = 0.0;
   double cgalSeconds = 0.0;
   double glSeconds = 0.0;
   double glExactSeconds = 0.0;
+  double vulkanSeconds = 0.0;
 
   void add(const PairVerification& pair);
   [[nodiscard]] bool passed() const { return failedPairs == 0; }
