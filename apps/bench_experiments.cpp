@@ -11,11 +11,13 @@ namespace {
 
 using Kind = AlgorithmSpec::Kind;
 
-// RECODE on both devices (MIN MOR, as `recode run` defaults) against the three peers.
+// RECODE on every device (MIN MOR, as `recode run` defaults) against the three peers.
 std::vector<AlgorithmSpec> recodeAndPeers() {
   return {
       {"recode-cpu", Kind::Recode, verify::RecodeDevice::Cpu, core::MorMode::Min},
       {"recode-gl", Kind::Recode, verify::RecodeDevice::Gl, core::MorMode::Min},
+      {"recode-gl-exact", Kind::Recode, verify::RecodeDevice::GlExact, core::MorMode::Min},
+      {"recode-vulkan", Kind::Recode, verify::RecodeDevice::Vulkan, core::MorMode::Min},
       {"fcl-gjk", Kind::FclGjk},
       {"fcl-obbrss", Kind::FclObbrss},
       {"bullet", Kind::Bullet},

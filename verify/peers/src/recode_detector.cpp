@@ -1,4 +1,4 @@
-// RECODE's simulation behind the bench's detector interface, on the CPU or the GL device.
+// RECODE's simulation behind the bench's detector interface, on any of the devices.
 #include "recode/verify/recode_detector.hpp"
 
 #include <algorithm>
@@ -7,22 +7,44 @@
 
 #include "recode/geometry/generators.hpp"
 #include "recode/pair/pair.hpp"
+#include "recode/raster/cpu_device.hpp"
 
 #if RECODE_HAVE_OSMESA
 #include "recode/verify/gl_device.hpp"
+#endif
+#if RECODE_HAVE_GL_EXACT
+#include "recode/verify/gl_exact_device.hpp"
+#endif
+#if RECODE_HAVE_VULKAN
+#include "recode/verify/vulkan_device.hpp"
 #endif
 
 namespace recode::verify {
 
 namespace {
 
+#if RECODE_HAVE_OSMESA
+constexpr bool kGlBuilt = true;
+#else
+constexpr bool kGlBuilt = false;
+#endif
+#if RECODE_HAVE_GL_EXACT
+constexpr bool kGlExactBuilt = true;
+#else
+constexpr bool kGlExactBuilt = false;
+#endif
+#if RECODE_HAVE_VULKAN
+constexpr bool kVulkanBuilt = true;
+#else
+constexpr bool kVulkanBuilt = false;
+#endif
+
 core::RunOptions withDevice(core::RunOptions options, RecodeDevice device) {
-  if (device == RecodeDevice::Gl)
-    options.deviceFactory = warmGlDeviceFactory();
+  if (device != RecodeDevice::Cpu)
+    options.deviceFactory = warmDeviceFactory(device);
   return options;
 }
 
-#if RECODE_HAVE_OSMESA
 // Two unit boxes overlapping by half a unit near the frame's corner, drawn with every pass
 // RECODE uses (contact passes included), so each state combination has been seen once.
 void warmUp(raster::DepthStencilDevice& device) {
@@ -41,22 +63,62 @@ void warmUp(raster::DepthStencilDevice& device) {
   request.contact = true;
   (void)core::collidePair(device, a, b, request);
 }
-#endif
 
-}  // namespace
-
-core::DeviceFactory warmGlDeviceFactory() {
-#if RECODE_HAVE_OSMESA
+template <class Device>
+core::DeviceFactory warmFactory() {
   return [](int width, int height) -> std::unique_ptr<raster::DepthStencilDevice> {
-    auto device = std::make_unique<GlDevice>(width, height);
+    auto device = std::make_unique<Device>(width, height);
     warmUp(*device);
     return device;
   };
+}
+
+}  // namespace
+
+bool recodeDeviceBuilt(RecodeDevice device) {
+  switch (device) {
+    case RecodeDevice::Cpu:
+      return true;
+    case RecodeDevice::Gl:
+      return kGlBuilt;
+    case RecodeDevice::GlExact:
+      return kGlExactBuilt;
+    case RecodeDevice::Vulkan:
+      return kVulkanBuilt;
+  }
+  return false;
+}
+
+core::DeviceFactory warmDeviceFactory(RecodeDevice device) {
+  switch (device) {
+    case RecodeDevice::Cpu:
+      return warmFactory<raster::CpuDevice>();
+    case RecodeDevice::Gl:
+#if RECODE_HAVE_OSMESA
+      return warmFactory<GlDevice>();
 #else
-  throw std::runtime_error(
-      "RECODE on the GL device needs OSMesa: this build has none (install libosmesa6-dev and "
-      "configure with RECODE_WITH_OSMESA=ON)");
+      throw std::runtime_error(
+          "RECODE on the GL device needs OSMesa: this build has none (install libosmesa6-dev "
+          "and configure with RECODE_WITH_OSMESA=ON)");
 #endif
+    case RecodeDevice::GlExact:
+#if RECODE_HAVE_GL_EXACT
+      return warmFactory<GlExactDevice>();
+#else
+      throw std::runtime_error(
+          "RECODE on the exact GL device needs OSMesa or EGL: this build has neither (install "
+          "libosmesa6-dev or libegl-dev and reconfigure)");
+#endif
+    case RecodeDevice::Vulkan:
+#if RECODE_HAVE_VULKAN
+      return warmFactory<VulkanDevice>();
+#else
+      throw std::runtime_error(
+          "RECODE on the Vulkan device needs Vulkan: this build has none (install libvulkan-dev, "
+          "mesa-vulkan-drivers and glslang-tools and reconfigure)");
+#endif
+  }
+  throw std::invalid_argument("unknown RECODE device");
 }
 
 RecodeDetector::RecodeDetector(const core::Scene& scene, core::RunOptions options,

@@ -1,7 +1,8 @@
 #pragma once
 // RECODE as one of the bench's detectors (scene_detector.hpp): core::Simulation -- sort and
-// sweep, box descent, the pair algorithm per leaf pair -- drawing on the CPU reference device
-// or on real OpenGL (GlDevice, llvmpipe), so the bench compares both on the same work.
+// sweep, box descent, the pair algorithm per leaf pair -- drawing on the CPU reference device,
+// on fixed-function OpenGL (GlDevice, llvmpipe) or on the exact GPU-API devices (GlExactDevice,
+// VulkanDevice), so the bench compares them on the same work.
 
 #include <memory>
 #include <string>
@@ -13,14 +14,19 @@
 namespace recode::verify {
 
 enum class RecodeDevice {
-  Cpu,  // raster::CpuDevice
-  Gl,   // verify::GlDevice; needs RECODE_HAVE_OSMESA
+  Cpu,      // raster::CpuDevice
+  Gl,       // verify::GlDevice; needs RECODE_HAVE_OSMESA
+  GlExact,  // verify::GlExactDevice (auto platform); needs RECODE_HAVE_GL_EXACT
+  Vulkan,   // verify::VulkanDevice; needs RECODE_HAVE_VULKAN
 };
+
+// Whether this build has the device (Cpu always).
+[[nodiscard]] bool recodeDeviceBuilt(RecodeDevice device);
 
 class RecodeDetector final : public SceneDetector {
  public:
-  // The simulation of `scene` with `options` (options.deviceFactory is replaced for the GL
-  // device). Throws std::runtime_error for RecodeDevice::Gl in a build without OSMesa.
+  // The simulation of `scene` with `options` (options.deviceFactory is replaced for every
+  // device but Cpu). Throws std::runtime_error for a device this build lacks.
   RecodeDetector(const core::Scene& scene, core::RunOptions options, RecodeDevice device,
                  std::string name);
 
@@ -41,9 +47,10 @@ class RecodeDetector final : public SceneDetector {
   core::FrameReport last_;
 };
 
-// The factory RecodeDevice::Gl uses: a GlDevice of the size, warmed by one small colliding
-// pair so that llvmpipe compiles its shaders before any timed frame. Throws
-// std::runtime_error in a build without OSMesa.
-[[nodiscard]] core::DeviceFactory warmGlDeviceFactory();
+// The factory a RecodeDevice other than Cpu uses: a device of the size, warmed by one small
+// colliding pair so that the driver compiles its shaders (and the exact devices make their
+// shared context) before any timed frame. Throws std::runtime_error for a device this build
+// lacks, saying what to install.
+[[nodiscard]] core::DeviceFactory warmDeviceFactory(RecodeDevice device);
 
 }  // namespace recode::verify
