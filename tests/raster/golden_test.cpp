@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "recode/kit/reference_model.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/golden.hpp"
-#include "reference_model.hpp"
 
 using namespace recode::raster;
 
@@ -29,7 +29,7 @@ TEST_CASE("golden vectors replay bit for bit on the CPU device and the model", "
     CHECK(std::vector<std::uint32_t>(depth.begin(), depth.end()) == g.depth);
     CHECK(std::vector<std::uint8_t>(stencil.begin(), stencil.end()) == g.stencil);
 
-    recode::test::ReferenceModel model(g.stream.width, g.stream.height);
+    recode::kit::ReferenceModel model(g.stream.width, g.stream.height);
     model.run(g.stream.commands);
     CHECK(model.depthBuffer() == g.depth);
     CHECK(model.stencilBuffer() == g.stencil);
