@@ -5,7 +5,9 @@
 #include <iostream>
 
 #include "bench_command.hpp"
+#include "conform_command.hpp"
 #include "explain_command.hpp"
+#include "golden_command.hpp"
 #include "pair_command.hpp"
 #include "replay_command.hpp"
 #include "run_command.hpp"
@@ -23,6 +25,8 @@ int main(int argc, char** argv) {
   recode::app::addRunCommand(app, exitCode);
   recode::app::addVerifyCommand(app, exitCode);
   recode::app::addBenchCommand(app, exitCode);
+  recode::app::addGoldenCommand(app, exitCode);
+  recode::app::addConformCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

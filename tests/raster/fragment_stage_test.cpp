@@ -5,15 +5,15 @@
 #include <cmath>
 
 #include "raster_test_support.hpp"
+#include "recode/kit/reference_model.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/fragment_stage.hpp"
-#include "reference_model.hpp"
 
 using namespace recode::raster;
-using recode::test::modelCompare;
-using recode::test::modelQuantize;
-using recode::test::modelStencilOp;
+using recode::kit::modelCompare;
+using recode::kit::modelQuantize;
+using recode::kit::modelStencilOp;
 
 namespace {
 
@@ -95,7 +95,7 @@ TEST_CASE("single-pixel fragments: every func x op x mask x value combination", 
                       stream[8] = pixelDraw(z, front);
                       CpuDevice dev(1, 1);
                       replay(stream, dev);
-                      recode::test::ReferenceModel model(1, 1);
+                      recode::kit::ReferenceModel model(1, 1);
                       model.run(stream);
                       if (dev.stencilBuffer()[0] != model.stencil(0, 0) ||
                           dev.depthBuffer()[0] != model.depth(0, 0)) {
@@ -124,7 +124,7 @@ TEST_CASE("the model's fragment stage on hand-worked examples", "[fragment]") {
   // The model is itself checked on cases worked out by hand, so that device and model cannot
   // agree on a shared mistake unnoticed.
   const auto run = [](std::vector<Command> cmds) {
-    recode::test::ReferenceModel m(1, 1);
+    recode::kit::ReferenceModel m(1, 1);
     m.run(cmds);
     return std::make_pair(int(m.stencil(0, 0)), m.depth(0, 0));
   };

@@ -5,9 +5,9 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+#include "recode/kit/reference_model.hpp"
 #include "recode/raster/command_stream.hpp"
 #include "recode/raster/cpu_device.hpp"
-#include "reference_model.hpp"
 
 using namespace recode::raster;
 
@@ -84,7 +84,7 @@ TEST_CASE("tile traversal equals the per-pixel model on random streams", "[trave
       const auto cmds = randomCommands(rng, w, h);
       CpuDevice dev(w, h);
       replay(cmds, dev);
-      recode::test::ReferenceModel model(w, h);
+      recode::kit::ReferenceModel model(w, h);
       model.run(cmds);
       INFO("size " << w << "x" << h << " trial " << trial);
       int stencilDiff = 0, depthDiff = 0;

@@ -137,7 +137,40 @@ CommandStream commandStreamFromJson(std::string_view text, std::string_view sour
   });
 }
 
-std::string goldenToJson(const GoldenVector& golden) {
+namespace {
+
+// One element of an array per line, each dumped compactly, under `indent` spaces.
+std::string linePerElement(const json& array, const std::string& indent) {
+  std::string out = "[\n";
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    out += indent + " " + array[i].dump() + (i + 1 < array.size() ? ",\n" : "\n");
+  }
+  return out + indent + "]";
+}
+
+std::string goldenRows(const GoldenVector& golden) {
+  const json body = streamBody(golden.stream);
+  std::string out = "{\n";
+  out += " \"format\": " + json(kGoldenFormat).dump() + ",\n";
+  out += " \"description\": " + json(golden.description).dump() + ",\n";
+  out += " \"width\": " + body["width"].dump() + ",\n";
+  out += " \"height\": " + body["height"].dump() + ",\n";
+  out += " \"commands\": " + linePerElement(body["commands"], " ") + ",\n";
+  out += " \"expected\": {\n";
+  out += "  \"depth\": " +
+         linePerElement(rows(golden.depth, golden.stream.width, golden.stream.height), "  ") +
+         ",\n";
+  out += "  \"stencil\": " +
+         linePerElement(rows(golden.stencil, golden.stream.width, golden.stream.height), "  ") +
+         "\n";
+  return out + " }\n}";
+}
+
+}  // namespace
+
+std::string goldenToJson(const GoldenVector& golden, GoldenLayout layout) {
+  if (layout == GoldenLayout::Rows)
+    return goldenRows(golden);
   json doc = {{"format", kGoldenFormat}, {"description", golden.description}};
   doc.update(streamBody(golden.stream));
   doc["expected"] = {{"depth", rows(golden.depth, golden.stream.width, golden.stream.height)},
@@ -182,11 +215,12 @@ CommandFile readCommandFile(const std::filesystem::path& path) {
                         std::string(kStreamFormat) + "\", got \"" + format + "\"");
 }
 
-void writeGolden(const std::filesystem::path& path, const GoldenVector& golden) {
+void writeGolden(const std::filesystem::path& path, const GoldenVector& golden,
+                 GoldenLayout layout) {
   std::ofstream out(path, std::ios::binary);
   if (!out)
     throw FormatError(path.string(), "", "cannot open file for writing");
-  out << goldenToJson(golden) << '\n';
+  out << goldenToJson(golden, layout) << '\n';
   if (!out)
     throw FormatError(path.string(), "", "write failed");
 }

@@ -2,7 +2,7 @@
 // The per-fragment stage, in GL's order: stencil test (-> sfail op), depth test (-> dpfail op),
 // then dppass op and the depth write, the stencil written through its write mask
 // (docs/rasterization.md, section 6). Pure functions of the state and the stored values; the
-// tests hold them against a longhand model of their own (tests/raster/reference_model.cpp).
+// tests hold them against a longhand model of their own (raster/kit/src/reference_model.cpp).
 
 #include <cstdint>
 

@@ -35,7 +35,14 @@ struct GoldenVector {
 [[nodiscard]] std::string commandStreamToJson(const CommandStream& stream);
 [[nodiscard]] CommandStream commandStreamFromJson(std::string_view text, std::string_view source);
 
-[[nodiscard]] std::string goldenToJson(const GoldenVector& golden);
+// How a golden file is laid out; the document is the same either way. Indented: one value per
+// line (the hand-made vectors of data/golden/). Rows: keys in the order of
+// docs/rasterization.md, one command and one buffer row per line (the conformance kit's
+// vectors: a 16384-pixel row stays one line, and a file a fraction of the size).
+enum class GoldenLayout { Indented, Rows };
+
+[[nodiscard]] std::string goldenToJson(const GoldenVector& golden,
+                                       GoldenLayout layout = GoldenLayout::Indented);
 [[nodiscard]] GoldenVector goldenFromJson(std::string_view text, std::string_view source);
 
 [[nodiscard]] GoldenVector readGolden(const std::filesystem::path& path);
@@ -47,6 +54,7 @@ struct CommandFile {
   bool hasExpected = false;
 };
 [[nodiscard]] CommandFile readCommandFile(const std::filesystem::path& path);
-void writeGolden(const std::filesystem::path& path, const GoldenVector& golden);
+void writeGolden(const std::filesystem::path& path, const GoldenVector& golden,
+                 GoldenLayout layout = GoldenLayout::Indented);
 
 }  // namespace recode::raster

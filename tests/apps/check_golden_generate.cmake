@@ -1,0 +1,38 @@
+cmake_minimum_required(VERSION 3.25)
+# `recode golden generate` is deterministic: run twice with COUNT and SEED into OUT/a and OUT/b,
+# the two directories hold the same files with the same bytes; with COMPARE set (a committed
+# kit, e.g. data/golden/kit), OUT/a must equal it too. Expects RECODE, COUNT, SEED, OUT and
+# optionally COMPARE.
+file(REMOVE_RECURSE ${OUT})
+foreach(run a b)
+  execute_process(COMMAND ${RECODE} golden generate --count ${COUNT} --seed ${SEED} --out ${OUT}/${run}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "recode golden generate exited ${rc}\n${out}")
+  endif()
+  if(COMPARE)
+    break()  # the committed kit is the second run
+  endif()
+endforeach()
+if(COMPARE)
+  set(other ${COMPARE})
+else()
+  set(other ${OUT}/b)
+endif()
+file(GLOB first RELATIVE ${OUT}/a ${OUT}/a/*.json)
+file(GLOB second RELATIVE ${other} ${other}/*.json)
+list(LENGTH first n)
+if(NOT n EQUAL COUNT)
+  message(FATAL_ERROR "${n} files written, expected ${COUNT}")
+endif()
+if(NOT first STREQUAL second)
+  message(FATAL_ERROR "different file sets:\n${first}\n${second}")
+endif()
+foreach(name IN LISTS first)
+  file(SHA256 ${OUT}/a/${name} h1)
+  file(SHA256 ${other}/${name} h2)
+  if(NOT h1 STREQUAL h2)
+    message(FATAL_ERROR "${name} differs between ${OUT}/a and ${other}")
+  endif()
+endforeach()
+message("golden generate OK: ${n} identical files")
