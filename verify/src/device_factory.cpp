@@ -6,6 +6,12 @@
 #if RECODE_HAVE_OSMESA
 #include "recode/verify/gl_device.hpp"
 #endif
+#if RECODE_HAVE_GL_EXACT
+#include "recode/verify/gl_exact_device.hpp"
+#endif
+#if RECODE_HAVE_VULKAN
+#include "recode/verify/vulkan_device.hpp"
+#endif
 
 namespace recode::verify {
 
@@ -16,7 +22,10 @@ DeviceKind parseDeviceKind(const std::string& name) {
     return DeviceKind::Gl;
   if (name == "gl-exact")
     return DeviceKind::GlExact;
-  throw std::invalid_argument("unknown device \"" + name + "\" (devices: cpu, gl, gl-exact)");
+  if (name == "vulkan")
+    return DeviceKind::Vulkan;
+  throw std::invalid_argument("unknown device \"" + name +
+                              "\" (devices: cpu, gl, gl-exact, vulkan)");
 }
 
 std::string_view toString(DeviceKind kind) {
@@ -27,6 +36,8 @@ std::string_view toString(DeviceKind kind) {
       return "gl";
     case DeviceKind::GlExact:
       return "gl-exact";
+    case DeviceKind::Vulkan:
+      return "vulkan";
   }
   return "?";
 }
@@ -44,7 +55,21 @@ std::unique_ptr<raster::DepthStencilDevice> makeDevice(DeviceKind kind, int widt
           "and configure with -DRECODE_WITH_OSMESA=ON");
 #endif
     case DeviceKind::GlExact:
-      throw std::runtime_error("the exact GL device is not built yet");
+#if RECODE_HAVE_GL_EXACT
+      return std::make_unique<GlExactDevice>(width, height);
+#else
+      throw std::runtime_error(
+          "the exact GL device needs OSMesa or EGL, which this build does not have: install "
+          "libosmesa6-dev or libegl-dev and reconfigure");
+#endif
+    case DeviceKind::Vulkan:
+#if RECODE_HAVE_VULKAN
+      return std::make_unique<VulkanDevice>(width, height);
+#else
+      throw std::runtime_error(
+          "the Vulkan device needs Vulkan, which this build does not have: install "
+          "libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure");
+#endif
   }
   throw std::invalid_argument("makeDevice: unknown device kind");
 }

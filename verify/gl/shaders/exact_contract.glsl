@@ -9,23 +9,46 @@
 
 const double kDepthMax = 16777215.0;  // 2^24 - 1: the largest 24-bit depth
 
+// The exact value of a - q b, for a q within an ulp or two of a / b (then it is representable).
+// GLSL does not promise that fma() is fused (Mesa lowers it to a multiply and an add on drivers
+// without a fused double operation), so the product's rounding error comes from Dekker's exact
+// product instead: each factor split into two halves of at most 26 bits (Veltkamp), whose
+// partial products are exact.
+void splitHalves(double x, out double high, out double low) {
+  precise double scaled = 134217729.0 * x;  // 2^27 + 1
+  precise double big = scaled - x;
+  precise double h = scaled - big;
+  precise double l = x - h;
+  high = h;
+  low = l;
+}
+
+double exactRemainder(double a, double b, double q) {
+  precise double product = q * b;
+  double qh, ql, bh, bl;
+  splitHalves(q, qh, ql);
+  splitHalves(b, bh, bl);
+  precise double error = ((qh * bh - product) + qh * bl + ql * bh) + ql * bl;  // q b - product
+  precise double r = (a - product) - error;
+  return r;
+}
+
 // a / b rounded to nearest even, whatever the accuracy of the driver's double division (GLSL
 // promises none). The hardware quotient is corrected by one Newton step, then the candidate
-// and its two neighbours are compared by their remainders a - c b, which fma gives exactly for
-// a c within an ulp or two of a / b. A quotient of two doubles is never exactly halfway
-// between two doubles, so the smallest remainder picks the correctly rounded one.
+// and its two neighbours are compared by their exact remainders a - c b. A quotient of two
+// doubles is never exactly halfway between two doubles, so the smallest remainder picks the
+// correctly rounded one.
 double divideRoundedToNearest(double a, double b) {
   if (a == 0.0)
     return 0.0;
   precise double q = a / b;
-  precise double r = fma(-q, b, a);
-  precise double c = q + r / b;
+  precise double c = q + exactRemainder(a, b, q) / b;
   int64_t bits = doubleBitsToInt64(c);
   double larger = int64BitsToDouble(bits + 1l);   // one ulp further from zero
   double smaller = int64BitsToDouble(bits - 1l);  // one ulp nearer to zero
-  double rc = abs(fma(-c, b, a));
-  double rl = abs(fma(-larger, b, a));
-  double rs = abs(fma(-smaller, b, a));
+  double rc = abs(exactRemainder(a, b, c));
+  double rl = abs(exactRemainder(a, b, larger));
+  double rs = abs(exactRemainder(a, b, smaller));
   if (rl < rc)
     return larger;
   if (rs < rc)

@@ -1,6 +1,6 @@
 #pragma once
 // Depth/stencil devices by name, for the programs that replay command streams on a chosen
-// back end (`recode conform --device cpu|gl|gl-exact`).
+// back end (`recode conform --device cpu|gl|gl-exact|vulkan`).
 
 #include <memory>
 #include <string>
@@ -13,16 +13,17 @@ namespace recode::verify {
 enum class DeviceKind {
   Cpu,      // raster::CpuDevice, the reference
   Gl,       // GlDevice: fixed-function OpenGL on OSMesa (llvmpipe; its depth is not bit-exact)
-  GlExact,  // OpenGL evaluating the contract's depth exactly (not built yet)
+  GlExact,  // GlExactDevice: OpenGL 4.5 shaders that apply the contract (EGL, else OSMesa)
+  Vulkan,   // VulkanDevice: the same shaders on Vulkan 1.3
 };
 
-// "cpu", "gl", "gl-exact"; throws std::invalid_argument naming the choices for anything else.
+// "cpu", "gl", "gl-exact", "vulkan"; throws std::invalid_argument naming the choices for anything else.
 [[nodiscard]] DeviceKind parseDeviceKind(const std::string& name);
 [[nodiscard]] std::string_view toString(DeviceKind kind);
 
 // A fresh width x height device of that kind (depth 1.0, stencil 0, GL's default state).
-// Throws std::runtime_error when the kind is not in this build: Gl without OSMesa (naming
-// libosmesa6-dev), GlExact always for now; std::invalid_argument for a size outside 1..16384.
+// Throws std::runtime_error when the kind is not in this build or no driver gives a context,
+// naming what to install; std::invalid_argument for a size outside 1..16384.
 [[nodiscard]] std::unique_ptr<raster::DepthStencilDevice> makeDevice(DeviceKind kind, int width,
                                                                      int height);
 
