@@ -17,6 +17,9 @@
 #include "recode/verify/gl_device.hpp"
 #include "recode/verify/gl_exact_device.hpp"
 #include "recode/verify/pair_suite.hpp"
+#ifdef RECODE_HAVE_VULKAN
+#include "recode/verify/vulkan_device.hpp"
+#endif
 
 namespace {
 
@@ -147,6 +150,14 @@ BENCHMARK(pairsOnDevice<verify::GlExactDevice, verify::GlPlatform::OsMesa>)
 #endif
 #ifdef RECODE_HAVE_EGL
 BENCHMARK(pairsOnDevice<verify::GlExactDevice, verify::GlPlatform::Egl>)
+    ->Arg(64)
+    ->Arg(512)
+    ->ArgName("width")
+    ->Unit(benchmark::kMillisecond);
+#endif
+
+#ifdef RECODE_HAVE_VULKAN
+BENCHMARK(pairsOnDevice<verify::VulkanDevice>)
     ->Arg(64)
     ->Arg(512)
     ->ArgName("width")
