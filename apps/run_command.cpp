@@ -113,12 +113,26 @@ core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulat
   return stats.result(static_cast<long long>(sim.triangleCount()));
 }
 
+// The simulation, its frame errors naming where the pixel size came from (as pair's).
+core::Simulation makeSimulation(const RunOptions& o, const core::Scene& scene,
+                                const core::RunOptions& options) {
+  try {
+    return core::Simulation(scene, options);
+  } catch (const std::invalid_argument& e) {
+    if (o.frame.pixelSize == 0.0 && o.frame.resolution.empty())
+      throw core::SceneError(scene.sourceName.empty() ? o.scene : scene.sourceName, "view",
+                             e.what());
+    throw std::invalid_argument(
+        std::string(o.frame.resolution.empty() ? "--pixel-size: " : "--resolution: ") + e.what());
+  }
+}
+
 void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   core::RunOptions options;
   options.overrides = o.frame.overrides();
   options.mor = o.frame.mor();
   options.contact = o.contact;
-  core::Simulation sim(scene, options);
+  core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
   run.scene = o.scene;
