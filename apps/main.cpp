@@ -1,8 +1,12 @@
 // recode: the command-line front end of the RECODE reference implementation.
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "bench_command.hpp"
 #include "explain_command.hpp"
@@ -10,6 +14,26 @@
 #include "replay_command.hpp"
 #include "run_command.hpp"
 #include "verify_command.hpp"
+
+namespace {
+
+// Standard output is checked like a file: `recode pair --json > /dev/full` must not exit 0
+// having written nothing. A write that failed before this flush has left no errno to report.
+int checkedStdout(int exitCode) {
+  errno = 0;
+  std::cout.flush();
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (!std::cout || !flushed || std::ferror(stdout)) {
+    std::cerr << "recode: error: writing to standard output failed"
+              << (error != 0 ? std::string(" (") + std::strerror(error) + ")" : std::string())
+              << '\n';
+    return 1;
+  }
+  return exitCode;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -31,5 +55,5 @@ int main(int argc, char** argv) {
     std::cerr << "recode: error: " << e.what() << '\n';
     return 1;
   }
-  return exitCode;
+  return checkedStdout(exitCode);
 }

@@ -1,13 +1,13 @@
 #include "run_command.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "atomic_file.hpp"
 #include "frame_options.hpp"
 #include "progress_bar.hpp"
 #include "recode/scene/experiment_scenes.hpp"
@@ -50,13 +50,6 @@ void printList() {
               << " triangles per block)\n";
 }
 
-std::ofstream openForWriting(const std::string& file, const char* option) {
-  std::ofstream out(file, std::ios::binary);
-  if (!out)
-    throw std::runtime_error(std::string(option) + " " + file + ": cannot open for writing");
-  return out;
-}
-
 // o.scene as a file or a built-in, after refusing a name that is neither and the options that
 // do not apply to its kind.
 struct SceneChoice {
@@ -93,14 +86,14 @@ SceneChoice chooseScene(const RunOptions& o) {
 // Runs the frames, each reported as the options ask, up to the first contact with
 // --stop-on-contact; under --json the frames' objects are collected into `frames`.
 core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulation& sim,
-                              std::ofstream* csv, nlohmann::ordered_json& frames) {
+                              AtomicFile* csv, nlohmann::ordered_json& frames) {
   core::RunStatisticsAccumulator stats;
   ProgressBar progress(frameCount);
   for (int k = 0; k < frameCount; ++k) {
     const core::FrameReport report = sim.runFrame(k);
     stats.add(report);
     if (csv)
-      *csv << csvRow(report);
+      csv->write(csvRow(report));
     if (o.json)
       frames.push_back(frameToJson(sim, report));
     else if (!o.quiet)
@@ -140,10 +133,12 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   run.frames = o.frames > 0 ? o.frames : scene.frames.value_or(core::kDefaultRunFrames);
   run.stopOnContact = o.stopOnContact;
 
-  std::optional<std::ofstream> csv;
+  // Written beside the target and renamed at the end: a run that fails midway leaves no
+  // partial CSV (and an earlier one as it was).
+  std::optional<AtomicFile> csv;
   if (!o.csv.empty()) {
-    csv = openForWriting(o.csv, "--csv");
-    *csv << csvHeader();
+    csv.emplace(o.csv, "--csv " + o.csv);
+    csv->write(csvHeader());
   }
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
   if (!o.json)
@@ -157,8 +152,8 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   } else {
     printStatistics(std::cout, result);
   }
-  if (csv && !*csv)
-    throw std::runtime_error("--csv " + o.csv + ": error while writing");
+  if (csv)
+    csv->commit();
 }
 
 int runRunCommand(const RunOptions& o) {
@@ -168,8 +163,8 @@ int runRunCommand(const RunOptions& o) {
   }
   const SceneChoice choice = chooseScene(o);
   if (!o.writeScene.empty()) {
-    openForWriting(o.writeScene, "--write-scene")
-        << core::builtinSceneJson(o.scene, choice.triangles);
+    writeFileAtomically(o.writeScene, core::builtinSceneJson(o.scene, choice.triangles),
+                        "--write-scene " + o.writeScene);
     std::cerr << "recode run: wrote " << o.scene << " to " << o.writeScene << "\n";
     return 0;
   }
