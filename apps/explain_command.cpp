@@ -22,6 +22,8 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 
+#include "recode/io/printable.hpp"
+
 namespace recode::app {
 
 namespace {
@@ -156,10 +158,11 @@ int runExplain(const ExplainOptions& options) {
   std::size_t written = 0;
   for (const explain::Section& s : sections)
     written += s.pictures.size();
-  std::cout << "recode explain: " << setup.nameA << " and " << setup.nameB << ", " << f.width << "x"
-            << f.height << " pixels along " << core::toString(f.axis) << ", MOR " << options.mor
-            << ": " << (result.collide ? "collide" : "no collision") << " ("
-            << result.interferingPixels << " interfering pixels)\n"
+  std::cout << "recode explain: " << io::printable(setup.nameA) << " and "
+            << io::printable(setup.nameB) << ", " << f.width << "x" << f.height << " pixels along "
+            << core::toString(f.axis) << ", MOR " << options.mor << ": "
+            << (result.collide ? "collide" : "no collision") << " (" << result.interferingPixels
+            << " interfering pixels)\n"
             << "  wrote " << written << (written == 1 ? " picture" : " pictures")
             << ", index.html and explain.json to " << dir.string() << '\n';
   return 0;

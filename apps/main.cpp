@@ -11,6 +11,7 @@
 #include "bench_command.hpp"
 #include "explain_command.hpp"
 #include "pair_command.hpp"
+#include "recode/io/printable.hpp"
 #include "replay_command.hpp"
 #include "run_command.hpp"
 #include "verify_command.hpp"
@@ -33,6 +34,14 @@ int checkedStdout(int exitCode) {
   return exitCode;
 }
 
+// "pair, replay, explain, run, verify, bench": the subcommands in the order --help lists them.
+std::string commandList(CLI::App& app) {
+  std::string list;
+  for (const CLI::App* command : app.get_subcommands({}))
+    list += (list.empty() ? "" : ", ") + command->get_name();
+  return list;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -50,9 +59,17 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    // CLI11 says only "A subcommand is required" for `recode frobnicate`: name the word.
+    if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty()) {
+      std::cerr << "recode: unknown command \"" << recode::io::printable(argv[1])
+                << "\" (commands: " << commandList(app)
+                << ")\nRun with --help for more information.\n";
+      return e.get_exit_code();
+    }
     return app.exit(e);
   } catch (const std::exception& e) {
-    std::cerr << "recode: error: " << e.what() << '\n';
+    // Messages quote names and text from the user's files: control characters escaped.
+    std::cerr << "recode: error: " << recode::io::printable(e.what()) << '\n';
     return 1;
   }
   return checkedStdout(exitCode);

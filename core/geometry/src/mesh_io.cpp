@@ -10,6 +10,7 @@
 
 #include "mesh_io_text.hpp"
 #include "recode/io/bounded_read.hpp"
+#include "recode/io/printable.hpp"
 
 namespace recode::core {
 namespace detail {
@@ -28,7 +29,7 @@ std::string quote(std::string_view token) {
   constexpr std::size_t kMaxShown = 40;
   std::string text;
   text += '\'';
-  text += token.substr(0, kMaxShown);
+  text += recode::io::printable(token.substr(0, kMaxShown));
   if (token.size() > kMaxShown) {
     text += "...";
   }
