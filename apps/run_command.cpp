@@ -9,6 +9,7 @@
 
 #include "atomic_file.hpp"
 #include "frame_options.hpp"
+#include "no_timing.hpp"
 #include "progress_bar.hpp"
 #include "recode/scene/experiment_scenes.hpp"
 #include "recode/scene/scene.hpp"
@@ -25,6 +26,7 @@ struct RunOptions {
   int frames = 0;  // 0: the scene's, else kDefaultRunFrames
   bool stopOnContact = false;
   bool json = false;
+  bool noTiming = false;  // --no-timing
   std::string csv;
   bool list = false;
   int trianglesPerBlock = 0;  // 0: the built-in's default
@@ -148,6 +150,8 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
     nlohmann::ordered_json j = runToJson(run, sim);
     j["frames"] = frames;
     j["stats"] = statisticsToJson(result);
+    if (o.noTiming)
+      removeTimingFields(j);
     std::cout << j.dump(2) << '\n';
   } else {
     printStatistics(std::cout, result);
@@ -188,7 +192,9 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                   "frames to run (default: the scene's \"frames\", else 100)")
       ->check(CLI::Range(1, core::kMaxFrames));
   cmd->add_flag("--stop-on-contact", o->stopOnContact, "stop after the first frame with contact");
-  cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  CLI::Option* json =
+      cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  addNoTimingFlag(*cmd, json, o->noTiming);
   cmd->add_option("--csv", o->csv, "write one CSV row of times and counters per frame to FILE");
   cmd->add_flag("--list", o->list, "list the built-in scenes and exit");
   cmd->add_option("--triangles-per-block", o->trianglesPerBlock,

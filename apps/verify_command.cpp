@@ -6,6 +6,7 @@
 #include <string>
 
 #include "frame_options.hpp"
+#include "no_timing.hpp"
 #include "recode/scene/builtin_scenes.hpp"
 #include "verify_pairs.hpp"
 #include "verify_report.hpp"
@@ -24,6 +25,7 @@ struct VerifyOptions {
   bool cgal = false;
   bool gl = false;
   bool json = false;
+  bool noTiming = false;  // --no-timing
   bool verbose = false;
   FrameOptions frameOptions;
   int frame = 0;
@@ -63,9 +65,12 @@ int runVerifyCommand(const VerifyOptions& o) {
     run.pairs.push_back(verifier.verify(std::move(p.label), p.a, p.b, request));
     run.totals.add(run.pairs.back());
   }
-  if (o.json)
-    std::cout << verifyRunToJson(run).dump(2) << '\n';
-  else
+  if (o.json) {
+    nlohmann::ordered_json j = verifyRunToJson(run);
+    if (o.noTiming)
+      removeTimingFields(j);
+    std::cout << j.dump(2) << '\n';
+  } else
     printVerifyReport(std::cout, run, o.verbose);
   return run.totals.passed() ? 0 : 2;
 }
@@ -102,7 +107,9 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--cgal", o->cgal,
                 "per pair: CGAL exact intersection (naming no oracle runs --embree --cgal)");
   cmd->add_flag("--gl", o->gl, "replay every pair's commands on OSMesa and compare the buffers");
-  cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  CLI::Option* json =
+      cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  addNoTimingFlag(*cmd, json, o->noTiming);
   cmd->add_flag("--verbose", o->verbose, "list every pair, not only failures and misses");
   const FrameOptionHandles frameOptions =
       addFrameOptions(*cmd, o->frameOptions,
