@@ -119,7 +119,9 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   frameOptions.resolution->excludes(suite);
   frameOptions.pixelSize->excludes(suite);
   cmd->add_option("--frame", o->frame, "the scene's frame to pose the objects at (motion)")
-      ->check(CLI::NonNegativeNumber)
+      // The frames a scene can run (kMaxFrames); CLI11's NonNegativeNumber printed its upper
+      // bound, the largest double, in 309 digits.
+      ->check(CLI::Range(0, core::kMaxFrames - 1))
       ->capture_default_str()
       ->excludes(suite);
   cmd->callback([o, &exitCode]() { exitCode = runVerifyCommand(*o); });
