@@ -146,10 +146,22 @@ TriangleMesh ShapeReader::leafMesh(const json& v, const std::string& path) const
 }
 
 // Relative to the scene file's directory; the mesh reader's and validator's messages are kept.
+// Vertices are held to the scene's coordinate range before validation, whose tolerances
+// overflow for coordinates near 1e300 ("height ... is -nan (tolerance inf)").
 TriangleMesh ShapeReader::meshFile(const json& v, const std::string& path) const {
   const fs::path file = baseDir_ / fs::path(fields_.nonEmptyString(v, path));
   try {
     TriangleMesh mesh = readMesh(file);
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const Eigen::Vector3d& p = mesh.vertices[i];
+      if (p.cwiseAbs().maxCoeff() > kMaxCoordinate) {
+        using recode::json::shortNumber;
+        fields_.fail(path, file.string() + ": vertex " + std::to_string(i) + " (" +
+                               shortNumber(p.x()) + ", " + shortNumber(p.y()) + ", " +
+                               shortNumber(p.z()) +
+                               ") has a coordinate outside -1e+09..1e+09 (world units)");
+      }
+    }
     validateConvexBlock(mesh, file.string());
     return mesh;
   } catch (const MeshError& e) {

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <string>
 
@@ -204,6 +205,19 @@ TEST_CASE("scene errors: numbers out of their ranges", "[scene][errors]") {
   CHECK(errorOf(oneShape(R"("type": "sphere", "radius": 2e9)")) ==
         "s.json: objects[0].shape.radius: expected a positive number up to 1e+09 (world units), "
         "got 2000000000.0");
+  // A mesh's vertices are held to the same range (the validator's tolerances overflowed near
+  // 1e300: "height ... is -nan (tolerance inf)").
+  {
+    TempDir dir;
+    std::ofstream(dir.path() / "far.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1e17\n"
+                                             "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+    const std::string far = (dir.path() / "far.obj").string();
+    CHECK_THAT(
+        recode::core::test::sceneErrorOf(R"({"objects": [{"mesh": ")" + far + R"("}]})", "s.json"),
+        Catch::Equals("s.json: objects[0].mesh: " + far +
+                      ": vertex 3 (0, 0, 1e+17) has a coordinate outside -1e+09..1e+09 "
+                      "(world units)"));
+  }
   // The limits themselves are accepted.
   CHECK_NOTHROW(parseScene(
       oneObject(box + R"(, "position": [1e9, -1e9, 0], "motion": {"velocity": [1000, -1000, 0],
