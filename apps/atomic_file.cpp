@@ -61,7 +61,8 @@ AtomicFile::AtomicFile(const fs::path& target, std::string label)
   // mkstemp makes the file 0600; give it what a plain create would (0666 less the umask).
   const mode_t mask = ::umask(0);
   ::umask(mask);
-  ::fchmod(fd_, 0666 & ~mask);
+  if (::fchmod(fd_, 0666 & ~mask) != 0)
+    fail("cannot set the temporary file's permissions", errno);
 }
 
 AtomicFile::~AtomicFile() {
