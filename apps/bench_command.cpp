@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -11,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "atomic_file.hpp"
 #include "bench_experiments.hpp"
 #include "bench_plots.hpp"
 #include "bench_report.hpp"
@@ -143,7 +143,7 @@ std::string writeSummary(const std::filesystem::path& path, const BenchOptions& 
   context.quick = o.quick;
   std::ostringstream summary;
   writeBenchSummary(summary, experiments, rows, context);
-  std::ofstream(path) << summary.str();
+  writeFileAtomically(path, summary.str());
   return summary.str();
 }
 
@@ -156,25 +156,25 @@ int runBench(const BenchOptions& o) {
   requireEverything();
   const std::vector<BenchCase> cases = listCases(experiments, o.quick);
 
-  // The output directory is made and bench.csv opened before the first case runs, so that a
-  // directory that cannot be written fails at once rather than after the whole bench.
+  // The output directory is made and bench.csv's temporary created before the first case
+  // runs, so that a directory that cannot be written fails at once rather than after the whole
+  // bench. A directory made here is removed again if the bench fails.
   const std::filesystem::path dir(o.out);
-  std::filesystem::create_directories(dir);
+  CreatedDirectory created(dir, "--out " + o.out);
   const std::filesystem::path csvPath = dir / "bench.csv";
-  std::ofstream csv(csvPath);
-  if (!csv)
-    throw std::runtime_error("--out " + o.out + ": cannot write " + csvPath.string());
+  AtomicFile csv(csvPath);
 
   const auto started = std::chrono::steady_clock::now();
   const std::vector<BenchRow> rows = runCases(cases);
-  writeBenchCsv(csv, rows);
-  csv.close();
-  if (!csv)
-    throw std::runtime_error("error while writing " + csvPath.string());
+  std::ostringstream csvText;
+  writeBenchCsv(csvText, rows);
+  csv.write(csvText.str());
+  csv.commit();
 
   const std::filesystem::path summaryPath = dir / "summary.md";
   const std::string summary = writeSummary(summaryPath, o, experiments, rows);
   const PlotOutcome plots = writeBenchPlots(dir, experiments, rows);
+  created.keep();
   const double total = secondsSince(started);
   std::cout << '\n'
             << summary << "\nrecode bench: " << rows.size() << " rows in " << std::fixed

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <set>
+#include <sstream>
 #include <stdexcept>
+
+#include "atomic_file.hpp"
 
 extern char** environ;
 
@@ -123,7 +125,7 @@ PlotOutcome writeBenchPlots(const std::filesystem::path& dir,
       const std::filesystem::path gp = plots / (id + ".gp");
       const std::filesystem::path png = dir / (id + ".png");
       {
-        std::ofstream data(dat);
+        std::ostringstream data;
         data << "# triangles mean_ms sd_ms; one block per algorithm\n";
         for (const Series& s : series) {
           data << "# " << s.algorithm << '\n';
@@ -131,10 +133,10 @@ PlotOutcome writeBenchPlots(const std::filesystem::path& dir,
             data << r->triangles << ' ' << r->meanMs << ' ' << r->sdMs << '\n';
           data << "\n\n";
         }
-        std::ofstream script(gp);
+        std::ostringstream script;
         writeScript(script, dat, png, id == scene ? scene : scene + " (" + e->name + ")", series);
-        if (!data || !script)
-          throw std::runtime_error("cannot write the plot files in " + plots.string());
+        writeFileAtomically(dat, data.str());
+        writeFileAtomically(gp, script.str());
       }
       outcome.scripts.push_back(gp);
       if (!outcome.problem.empty())

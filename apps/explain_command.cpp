@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "atomic_file.hpp"
 #include "explain_format.hpp"
 #include "explain_page.hpp"
 #include "explain_pictures.hpp"
@@ -20,6 +21,8 @@
 #include "recode/pair/frame.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
+
+#include "recode/io/printable.hpp"
 
 namespace recode::app {
 
@@ -39,17 +42,6 @@ struct ExplainOptions {
   std::string resolution;
   bool boxTest = true;
 };
-
-fs::path prepareOutDir(const std::string& out) {
-  const fs::path dir(out);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec)
-    throw std::runtime_error("--out " + out + ": cannot create the directory: " + ec.message());
-  if (!fs::is_directory(dir, ec))
-    throw std::runtime_error("--out " + out + ": exists and is not a directory");
-  return dir;
-}
 
 // Which buffers a step is about (a buffer that changed is pictured as well).
 bool stepWritesDepth(PairStep s) {
@@ -136,7 +128,9 @@ int runExplain(const ExplainOptions& options) {
                                 std::to_string(f.height) + "; recode explain draws at most " +
                                 std::to_string(kMaxExplainSide) +
                                 " pixels a side (use --resolution)");
-  const fs::path dir = prepareOutDir(options.out);
+  // Removed again, with what was written into it, if anything below fails.
+  const fs::path dir(options.out);
+  CreatedDirectory created(dir, "--out " + options.out);
 
   // Run the pair, keeping the buffers after every step.
   core::PairRequest request;
@@ -160,13 +154,15 @@ int runExplain(const ExplainOptions& options) {
   explain::writeIndexHtml(dir, page);
   explain::writeExplainJson(dir, page);
 
+  created.keep();
   std::size_t written = 0;
   for (const explain::Section& s : sections)
     written += s.pictures.size();
-  std::cout << "recode explain: " << setup.nameA << " and " << setup.nameB << ", " << f.width << "x"
-            << f.height << " pixels along " << core::toString(f.axis) << ", MOR " << options.mor
-            << ": " << (result.collide ? "collide" : "no collision") << " ("
-            << result.interferingPixels << " interfering pixels)\n"
+  std::cout << "recode explain: " << io::printable(setup.nameA) << " and "
+            << io::printable(setup.nameB) << ", " << f.width << "x" << f.height << " pixels along "
+            << core::toString(f.axis) << ", MOR " << options.mor << ": "
+            << (result.collide ? "collide" : "no collision") << " (" << result.interferingPixels
+            << " interfering pixels)\n"
             << "  wrote " << written << (written == 1 ? " picture" : " pictures")
             << ", index.html and explain.json to " << dir.string() << '\n';
   return 0;

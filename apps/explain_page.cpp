@@ -1,11 +1,11 @@
 // Writes the explain page: index.html (sections of text and pictures) and explain.json.
 #include "explain_page.hpp"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
+#include "atomic_file.hpp"
 #include "explain_format.hpp"
 #include "explain_palette.hpp"
 #include "explain_text.hpp"
@@ -18,12 +18,7 @@ namespace fs = std::filesystem;
 using raster::PixelRect;
 
 void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out)
-    throw std::runtime_error(path.string() + ": cannot open for writing");
-  out << text;
-  if (!out)
-    throw std::runtime_error(path.string() + ": write failed");
+  writeFileAtomically(path, text);
 }
 
 nlohmann::json colourJson(Rgb c) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "frame_options.hpp"
+#include "no_timing.hpp"
 #include "pair_report.hpp"
 #include "pair_setup.hpp"
 #include "pgm.hpp"
@@ -19,6 +20,7 @@ namespace {
 struct PairOptions {
   std::string scene;
   bool json = false;
+  bool noTiming = false;  // --no-timing
   FrameOptions frame;
   std::string dumpCases;
   bool contact = true;
@@ -39,9 +41,12 @@ int runPairCommand(const PairOptions& o) {
   if (!o.dumpCases.empty())
     writePgmBottomUp(o.dumpCases, setup.frame.width, setup.frame.height,
                      frameCaseImage(setup.frame, result));
-  if (o.json)
-    std::cout << pairResultToJson(setup, request, result).dump(2) << '\n';
-  else
+  if (o.json) {
+    nlohmann::ordered_json j = pairResultToJson(setup, request, result);
+    if (o.noTiming)
+      removeTimingFields(j);
+    std::cout << j.dump(2) << '\n';
+  } else
     printPairReport(std::cout, setup, request, result, o.picture);
   return 0;
 }
@@ -57,7 +62,9 @@ void addPairCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("scene", o->scene,
                   "scene file (JSON, docs/scenes.md); omit for the built-in pair")
       ->check(CLI::ExistingFile);
-  cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  CLI::Option* json =
+      cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  addNoTimingFlag(*cmd, json, o->noTiming);
   addFrameOptions(*cmd, o->frame,
                   {"region the passes run over and the stencil is read from: min (the boxes' "
                    "intersection), max (both boxes), full (the frame)",

@@ -3,6 +3,8 @@
 #include <iomanip>
 #include <string>
 
+#include "recode/io/printable.hpp"
+
 namespace recode::app {
 
 namespace {
@@ -142,11 +144,13 @@ ordered_json pairResultToJson(const PairSetup& setup, const core::PairRequest& r
 void printPairReport(std::ostream& out, const PairSetup& setup, const core::PairRequest& request,
                      const core::PairResult& r, bool picture) {
   const core::FrameSpec& f = setup.frame;
-  out << "RECODE pair: " << setup.nameA << " (A, " << setup.a.triangleCount() << " triangles) and "
-      << setup.nameB << " (B, " << setup.b.triangleCount() << " triangles) from " << setup.source
-      << "\n  view along " << core::toString(f.axis) << ", " << f.width << "x" << f.height
-      << " pixels over [" << f.window.umin << ", " << f.window.vmin << "] - [" << f.window.umax
-      << ", " << f.window.vmax << "], MOR " << core::toString(request.mor) << "\n";
+  // Names and the file come from the user: echoed with control characters escaped.
+  out << "RECODE pair: " << io::printable(setup.nameA) << " (A, " << setup.a.triangleCount()
+      << " triangles) and " << io::printable(setup.nameB) << " (B, " << setup.b.triangleCount()
+      << " triangles) from " << io::printable(setup.source) << "\n  view along "
+      << core::toString(f.axis) << ", " << f.width << "x" << f.height << " pixels over ["
+      << f.window.umin << ", " << f.window.vmin << "] - [" << f.window.umax << ", " << f.window.vmax
+      << "], MOR " << core::toString(request.mor) << "\n";
   if (r.mor.empty()) {
     out << "  the boxes do not overlap: no pass drawn, no pixel read\n"
         << "  verdict: no collision\n";

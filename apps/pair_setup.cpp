@@ -7,6 +7,19 @@
 
 namespace recode::app {
 
+core::FrameSpec resolveFrameNamed(const core::Scene& scene, const core::Aabb& bounds,
+                                  const core::FrameOverrides& overrides) {
+  try {
+    return core::resolveFrame(scene.view, bounds, overrides);
+  } catch (const std::invalid_argument& e) {
+    if (overrides.pixelSize)
+      throw std::invalid_argument(std::string("--pixel-size: ") + e.what());
+    if (overrides.width)
+      throw std::invalid_argument(std::string("--resolution: ") + e.what());
+    throw core::SceneError(scene.sourceName, "view", e.what());
+  }
+}
+
 PairSetup pairSetupFromScene(const core::Scene& scene, const core::FrameOverrides& overrides) {
   if (scene.objects.size() < 2)
     throw core::SceneError(
@@ -27,7 +40,7 @@ PairSetup pairSetupFromScene(const core::Scene& scene, const core::FrameOverride
   s.b = scene.objects[1].worldMesh();
   core::Aabb bounds = core::boundingBox(s.a);
   bounds.extend(core::boundingBox(s.b));
-  s.frame = core::resolveFrame(scene.view, bounds, overrides);
+  s.frame = resolveFrameNamed(scene, bounds, overrides);
   return s;
 }
 

@@ -24,6 +24,11 @@ struct PairSetup {
 [[nodiscard]] PairSetup pairSetupFromScene(const core::Scene& scene,
                                            const core::FrameOverrides& overrides);
 
+// core::resolveFrame for the scene's view, its errors naming where the frame came from:
+// "--pixel-size: ...", "--resolution: ...", or the scene file at "view" (a SceneError).
+[[nodiscard]] core::FrameSpec resolveFrameNamed(const core::Scene& scene, const core::Aabb& bounds,
+                                                const core::FrameOverrides& overrides);
+
 // A scene file when given, else core::builtinPairScene().
 [[nodiscard]] PairSetup loadPairSetup(const std::optional<std::string>& scenePath,
                                       const core::FrameOverrides& overrides);

@@ -1,22 +1,21 @@
 #include "pgm.hpp"
 
-#include <fstream>
-#include <stdexcept>
+#include <string>
+
+#include "atomic_file.hpp"
 
 namespace recode::app {
 
 void writePgmBottomUp(const std::filesystem::path& path, int width, int height,
                       const std::vector<std::uint8_t>& pixels) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out)
-    throw std::runtime_error(path.string() + ": cannot open for writing");
-  out << "P5\n" << width << ' ' << height << "\n255\n";
+  AtomicFile out(path);
+  out.write("P5\n" + std::to_string(width) + ' ' + std::to_string(height) + "\n255\n");
   for (int y = height - 1; y >= 0; --y) {
-    out.write(reinterpret_cast<const char*>(pixels.data()) + static_cast<std::ptrdiff_t>(y) * width,
-              width);
+    out.write(
+        {reinterpret_cast<const char*>(pixels.data()) + static_cast<std::ptrdiff_t>(y) * width,
+         static_cast<std::size_t>(width)});
   }
-  if (!out)
-    throw std::runtime_error(path.string() + ": write failed");
+  out.commit();
 }
 
 }  // namespace recode::app

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
+
+#include "atomic_file.hpp"
 
 namespace recode::app {
 
@@ -102,10 +105,16 @@ void outlineRect(RgbImage& image, const ImageRect& rect, Rgb colour, int thickne
 void writePng(const std::filesystem::path& path, const RgbImage& image) {
   if (image.width() < 1 || image.height() < 1)
     throw std::runtime_error(path.string() + ": cannot write an empty picture");
-  const std::string name = path.string();
-  if (stbi_write_png(name.c_str(), image.width(), image.height(), 3, image.bytes().data(),
-                     3 * image.width()) == 0)
-    throw std::runtime_error(name + ": cannot write PNG file");
+  // Encoded in memory, then written whole (atomic_file.hpp).
+  std::string png;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
+  };
+  if (stbi_write_png_to_func(append, &png, image.width(), image.height(), 3, image.bytes().data(),
+                             3 * image.width()) == 0)
+    throw std::runtime_error(path.string() + ": cannot encode the PNG picture");
+  writeFileAtomically(path, png);
 }
 
 }  // namespace recode::app

@@ -1,14 +1,15 @@
 #include "run_command.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "atomic_file.hpp"
 #include "frame_options.hpp"
+#include "no_timing.hpp"
 #include "progress_bar.hpp"
 #include "recode/scene/experiment_scenes.hpp"
 #include "recode/scene/scene.hpp"
@@ -25,6 +26,7 @@ struct RunOptions {
   int frames = 0;  // 0: the scene's, else kDefaultRunFrames
   bool stopOnContact = false;
   bool json = false;
+  bool noTiming = false;  // --no-timing
   std::string csv;
   bool list = false;
   int trianglesPerBlock = 0;  // 0: the built-in's default
@@ -48,13 +50,6 @@ void printList() {
     std::cout << "  " << b.name << std::string(24 - std::min<std::size_t>(b.name.size(), 22), ' ')
               << b.summary << " (default " << b.defaultTrianglesPerBlock
               << " triangles per block)\n";
-}
-
-std::ofstream openForWriting(const std::string& file, const char* option) {
-  std::ofstream out(file, std::ios::binary);
-  if (!out)
-    throw std::runtime_error(std::string(option) + " " + file + ": cannot open for writing");
-  return out;
 }
 
 // o.scene as a file or a built-in, after refusing a name that is neither and the options that
@@ -93,14 +88,14 @@ SceneChoice chooseScene(const RunOptions& o) {
 // Runs the frames, each reported as the options ask, up to the first contact with
 // --stop-on-contact; under --json the frames' objects are collected into `frames`.
 core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulation& sim,
-                              std::ofstream* csv, nlohmann::ordered_json& frames) {
+                              AtomicFile* csv, nlohmann::ordered_json& frames) {
   core::RunStatisticsAccumulator stats;
   ProgressBar progress(frameCount);
   for (int k = 0; k < frameCount; ++k) {
     const core::FrameReport report = sim.runFrame(k);
     stats.add(report);
     if (csv)
-      *csv << csvRow(report);
+      csv->write(csvRow(report));
     if (o.json)
       frames.push_back(frameToJson(sim, report));
     else if (!o.quiet)
@@ -113,12 +108,26 @@ core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulat
   return stats.result(static_cast<long long>(sim.triangleCount()));
 }
 
+// The simulation, its frame errors naming where the pixel size came from (as pair's).
+core::Simulation makeSimulation(const RunOptions& o, const core::Scene& scene,
+                                const core::RunOptions& options) {
+  try {
+    return core::Simulation(scene, options);
+  } catch (const std::invalid_argument& e) {
+    if (o.frame.pixelSize == 0.0 && o.frame.resolution.empty())
+      throw core::SceneError(scene.sourceName.empty() ? o.scene : scene.sourceName, "view",
+                             e.what());
+    throw std::invalid_argument(
+        std::string(o.frame.resolution.empty() ? "--pixel-size: " : "--resolution: ") + e.what());
+  }
+}
+
 void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   core::RunOptions options;
   options.overrides = o.frame.overrides();
   options.mor = o.frame.mor();
   options.contact = o.contact;
-  core::Simulation sim(scene, options);
+  core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
   run.scene = o.scene;
@@ -126,10 +135,12 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   run.frames = o.frames > 0 ? o.frames : scene.frames.value_or(core::kDefaultRunFrames);
   run.stopOnContact = o.stopOnContact;
 
-  std::optional<std::ofstream> csv;
+  // Written beside the target and renamed at the end: a run that fails midway leaves no
+  // partial CSV (and an earlier one as it was).
+  std::optional<AtomicFile> csv;
   if (!o.csv.empty()) {
-    csv = openForWriting(o.csv, "--csv");
-    *csv << csvHeader();
+    csv.emplace(o.csv, "--csv " + o.csv);
+    csv->write(csvHeader());
   }
   nlohmann::ordered_json frames = nlohmann::ordered_json::array();
   if (!o.json)
@@ -139,12 +150,14 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
     nlohmann::ordered_json j = runToJson(run, sim);
     j["frames"] = frames;
     j["stats"] = statisticsToJson(result);
+    if (o.noTiming)
+      removeTimingFields(j);
     std::cout << j.dump(2) << '\n';
   } else {
     printStatistics(std::cout, result);
   }
-  if (csv && !*csv)
-    throw std::runtime_error("--csv " + o.csv + ": error while writing");
+  if (csv)
+    csv->commit();
 }
 
 int runRunCommand(const RunOptions& o) {
@@ -154,8 +167,8 @@ int runRunCommand(const RunOptions& o) {
   }
   const SceneChoice choice = chooseScene(o);
   if (!o.writeScene.empty()) {
-    openForWriting(o.writeScene, "--write-scene")
-        << core::builtinSceneJson(o.scene, choice.triangles);
+    writeFileAtomically(o.writeScene, core::builtinSceneJson(o.scene, choice.triangles),
+                        "--write-scene " + o.writeScene);
     std::cerr << "recode run: wrote " << o.scene << " to " << o.writeScene << "\n";
     return 0;
   }
@@ -179,7 +192,9 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                   "frames to run (default: the scene's \"frames\", else 100)")
       ->check(CLI::Range(1, core::kMaxFrames));
   cmd->add_flag("--stop-on-contact", o->stopOnContact, "stop after the first frame with contact");
-  cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  CLI::Option* json =
+      cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  addNoTimingFlag(*cmd, json, o->noTiming);
   cmd->add_option("--csv", o->csv, "write one CSV row of times and counters per frame to FILE");
   cmd->add_flag("--list", o->list, "list the built-in scenes and exit");
   cmd->add_option("--triangles-per-block", o->trianglesPerBlock,

@@ -3,6 +3,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "recode/io/printable.hpp"
+
 namespace recode::app {
 
 namespace {
@@ -105,8 +107,9 @@ void printRunHeader(std::ostream& out, const RunDescription& run, const core::Si
   std::size_t blocks = 0;
   for (const core::ObjectTree& o : sim.objects())
     blocks += o.leaves().size();
-  out << "recode run: " << run.scene << " (" << run.source << "), " << sim.objects().size()
-      << " objects, " << blocks << " blocks, " << sim.triangleCount() << " triangles\n"
+  out << "recode run: " << io::printable(run.scene) << " (" << run.source << "), "
+      << sim.objects().size() << " objects, " << blocks << " blocks, " << sim.triangleCount()
+      << " triangles\n"
       << "  view along " << core::toString(sim.axis()) << ", pixel size " << sim.pixelSize()
       << ", frames 0.." << run.frames - 1 << (run.stopOnContact ? " (stop at first contact)" : "")
       << "\n";
@@ -118,9 +121,10 @@ void printFrame(std::ostream& out, const core::Simulation& sim, const core::Fram
   out << "frame " << frame.frame << ": " << frame.contacts.size() << " contact"
       << (frame.contacts.size() == 1 ? "" : "s") << " (" << frame.pairTests << " pair tests)\n";
   for (const core::LeafContact& c : frame.contacts) {
-    out << "  " << leaf(sim, c.objectA, c.leafA).path << "  x  "
-        << leaf(sim, c.objectB, c.leafB).path << ": " << c.result.interferingPixels << " px, area "
-        << c.result.contact.area;
+    // Paths are made of the scene's names: echoed with control characters escaped.
+    out << "  " << io::printable(leaf(sim, c.objectA, c.leafA).path) << "  x  "
+        << io::printable(leaf(sim, c.objectB, c.leafB).path) << ": " << c.result.interferingPixels
+        << " px, area " << c.result.contact.area;
     if (!c.result.contact.box.isEmpty())
       out << ", depth " << c.result.contact.maxDepth;
     out << "\n";

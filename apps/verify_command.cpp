@@ -6,6 +6,7 @@
 #include <string>
 
 #include "frame_options.hpp"
+#include "no_timing.hpp"
 #include "recode/scene/builtin_scenes.hpp"
 #include "verify_pairs.hpp"
 #include "verify_report.hpp"
@@ -27,6 +28,7 @@ struct VerifyOptions {
   std::string glPlatform = "auto";
   bool vulkan = false;
   bool json = false;
+  bool noTiming = false;  // --no-timing
   bool verbose = false;
   FrameOptions frameOptions;
   int frame = 0;
@@ -69,9 +71,12 @@ int runVerifyCommand(const VerifyOptions& o) {
     run.pairs.push_back(verifier.verify(std::move(p.label), p.a, p.b, request));
     run.totals.add(run.pairs.back());
   }
-  if (o.json)
-    std::cout << verifyRunToJson(run).dump(2) << '\n';
-  else
+  if (o.json) {
+    nlohmann::ordered_json j = verifyRunToJson(run);
+    if (o.noTiming)
+      removeTimingFields(j);
+    std::cout << j.dump(2) << '\n';
+  } else
     printVerifyReport(std::cout, run, o.verbose);
   return run.totals.passed() ? 0 : 2;
 }
@@ -121,7 +126,9 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
                 "replay every pair's commands on the exact Vulkan device (headless Vulkan 1.3, "
                 "lavapipe or a GPU) and require bit-identical depth and stencil after every "
                 "command");
-  cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  CLI::Option* json =
+      cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
+  addNoTimingFlag(*cmd, json, o->noTiming);
   cmd->add_flag("--verbose", o->verbose, "list every pair, not only failures and misses");
   const FrameOptionHandles frameOptions =
       addFrameOptions(*cmd, o->frameOptions,
@@ -131,7 +138,9 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   frameOptions.resolution->excludes(suite);
   frameOptions.pixelSize->excludes(suite);
   cmd->add_option("--frame", o->frame, "the scene's frame to pose the objects at (motion)")
-      ->check(CLI::NonNegativeNumber)
+      // The frames a scene can run (kMaxFrames); CLI11's NonNegativeNumber printed its upper
+      // bound, the largest double, in 309 digits.
+      ->check(CLI::Range(0, core::kMaxFrames - 1))
       ->capture_default_str()
       ->excludes(suite);
   cmd->callback([o, &exitCode]() { exitCode = runVerifyCommand(*o); });

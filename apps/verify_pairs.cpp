@@ -1,5 +1,7 @@
 #include "verify_pairs.hpp"
 
+#include "pair_setup.hpp"
+
 #include "recode/sim/hierarchy.hpp"
 #include "recode/verify/pair_suite.hpp"
 
@@ -28,7 +30,7 @@ VerifyPairs scenePairs(const core::Scene& scene, const core::FrameOverrides& ove
           p.b = trees[j].worldMesh(leafB);
           core::Aabb bounds = core::boundingBox(p.a);
           bounds.extend(core::boundingBox(p.b));
-          p.frame = core::resolveFrame(scene.view, bounds, overrides);
+          p.frame = resolveFrameNamed(scene, bounds, overrides);
           out.pairs.push_back(std::move(p));
         }
   return out;

@@ -3,6 +3,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "recode/io/printable.hpp"
+
 namespace recode::app {
 
 namespace {
@@ -41,7 +43,7 @@ bool worthShowing(const verify::PairVerification& p) {
 }
 
 void printPair(std::ostream& out, const verify::PairVerification& p) {
-  out << (p.passed() ? "  ok    " : "  FAIL  ") << p.label << ": RECODE "
+  out << (p.passed() ? "  ok    " : "  FAIL  ") << io::printable(p.label) << ": RECODE "
       << (p.result.collide ? "collide" : "apart") << " (" << p.result.interferingPixels << " px)\n";
   if (p.embree) {
     out << "        embree " << embreeLine(p.embree->counts) << '\n';

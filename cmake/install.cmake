@@ -6,7 +6,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(recode_installed_libraries recode_raster recode_raster_files recode_json recode_geometry
+set(recode_installed_libraries recode_io recode_raster recode_raster_files recode_json recode_geometry
                                recode_pair recode_scene recode_sim)
 install(TARGETS ${recode_installed_libraries} recode_all
         EXPORT recodeTargets

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <vector>
 
@@ -34,6 +35,12 @@ std::string childPath(const std::string& path, const std::string& key) {
 
 std::string childPath(const std::string& path, std::size_t index) {
   return path + "[" + std::to_string(index) + "]";
+}
+
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
 }
 
 std::string describeJsonValue(const json& value) {
@@ -271,6 +278,26 @@ double JsonFieldReader::positiveNumber(const json& value, const std::string& pat
   const double x = finiteNumber(value, path);
   if (!(x > 0.0))
     fail(path, "expected a positive number, got " + jsonText(value));
+  return x;
+}
+
+double JsonFieldReader::numberInRange(const json& value, const std::string& path, double lo,
+                                      double hi, std::string_view why) const {
+  const double x = finiteNumber(value, path);
+  if (!(x >= lo && x <= hi)) {
+    fail(path, "expected a number in " + shortNumber(lo) + ".." + shortNumber(hi) + " (" +
+                   std::string(why) + "), got " + jsonText(value));
+  }
+  return x;
+}
+
+double JsonFieldReader::positiveNumberUpTo(const json& value, const std::string& path, double hi,
+                                           std::string_view why) const {
+  const double x = positiveNumber(value, path);
+  if (!(x <= hi)) {
+    fail(path, "expected a positive number up to " + shortNumber(hi) + " (" + std::string(why) +
+                   "), got " + jsonText(value));
+  }
   return x;
 }
 

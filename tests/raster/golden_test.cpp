@@ -104,7 +104,11 @@ TEST_CASE("malformed golden and command files name the JSON path", "[golden]") {
     CHECK(e.jsonPath() == "commands[0].func");
   }
   CHECK_THROWS_WITH(readGolden("/nonexistent/golden.json"),
-                    Catch::Equals("/nonexistent/golden.json: cannot open file"));
+                    Catch::Equals("/nonexistent/golden.json: cannot read golden vector or "
+                                  "command stream: file not found"));
+  CHECK_THROWS_WITH(readCommandFile("/dev/zero"),
+                    Catch::Equals("/dev/zero: cannot read golden vector or command stream: it is "
+                                  "not a regular file (a character device)"));
 }
 
 TEST_CASE("readCommandFile chooses the format by its format key", "[golden]") {

@@ -6,12 +6,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <system_error>
 
 #include "mesh_io_text.hpp"
+#include "recode/io/bounded_read.hpp"
+#include "recode/io/printable.hpp"
 
 namespace recode::core {
 namespace detail {
@@ -30,7 +29,7 @@ std::string quote(std::string_view token) {
   constexpr std::size_t kMaxShown = 40;
   std::string text;
   text += '\'';
-  text += token.substr(0, kMaxShown);
+  text += recode::io::printable(token.substr(0, kMaxShown));
   if (token.size() > kMaxShown) {
     text += "...";
   }
@@ -51,25 +50,13 @@ namespace fs = std::filesystem;
 
 using detail::fail;
 
+// Bounded: a mesh path may name /dev/zero, a FIFO or a huge file (docs/geometry.md).
 std::string readWholeFile(const fs::path& path) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status)) {
-    fail(path, "file not found");
+  try {
+    return recode::io::readBoundedFile(path, recode::io::kMaxMeshFileBytes, "mesh file");
+  } catch (const recode::io::FileReadError& e) {
+    fail(path, e.problem());
   }
-  if (fs::is_directory(status)) {
-    fail(path, "is a directory, not a mesh file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    fail(path, "cannot open file for reading");
-  }
-  std::ostringstream contents;
-  contents << in.rdbuf();
-  if (in.bad()) {
-    fail(path, "error while reading the file");
-  }
-  return std::move(contents).str();
 }
 
 std::string lowercaseExtension(const fs::path& path) {

@@ -111,7 +111,8 @@ inline std::optional<long long> parseInteger(std::string_view token) {
   return value;
 }
 
-// A token as messages show it: quoted, and cut short so that a garbage line stays readable.
+// A token as messages show it: quoted, control characters escaped (recode::io::printable), and
+// cut short so that a garbage line stays readable.
 std::string quote(std::string_view token);
 
 // Parses three coordinate tokens; on error returns the problem text.

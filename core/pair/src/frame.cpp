@@ -74,6 +74,18 @@ FrameSpec frameFromPixelSize(ViewAxis axis, const ViewWindow& window, double pix
   return f;
 }
 
+void checkPixelSizeFits(double pixelSize, const ViewWindow& window) {
+  const double du = window.umax - window.umin, dv = window.vmax - window.vmin;
+  const double longer = std::max(du, dv);
+  if (pixelSize > longer) {
+    std::ostringstream m;
+    m << "pixel size " << pixelSize << " is larger than the window (" << du << " by " << dv
+      << " world units): a frame needs at least one pixel within the window; give at most "
+      << longer;
+    throw std::invalid_argument(m.str());
+  }
+}
+
 int heightForWidth(const ViewWindow& window, int width) {
   const double rows = std::round(width * (window.vmax - window.vmin) / (window.umax - window.umin));
   return static_cast<int>(std::clamp(rows, 1.0, static_cast<double>(raster::kMaxFramebufferSize)));
@@ -112,8 +124,11 @@ FrameSpec resolveFrame(const ViewSpec& spec, const Aabb& bounds, const FrameOver
       resolution =
           spec.resolution.value_or(std::array<int, 2>{kDefaultResolution, kDefaultResolution});
   }
-  if (pixelSize)
-    return frameFromPixelSize(spec.axis, windowFor(std::nullopt), *pixelSize);
+  if (pixelSize) {
+    const ViewWindow window = windowFor(std::nullopt);
+    checkPixelSizeFits(*pixelSize, window);
+    return frameFromPixelSize(spec.axis, window, *pixelSize);
+  }
   FrameSpec f;
   f.axis = spec.axis;
   if (widthOnly) {

@@ -2,11 +2,9 @@
 // document by the section readers of scene_reader.hpp.
 #include "recode/scene/scene.hpp"
 
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <system_error>
 
+#include "recode/io/bounded_read.hpp"
 #include "scene_reader.hpp"
 
 namespace recode::core {
@@ -57,20 +55,13 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName,
 }
 
 Scene loadScene(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  std::error_code ec;
-  if (!fs::exists(file, ec))
-    throw SceneError(name, "", "cannot open scene file (file not found)");
-  if (fs::is_directory(file, ec))
-    throw SceneError(name, "", "cannot open scene file (it is a directory)");
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw SceneError(name, "", "cannot open scene file (not readable)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad())
-    throw SceneError(name, "", "error while reading the scene file");
-  return parseScene(text.str(), name, file.parent_path());
+  std::string text;
+  try {
+    text = recode::io::readBoundedFile(file, recode::io::kMaxJsonFileBytes, "scene file");
+  } catch (const recode::io::FileReadError& e) {
+    throw SceneError(e.file(), "", e.problem());
+  }
+  return parseScene(text, file.string(), file.parent_path());
 }
 
 }  // namespace recode::core

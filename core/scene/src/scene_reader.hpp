@@ -63,7 +63,11 @@ class PlacementReader {
   [[nodiscard]] std::vector<Keyframe> keyframes(const json& v, const std::string& path,
                                                 const Placement& rest) const;
   [[nodiscard]] Joint joint(const json& v, const std::string& path) const;
-  [[nodiscard]] Eigen::Vector3d vector3(const json& v, const std::string& path) const;
+  // An array of 3 numbers [x, y, z], each within +-limit (`why` names the unit and the rule).
+  [[nodiscard]] Eigen::Vector3d vector3(const json& v, const std::string& path, double limit,
+                                        std::string_view why) const;
+  // An angle in degrees within +-kMaxAngleDeg.
+  [[nodiscard]] double angle(const json& v, const std::string& path) const;
 
   const JsonFieldReader& fields_;
 };

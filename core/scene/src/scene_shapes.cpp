@@ -47,10 +47,11 @@ class ShapeFields {
               const std::string& type)
       : fields_(fields), v_(v), path_(path), type_(type) {}
 
-  // A required positive number.
+  // A required positive number, at most kMaxCoordinate.
   [[nodiscard]] double size(const char* key) const {
     require(key);
-    return fields_.positiveNumber(v_.at(key), childPath(path_, key));
+    return fields_.positiveNumberUpTo(v_.at(key), childPath(path_, key), kMaxCoordinate,
+                                      "world units");
   }
   // An optional integer of at least `lo`.
   [[nodiscard]] int count(const char* key, int fallback, int lo) const {
@@ -58,14 +59,15 @@ class ShapeFields {
       return fallback;
     return static_cast<int>(fields_.integerInRange(v_.at(key), childPath(path_, key), lo, INT_MAX));
   }
-  // A required array of 3 positive numbers.
+  // A required array of 3 positive numbers, each at most kMaxCoordinate.
   [[nodiscard]] Eigen::Vector3d sizes3(const char* key, const char* what) const {
     require(key);
     const std::string p = childPath(path_, key);
     const json& a = fields_.arrayOfSize(v_.at(key), p, 3, what);
-    return {fields_.positiveNumber(a[0], childPath(p, 0)),
-            fields_.positiveNumber(a[1], childPath(p, 1)),
-            fields_.positiveNumber(a[2], childPath(p, 2))};
+    const auto size = [&](std::size_t i) {
+      return fields_.positiveNumberUpTo(a[i], childPath(p, i), kMaxCoordinate, "world units");
+    };
+    return {size(0), size(1), size(2)};
   }
   [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
     fields_.fail(path, problem);
@@ -144,10 +146,22 @@ TriangleMesh ShapeReader::leafMesh(const json& v, const std::string& path) const
 }
 
 // Relative to the scene file's directory; the mesh reader's and validator's messages are kept.
+// Vertices are held to the scene's coordinate range before validation, whose tolerances
+// overflow for coordinates near 1e300 ("height ... is -nan (tolerance inf)").
 TriangleMesh ShapeReader::meshFile(const json& v, const std::string& path) const {
   const fs::path file = baseDir_ / fs::path(fields_.nonEmptyString(v, path));
   try {
     TriangleMesh mesh = readMesh(file);
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      const Eigen::Vector3d& p = mesh.vertices[i];
+      if (p.cwiseAbs().maxCoeff() > kMaxCoordinate) {
+        using recode::json::shortNumber;
+        fields_.fail(path, file.string() + ": vertex " + std::to_string(i) + " (" +
+                               shortNumber(p.x()) + ", " + shortNumber(p.y()) + ", " +
+                               shortNumber(p.z()) +
+                               ") has a coordinate outside -1e+09..1e+09 (world units)");
+      }
+    }
     validateConvexBlock(mesh, file.string());
     return mesh;
   } catch (const MeshError& e) {

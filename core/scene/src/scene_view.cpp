@@ -1,4 +1,5 @@
 // The "view" object of a scene file: axis, window, resolution, pixel size.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -26,10 +27,14 @@ ViewAxis readAxis(const JsonFieldReader& fields, const json& a, const std::strin
 ViewWindow readWindow(const JsonFieldReader& fields, const json& value, const std::string& path) {
   const json& w = fields.arrayOfSize(value, path, 4, "4 numbers [umin, vmin, umax, vmax]");
   ViewWindow window;
-  window.umin = fields.finiteNumber(w[0], childPath(path, 0));
-  window.vmin = fields.finiteNumber(w[1], childPath(path, 1));
-  window.umax = fields.finiteNumber(w[2], childPath(path, 2));
-  window.vmax = fields.finiteNumber(w[3], childPath(path, 3));
+  const auto coordinate = [&](std::size_t i) {
+    return fields.numberInRange(w[i], childPath(path, i), -kMaxCoordinate, kMaxCoordinate,
+                                "world units");
+  };
+  window.umin = coordinate(0);
+  window.vmin = coordinate(1);
+  window.umax = coordinate(2);
+  window.vmax = coordinate(3);
   if (!(window.umin < window.umax)) {
     fields.fail(path,
                 "umin (" + jsonText(w[0]) + ") must be less than umax (" + jsonText(w[2]) + ")");
@@ -38,8 +43,15 @@ ViewWindow readWindow(const JsonFieldReader& fields, const json& value, const st
     fields.fail(path,
                 "vmin (" + jsonText(w[1]) + ") must be less than vmax (" + jsonText(w[3]) + ")");
   }
-  if (!std::isfinite(window.umax - window.umin) || !std::isfinite(window.vmax - window.vmin))
-    fields.fail(path, "the window's width or height overflows a double");
+  // Coordinates within +-kMaxCoordinate cannot overflow; a side below kMinWindowSide would put
+  // any object of ordinary size millions of pixels outside the frame.
+  const double width = window.umax - window.umin, height = window.vmax - window.vmin;
+  if (!(std::min(width, height) >= kMinWindowSide)) {
+    fields.fail(path, std::string("the window's ") + (width < height ? "width " : "height ") +
+                          recode::json::shortNumber(std::min(width, height)) +
+                          " is below the smallest side, " +
+                          recode::json::shortNumber(kMinWindowSide) + " world units");
+  }
   return window;
 }
 
@@ -64,7 +76,8 @@ ViewSpec readView(const JsonFieldReader& fields, const json& v, const std::strin
     const std::string p = childPath(path, "pixel_size");
     if (spec.resolution)
       fields.fail(p, "cannot be given together with \"resolution\" (give one of the two)");
-    spec.pixelSize = fields.positiveNumber(v.at("pixel_size"), p);
+    spec.pixelSize =
+        fields.positiveNumberUpTo(v.at("pixel_size"), p, kMaxCoordinate, "world units");
   }
   return spec;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace recode::core {
@@ -17,6 +18,18 @@ constexpr double kContainmentSlack = 1e-9;
 Obb withSlack(const Obb& box) {
   const double scale = box.center.cwiseAbs().maxCoeff() + box.halfExtents.maxCoeff();
   return grown(box, kContainmentSlack * scale);
+}
+
+// The fields of a placement that move it, for the message of a pose that is not finite.
+std::string motionFields(const Placement& placement) {
+  std::string fields = "position, rotation_deg";
+  if (placement.motion)
+    fields += ", motion";
+  if (!placement.keyframes.empty())
+    fields += ", keyframes";
+  if (placement.joint)
+    fields += ", joint";
+  return fields;
 }
 
 }  // namespace
@@ -87,6 +100,12 @@ void ObjectTree::fitLocalBoxes() {
 void ObjectTree::setFrame(int frame) {
   for (HierarchyNode& node : nodes_) {
     const Eigen::Isometry3d local = node.placement.poseAt(frame);
+    // A scene file's ranges (scene.hpp) keep poses finite; a Placement built in code has no
+    // such check, and a NaN pose would silently report no contact, so stop here instead.
+    if (!local.matrix().allFinite())
+      throw std::domain_error(node.path + ": the pose at frame " + std::to_string(frame) +
+                              " is not finite (its " + motionFields(node.placement) +
+                              " overflow a double)");
     node.world =
         node.parent < 0 ? local : nodes_[static_cast<std::size_t>(node.parent)].world * local;
   }

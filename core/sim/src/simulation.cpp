@@ -68,10 +68,17 @@ void addPairTest(FrameReport& report, int ia, int ib, const LeafPair& lp, PairRe
 }  // namespace
 
 double runPixelSize(const ViewSpec& view, const Aabb& bounds, const FrameOverrides& overrides) {
+  // A given pixel size must fit the scene's screen (its window, else the default window over
+  // every object at frame 0), as for `recode pair`.
+  const auto fitting = [&](double pixelSize) {
+    checkPixelSizeFits(pixelSize,
+                       view.window ? *view.window : defaultWindow(view.axis, bounds, std::nullopt));
+    return pixelSize;
+  };
   if (overrides.pixelSize)
-    return *overrides.pixelSize;
+    return fitting(*overrides.pixelSize);
   if (!overrides.width && view.pixelSize)
-    return *view.pixelSize;
+    return fitting(*view.pixelSize);
   const FrameSpec screen = resolveFrame(view, bounds, overrides);
   const ViewWindow& w = screen.window;
   return std::max((w.umax - w.umin) / screen.width, (w.vmax - w.vmin) / screen.height);

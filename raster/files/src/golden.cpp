@@ -4,10 +4,10 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <type_traits>
 
 #include "document_reader.hpp"
+#include "recode/io/bounded_read.hpp"
 #include "recode/json/document.hpp"
 
 namespace recode::raster {
@@ -185,12 +185,12 @@ GoldenVector goldenFromJson(std::string_view text, std::string_view source) {
 namespace {
 
 std::string readFileText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw FormatError(path.string(), "", "cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  try {
+    return recode::io::readBoundedFile(path, recode::io::kMaxJsonFileBytes,
+                                       "golden vector or command stream");
+  } catch (const recode::io::FileReadError& e) {
+    throw FormatError(e.file(), "", e.problem());
+  }
 }
 
 }  // namespace

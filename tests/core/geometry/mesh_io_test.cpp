@@ -130,13 +130,17 @@ TEST_CASE("readMesh chooses the reader by extension, ignoring case", "[mesh_io]"
 TEST_CASE("readers report missing files and directories", "[mesh_io]") {
   const TempDir dir;
   const auto missing = dir.path() / "missing.off";
-  CHECK(meshErrorMessage([&] { (void)readOff(missing); }) == missing.string() + ": file not found");
+  CHECK(meshErrorMessage([&] { (void)readOff(missing); }) ==
+        missing.string() + ": cannot read mesh file: file not found");
   const auto missingObj = dir.path() / "missing.obj";
   CHECK(meshErrorMessage([&] { (void)readMesh(missingObj); }) ==
-        missingObj.string() + ": file not found");
+        missingObj.string() + ": cannot read mesh file: file not found");
   std::filesystem::create_directory(dir.path() / "folder.obj");
   CHECK_THAT(meshErrorMessage([&] { (void)readObj(dir.path() / "folder.obj"); }),
-             Contains("folder.obj: is a directory"));
+             Contains("folder.obj: cannot read mesh file: it is a directory"));
+  // A device is refused before a byte is read: /dev/zero would be read until memory runs out.
+  CHECK(meshErrorMessage([&] { (void)readObj("/dev/zero"); }) ==
+        "/dev/zero: cannot read mesh file: it is not a regular file (a character device)");
 }
 
 TEST_CASE("readOff: broken files give the file, the line and the problem", "[mesh_io]") {

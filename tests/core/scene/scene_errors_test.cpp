@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <string>
 
@@ -145,8 +146,84 @@ TEST_CASE("scene errors: view axis and window", "[scene][errors]") {
              StartsWith("s.json: view.window: umin (2) must be less than umax (1)"));
   CHECK_THAT(withView(R"({"window": [0, 1, 1, 1]})"),
              StartsWith("s.json: view.window: vmin (1) must be less than vmax (1)"));
-  CHECK_THAT(withView(R"({"window": [-1e308, 0, 1e308, 1]})"),
-             StartsWith("s.json: view.window: the window's width or height overflows"));
+  // Coordinates within +-1e9 and sides of at least 1e-6: the value, the rule, numbers short.
+  CHECK(withView(R"({"window": [-1e308, 0, 1e308, 1]})") ==
+        "s.json: view.window[0]: expected a number in -1e+09..1e+09 (world units), got -1e+308");
+  CHECK(withView(R"({"window": [1e17, 0, 1.1e17, 1]})") ==
+        "s.json: view.window[0]: expected a number in -1e+09..1e+09 (world units), got 1e+17");
+  CHECK(withView(R"({"window": [0, 0, 1e-300, 1e-300]})") ==
+        "s.json: view.window: the window's height 1e-300 is below the smallest side, 1e-06 world "
+        "units");
+  CHECK(withView(R"({"window": [0, 0, 1e-7, 1]})") ==
+        "s.json: view.window: the window's width 1e-07 is below the smallest side, 1e-06 world "
+        "units");
+}
+
+// Every number of a scene is bounded so that poses stay finite over 1,000,000 frames
+// (scene.hpp, docs/scenes.md "Ranges"): 1e160 degrees per frame once squared to infinity and
+// posed the object at NaN, which `recode run` reported as no contact.
+TEST_CASE("scene errors: numbers out of their ranges", "[scene][errors]") {
+  const std::string box = R"("shape": {"type": "box", "size": [1, 1, 1]})";
+  const auto withPlacement = [&](const std::string& placement) {
+    return errorOf(oneObject(box + ", " + placement));
+  };
+  const std::string rate = "(degrees per frame, so that 1,000,000 frames stay finite)";
+  CHECK(withPlacement(R"("motion": {"angular_velocity_deg": [1e160, 0, 0]})") ==
+        "s.json: objects[0].motion.angular_velocity_deg[0]: expected a number in -1e+06..1e+06 " +
+            rate + ", got 1e+160");
+  CHECK(withPlacement(R"("motion": {"angular_velocity_deg": [0, 0, -1e308]})") ==
+        "s.json: objects[0].motion.angular_velocity_deg[2]: expected a number in -1e+06..1e+06 " +
+            rate + ", got -1e+308");
+  CHECK(withPlacement(R"("motion": {"velocity": [0, 1e200, 0]})") ==
+        "s.json: objects[0].motion.velocity[1]: expected a number in -1000..1000 (world units "
+        "per frame, so that 1,000,000 frames stay finite), got 1e+200");
+  CHECK(withPlacement(R"("joint": {"axis": [0, 0, 1], "rate_deg": 1e300})") ==
+        "s.json: objects[0].joint.rate_deg: expected a number in -1e+06..1e+06 " + rate +
+            ", got 1e+300");
+  CHECK(withPlacement(R"("joint": {"axis": [0, 0, 1], "angle_deg": 1e7})") ==
+        "s.json: objects[0].joint.angle_deg: expected a number in -1e+06..1e+06 (degrees), got "
+        "10000000.0");
+  CHECK(withPlacement(R"("joint": {"axis": [1e300, 0, 1]})") ==
+        "s.json: objects[0].joint.axis[0]: expected a number in -1e+09..1e+09 (a direction), got "
+        "1e+300");
+  CHECK(withPlacement(R"("position": [1e17, 0, 0])") ==
+        "s.json: objects[0].position[0]: expected a number in -1e+09..1e+09 (world units), got "
+        "1e+17");
+  CHECK(withPlacement(R"("rotation_deg": [0, 1e100, 0])") ==
+        "s.json: objects[0].rotation_deg[1]: expected a number in -1e+06..1e+06 (degrees), got "
+        "1e+100");
+  CHECK(withPlacement(R"("position": [0, 0, 0], "motion": {"velocity": [1, 0, 0], )"
+                      R"("bounce_within": [[-1e300, -1, -1], [1, 1, 1]]})") ==
+        "s.json: objects[0].motion.bounce_within[0][0]: expected a number in -1e+09..1e+09 "
+        "(world units), got -1e+300");
+  CHECK(withPlacement(R"("keyframes": [{"frame": 0, "position": [0, 0, 1e10]}])") ==
+        "s.json: objects[0].keyframes[0].position[2]: expected a number in -1e+09..1e+09 (world "
+        "units), got 10000000000.0");
+  CHECK(errorOf(oneShape(R"("type": "box", "size": [1e308, 1, 1])")) ==
+        "s.json: objects[0].shape.size[0]: expected a positive number up to 1e+09 (world units), "
+        "got 1e+308");
+  CHECK(errorOf(oneShape(R"("type": "sphere", "radius": 2e9)")) ==
+        "s.json: objects[0].shape.radius: expected a positive number up to 1e+09 (world units), "
+        "got 2000000000.0");
+  // A mesh's vertices are held to the same range (the validator's tolerances overflowed near
+  // 1e300: "height ... is -nan (tolerance inf)").
+  {
+    TempDir dir;
+    std::ofstream(dir.path() / "far.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1e17\n"
+                                             "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+    const std::string far = (dir.path() / "far.obj").string();
+    CHECK_THAT(
+        recode::core::test::sceneErrorOf(R"({"objects": [{"mesh": ")" + far + R"("}]})", "s.json"),
+        Catch::Equals("s.json: objects[0].mesh: " + far +
+                      ": vertex 3 (0, 0, 1e+17) has a coordinate outside -1e+09..1e+09 "
+                      "(world units)"));
+  }
+  // The limits themselves are accepted.
+  CHECK_NOTHROW(parseScene(
+      oneObject(box + R"(, "position": [1e9, -1e9, 0], "motion": {"velocity": [1000, -1000, 0],
+                "angular_velocity_deg": [1e6, -1e6, 1e6]}, "joint": {"axis": [0, 0, 1],
+                "rate_deg": -1e6, "angle_deg": 1e6})"),
+      "s.json", "."));
 }
 
 TEST_CASE("scene errors: resolution and pixel size", "[scene][errors]") {
@@ -173,6 +250,9 @@ TEST_CASE("scene errors: resolution and pixel size", "[scene][errors]") {
              StartsWith("s.json: view.pixel_size: expected a positive number, got 0"));
   CHECK_THAT(withView(R"({"pixel_size": -0.5})"),
              StartsWith("s.json: view.pixel_size: expected a positive number, got -0.5"));
+  CHECK(withView(R"({"pixel_size": 1e308})") ==
+        "s.json: view.pixel_size: expected a positive number up to 1e+09 (world units), got "
+        "1e+308");
 }
 
 TEST_CASE("scene errors: the objects list", "[scene][errors]") {

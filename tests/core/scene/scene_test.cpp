@@ -259,10 +259,13 @@ TEST_CASE("loadScene: a missing or unreadable scene file", "[scene][errors]") {
     FAIL("no error");
   } catch (const SceneError& e) {
     CHECK_THAT(e.what(), StartsWith(missing + ": "));
-    CHECK_THAT(e.what(), Contains("cannot open scene file"));
+    CHECK_THAT(e.what(), Contains("cannot read scene file: file not found"));
     CHECK(e.file() == missing);
     CHECK(e.jsonPath().empty());
   }
-  CHECK_THROWS_WITH(loadScene(dir.path()),
-                    Contains("cannot open scene file") && Contains("directory"));
+  CHECK_THROWS_WITH(loadScene(dir.path()), Contains("cannot read scene file: it is a directory"));
+  // Not a regular file: refused before a byte is read (reading /dev/zero would never end).
+  CHECK_THROWS_WITH(loadScene("/dev/zero"),
+                    Catch::Equals("/dev/zero: cannot read scene file: it is not a regular file "
+                                  "(a character device)"));
 }

@@ -270,3 +270,28 @@ TEST_CASE("sweep and prune: exactly the overlapping pairs, frame after frame", "
   CHECK(sweepTests < 60LL * n * (n - 1) / 2 / 3);
   CHECK(swaps < 60LL * n);
 }
+
+// A Placement built in code has no range checks (scene files do): a pose that overflows must
+// stop the run naming the node, not turn into NaN boxes that report no contact.
+TEST_CASE("a pose that is not finite is refused naming the node", "[hierarchy]") {
+  SceneObject spinner;
+  spinner.name = "spinner";
+  spinner.localMesh = makeBox(Eigen::Vector3d(1, 1, 1));
+  Motion m;
+  m.angularVelocityDeg = Eigen::Vector3d(1e160, 0, 0);  // its norm squares to infinity
+  spinner.motion = m;
+  ObjectTree tree(spinner);
+  CHECK_THROWS_WITH(tree.pose(1),
+                    "spinner: the pose at frame 1 is not finite (its position, "
+                    "rotation_deg, motion overflow a double)");
+  SceneObject hinge = spinner;
+  hinge.motion.reset();
+  Joint j;
+  j.rateDeg = 1e308;
+  j.angleDeg = 1e308;  // angle + rate * k overflows at frame 2
+  hinge.joint = j;
+  ObjectTree hinged(hinge);
+  CHECK_NOTHROW(hinged.pose(0));
+  CHECK_THROWS_WITH(hinged.pose(2), Catch::Contains("spinner: the pose at frame 2 is not finite") &&
+                                        Catch::Contains("joint"));
+}

@@ -27,6 +27,9 @@ namespace recode::json {
 // A value as compact JSON text, for messages.
 [[nodiscard]] std::string jsonText(const nlohmann::json& value);
 
+// A number for messages, short: printf's %.6g ("1e+308", "0.001", "123457"), never 309 digits.
+[[nodiscard]] std::string shortNumber(double value);
+
 // What a value is, for "expected ..., got <what>": "null", "true", "a string", "an array",
 // "an object", or the number itself.
 [[nodiscard]] std::string describeJsonValue(const nlohmann::json& value);
@@ -66,6 +69,14 @@ class JsonFieldReader {
 
   [[nodiscard]] double finiteNumber(const nlohmann::json& value, const std::string& path) const;
   [[nodiscard]] double positiveNumber(const nlohmann::json& value, const std::string& path) const;
+  // A finite number (finiteNumber's messages) in lo..hi, else "expected a number in
+  // -1e+06..1e+06 (<why>), got 1e+160": the range and the rule behind it.
+  [[nodiscard]] double numberInRange(const nlohmann::json& value, const std::string& path,
+                                     double lo, double hi, std::string_view why) const;
+  // A positive number (positiveNumber's messages) up to hi, else "expected a positive number up
+  // to 1e+09 (<why>), got 1e+308".
+  [[nodiscard]] double positiveNumberUpTo(const nlohmann::json& value, const std::string& path,
+                                          double hi, std::string_view why) const;
   // An integer in lo..hi.
   [[nodiscard]] std::int64_t integerInRange(const nlohmann::json& value, const std::string& path,
                                             std::int64_t lo, std::int64_t hi) const;

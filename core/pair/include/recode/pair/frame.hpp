@@ -39,7 +39,8 @@ inline constexpr double kDefaultWindowMargin = 0.05;
 // - W alone: H follows the window's aspect, so pixels are square.
 // Without a window in the spec the window is defaultWindow() for the chosen resolution.
 // An override replaces the scene's resolution or pixel size, whichever it gave. Throws
-// std::invalid_argument for an empty bounds box without a window or a resolution over 16384.
+// std::invalid_argument for an empty bounds box without a window, a resolution over 16384 or a
+// pixel size larger than the window (checkPixelSizeFits).
 [[nodiscard]] FrameSpec resolveFrame(const ViewSpec& spec, const Aabb& bounds,
                                      const FrameOverrides& overrides = {});
 
@@ -53,6 +54,14 @@ inline constexpr double kDefaultWindowMargin = 0.05;
 // and of the requested size. Throws std::invalid_argument if the result exceeds 16384.
 [[nodiscard]] FrameSpec frameFromPixelSize(ViewAxis axis, const ViewWindow& window,
                                            double pixelSize);
+
+// Refuses a pixel size larger than the window's longer side: the frame would be one pixel
+// around the whole window, widened about its centre to the pixel's size (1e308 gave a 1x1
+// frame whose window lost every coordinate to rounding, and "no collision" for overlapping
+// blocks). Throws std::invalid_argument stating the rule, e.g. "pixel size 1e+308 is larger
+// than the window (2.1 by 2.1 world units): a frame needs at least one pixel within the window;
+// give at most 2.1".
+void checkPixelSizeFits(double pixelSize, const ViewWindow& window);
 
 // H for W columns over the window with square pixels: rounded, clamped to 1..16384.
 [[nodiscard]] int heightForWidth(const ViewWindow& window, int width);

@@ -51,6 +51,19 @@ struct SceneObject : Placement {
 // smallest scene already take minutes, and a larger count is far more likely a typo.
 inline constexpr int kMaxFrames = 1'000'000;
 
+// The ranges of a scene's numbers (docs/scenes.md, "Ranges"). Each keeps every pose finite, and
+// far from overflow, over kMaxFrames frames: a position moves at most kMaxSpeed * kMaxFrames =
+// 1e9 from its start, an angle turns at most 1e12 degrees (reduced exactly modulo 360), and the
+// norm of an angular velocity (a sum of squares) stays finite. Without them an angular velocity
+// of 1e160 squared to infinity and posed every node at NaN.
+inline constexpr double kMaxCoordinate = 1e9;      // world units: positions, window, boxes, sizes
+inline constexpr double kMaxSpeed = 1e3;           // world units per frame: velocity components
+inline constexpr double kMaxAngleDeg = 1e6;        // degrees: rotation_deg, joint angles
+inline constexpr double kMaxAngularRateDeg = 1e6;  // degrees per frame: angular velocity, rate_deg
+// The smallest side of a view window, world units: smaller, the objects of any ordinary scene
+// map far beyond the rasterizer's coordinate range.
+inline constexpr double kMinWindowSide = 1e-6;
+
 // ViewSpec (the "view" object) is declared in recode/geometry/projection.hpp.
 
 struct Scene {
