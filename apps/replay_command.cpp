@@ -1,12 +1,12 @@
 #include "replay_command.hpp"
 
 #include <cstdint>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <stdexcept>
 
+#include "atomic_file.hpp"
 #include "pgm.hpp"
 #include "recode/kit/buffer_diff.hpp"
 #include "recode/raster/cpu_device.hpp"
@@ -28,16 +28,15 @@ struct ReplayOptions {
 // The whole depth buffer as little-endian uint32, bottom row first: the 24-bit values exactly,
 // for tools that cannot read the golden JSON (width * height * 4 bytes, no header).
 void writeDepthRaw(const std::string& path, std::span<const std::uint32_t> depth) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out)
-    throw std::runtime_error("--dump-depth-raw " + path + ": cannot open file for writing");
+  AtomicFile out(path, "--dump-depth-raw " + path);
+  std::string bytes;
+  bytes.reserve(depth.size() * 4);
   for (const std::uint32_t d : depth) {
-    const char bytes[4] = {static_cast<char>(d & 0xFF), static_cast<char>((d >> 8) & 0xFF),
-                           static_cast<char>((d >> 16) & 0xFF), static_cast<char>(d >> 24)};
-    out.write(bytes, 4);
+    for (int shift = 0; shift < 32; shift += 8)
+      bytes.push_back(static_cast<char>((d >> shift) & 0xFF));
   }
-  if (!out)
-    throw std::runtime_error("--dump-depth-raw " + path + ": write failed");
+  out.write(bytes);
+  out.commit();
 }
 
 nlohmann::json differencesToJson(const std::vector<kit::PixelDifference>& list) {
