@@ -179,6 +179,8 @@ void writeBenchSummary(std::ostream& out, const std::vector<const Experiment*>& 
       << "- command: `" << context.command << "`\n"
       << "- machine: " << context.machine << "\n"
       << "- compiler: " << context.compiler << "\n"
+      << "- threads: recode-cpu's pair tests on " << context.recodeThreads
+      << " (--threads); every other algorithm, the judge included, on one\n"
       << "- times: collision time per frame as each library's user pays it "
          "(docs/benchmarks.md); missed / extra: colliding leaf pairs against CGAL's exact "
          "answer on the judged frames\n";

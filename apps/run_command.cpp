@@ -15,6 +15,7 @@
 #include "recode/sim/run_statistics.hpp"
 #include "recode/sim/simulation.hpp"
 #include "run_report.hpp"
+#include "threads_option.hpp"
 
 namespace recode::app {
 
@@ -32,6 +33,7 @@ struct RunOptions {
   FrameOptions frame;
   bool contact = true;
   bool quiet = false;
+  int threads = 0;  // core::RunOptions::threads
 };
 
 std::string builtinNames() {
@@ -118,6 +120,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.overrides = o.frame.overrides();
   options.mor = o.frame.mor();
   options.contact = o.contact;
+  options.threads = o.threads;
   core::Simulation sim(scene, options);
 
   RunDescription run;
@@ -195,6 +198,7 @@ void addRunCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("!--no-contact", o->contact,
                 "skip the two depth passes that measure each contact region");
   cmd->add_flag("--quiet", o->quiet, "print only the header and the statistics");
+  addThreadsOption(*cmd, o->threads);
   cmd->callback([o, &exitCode]() { exitCode = runRunCommand(*o); });
 }
 
