@@ -1,4 +1,4 @@
-// Devices per frame size, made ahead of the pair tests and lent to them one at a time.
+// Devices per frame size, made ahead of the pair tests.
 #include "device_pool.hpp"
 
 #include <algorithm>
@@ -17,10 +17,24 @@ void DevicePool::trim(const std::vector<std::pair<int, int>>& keep) {
   });
 }
 
+int DevicePool::held(int width, int height) const {
+  const auto it = bySize_.find({width, height});
+  return it == bySize_.end() ? 0 : static_cast<int>(it->second.made.size());
+}
+
+long long DevicePool::uses(int width, int height) const {
+  const auto it = bySize_.find({width, height});
+  return it == bySize_.end() ? 0 : it->second.uses;
+}
+
+void DevicePool::addUses(int width, int height, long long tests) {
+  bySize_[{width, height}].uses += tests;
+}
+
 double DevicePool::reserve(int width, int height, int count) {
-  Devices& devices = bySize_[{width, height}];
+  auto& devices = bySize_[{width, height}].made;
   double us = 0.0;
-  while (static_cast<int>(devices.owned.size()) < count) {
+  while (static_cast<int>(devices.size()) < count) {
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<raster::DepthStencilDevice> device =
         factory_ ? factory_(width, height) : std::make_unique<raster::CpuDevice>(width, height);
@@ -28,25 +42,13 @@ double DevicePool::reserve(int width, int height, int count) {
       throw std::logic_error("the run's device factory returned no device");
     us +=
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
-    devices.idle.push_back(device.get());
-    devices.owned.push_back(std::move(device));
+    devices.push_back(std::move(device));
   }
   return us;
 }
 
-raster::DepthStencilDevice& DevicePool::borrow(int width, int height) {
-  const std::lock_guard lock(mutex_);
-  std::vector<raster::DepthStencilDevice*>& idle = bySize_.at({width, height}).idle;
-  if (idle.empty())
-    throw std::logic_error("more pair tests at once than devices reserved for their size");
-  raster::DepthStencilDevice* device = idle.back();
-  idle.pop_back();
-  return *device;
-}
-
-void DevicePool::release(raster::DepthStencilDevice& device) {
-  const std::lock_guard lock(mutex_);
-  bySize_.at({device.width(), device.height()}).idle.push_back(&device);
+raster::DepthStencilDevice& DevicePool::at(int width, int height, int index) {
+  return *bySize_.at({width, height}).made.at(static_cast<std::size_t>(index));
 }
 
 }  // namespace recode::core

@@ -1,13 +1,11 @@
 #pragma once
-// The simulation's devices: per frame size, as many as the frame's pair tests can use at once
-// (one on the sequential path). They are all made before the frame's pair tests start, on the
-// calling thread, so that making them is timed apart from the tests (FrameReport's
-// deviceSetupUs) and a device is never made while another thread draws; the tests then borrow
-// one each and give it back.
+// The simulation's devices, by frame size: one per size on the sequential path, and with
+// threads up to one per test of that size that can run at once. They are made before the
+// frame's pair tests start, on the calling thread, so that making them is timed apart from the
+// tests (FrameReport's deviceSetupUs) and no device is made while another thread draws.
 
 #include <map>
 #include <memory>
-#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -25,26 +23,27 @@ class DevicePool {
   // run whose pairs keep changing size stays bounded.
   void trim(const std::vector<std::pair<int, int>>& keep);
 
+  // Devices of this size held now, and pair tests they ran since they were made.
+  [[nodiscard]] int held(int width, int height) const;
+  [[nodiscard]] long long uses(int width, int height) const;
+  void addUses(int width, int height, long long tests);
+
   // Makes devices of this size until `count` exist; returns the microseconds spent making.
-  // Not thread-safe: call it before the frame's pair tests start.
   double reserve(int width, int height, int count);
 
-  // A device of this size not lent to anyone else; reserve() must have made enough.
-  // Thread-safe with release().
-  [[nodiscard]] raster::DepthStencilDevice& borrow(int width, int height);
-  void release(raster::DepthStencilDevice& device);
+  // Device `index` (below reserve's count) of this size.
+  [[nodiscard]] raster::DepthStencilDevice& at(int width, int height, int index);
 
   static constexpr std::size_t kKeptSizes = 16;
 
  private:
   struct Devices {
-    std::vector<std::unique_ptr<raster::DepthStencilDevice>> owned;
-    std::vector<raster::DepthStencilDevice*> idle;
+    std::vector<std::unique_ptr<raster::DepthStencilDevice>> made;
+    long long uses = 0;
   };
 
   DeviceFactory factory_;
   std::map<std::pair<int, int>, Devices> bySize_;
-  std::mutex mutex_;  // guards every Devices::idle during the pair tests
 };
 
 }  // namespace recode::core

@@ -1,11 +1,11 @@
 // Running a frame's pair tests, sequentially or on oneTBB's threads, into slots in task order.
 #include "pair_tests.hpp"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <utility>
 
-#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
@@ -16,25 +16,9 @@ namespace recode::core {
 
 namespace {
 
-// Borrows a device for one test and gives it back however the test ends.
-class BorrowedDevice {
- public:
-  BorrowedDevice(DevicePool& pool, const FrameSpec& frame)
-      : pool_(pool), device_(pool.borrow(frame.width, frame.height)) {}
-  ~BorrowedDevice() { pool_.release(device_); }
-  BorrowedDevice(const BorrowedDevice&) = delete;
-  BorrowedDevice& operator=(const BorrowedDevice&) = delete;
-  raster::DepthStencilDevice& get() { return device_; }
-
- private:
-  DevicePool& pool_;
-  raster::DepthStencilDevice& device_;
-};
-
-void runOne(DevicePool& pool, const PairTask& task, PairOutcome& outcome) {
+void runOne(raster::DepthStencilDevice& device, const PairTask& task, PairOutcome& outcome) {
   try {
-    BorrowedDevice device(pool, task.request.frame);
-    outcome.result = collidePair(device.get(), *task.meshA, *task.meshB, task.request);
+    outcome.result = collidePair(device, *task.meshA, *task.meshB, task.request);
     // The report keeps no case map; dropping it here bounds the memory the slots hold.
     outcome.result.caseMap = {};
   } catch (...) {
@@ -42,12 +26,24 @@ void runOne(DevicePool& pool, const PairTask& task, PairOutcome& outcome) {
   }
 }
 
+std::pair<int, int> sizeOf(const PairTask& task) {
+  return {task.request.frame.width, task.request.frame.height};
+}
+
+// The tests of one device, in task order.
+struct Lane {
+  raster::DepthStencilDevice* device = nullptr;
+  std::vector<std::size_t> tasks;
+};
+
 }  // namespace
 
 int pairTestThreads(const RunOptions& options) {
   if (options.deviceFactory || options.threads == 1)
     return 1;
-  return options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  // More than the machine's threads would not run at once (oneTBB warns and ignores them).
+  const int hardware = tbb::info::default_concurrency();
+  return options.threads > 0 ? std::min(options.threads, hardware) : hardware;
 }
 
 class PairTestRunner::Impl {
@@ -68,45 +64,72 @@ PairTestRunner::PairTestRunner(const RunOptions& options) : concurrency_(pairTes
 PairTestRunner::~PairTestRunner() = default;
 
 PairTestRunner::DeviceSetup PairTestRunner::reserveDevices(const std::vector<PairTask>& tasks) {
-  std::map<std::pair<int, int>, int> wanted;  // tests per frame size
+  std::map<std::pair<int, int>, int> tests;
   for (const PairTask& task : tasks)
-    ++wanted[{task.request.frame.width, task.request.frame.height}];
+    ++tests[sizeOf(task)];
   std::vector<std::pair<int, int>> sizes;
-  for (const auto& [size, count] : wanted)
-    sizes.push_back(size);
-  impl_->pool.trim(sizes);
+  for (const auto& entry : tests)
+    sizes.push_back(entry.first);
+  DevicePool& pool = impl_->pool;
+  pool.trim(sizes);
 
+  lanes_.clear();
   DeviceSetup setup;
   for (; setup.usable < tasks.size(); ++setup.usable) {
-    const FrameSpec& frame = tasks[setup.usable].request.frame;
-    const int count = std::min(wanted[{frame.width, frame.height}], concurrency_);
+    const auto [width, height] = sizeOf(tasks[setup.usable]);
+    auto [lanes, added] = lanes_.try_emplace({width, height}, 0);
+    if (!added)
+      continue;
+    const int held = pool.held(width, height);
+    const bool earned = pool.uses(width, height) >= kTestsPerExtraDevice * held;
+    lanes->second =
+        std::min({tests[{width, height}], concurrency_, std::max(held + (earned ? 1 : 0), 1)});
     try {
-      setup.us += impl_->pool.reserve(frame.width, frame.height, count);
+      setup.us += pool.reserve(width, height, lanes->second);
     } catch (...) {
       setup.error = std::current_exception();
       break;
     }
   }
+  for (const auto& [size, n] : tests)  // counted after this frame's devices were chosen
+    pool.addUses(size.first, size.second, n);
   return setup;
 }
 
 std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
                                              std::size_t count) {
   std::vector<PairOutcome> outcomes(count);
+  DevicePool& pool = impl_->pool;
   if (!impl_->arena) {
     for (std::size_t i = 0; i < count; ++i) {
-      runOne(impl_->pool, tasks[i], outcomes[i]);
+      const auto [width, height] = sizeOf(tasks[i]);
+      runOne(pool.at(width, height, 0), tasks[i], outcomes[i]);
       if (outcomes[i].error)
         break;
     }
     return outcomes;
   }
+  // Deal each size's tests in turn to its devices' lanes.
+  std::vector<Lane> lanes;
+  std::map<std::pair<int, int>, std::pair<std::size_t, int>> dealt;  // first lane, tests dealt
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::pair<int, int> size = sizeOf(tasks[i]);
+    auto [entry, added] = dealt.try_emplace(size, lanes.size(), 0);
+    const int devices = lanes_.at(size);
+    if (added)
+      for (int d = 0; d < devices; ++d)
+        lanes.push_back({&pool.at(size.first, size.second, d), {}});
+    auto& [first, n] = entry->second;
+    lanes[first + static_cast<std::size_t>(n++ % devices)].tasks.push_back(i);
+  }
   impl_->arena->execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t i = range.begin(); i != range.end(); ++i)
-                          runOne(impl_->pool, tasks[i], outcomes[i]);
-                      });
+    tbb::parallel_for(std::size_t{0}, lanes.size(), [&](std::size_t l) {
+      for (std::size_t i : lanes[l].tasks) {
+        runOne(*lanes[l].device, tasks[i], outcomes[i]);
+        if (outcomes[i].error)
+          break;
+      }
+    });
   });
   return outcomes;
 }

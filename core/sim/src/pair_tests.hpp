@@ -6,7 +6,9 @@
 // same bytes as a sequential run's.
 
 #include <exception>
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "recode/pair/pair.hpp"
@@ -40,7 +42,11 @@ class PairTestRunner {
   // How many pair tests may run at once: 1 on the sequential path.
   [[nodiscard]] int concurrency() const { return concurrency_; }
 
-  // Makes the devices the tasks need, up to concurrency() per size, in task order. `usable`
+  // Makes the devices the tasks need, in task order. Each frame size has one device, and
+  // with threads one more (up to one per test of that size this frame, and concurrency())
+  // once its devices have run kTestsPerExtraDevice tests each: a big frame seen in a few
+  // frames (a rotating pair's) costs one device, as sequentially, as making it costs more than
+  // the tests it would share, while a size that recurs grows to concurrency() devices. `usable`
   // tasks got theirs: all, unless making the device of task `usable` threw `error` (the tasks
   // before it can still run, as they would have run before it sequentially).
   struct DeviceSetup {
@@ -51,14 +57,19 @@ class PairTestRunner {
   [[nodiscard]] DeviceSetup reserveDevices(const std::vector<PairTask>& tasks);
 
   // Runs tasks [0, count): outcome i is task i's. Sequentially it stops at the first error, as
-  // the tasks after it would not have run; in parallel every task runs and the caller takes
-  // the first error in task order.
+  // the tasks after it would not have run. In parallel the tests of one size are dealt in turn
+  // to that size's devices, one lane per device, run in task order; lanes run in parallel, a
+  // lane stops at its first error, and the caller takes the first error in task order (a test
+  // a lane skipped comes after an error).
   [[nodiscard]] std::vector<PairOutcome> run(const std::vector<PairTask>& tasks, std::size_t count);
+
+  static constexpr long long kTestsPerExtraDevice = 32;
 
  private:
   class Impl;
   std::unique_ptr<Impl> impl_;
   int concurrency_ = 1;
+  std::map<std::pair<int, int>, int> lanes_;  // devices per frame size this frame
 };
 
 }  // namespace recode::core

@@ -118,7 +118,8 @@ class Simulation {
 };
 
 // How many pair tests a simulation with these options runs at once: RunOptions::threads with
-// 0 resolved to the hardware threads oneTBB sees, and 1 with a deviceFactory.
+// 0 resolved to the hardware threads oneTBB sees (and N to at most those), 1 with a
+// deviceFactory.
 [[nodiscard]] int pairTestThreads(const RunOptions& options);
 
 // The pixel size of a run (see above); `bounds` is the objects' box at frame 0.
