@@ -32,8 +32,8 @@ inline constexpr int kPairFrameGranule = 32;
 inline constexpr int kDefaultRunFrames = 100;  // when neither the scene nor the caller says
 
 // Makes a device with a framebuffer of width x height pixels. The simulation keeps the
-// devices it made, per frame size one for each pair test that may run at once, and uses them
-// frame after frame.
+// devices it made, per frame size one (more with threads, for sizes that recur), and uses
+// them frame after frame.
 using DeviceFactory =
     std::function<std::unique_ptr<raster::DepthStencilDevice>(int width, int height)>;
 
