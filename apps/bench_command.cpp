@@ -17,7 +17,9 @@
 #include "bench_runner.hpp"
 #include "progress_bar.hpp"
 #include "recode/scene/experiment_scenes.hpp"
+#include "recode/sim/simulation.hpp"
 #include "recode/verify/peer_detectors.hpp"
+#include "threads_option.hpp"
 
 namespace recode::app {
 
@@ -28,6 +30,7 @@ struct BenchOptions {
   bool quick = false;
   std::string out = "recode-bench";
   bool list = false;
+  int threads = 0;  // RECODE's core::RunOptions::threads
 };
 
 struct BenchCase {
@@ -83,6 +86,7 @@ std::string commandLine(const BenchOptions& o) {
     line += " " + e;
   if (o.quick)
     line += " --quick";
+  line += " --threads " + std::to_string(o.threads);
   return line + " --out " + o.out;
 }
 
@@ -110,14 +114,14 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 // Runs the cases in order, a line each as it ends, under one progress bar for them all.
-std::vector<BenchRow> runCases(const std::vector<BenchCase>& cases) {
+std::vector<BenchRow> runCases(const std::vector<BenchCase>& cases, int threads) {
   std::vector<BenchRow> rows;
   ProgressBar progress(static_cast<int>(cases.size()) * 1000);
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const BenchCase& c = cases[i];
     const auto caseStart = std::chrono::steady_clock::now();
     std::vector<BenchRow> caseRows =
-        runBenchCase(*c.experiment, c.scene, c.trianglesPerBlock, [&](double share) {
+        runBenchCase(*c.experiment, c.scene, c.trianglesPerBlock, threads, [&](double share) {
           progress.update(static_cast<int>(1000.0 * (static_cast<double>(i) + share)));
         });
     const double seconds = secondsSince(caseStart);
@@ -141,6 +145,9 @@ std::string writeSummary(const std::filesystem::path& path, const BenchOptions& 
   context.machine = describeMachine();
   context.compiler = compilerName();
   context.quick = o.quick;
+  core::RunOptions cpu;
+  cpu.threads = o.threads;
+  context.recodeThreads = core::pairTestThreads(cpu);
   std::ostringstream summary;
   writeBenchSummary(summary, experiments, rows, context);
   writeFileAtomically(path, summary.str());
@@ -165,7 +172,7 @@ int runBench(const BenchOptions& o) {
   AtomicFile csv(csvPath);
 
   const auto started = std::chrono::steady_clock::now();
-  const std::vector<BenchRow> rows = runCases(cases);
+  const std::vector<BenchRow> rows = runCases(cases, o.threads);
   std::ostringstream csvText;
   writeBenchCsv(csvText, rows);
   csv.write(csvText.str());
@@ -202,6 +209,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", o->out, "directory for bench.csv, summary.md and the plots")
       ->capture_default_str();
   cmd->add_flag("--list", o->list, "list the experiments and exit");
+  addThreadsOption(*cmd, o->threads);
   cmd->callback([o, &exitCode]() { exitCode = runBench(*o); });
 }
 

@@ -179,6 +179,9 @@ void writeBenchSummary(std::ostream& out, const std::vector<const Experiment*>& 
       << "- command: `" << context.command << "`\n"
       << "- machine: " << context.machine << "\n"
       << "- compiler: " << context.compiler << "\n"
+      << "- threads: recode-cpu's pair tests on " << context.recodeThreads
+      << " (--threads); the other RECODE devices draw from one (llvmpipe and lavapipe "
+         "rasterize on threads of their own); FCL, Bullet and the CGAL judge run on one\n"
       << "- times: collision time per frame as each library's user pays it "
          "(docs/benchmarks.md); missed / extra: colliding leaf pairs against CGAL's exact "
          "answer on the judged frames\n";

@@ -21,6 +21,7 @@ struct BenchContext {
   std::string machine;  // CPU model and core count
   std::string compiler;
   bool quick = false;
+  int recodeThreads = 1;  // threads of recode-cpu's pair tests (the other columns use one)
 };
 
 // Markdown: the context, then per experiment its tables (Table 1: counters and the FULL/MIN

@@ -15,12 +15,14 @@ namespace {
 
 std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
                                                     const core::Scene& scene,
-                                                    const std::vector<core::ObjectTree>& trees) {
+                                                    const std::vector<core::ObjectTree>& trees,
+                                                    int threads) {
   switch (spec.kind) {
     case AlgorithmSpec::Kind::Recode: {
       core::RunOptions options;
       options.mor = spec.mor;
       options.drawOnScreen = spec.onScreen;
+      options.threads = threads;
       return std::make_unique<verify::RecodeDetector>(scene, options, spec.device, spec.name);
     }
     case AlgorithmSpec::Kind::FclGjk:
@@ -132,9 +134,10 @@ BenchRow runJudge(LoadedCase& c, const std::vector<int>& judged, GroundTruth& tr
   return row;
 }
 
-BenchRow runAlgorithm(LoadedCase& c, const AlgorithmSpec& spec, const GroundTruth& truth,
-                      CaseSteps& step) {
-  const std::unique_ptr<verify::SceneDetector> detector = makeDetector(spec, c.scene, c.trees);
+BenchRow runAlgorithm(LoadedCase& c, const AlgorithmSpec& spec, int threads,
+                      const GroundTruth& truth, CaseSteps& step) {
+  const std::unique_ptr<verify::SceneDetector> detector =
+      makeDetector(spec, c.scene, c.trees, threads);
   auto* recode = dynamic_cast<verify::RecodeDetector*>(detector.get());
   BenchRow row = c.row(spec.name);
   if (recode)
@@ -172,7 +175,8 @@ std::vector<int> judgedFrames(long long triangles, int frames) {
 }
 
 std::vector<BenchRow> runBenchCase(const Experiment& experiment, const std::string& sceneName,
-                                   int trianglesPerBlock, const CaseProgress& progress) {
+                                   int trianglesPerBlock, int threads,
+                                   const CaseProgress& progress) {
   LoadedCase c(experiment, sceneName, trianglesPerBlock);
   const std::vector<int> judged = judgedFrames(c.triangles, c.frames);
   const double work =
@@ -183,7 +187,7 @@ std::vector<BenchRow> runBenchCase(const Experiment& experiment, const std::stri
   std::vector<BenchRow> rows;
   rows.push_back(runJudge(c, judged, truth, step));
   for (const AlgorithmSpec& spec : experiment.algorithms)
-    rows.push_back(runAlgorithm(c, spec, truth, step));
+    rows.push_back(runAlgorithm(c, spec, threads, truth, step));
   return rows;
 }
 

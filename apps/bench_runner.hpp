@@ -43,10 +43,12 @@ using CaseProgress = std::function<void(double)>;
 
 // Runs the case. The judge is "cgal" (verify::makeExactDetector); every algorithm first runs
 // frame 0 once untimed (first-touch allocations, lazily built structures), then frames
-// 0..F-1 timed. Returns the judge's row followed by one row per algorithm.
+// 0..F-1 timed. `threads` is RECODE's core::RunOptions::threads (on the CPU device only; the
+// judge and the peers are single-threaded). Returns the judge's row followed by one row per
+// algorithm.
 [[nodiscard]] std::vector<BenchRow> runBenchCase(const Experiment& experiment,
                                                  const std::string& scene, int trianglesPerBlock,
-                                                 const CaseProgress& progress);
+                                                 int threads, const CaseProgress& progress);
 
 // The frames CGAL judges in a scene of `triangles` triangles run for `frames` frames.
 [[nodiscard]] std::vector<int> judgedFrames(long long triangles, int frames);

@@ -16,6 +16,7 @@
 #include "recode/sim/run_statistics.hpp"
 #include "recode/sim/simulation.hpp"
 #include "run_report.hpp"
+#include "threads_option.hpp"
 
 namespace recode::app {
 
@@ -34,6 +35,7 @@ struct RunOptions {
   FrameOptions frame;
   bool contact = true;
   bool quiet = false;
+  int threads = 0;  // core::RunOptions::threads
 };
 
 std::string builtinNames() {
@@ -127,6 +129,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.overrides = o.frame.overrides();
   options.mor = o.frame.mor();
   options.contact = o.contact;
+  options.threads = o.threads;
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -210,6 +213,7 @@ void addRunCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("!--no-contact", o->contact,
                 "skip the two depth passes that measure each contact region");
   cmd->add_flag("--quiet", o->quiet, "print only the header and the statistics");
+  addThreadsOption(*cmd, o->threads);
   cmd->callback([o, &exitCode]() { exitCode = runRunCommand(*o); });
 }
 

@@ -1,11 +1,13 @@
 // One frame of a scene: pose, boxes, sort and sweep, tree descent, pair algorithm per leaf pair.
 #include "recode/sim/simulation.hpp"
 
-#include "recode/raster/cpu_device.hpp"
+#include "pair_tests.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -53,15 +55,30 @@ class LeafMeshes {
   std::map<std::pair<int, int>, TriangleMesh> meshes_;
 };
 
-// Counts one pair test into the report; a contact keeps its result without the case map, to
-// keep reports small.
-void addPairTest(FrameReport& report, int ia, int ib, const LeafPair& lp, PairResult result) {
+// Counts one pair test into the report; a contact keeps its result (the runner has cleared
+// its case map).
+void addPairTest(FrameReport& report, const PairTask& task, PairResult result) {
   ++report.pairTests;
   report.stencilPixelsRead += result.stencilPixelsRead;
   report.depthPixelsRead += result.depthPixelsRead;
-  if (result.collide) {
-    result.caseMap = {};
-    report.contacts.push_back({ia, ib, lp.leafA, lp.leafB, std::move(result)});
+  if (result.collide)
+    report.contacts.push_back(
+        {task.objectA, task.objectB, task.leaves.leafA, task.leaves.leafB, std::move(result)});
+}
+
+// Called in a handler: rethrows the exception being handled, an invalid_argument with the
+// frame and the two blocks named.
+[[noreturn]] void rethrowNamingPair(const std::vector<ObjectTree>& objects, int frame,
+                                    const PairTask& task) {
+  try {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    const auto path = [&](int object, int leaf) {
+      return objects[static_cast<std::size_t>(object)].nodes()[static_cast<std::size_t>(leaf)].path;
+    };
+    throw std::invalid_argument("frame " + std::to_string(frame) + ", blocks \"" +
+                                path(task.objectA, task.leaves.leafA) + "\" and \"" +
+                                path(task.objectB, task.leaves.leafB) + "\": " + e.what());
   }
 }
 
@@ -85,6 +102,10 @@ double runPixelSize(const ViewSpec& view, const Aabb& bounds, const FrameOverrid
 }
 
 Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::move(options)) {
+  if (options_.threads < 0)
+    throw std::invalid_argument("the run's thread count " + std::to_string(options_.threads) +
+                                " is negative (0: all hardware threads)");
+  pairTests_ = std::make_unique<PairTestRunner>(options_);
   axis_ = scene.view.axis;
   objects_.reserve(scene.objects.size());
   Aabb bounds;
@@ -98,6 +119,14 @@ Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::m
   if (!(pixelSize_ > 0.0) || !std::isfinite(pixelSize_))
     throw std::invalid_argument("the run's pixel size " + std::to_string(pixelSize_) +
                                 " is not a positive finite number");
+}
+
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+
+int Simulation::threads() const {
+  return pairTests_->concurrency();
 }
 
 std::size_t Simulation::triangleCount() const {
@@ -122,24 +151,6 @@ FrameSpec Simulation::pairFrame(const Aabb& a, const Aabb& b) const {
   return f;
 }
 
-raster::DepthStencilDevice& Simulation::deviceFor(int width, int height, double& setupUs) {
-  // A handful of sizes serve most runs; a run whose pairs keep changing size stays bounded.
-  if (devices_.size() > 16 && !devices_.contains({width, height}))
-    devices_.clear();
-  auto& slot = devices_[{width, height}];
-  if (!slot) {
-    const Clock::time_point start = Clock::now();
-    if (options_.deviceFactory)
-      slot = options_.deviceFactory(width, height);
-    else
-      slot = std::make_unique<raster::CpuDevice>(width, height);
-    if (!slot)
-      throw std::logic_error("the run's device factory returned no device");
-    setupUs += microseconds(start, Clock::now());
-  }
-  return *slot;
-}
-
 FrameReport Simulation::runFrame(int frame) {
   FrameReport report;
   report.frame = frame;
@@ -151,7 +162,10 @@ FrameReport Simulation::runFrame(int frame) {
   const std::vector<std::pair<int, int>> candidates = broadPhase_.update(updateRootBoxes(objects_));
   report.objectPairs = static_cast<long long>(candidates.size());
 
+  // The pair tests are listed first, in the order of the sequential loop (candidates, then
+  // the descent's leaf pairs), and read back in that order whatever threads ran them.
   LeafMeshes meshes(objects_);
+  std::vector<PairTask> tasks;
   std::vector<LeafPair> leafPairs;
   for (const auto& [ia, ib] : candidates) {
     const ObjectTree& a = objects_[static_cast<std::size_t>(ia)];
@@ -159,22 +173,37 @@ FrameReport Simulation::runFrame(int frame) {
     leafPairs.clear();
     report.boxTests += descendPair(a, b, leafPairs);
     for (const LeafPair& lp : leafPairs) {
-      const HierarchyNode& na = a.nodes()[static_cast<std::size_t>(lp.leafA)];
-      const HierarchyNode& nb = b.nodes()[static_cast<std::size_t>(lp.leafB)];
-      PairResult result;
+      PairTask task{ia, ib, lp, &meshes.of(ia, lp.leafA), &meshes.of(ib, lp.leafB), {}};
       try {
-        PairRequest request;
-        request.frame = pairFrame(na.worldAabb, nb.worldAabb);
-        request.mor = options_.mor;
-        request.contact = options_.contact;
-        raster::DepthStencilDevice& device =
-            deviceFor(request.frame.width, request.frame.height, report.deviceSetupUs);
-        result = collidePair(device, meshes.of(ia, lp.leafA), meshes.of(ib, lp.leafB), request);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("frame " + std::to_string(frame) + ", blocks \"" + na.path +
-                                    "\" and \"" + nb.path + "\": " + e.what());
+        task.request.frame = pairFrame(a.nodes()[static_cast<std::size_t>(lp.leafA)].worldAabb,
+                                       b.nodes()[static_cast<std::size_t>(lp.leafB)].worldAabb);
+      } catch (...) {
+        rethrowNamingPair(objects_, frame, task);
       }
-      addPairTest(report, ia, ib, lp, std::move(result));
+      task.request.mor = options_.mor;
+      task.request.contact = options_.contact;
+      tasks.push_back(task);
+    }
+  }
+
+  const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(tasks);
+  report.deviceSetupUs = setup.us;
+  std::vector<PairOutcome> outcomes = pairTests_->run(tasks, setup.usable);
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    if (outcomes[i].error) {
+      try {
+        std::rethrow_exception(outcomes[i].error);
+      } catch (...) {
+        rethrowNamingPair(objects_, frame, tasks[i]);
+      }
+    }
+    addPairTest(report, tasks[i], std::move(outcomes[i].result));
+  }
+  if (setup.error) {
+    try {
+      std::rethrow_exception(setup.error);
+    } catch (...) {
+      rethrowNamingPair(objects_, frame, tasks[setup.usable]);
     }
   }
   const Clock::time_point done = Clock::now();

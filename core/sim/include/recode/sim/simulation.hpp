@@ -12,7 +12,6 @@
 // It is one pixel size for the whole run, so accuracy does not depend on which pair is drawn.
 
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -27,11 +26,14 @@
 
 namespace recode::core {
 
+class PairTestRunner;  // core/sim/src/pair_tests.hpp
+
 inline constexpr int kPairFrameGranule = 32;
 inline constexpr int kDefaultRunFrames = 100;  // when neither the scene nor the caller says
 
 // Makes a device with a framebuffer of width x height pixels. The simulation keeps the
-// devices it made, one per frame size, and uses them frame after frame.
+// devices it made, per frame size one (more with threads, for sizes that recur), and uses
+// them frame after frame.
 using DeviceFactory =
     std::function<std::unique_ptr<raster::DepthStencilDevice>(int width, int height)>;
 
@@ -48,6 +50,12 @@ struct RunOptions {
   // `recode bench`'s Table 1 reproduces that with this option. MIN and MAX cover the same
   // pixels either way (the pixel size is the same); blocks outside the screen are clipped.
   bool drawOnScreen = false;
+  // Threads the pair tests of a frame may run on (oneTBB): 0 all hardware threads, 1 none but
+  // the caller's, N at most N. Only with the default (CPU) device: a deviceFactory may make
+  // GPU-API devices, which share one context and are not to be used from several threads, so
+  // with one the pair tests always run sequentially. The report is the same bytes whatever
+  // the count (the tests run into slots read in the sequential order); only times differ.
+  int threads = 0;
 };
 
 // A leaf pair whose blocks interfere at this frame.
@@ -65,6 +73,8 @@ struct FrameReport {
   long long pairTests = 0;            // leaf pairs given to the pair algorithm
   long long stencilPixelsRead = 0;
   long long depthPixelsRead = 0;
+  // Wall-clock times: with several threads collisionUs is the elapsed time of the parallel
+  // pair tests, not the sum of the threads' times.
   double frameUs = 0.0;      // the whole frame: posing the nodes + collisionUs
   double collisionUs = 0.0;  // boxes, broad phase, descent and pair tests
   // Making devices for frame sizes not seen before: a one-off cost of the run (a few
@@ -77,6 +87,9 @@ class Simulation {
  public:
   // Builds the object trees. Throws std::invalid_argument when no valid pixel size results.
   Simulation(const Scene& scene, RunOptions options);
+  ~Simulation();
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(Simulation&&) noexcept;
 
   // Poses the scene at frame k and detects its collisions. Frames may be run in any order
   // (poses are a pure function of k), but the broad phase is fastest frame after frame.
@@ -88,22 +101,26 @@ class Simulation {
   [[nodiscard]] double pixelSize() const { return pixelSize_; }
   [[nodiscard]] ViewAxis axis() const { return axis_; }
   [[nodiscard]] std::size_t triangleCount() const;  // NTR: triangles of all leaves
+  // How many pair tests may run at once (RunOptions::threads resolved; 1 with a factory).
+  [[nodiscard]] int threads() const;
 
   // The frame a leaf pair is drawn in (see above; the screen with RunOptions::drawOnScreen).
   [[nodiscard]] FrameSpec pairFrame(const Aabb& a, const Aabb& b) const;
 
  private:
-  // The device for this frame size, made (and its making timed into `setupUs`) if new.
-  raster::DepthStencilDevice& deviceFor(int width, int height, double& setupUs);
-
   std::vector<ObjectTree> objects_;
   RunOptions options_;
   ViewAxis axis_ = ViewAxis::Z;
   double pixelSize_ = 0.0;
   std::optional<FrameSpec> screen_;  // with drawOnScreen
   SweepAndPrune broadPhase_;
-  std::map<std::pair<int, int>, std::unique_ptr<raster::DepthStencilDevice>> devices_;
+  std::unique_ptr<PairTestRunner> pairTests_;  // its devices and threads
 };
+
+// How many pair tests a simulation with these options runs at once: RunOptions::threads with
+// 0 resolved to the hardware threads oneTBB sees (and N to at most those), 1 with a
+// deviceFactory.
+[[nodiscard]] int pairTestThreads(const RunOptions& options);
 
 // The pixel size of a run (see above); `bounds` is the objects' box at frame 0.
 [[nodiscard]] double runPixelSize(const ViewSpec& view, const Aabb& bounds,

@@ -1,0 +1,49 @@
+#pragma once
+// The simulation's devices, by frame size: one per size on the sequential path, and with
+// threads up to one per test of that size that can run at once. They are made before the
+// frame's pair tests start, on the calling thread, so that making them is timed apart from the
+// tests (FrameReport's deviceSetupUs) and no device is made while another thread draws.
+
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "recode/raster/device.hpp"
+#include "recode/sim/simulation.hpp"
+
+namespace recode::core {
+
+class DevicePool {
+ public:
+  // An empty factory makes raster::CpuDevice.
+  explicit DevicePool(DeviceFactory factory) : factory_(std::move(factory)) {}
+
+  // Drops the devices of sizes not in `keep` once more than kKeptSizes sizes are held, so a
+  // run whose pairs keep changing size stays bounded.
+  void trim(const std::vector<std::pair<int, int>>& keep);
+
+  // Devices of this size held now, and pair tests they ran since they were made.
+  [[nodiscard]] int held(int width, int height) const;
+  [[nodiscard]] long long uses(int width, int height) const;
+  void addUses(int width, int height, long long tests);
+
+  // Makes devices of this size until `count` exist; returns the microseconds spent making.
+  double reserve(int width, int height, int count);
+
+  // Device `index` (below reserve's count) of this size.
+  [[nodiscard]] raster::DepthStencilDevice& at(int width, int height, int index);
+
+  static constexpr std::size_t kKeptSizes = 16;
+
+ private:
+  struct Devices {
+    std::vector<std::unique_ptr<raster::DepthStencilDevice>> made;
+    long long uses = 0;
+  };
+
+  DeviceFactory factory_;
+  std::map<std::pair<int, int>, Devices> bySize_;
+};
+
+}  // namespace recode::core

@@ -1,0 +1,75 @@
+#pragma once
+// The pair tests of one frame: the leaf pairs the descent found, each given to collidePair on a
+// device of its frame's size. With more than one thread they run in parallel (oneTBB, in an
+// arena of the run's size), each into its own slot of the answer, so that whatever order they
+// finish in, the caller reads them in the order they were listed and the frame's report is the
+// same bytes as a sequential run's.
+
+#include <exception>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "recode/pair/pair.hpp"
+#include "recode/sim/hierarchy.hpp"
+#include "recode/sim/simulation.hpp"
+
+namespace recode::core {
+
+struct PairTask {
+  int objectA = 0, objectB = 0;
+  LeafPair leaves;
+  const TriangleMesh* meshA = nullptr;  // world meshes, alive while the tests run
+  const TriangleMesh* meshB = nullptr;
+  PairRequest request;
+};
+
+// A task's answer: its result (the case map cleared), or what it threw.
+struct PairOutcome {
+  PairResult result;
+  std::exception_ptr error;
+};
+
+class PairTestRunner {
+ public:
+  // Runs on pairTestThreads(options) threads, with options.deviceFactory's devices.
+  explicit PairTestRunner(const RunOptions& options);
+  ~PairTestRunner();
+  PairTestRunner(const PairTestRunner&) = delete;
+  PairTestRunner& operator=(const PairTestRunner&) = delete;
+
+  // How many pair tests may run at once: 1 on the sequential path.
+  [[nodiscard]] int concurrency() const { return concurrency_; }
+
+  // Makes the devices the tasks need, in task order. Each frame size has one device, and
+  // with threads one more (up to one per test of that size this frame, and concurrency())
+  // once its devices have run kTestsPerExtraDevice tests each: a big frame seen in a few
+  // frames (a rotating pair's) costs one device, as sequentially, as making it costs more than
+  // the tests it would share, while a size that recurs grows to concurrency() devices. `usable`
+  // tasks got theirs: all, unless making the device of task `usable` threw `error` (the tasks
+  // before it can still run, as they would have run before it sequentially).
+  struct DeviceSetup {
+    double us = 0.0;  // spent making devices
+    std::size_t usable = 0;
+    std::exception_ptr error;
+  };
+  [[nodiscard]] DeviceSetup reserveDevices(const std::vector<PairTask>& tasks);
+
+  // Runs tasks [0, count): outcome i is task i's. Sequentially it stops at the first error, as
+  // the tasks after it would not have run. In parallel the tests of one size are dealt in turn
+  // to that size's devices, one lane per device, run in task order; lanes run in parallel, a
+  // lane stops at its first error, and the caller takes the first error in task order (a test
+  // a lane skipped comes after an error).
+  [[nodiscard]] std::vector<PairOutcome> run(const std::vector<PairTask>& tasks, std::size_t count);
+
+  static constexpr long long kTestsPerExtraDevice = 32;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+  int concurrency_ = 1;
+  std::map<std::pair<int, int>, int> lanes_;  // devices per frame size this frame
+};
+
+}  // namespace recode::core
