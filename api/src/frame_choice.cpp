@@ -1,5 +1,6 @@
 // The frame of a block pair: an axis (given, or across the overlap's thinnest side), a pixel
 // size (given, or from the resolution over the overlap), then the frame `recode run` uses.
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -63,13 +64,16 @@ core::FrameSpec chooseFrame(const core::Aabb& a, const core::Aabb& b,
     m << "resolution " << request.resolution << " is outside 1.." << raster::kMaxFramebufferSize;
     throw std::invalid_argument(m.str());
   }
+  core::Aabb both = a;
+  both.extend(b);
+  const double bothSide = longerPlaneSide(axis, both);
   double side = overlap.isEmpty() ? 0.0 : longerPlaneSide(axis, overlap);
-  if (!(side > 0.0)) {
-    core::Aabb both = a;
-    both.extend(b);
-    side = longerPlaneSide(axis, both);
-  }
-  return core::granularPairFrame(axis, side / request.resolution, a, b);
+  if (!(side > 0.0))
+    side = bothSide;
+  // Tips meeting make an overlap of almost nothing; its pixel would need a frame of millions of
+  // pixels over the blocks. No finer than kMaxResolutionFrameSide pixels across both boxes.
+  const double pixel = std::max(side / request.resolution, bothSide / kMaxResolutionFrameSide);
+  return core::granularPairFrame(axis, pixel, a, b);
 }
 
 }  // namespace recode

@@ -58,10 +58,15 @@ class CollisionObject {
 // fall on the region where the blocks can meet.
 enum class AxisChoice { X, Y, Z, Auto };
 
+// With a resolution, the most pixels across both blocks' boxes: a tiny overlap (tips meeting)
+// would otherwise ask for a frame of millions of pixels a side.
+inline constexpr double kMaxResolutionFrameSide = 2048.0;
+
 struct CollisionRequest {
   // Square pixels of this size, in world units. Without it, the pixel size is the longer side
   // of the overlap box on the image plane divided by `resolution` (the union of the two boxes'
-  // when the overlap is flat on the image plane).
+  // when the overlap is flat on the image plane), but never finer than the longer side of the
+  // union over kMaxResolutionFrameSide pixels.
   std::optional<double> pixelSize;
   int resolution = 256;  // 1..16384, used without pixelSize
   core::MorMode mor = core::MorMode::Min;
