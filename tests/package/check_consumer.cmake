@@ -31,6 +31,7 @@ if(MODE STREQUAL "installed")
   run_step("build the libraries" ${CMAKE_COMMAND} --build "${WORK_DIR}/library" -j 2)
   run_step("install the libraries" ${CMAKE_COMMAND} --install "${WORK_DIR}/library")
   foreach(file include/recode/pair/pair.hpp include/recode/raster/fragment_stage.hpp
+               include/recode/api/collision.hpp
                lib/cmake/recode/recodeConfig.cmake)
     if(NOT EXISTS "${prefix}/${file}")
       message(FATAL_ERROR "the install has no ${file}")

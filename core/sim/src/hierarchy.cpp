@@ -111,6 +111,17 @@ void ObjectTree::setFrame(int frame) {
   }
 }
 
+void ObjectTree::setFrame(int frame, const Eigen::Isometry3d& base) {
+  // Kept apart from setFrame(frame) so that a scene's poses stay exactly what they were (no
+  // product with an identity that could turn a -0 into +0).
+  for (HierarchyNode& node : nodes_) {
+    const Eigen::Isometry3d local = node.placement.poseAt(frame);
+    const Eigen::Isometry3d& parent =
+        node.parent < 0 ? base : nodes_[static_cast<std::size_t>(node.parent)].world;
+    node.world = parent * local;
+  }
+}
+
 void ObjectTree::updateBounds() {
   for (std::size_t i = nodes_.size(); i-- > 0;) {
     HierarchyNode& node = nodes_[i];

@@ -136,19 +136,23 @@ std::size_t Simulation::triangleCount() const {
   return n;
 }
 
-FrameSpec Simulation::pairFrame(const Aabb& a, const Aabb& b) const {
-  if (screen_)
-    return *screen_;
+FrameSpec granularPairFrame(ViewAxis axis, double pixelSize, const Aabb& a, const Aabb& b) {
   Aabb both = a;
   both.extend(b);
-  FrameSpec f = frameFromPixelSize(axis_, defaultWindow(axis_, both, std::nullopt), pixelSize_);
+  FrameSpec f = frameFromPixelSize(axis, defaultWindow(axis, both, std::nullopt), pixelSize);
   const int width = roundUpToGranule(f.width), height = roundUpToGranule(f.height);
-  const double du = 0.5 * (width - f.width) * pixelSize_;
-  const double dv = 0.5 * (height - f.height) * pixelSize_;
+  const double du = 0.5 * (width - f.width) * pixelSize;
+  const double dv = 0.5 * (height - f.height) * pixelSize;
   f.window = {f.window.umin - du, f.window.vmin - dv, f.window.umax + du, f.window.vmax + dv};
   f.width = width;
   f.height = height;
   return f;
+}
+
+FrameSpec Simulation::pairFrame(const Aabb& a, const Aabb& b) const {
+  if (screen_)
+    return *screen_;
+  return granularPairFrame(axis_, pixelSize_, a, b);
 }
 
 FrameReport Simulation::runFrame(int frame) {

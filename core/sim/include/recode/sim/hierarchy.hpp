@@ -58,6 +58,9 @@ class ObjectTree {
 
   // Every node's world transform at frame k (the animation step).
   void setFrame(int frame);
+  // The same with the whole object moved by `base` (world <- the root's parent coordinates):
+  // how the collision API (recode/api) places an object at the pose its user sets.
+  void setFrame(int frame, const Eigen::Isometry3d& base);
   // Every node's world AABB and OBB for the current transforms (leaves recompute their
   // AABB from their vertices only when their transform changed).
   void updateBounds();

@@ -122,6 +122,14 @@ class Simulation {
 // deviceFactory.
 [[nodiscard]] int pairTestThreads(const RunOptions& options);
 
+// The frame of a pair of blocks with world boxes a and b (see above): a window over both boxes
+// grown by kDefaultWindowMargin, square pixels of `pixelSize`, the sides rounded up to a
+// multiple of kPairFrameGranule pixels about the window's centre. Simulation::pairFrame and the
+// collision API (recode/api) draw their pairs in it. Throws std::invalid_argument as
+// frameFromPixelSize.
+[[nodiscard]] FrameSpec granularPairFrame(ViewAxis axis, double pixelSize, const Aabb& a,
+                                          const Aabb& b);
+
 // The pixel size of a run (see above); `bounds` is the objects' box at frame 0.
 [[nodiscard]] double runPixelSize(const ViewSpec& view, const Aabb& bounds,
                                   const FrameOverrides& overrides);

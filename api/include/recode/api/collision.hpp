@@ -1,0 +1,117 @@
+#pragma once
+// RECODE as a collision library, in the request -> result shape of FCL (docs/api.md):
+//
+//   auto cone = recode::CollisionGeometry::single(recode::ConvexBlock::fromMesh(mesh, "cone"));
+//   recode::CollisionObject a(cone), b(cone);
+//   b.setTransform(pose);
+//   recode::CollisionResult result;
+//   if (recode::collide(a, b, recode::CollisionRequest{}, result)) ... result.contact.box ...
+//
+// collide() descends the two objects' block trees (AABBs, then OBBs) to the block pairs whose
+// boxes overlap and runs core::collidePair on each, in a frame it chooses from the two blocks'
+// world boxes (chooseFrame below): the same algorithm, passes and contact region as
+// `recode pair` and `recode run`, so the same frame gives the same result bit for bit.
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "recode/api/device_pool.hpp"
+#include "recode/api/geometry.hpp"
+#include "recode/pair/frame.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/sim/hierarchy.hpp"
+
+namespace recode {
+
+// A shape at a pose. Cheap to move; copying copies the posed tree (the shape stays shared).
+class CollisionObject {
+ public:
+  // Throws std::invalid_argument for a null geometry.
+  explicit CollisionObject(CollisionGeometryPtr geometry,
+                           const Eigen::Isometry3d& transform = Eigen::Isometry3d::Identity());
+
+  // Object -> world. Updates the world boxes of every block at once.
+  void setTransform(const Eigen::Isometry3d& transform);
+  [[nodiscard]] const Eigen::Isometry3d& transform() const { return transform_; }
+
+  [[nodiscard]] const CollisionGeometry& geometry() const { return *geometry_; }
+  [[nodiscard]] const CollisionGeometryPtr& geometryPtr() const { return geometry_; }
+  // The world box of the whole object at its pose.
+  [[nodiscard]] const core::Aabb& worldBox() const { return tree_.root().worldAabb; }
+  // The posed tree (world AABBs and OBBs per node), as the descent reads it.
+  [[nodiscard]] const core::ObjectTree& tree() const { return tree_; }
+  // Block i in world coordinates at the current pose.
+  [[nodiscard]] core::TriangleMesh worldBlock(std::size_t block) const;
+
+ private:
+  CollisionGeometryPtr geometry_;
+  core::ObjectTree tree_;
+  Eigen::Isometry3d transform_;
+};
+
+// The view axis: one of the world axes, or Auto: the axis along which the box where the two
+// blocks' world AABBs overlap is thinnest (ties go to z, then x, then y). Looking across the
+// thin side of the overlap puts its two larger sides on the image plane, so the most pixels
+// fall on the region where the blocks can meet.
+enum class AxisChoice { X, Y, Z, Auto };
+
+// With a resolution, the most pixels across both blocks' boxes: a tiny overlap (tips meeting)
+// would otherwise ask for a frame of millions of pixels a side.
+inline constexpr double kMaxResolutionFrameSide = 2048.0;
+
+struct CollisionRequest {
+  // Square pixels of this size, in world units. Without it, the pixel size is the longer side
+  // of the overlap box on the image plane divided by `resolution` (the union of the two boxes'
+  // when the overlap is flat on the image plane), but never finer than the longer side of the
+  // union over kMaxResolutionFrameSide pixels.
+  std::optional<double> pixelSize;
+  int resolution = 256;  // 1..16384, used without pixelSize
+  core::MorMode mor = core::MorMode::Min;
+  AxisChoice axis = AxisChoice::Auto;
+  bool contact = true;  // the two depth passes that measure the contact region
+};
+
+// One pair of blocks whose pixels interfere.
+struct BlockContact {
+  std::size_t blockA = 0;  // block index in the first object's geometry
+  std::size_t blockB = 0;  // and in the second's
+  core::FrameSpec frame;   // the frame it was drawn in
+  core::PairResult pair;   // collidePair's result (its case map kept)
+};
+
+struct CollisionResult {
+  bool collide = false;
+  long long interferingPixels = 0;  // summed over the block pairs
+  // The union over the block pairs: all points, the box around their boxes, the summed area
+  // and pixels, the greatest depth. Empty without contact (or with request.contact off: then
+  // only pixels and area are known).
+  core::ContactRegion contact;
+  std::vector<BlockContact> contacts;  // the block pairs in contact, by (blockA, blockB)
+  long long boxTests = 0;              // node pairs whose boxes the descent tested
+  long long blockPairsDrawn = 0;       // block pairs given to collidePair
+  double collisionUs = 0.0;            // the whole call, device making left out
+  double deviceSetupUs = 0.0;          // making devices for sizes not seen before
+
+  void clear() { *this = CollisionResult{}; }
+};
+
+// The frame a pair of blocks with these world boxes is drawn in: the axis and pixel size the
+// request gives (see above), then core::granularPairFrame, the frame `recode run` draws a
+// leaf pair in. Throws std::invalid_argument for a resolution outside 1..16384 or a frame over
+// 16384 pixels a side (the message of core::frameFromPixelSize).
+[[nodiscard]] core::FrameSpec chooseFrame(const core::Aabb& a, const core::Aabb& b,
+                                          const CollisionRequest& request);
+
+// Collides two objects: fills `result` (cleared first) and returns result.collide. Draws on
+// raster::CpuDevices kept per thread. Throws std::invalid_argument as chooseFrame and
+// core::collidePair do.
+bool collide(const CollisionObject& a, const CollisionObject& b, const CollisionRequest& request,
+             CollisionResult& result);
+// The same, drawing on the pool's devices (the seam for a device of your own).
+bool collide(const CollisionObject& a, const CollisionObject& b, const CollisionRequest& request,
+             CollisionResult& result, DevicePool& devices);
+
+}  // namespace recode

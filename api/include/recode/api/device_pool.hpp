@@ -1,0 +1,36 @@
+#pragma once
+// The device seam of the collision API: where pairs are drawn. A DevicePool makes devices
+// through a factory (core::DeviceFactory, the one `recode run` takes; empty: raster::CpuDevice,
+// the reference) and keeps one per frame size, so that the collision calls that use it, frame
+// after frame, make a device only for a size not seen before. Frames are sized in multiples of
+// core::kPairFrameGranule pixels, so a few sizes serve most pairs.
+
+#include <map>
+#include <memory>
+#include <utility>
+
+#include "recode/raster/device.hpp"
+#include "recode/sim/simulation.hpp"
+
+namespace recode {
+
+class DevicePool {
+ public:
+  explicit DevicePool(core::DeviceFactory factory = {}) : factory_(std::move(factory)) {}
+
+  // The device of this size, made if new (its making timed into setupUs()). Throws
+  // std::logic_error if the factory returns no device, std::invalid_argument if the device it
+  // returns is not of the size asked for.
+  [[nodiscard]] raster::DepthStencilDevice& device(int width, int height);
+
+  // Microseconds spent making devices so far: a one-off cost, kept out of collision times.
+  [[nodiscard]] double setupUs() const { return setupUs_; }
+  [[nodiscard]] std::size_t size() const { return devices_.size(); }
+
+ private:
+  core::DeviceFactory factory_;
+  std::map<std::pair<int, int>, std::unique_ptr<raster::DepthStencilDevice>> devices_;
+  double setupUs_ = 0.0;
+};
+
+}  // namespace recode

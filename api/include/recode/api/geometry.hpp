@@ -1,0 +1,83 @@
+#pragma once
+// The shapes of the collision API (docs/api.md): a ConvexBlock is one validated convex block,
+// a CollisionGeometry one or more of them fixed together into an object's shape. Both are
+// immutable once made and shared through std::shared_ptr, so many CollisionObjects (FCL's
+// split of geometry and pose) can use one shape at different poses.
+
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "recode/geometry/mesh.hpp"
+#include "recode/sim/hierarchy.hpp"
+
+namespace recode {
+
+class ConvexBlock;
+using ConvexBlockPtr = std::shared_ptr<const ConvexBlock>;
+
+// A closed convex block in its own coordinates. Every way of making one validates it with
+// core::validateConvexBlock and throws its core::MeshError ("<name>: <problem>", the messages of
+// docs/geometry.md), so a block that exists is one the pair algorithm can draw.
+class ConvexBlock {
+ public:
+  // `name` starts the error message and names the block in results.
+  [[nodiscard]] static ConvexBlockPtr fromMesh(core::TriangleMesh mesh, std::string name);
+  // Vertices and counter-clockwise (seen from outside) triangles.
+  [[nodiscard]] static ConvexBlockPtr fromArrays(std::span<const Eigen::Vector3d> vertices,
+                                                 std::span<const core::Triangle> triangles,
+                                                 std::string name);
+  // An OBJ or OFF file (core::readMesh); its errors are MeshErrors too, named by the path.
+  [[nodiscard]] static ConvexBlockPtr fromFile(const std::filesystem::path& path);
+
+  [[nodiscard]] const core::TriangleMesh& mesh() const { return mesh_; }
+  [[nodiscard]] const std::string& name() const { return name_; }
+
+ private:
+  ConvexBlock(core::TriangleMesh mesh, std::string name)
+      : mesh_(std::move(mesh)), name_(std::move(name)) {}
+  core::TriangleMesh mesh_;
+  std::string name_;
+};
+
+// A block placed in its object's coordinates.
+struct BlockPart {
+  ConvexBlockPtr block;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // block -> object coordinates
+};
+
+class CollisionGeometry;
+using CollisionGeometryPtr = std::shared_ptr<const CollisionGeometry>;
+
+// An object's shape: its blocks, held as a core::ObjectTree (the tree `recode run` uses: AABBs
+// and OBBs per node, descended pair by pair to the block pairs worth drawing). Block i of the
+// geometry is parts[i]; results name blocks by that index.
+class CollisionGeometry {
+ public:
+  // One block: the tree is that leaf alone. Throws std::invalid_argument for a null block.
+  [[nodiscard]] static CollisionGeometryPtr single(ConvexBlockPtr block);
+  // Several blocks under one root (one level: the blocks' poses are fixed in the object).
+  // Throws std::invalid_argument for no parts or a null block.
+  [[nodiscard]] static CollisionGeometryPtr compound(std::vector<BlockPart> parts,
+                                                     std::string name = "compound");
+
+  [[nodiscard]] std::size_t blockCount() const { return parts_.size(); }
+  [[nodiscard]] const BlockPart& part(std::size_t i) const { return parts_.at(i); }
+  // The tree at the identity pose; each CollisionObject poses a copy of it.
+  [[nodiscard]] const core::ObjectTree& tree() const { return tree_; }
+  // Block index of a leaf node of tree() (-1 for a node that is not a leaf).
+  [[nodiscard]] int blockOfNode(int node) const;
+
+ private:
+  CollisionGeometry(std::vector<BlockPart> parts, core::ObjectTree tree);
+  std::vector<BlockPart> parts_;
+  core::ObjectTree tree_;
+  std::vector<int> blockOfNode_;
+};
+
+}  // namespace recode

@@ -1,0 +1,79 @@
+// Making blocks (validated once, when made) and object shapes (an ObjectTree built from a scene
+// object whose leaves are the blocks, already placed in object coordinates).
+#include "recode/api/geometry.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+#include "recode/geometry/mesh_io.hpp"
+#include "recode/geometry/validate.hpp"
+#include "recode/scene/scene.hpp"
+
+namespace recode {
+
+ConvexBlockPtr ConvexBlock::fromMesh(core::TriangleMesh mesh, std::string name) {
+  core::validateConvexBlock(mesh, name);
+  return ConvexBlockPtr(new ConvexBlock(std::move(mesh), std::move(name)));
+}
+
+ConvexBlockPtr ConvexBlock::fromArrays(std::span<const Eigen::Vector3d> vertices,
+                                       std::span<const core::Triangle> triangles,
+                                       std::string name) {
+  core::TriangleMesh mesh;
+  mesh.vertices.assign(vertices.begin(), vertices.end());
+  mesh.triangles.assign(triangles.begin(), triangles.end());
+  return fromMesh(std::move(mesh), std::move(name));
+}
+
+ConvexBlockPtr ConvexBlock::fromFile(const std::filesystem::path& path) {
+  // Named by the path, as a scene's mesh file is (core/scene/src/scene_shapes.cpp).
+  return fromMesh(core::readMesh(path), path.string());
+}
+
+namespace {
+
+// The leaf of one part: its block moved into object coordinates, so the tree's placements
+// stay the identity and the object's pose alone places it (no rounding through Euler angles).
+core::SceneObject leafOf(const BlockPart& part) {
+  if (!part.block)
+    throw std::invalid_argument("a collision geometry's block is null");
+  core::SceneObject leaf;
+  leaf.name = part.block->name();
+  leaf.localMesh = part.pose.matrix() == Eigen::Matrix4d::Identity()
+                       ? part.block->mesh()
+                       : core::transformed(part.block->mesh(), part.pose);
+  return leaf;
+}
+
+}  // namespace
+
+CollisionGeometryPtr CollisionGeometry::single(ConvexBlockPtr block) {
+  std::vector<BlockPart> parts{{std::move(block), Eigen::Isometry3d::Identity()}};
+  core::ObjectTree tree(leafOf(parts.front()));
+  return CollisionGeometryPtr(new CollisionGeometry(std::move(parts), std::move(tree)));
+}
+
+CollisionGeometryPtr CollisionGeometry::compound(std::vector<BlockPart> parts, std::string name) {
+  if (parts.empty())
+    throw std::invalid_argument("a collision geometry needs at least one block");
+  core::SceneObject root;
+  root.name = std::move(name);
+  for (const BlockPart& part : parts)
+    root.children.push_back(leafOf(part));
+  core::ObjectTree tree(root);
+  return CollisionGeometryPtr(new CollisionGeometry(std::move(parts), std::move(tree)));
+}
+
+CollisionGeometry::CollisionGeometry(std::vector<BlockPart> parts, core::ObjectTree tree)
+    : parts_(std::move(parts)), tree_(std::move(tree)) {
+  // ObjectTree numbers its leaves depth first, in the order the parts were given.
+  blockOfNode_.assign(tree_.nodes().size(), -1);
+  for (std::size_t i = 0; i < tree_.leaves().size(); ++i)
+    blockOfNode_[static_cast<std::size_t>(tree_.leaves()[i])] = static_cast<int>(i);
+}
+
+int CollisionGeometry::blockOfNode(int node) const {
+  return blockOfNode_.at(static_cast<std::size_t>(node));
+}
+
+}  // namespace recode

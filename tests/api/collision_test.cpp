@@ -1,0 +1,133 @@
+// Blocks, shapes, objects and the frame rule of the collision API.
+#include <catch2/catch.hpp>
+
+#include "recode/api/collision.hpp"
+#include "recode/geometry/generators.hpp"
+#include "recode/geometry/validate.hpp"
+#include "recode/raster/cpu_device.hpp"
+
+namespace {
+
+using namespace recode;
+
+core::Aabb box(Eigen::Vector3d min, Eigen::Vector3d max) {
+  core::Aabb b;
+  b.min = min;
+  b.max = max;
+  return b;
+}
+
+CollisionGeometryPtr boxShape(double half) {
+  return CollisionGeometry::single(ConvexBlock::fromMesh(core::makeBox(half, half, half), "box"));
+}
+
+}  // namespace
+
+TEST_CASE("a block that is not a convex block is refused with the validator's message") {
+  core::TriangleMesh open = core::makeBox(1.0, 1.0, 1.0);
+  open.triangles.pop_back();
+  std::string expected;
+  try {
+    core::validateConvexBlock(open, "lid");
+  } catch (const core::MeshError& e) {
+    expected = e.what();
+  }
+  REQUIRE_FALSE(expected.empty());
+  CHECK_THROWS_WITH(ConvexBlock::fromMesh(open, "lid"), expected);
+  CHECK_THROWS_WITH(ConvexBlock::fromArrays(open.vertices, open.triangles, "lid"), expected);
+  CHECK_THROWS_AS(ConvexBlock::fromFile("no/such/file.obj"), core::MeshError);
+  CHECK_THROWS_AS(CollisionGeometry::single(nullptr), std::invalid_argument);
+  CHECK_THROWS_AS(CollisionObject(nullptr), std::invalid_argument);
+}
+
+TEST_CASE("auto picks the axis across the overlap's thinnest side, ties to z then x") {
+  CollisionRequest request;
+  request.resolution = 100;
+  // Overlap 0.2 along x, 2 along y and z.
+  const core::Aabb a = box({-1, -1, -1}, {0.1, 1, 1}), b = box({-0.1, -1, -1}, {1, 1, 1});
+  const core::FrameSpec f = chooseFrame(a, b, request);
+  CHECK(f.axis == core::ViewAxis::X);
+  // 100 pixels across the overlap's longer side on the image plane (2 units).
+  CHECK((f.window.umax - f.window.umin) / f.width == Approx(0.02));
+  CHECK(f.width % core::kPairFrameGranule == 0);
+  CHECK(chooseFrame(box({0, 0, 0}, {1, 1, 1}), box({0, 0, 0}, {1, 1, 1}), request).axis ==
+        core::ViewAxis::Z);
+  CHECK(chooseFrame(box({0, 0, 0}, {1, 1, 2}), box({0, 0, 0}, {1, 1, 2}), request).axis ==
+        core::ViewAxis::X);
+  request.axis = AxisChoice::Y;
+  CHECK(chooseFrame(a, b, request).axis == core::ViewAxis::Y);
+  request.resolution = 0;
+  CHECK_THROWS_AS(chooseFrame(a, b, request), std::invalid_argument);
+}
+
+TEST_CASE("a given pixel size draws in the frame recode run uses for the pair") {
+  CollisionRequest request;
+  request.pixelSize = 0.05;
+  request.axis = AxisChoice::Z;
+  const core::Aabb a = box({-1, -1, -1}, {0.1, 1, 1}), b = box({-0.1, -1, -1}, {1, 1, 1});
+  const core::FrameSpec f = chooseFrame(a, b, request),
+                        g = core::granularPairFrame(core::ViewAxis::Z, 0.05, a, b);
+  CHECK(f.width == g.width);
+  CHECK(f.height == g.height);
+  CHECK(f.window.umin == g.window.umin);
+  CHECK(f.window.vmax == g.window.vmax);
+}
+
+TEST_CASE("setTransform moves the object's world box") {
+  CollisionObject o(boxShape(0.5));
+  CHECK(o.worldBox().min == Eigen::Vector3d::Constant(-0.5));
+  o.setTransform(Eigen::Isometry3d(Eigen::Translation3d(2.0, 0.0, 0.0)));
+  CHECK(o.worldBox().min == Eigen::Vector3d(1.5, -0.5, -0.5));
+  CHECK(o.transform().translation() == Eigen::Vector3d(2.0, 0.0, 0.0));
+}
+
+TEST_CASE("a compound object names the blocks in contact") {
+  const ConvexBlockPtr cube = ConvexBlock::fromMesh(core::makeBox(0.5, 0.5, 0.5), "cube");
+  // A dumbbell of two cubes along x, at -2 and +2.
+  const CollisionGeometryPtr dumbbell =
+      CollisionGeometry::compound({{cube, Eigen::Isometry3d(Eigen::Translation3d(-2.0, 0.0, 0.0))},
+                                   {cube, Eigen::Isometry3d(Eigen::Translation3d(2.0, 0.0, 0.0))}},
+                                  "dumbbell");
+  REQUIRE(dumbbell->blockCount() == 2);
+  const CollisionObject bar(dumbbell);
+  // A cube pressed into the right-hand block only.
+  const CollisionObject probe(boxShape(0.5),
+                              Eigen::Isometry3d(Eigen::Translation3d(2.6, 0.2, 0.0)));
+  CollisionRequest request;
+  request.pixelSize = 0.02;
+  CollisionResult result;
+  REQUIRE(collide(bar, probe, request, result));
+  REQUIRE(result.contacts.size() == 1);
+  CHECK(result.contacts[0].blockA == 1);
+  CHECK(result.contacts[0].blockB == 0);
+  CHECK(result.blockPairsDrawn == 1);
+  CHECK(result.contact.box.min.x() >= 2.0);
+  // Both ways round: the blocks swap sides.
+  REQUIRE(collide(probe, bar, request, result));
+  CHECK(result.contacts[0].blockA == 0);
+  CHECK(result.contacts[0].blockB == 1);
+  CHECK_THROWS_AS(CollisionGeometry::compound({}), std::invalid_argument);
+}
+
+TEST_CASE("a device factory is the seam, and a wrong device is refused") {
+  CollisionObject a(boxShape(0.5)),
+      b(boxShape(0.5), Eigen::Isometry3d(Eigen::Translation3d(0.5, 0.0, 0.0)));
+  int made = 0;
+  DevicePool counting([&made](int w, int h) {
+    ++made;
+    return std::make_unique<raster::CpuDevice>(w, h);
+  });
+  CollisionResult mine, builtin;
+  CollisionRequest request;
+  REQUIRE(collide(a, b, request, mine, counting));
+  REQUIRE(collide(a, b, request, builtin));
+  CHECK(made == 1);
+  CHECK(mine.contact.points == builtin.contact.points);
+  REQUIRE(collide(a, b, request, mine, counting));
+  CHECK(made == 1);  // the pool keeps its device
+
+  DevicePool wrong([](int, int) { return std::make_unique<raster::CpuDevice>(8, 8); });
+  CHECK_THROWS_AS(collide(a, b, request, mine, wrong), std::invalid_argument);
+  DevicePool none([](int, int) { return std::unique_ptr<raster::DepthStencilDevice>(); });
+  CHECK_THROWS_AS(collide(a, b, request, mine, none), std::logic_error);
+}
