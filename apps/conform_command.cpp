@@ -142,7 +142,10 @@ void addConformCommand(CLI::App& app, int& exitCode) {
       "conform",
       "Replay every golden vector under a directory on a device and compare every depth and "
       "stencil value (exit 2 when any vector fails)");
-  cmd->add_option("--device", o->device, "cpu, gl (fixed-function OpenGL on OSMesa), gl-exact (OpenGL shaders, EGL or OSMesa) or vulkan")->capture_default_str();
+  cmd->add_option("--device", o->device,
+                  "cpu, gl (fixed-function OpenGL on OSMesa), gl-exact (OpenGL shaders, EGL or "
+                  "OSMesa) or vulkan")
+      ->capture_default_str();
   cmd->add_option("--golden", o->golden, "directory searched recursively for *.json vectors")
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print one JSON object instead of the report");

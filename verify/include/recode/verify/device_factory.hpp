@@ -17,7 +17,8 @@ enum class DeviceKind {
   Vulkan,   // VulkanDevice: the same shaders on Vulkan 1.3
 };
 
-// "cpu", "gl", "gl-exact", "vulkan"; throws std::invalid_argument naming the choices for anything else.
+// "cpu", "gl", "gl-exact", "vulkan"; throws std::invalid_argument naming the choices for anything
+// else.
 [[nodiscard]] DeviceKind parseDeviceKind(const std::string& name);
 [[nodiscard]] std::string_view toString(DeviceKind kind);
 
