@@ -9,6 +9,7 @@ packages=(
   catch2 libbenchmark-dev libtbb-dev
   libembree-dev libcgal-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libvulkan-dev mesa-vulkan-drivers glslang-tools
+  clang-14 libfuzzer-14-dev
   libfcl-dev libbullet-dev gnuplot-nox
 )
 

@@ -1,0 +1,12 @@
+// libFuzzer target: scene JSON text through the scene reader (the JSON layer, every schema
+// section, shapes and generators; mesh references resolve under a folder that does not exist).
+#include "fuzz_support.hpp"
+#include "recode/scene/scene.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  recode::fuzz::expectCleanErrors([&] {
+    (void)recode::core::parseScene(recode::fuzz::asText(data, size), "fuzz.json",
+                                   "/nonexistent-recode-fuzz");
+  });
+  return 0;
+}
