@@ -36,6 +36,12 @@ void replay(const std::vector<Command>& commands, DepthStencilDevice& device) {
   }
 }
 
+bool changesBuffers(const Command& command) {
+  return std::holds_alternative<cmd::Draw>(command) ||
+         std::holds_alternative<cmd::ClearDepth>(command) ||
+         std::holds_alternative<cmd::ClearStencil>(command);
+}
+
 bool applyToState(const Command& command, RenderState& state, int width, int height) {
   return std::visit(
       [&](const auto& c) {

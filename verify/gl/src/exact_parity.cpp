@@ -1,7 +1,6 @@
 #include "recode/verify/exact_parity.hpp"
 
 #include <stdexcept>
-#include <variant>
 
 #include "recode/raster/cpu_device.hpp"
 #ifdef RECODE_HAVE_VULKAN
@@ -11,12 +10,6 @@
 namespace recode::verify {
 
 namespace {
-
-bool changesBuffers(const raster::Command& command) {
-  return std::holds_alternative<raster::cmd::Draw>(command) ||
-         std::holds_alternative<raster::cmd::ClearDepth>(command) ||
-         std::holds_alternative<raster::cmd::ClearStencil>(command);
-}
 
 void requireStreamSize(const raster::DepthStencilDevice& device,
                        const raster::CommandStream& stream, const char* which) {
@@ -84,7 +77,7 @@ ExactParityReport compareStreamExactly(const raster::CommandStream& stream,
     const std::vector<raster::Command> one{stream.commands[k]};
     raster::replay(one, reference);
     raster::replay(one, candidate);
-    if (changesBuffers(one.front()))
+    if (raster::changesBuffers(one.front()))
       compareRegion(reference, candidate, compared, static_cast<int>(k), maxExamples, report);
   }
   return report;

@@ -292,12 +292,6 @@ class Comparer {
   raster::RenderState gl_;  // the stream's state so far (GL's defaults to start)
 };
 
-bool changesBuffers(const raster::Command& command) {
-  return std::holds_alternative<raster::cmd::Draw>(command) ||
-         std::holds_alternative<raster::cmd::ClearDepth>(command) ||
-         std::holds_alternative<raster::cmd::ClearStencil>(command);
-}
-
 void checkSize(const raster::DepthStencilDevice& device, const raster::CommandStream& stream,
                const char* which) {
   if (device.width() != stream.width || device.height() != stream.height) {
@@ -333,7 +327,7 @@ GlParityReport compareStreamOnDevices(const raster::CommandStream& stream,
     if (const auto* draw = std::get_if<raster::cmd::Draw>(&one.front()))
       comparer.analyseDraw(*draw);
     raster::replay(one, candidate);
-    if (changesBuffers(one.front()))
+    if (raster::changesBuffers(one.front()))
       comparer.compare(static_cast<int>(k), report);
   }
   return report;

@@ -23,22 +23,6 @@ namespace recode::verify {
 
 namespace {
 
-#if RECODE_HAVE_OSMESA
-constexpr bool kGlBuilt = true;
-#else
-constexpr bool kGlBuilt = false;
-#endif
-#if RECODE_HAVE_GL_EXACT
-constexpr bool kGlExactBuilt = true;
-#else
-constexpr bool kGlExactBuilt = false;
-#endif
-#if RECODE_HAVE_VULKAN
-constexpr bool kVulkanBuilt = true;
-#else
-constexpr bool kVulkanBuilt = false;
-#endif
-
 core::RunOptions withDevice(core::RunOptions options, RecodeDevice device) {
   if (device != RecodeDevice::Cpu)
     options.deviceFactory = warmDeviceFactory(device);
@@ -74,20 +58,6 @@ core::DeviceFactory warmFactory() {
 }
 
 }  // namespace
-
-bool recodeDeviceBuilt(RecodeDevice device) {
-  switch (device) {
-    case RecodeDevice::Cpu:
-      return true;
-    case RecodeDevice::Gl:
-      return kGlBuilt;
-    case RecodeDevice::GlExact:
-      return kGlExactBuilt;
-    case RecodeDevice::Vulkan:
-      return kVulkanBuilt;
-  }
-  return false;
-}
 
 core::DeviceFactory warmDeviceFactory(RecodeDevice device) {
   switch (device) {

@@ -66,6 +66,10 @@ void replay(const std::vector<Command>& commands, DepthStencilDevice& device);
 // (a clear or a draw): for tools that follow a stream's state without a device.
 bool applyToState(const Command& command, RenderState& state, int width, int height);
 
+// Whether the command can change the buffers (a clear or a draw): the commands after which
+// parity checks read both devices back.
+[[nodiscard]] bool changesBuffers(const Command& command);
+
 // Forwards every call to an inner device and appends it to a stream.
 class RecordingDevice final : public DepthStencilDevice {
  public:

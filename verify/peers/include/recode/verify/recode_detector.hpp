@@ -20,9 +20,6 @@ enum class RecodeDevice {
   Vulkan,   // verify::VulkanDevice; needs RECODE_HAVE_VULKAN
 };
 
-// Whether this build has the device (Cpu always).
-[[nodiscard]] bool recodeDeviceBuilt(RecodeDevice device);
-
 class RecodeDetector final : public SceneDetector {
  public:
   // The simulation of `scene` with `options` (options.deviceFactory is replaced for every
