@@ -16,6 +16,7 @@
 #include "recode/sim/run_statistics.hpp"
 #include "recode/sim/simulation.hpp"
 #include "run_report.hpp"
+#include "streamed_json.hpp"
 #include "threads_option.hpp"
 
 namespace recode::app {
@@ -36,6 +37,7 @@ struct RunOptions {
   bool contact = true;
   bool quiet = false;
   int threads = 0;  // core::RunOptions::threads
+  long long maxPairTests = core::kDefaultMaxPairTestsPerFrame;
 };
 
 std::string builtinNames() {
@@ -88,9 +90,9 @@ SceneChoice chooseScene(const RunOptions& o) {
 }
 
 // Runs the frames, each reported as the options ask, up to the first contact with
-// --stop-on-contact; under --json the frames' objects are collected into `frames`.
+// --stop-on-contact; under --json each frame's object goes to `json` as soon as it is done.
 core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulation& sim,
-                              AtomicFile* csv, nlohmann::ordered_json& frames) {
+                              AtomicFile* csv, StreamedJsonObject* json) {
   core::RunStatisticsAccumulator stats;
   ProgressBar progress(frameCount);
   for (int k = 0; k < frameCount; ++k) {
@@ -98,9 +100,12 @@ core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulat
     stats.add(report);
     if (csv)
       csv->write(csvRow(report));
-    if (o.json)
-      frames.push_back(frameToJson(sim, report));
-    else if (!o.quiet)
+    if (json) {
+      nlohmann::ordered_json frame = frameToJson(sim, report);
+      if (o.noTiming)
+        removeTimingFields(frame);
+      json->add(frame);
+    } else if (!o.quiet)
       printFrame(std::cout, sim, report);
     progress.update(k + 1);
     if (o.stopOnContact && !report.contacts.empty())
@@ -130,6 +135,8 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.mor = o.frame.mor();
   options.contact = o.contact;
   options.threads = o.threads;
+  options.maxPairTestsPerFrame = o.maxPairTests;
+  options.keepContactPoints = false;  // the report prints counts, area and box only
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -145,17 +152,33 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
     csv.emplace(o.csv, "--csv " + o.csv);
     csv->write(csvHeader());
   }
-  nlohmann::ordered_json frames = nlohmann::ordered_json::array();
-  if (!o.json)
-    printRunHeader(std::cout, run, sim);
-  const core::RunStatistics result = runFrames(o, run.frames, sim, csv ? &*csv : nullptr, frames);
+  // The JSON object is printed frame by frame (the bytes of dumping it whole): a run's memory
+  // follows its largest frame, not its length. A run that fails midway has printed a prefix and
+  // exits non-zero.
+  std::optional<StreamedJsonObject> json;
   if (o.json) {
-    nlohmann::ordered_json j = runToJson(run, sim);
-    j["frames"] = frames;
-    j["stats"] = statisticsToJson(result);
+    nlohmann::ordered_json head = runToJson(run, sim);
     if (o.noTiming)
-      removeTimingFields(j);
-    std::cout << j.dump(2) << '\n';
+      removeTimingFields(head);
+    json.emplace(std::cout, head, "frames");
+  } else {
+    printRunHeader(std::cout, run, sim);
+  }
+  core::RunStatistics result;
+  try {
+    result = runFrames(o, run.frames, sim, csv ? &*csv : nullptr, json ? &*json : nullptr);
+  } catch (const std::invalid_argument& e) {
+    // A frame's error names the frame and blocks; the scene it came from is added here.
+    throw std::invalid_argument(o.scene + ": " + e.what());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(o.scene + ": " + e.what());
+  }
+  if (json) {
+    nlohmann::ordered_json tail;
+    tail["stats"] = statisticsToJson(result);
+    if (o.noTiming)
+      removeTimingFields(tail);
+    json->finish(tail);
   } else {
     printStatistics(std::cout, result);
   }
@@ -214,6 +237,11 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                 "skip the two depth passes that measure each contact region");
   cmd->add_flag("--quiet", o->quiet, "print only the header and the statistics");
   addThreadsOption(*cmd, o->threads);
+  cmd->add_option("--max-pair-tests", o->maxPairTests,
+                  "stop with an error when a frame lists more than N pair tests (default " +
+                      std::to_string(core::kDefaultMaxPairTestsPerFrame) +
+                      "): a frame holds its tests at once")
+      ->check(CLI::Range(1LL, core::kMaxPairTestsPerFrameLimit));
   cmd->callback([o, &exitCode]() { exitCode = runRunCommand(*o); });
 }
 

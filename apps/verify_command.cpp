@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "frame_options.hpp"
@@ -68,7 +69,12 @@ int runVerifyCommand(const VerifyOptions& o) {
     core::PairRequest request;
     request.frame = p.frame;
     request.mor = o.frameOptions.mor();
-    run.pairs.push_back(verifier.verify(std::move(p.label), p.a, p.b, request));
+    try {
+      run.pairs.push_back(verifier.verify(p.label, *p.a, *p.b, request));
+    } catch (const std::invalid_argument& e) {
+      // Name where the failing pair came from: the file (or suite) and its two blocks.
+      throw std::invalid_argument(input.source + ": blocks \"" + p.label + "\": " + e.what());
+    }
     run.totals.add(run.pairs.back());
   }
   if (o.json) {

@@ -21,6 +21,8 @@ void runOne(raster::DepthStencilDevice& device, const PairTask& task, PairOutcom
     outcome.result = collidePair(device, *task.meshA, *task.meshB, task.request);
     // The report keeps no case map; dropping it here bounds the memory the slots hold.
     outcome.result.caseMap = {};
+    if (!task.keepContactPoints)
+      outcome.result.contact.points = {};
   } catch (...) {
     outcome.error = std::current_exception();
   }

@@ -23,6 +23,7 @@ struct PairTask {
   const TriangleMesh* meshA = nullptr;  // world meshes, alive while the tests run
   const TriangleMesh* meshB = nullptr;
   PairRequest request;
+  bool keepContactPoints = true;  // RunOptions::keepContactPoints
 };
 
 // A task's answer: its result (the case map cleared), or what it threw.

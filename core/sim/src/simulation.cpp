@@ -82,6 +82,15 @@ void addPairTest(FrameReport& report, const PairTask& task, PairResult result) {
   }
 }
 
+// The error of a frame over RunOptions::maxPairTestsPerFrame; `listed` counts the tests listed
+// when the limit was crossed (the frame's total is not known: listing stops there).
+std::string tooManyPairTests(int frame, std::size_t listed, long long limit) {
+  return "frame " + std::to_string(frame) + ": at least " + std::to_string(listed) +
+         " block pairs have overlapping boxes, over the limit of " + std::to_string(limit) +
+         " pair tests per frame (a frame holds all its tests at once; raise it with "
+         "--max-pair-tests, or space the objects out)";
+}
+
 }  // namespace
 
 double runPixelSize(const ViewSpec& view, const Aabb& bounds, const FrameOverrides& overrides) {
@@ -105,6 +114,9 @@ Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::m
   if (options_.threads < 0)
     throw std::invalid_argument("the run's thread count " + std::to_string(options_.threads) +
                                 " is negative (0: all hardware threads)");
+  if (options_.maxPairTestsPerFrame < 1)
+    throw std::invalid_argument("the run's limit of pair tests per frame " +
+                                std::to_string(options_.maxPairTestsPerFrame) + " is not positive");
   pairTests_ = std::make_unique<PairTestRunner>(options_);
   axis_ = scene.view.axis;
   objects_.reserve(scene.objects.size());
@@ -176,8 +188,11 @@ FrameReport Simulation::runFrame(int frame) {
     const ObjectTree& b = objects_[static_cast<std::size_t>(ib)];
     leafPairs.clear();
     report.boxTests += descendPair(a, b, leafPairs);
+    if (static_cast<long long>(tasks.size() + leafPairs.size()) > options_.maxPairTestsPerFrame)
+      throw std::invalid_argument(
+          tooManyPairTests(frame, tasks.size() + leafPairs.size(), options_.maxPairTestsPerFrame));
     for (const LeafPair& lp : leafPairs) {
-      PairTask task{ia, ib, lp, &meshes.of(ia, lp.leafA), &meshes.of(ib, lp.leafB), {}};
+      PairTask task{ia, ib, lp, &meshes.of(ia, lp.leafA), &meshes.of(ib, lp.leafB), {}, true};
       try {
         task.request.frame = pairFrame(a.nodes()[static_cast<std::size_t>(lp.leafA)].worldAabb,
                                        b.nodes()[static_cast<std::size_t>(lp.leafB)].worldAabb);
@@ -186,6 +201,7 @@ FrameReport Simulation::runFrame(int frame) {
       }
       task.request.mor = options_.mor;
       task.request.contact = options_.contact;
+      task.keepContactPoints = options_.keepContactPoints;
       tasks.push_back(task);
     }
   }

@@ -30,6 +30,11 @@ class PairTestRunner;  // core/sim/src/pair_tests.hpp
 
 inline constexpr int kPairFrameGranule = 32;
 inline constexpr int kDefaultRunFrames = 100;  // when neither the scene nor the caller says
+// The most pair tests (leaf pairs whose boxes overlap) one frame may list by default: a frame
+// holds its tests and their results at once, so this bounds a run's memory (a few hundred
+// bytes per test without contact points). 3,000 coincident cones list 4,498,500.
+inline constexpr long long kDefaultMaxPairTestsPerFrame = 100'000;
+inline constexpr long long kMaxPairTestsPerFrameLimit = 10'000'000;  // the most it may be raised to
 
 // Makes a device with a framebuffer of width x height pixels. The simulation keeps the
 // devices it made, per frame size one (more with threads, for sizes that recur), and uses
@@ -56,6 +61,13 @@ struct RunOptions {
   // with one the pair tests always run sequentially. The report is the same bytes whatever
   // the count (the tests run into slots read in the sequential order); only times differ.
   int threads = 0;
+  // A frame that would list more pair tests stops the run with an error naming the frame, the
+  // count so far and the limit (docs/scenes.md, "Limits of a run"); at least 1.
+  long long maxPairTestsPerFrame = kDefaultMaxPairTestsPerFrame;
+  // Keep each contact's points (one per interfering pixel) in the frame report. `recode run`
+  // prints only counts, area and box, and turns this off so that a frame's memory does not
+  // grow with its contact areas.
+  bool keepContactPoints = true;
 };
 
 // A leaf pair whose blocks interfere at this frame.
