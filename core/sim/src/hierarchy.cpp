@@ -167,7 +167,8 @@ bool nodeBoxesOverlap(const HierarchyNode& a, const HierarchyNode& b) {
   return aabbsOverlap(a.worldAabb, b.worldAabb) && obbsOverlap(a.worldObb, b.worldObb);
 }
 
-long long descendPair(const ObjectTree& a, const ObjectTree& b, std::vector<LeafPair>& out) {
+long long descendPair(const ObjectTree& a, const ObjectTree& b, std::vector<LeafPair>& out,
+                      std::size_t maxLeafPairs) {
   const std::size_t first = out.size();
   long long tests = 0;
   std::vector<std::pair<int, int>> stack{{0, 0}};
@@ -181,6 +182,8 @@ long long descendPair(const ObjectTree& a, const ObjectTree& b, std::vector<Leaf
       continue;
     if (na.isLeaf() && nb.isLeaf()) {
       out.push_back({i, j});
+      if (out.size() - first >= maxLeafPairs)
+        return tests;
       continue;
     }
     // Split the node that is not a leaf; of two inner nodes the one with the larger box.

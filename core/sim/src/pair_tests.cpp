@@ -21,8 +21,10 @@ void runOne(raster::DepthStencilDevice& device, const PairTask& task, PairOutcom
     outcome.result = collidePair(device, *task.meshA, *task.meshB, task.request);
     // The report keeps no case map; dropping it here bounds the memory the slots hold.
     outcome.result.caseMap = {};
+    // Swapped with an empty vector: `points = {}` would keep the capacity (9 MB for a pair of
+    // 374,004 interfering pixels).
     if (!task.keepContactPoints)
-      outcome.result.contact.points = {};
+      std::vector<Eigen::Vector3d>().swap(outcome.result.contact.points);
   } catch (...) {
     outcome.error = std::current_exception();
   }

@@ -210,16 +210,31 @@ bool isKitFile(const std::filesystem::path& p) {
 
 std::vector<std::filesystem::path> writeKit(const std::vector<KitVector>& kit,
                                             const std::filesystem::path& dir) {
-  std::filesystem::create_directories(dir);
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.is_regular_file() && isKitFile(entry.path()))
-      std::filesystem::remove(entry.path());
+  namespace fs = std::filesystem;
+  fs::create_directories(dir);
+  // Every vector is written into a staging folder beside its target first: a write that fails
+  // (a full disk) leaves the earlier kit as it was and no partial files.
+  const fs::path staging = dir / ".recode-kit-staging";
+  fs::remove_all(staging);
+  fs::create_directory(staging);
+  try {
+    for (const KitVector& v : kit)
+      raster::writeGolden(staging / (v.name + ".json"), v.golden, raster::GoldenLayout::Rows);
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove_all(staging, ignored);
+    throw;
   }
-  std::vector<std::filesystem::path> written;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.is_regular_file() && isKitFile(entry.path()))
+      fs::remove(entry.path());
+  }
+  std::vector<fs::path> written;
   for (const KitVector& v : kit) {
     written.push_back(dir / (v.name + ".json"));
-    raster::writeGolden(written.back(), v.golden, raster::GoldenLayout::Rows);
+    fs::rename(staging / (v.name + ".json"), written.back());
   }
+  fs::remove(staging);
   return written;
 }
 

@@ -15,6 +15,7 @@
 // instead recomputed per frame as the world-axis box of its children's OBB corners.
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -95,7 +96,10 @@ struct LeafPair {
 
 // Descends two trees from their roots while node boxes overlap; appends the leaf pairs whose
 // boxes overlap to `out`, sorted by (leafA, leafB). Returns the number of node pairs whose
-// boxes were tested (the roots' pair included).
-long long descendPair(const ObjectTree& a, const ObjectTree& b, std::vector<LeafPair>& out);
+// boxes were tested (the roots' pair included). It stops once it has appended `maxLeafPairs`
+// pairs (then unsorted): two trees of many blocks can overlap in billions of leaf pairs, and the
+// caller refuses more than its limit anyway.
+long long descendPair(const ObjectTree& a, const ObjectTree& b, std::vector<LeafPair>& out,
+                      std::size_t maxLeafPairs = std::numeric_limits<std::size_t>::max());
 
 }  // namespace recode::core

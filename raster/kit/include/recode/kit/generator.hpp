@@ -44,7 +44,8 @@ struct KitVector {
 
 // Writes each vector as DIR/<name>.json (GoldenLayout::Rows), creating DIR, after removing the
 // files of an earlier kit there (<family>_<digits>.json of the families above; nothing else).
-// Returns the paths written.
+// The vectors are written into DIR/.recode-kit-staging and moved in once all are written, so a
+// failed write leaves the earlier kit untouched. Returns the paths written.
 std::vector<std::filesystem::path> writeKit(const std::vector<KitVector>& kit,
                                             const std::filesystem::path& dir);
 
