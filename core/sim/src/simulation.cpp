@@ -188,8 +188,7 @@ FrameReport Simulation::runFrame(int frame) {
     const ObjectTree& b = objects_[static_cast<std::size_t>(ib)];
     leafPairs.clear();
     // One more than the limit allows is enough to know the frame is over it.
-    const auto room =
-        static_cast<std::size_t>(options_.maxPairTestsPerFrame) - tasks.size() + 1;
+    const auto room = static_cast<std::size_t>(options_.maxPairTestsPerFrame) - tasks.size() + 1;
     report.boxTests += descendPair(a, b, leafPairs, room);
     if (static_cast<long long>(tasks.size() + leafPairs.size()) > options_.maxPairTestsPerFrame)
       throw std::invalid_argument(
