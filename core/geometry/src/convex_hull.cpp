@@ -1,6 +1,6 @@
 // The convex hull's entry points: the checks that the points span a volume (each degenerate
 // case named in the message), the two exact steps (convex_hull_quick.cpp, then
-// convex_hull_facets.cpp), the renumbering onto the extreme points, and the block validation.
+// convex_hull_facets.cpp) and the renumbering onto the extreme points.
 
 #include "recode/geometry/convex_hull.hpp"
 
@@ -12,7 +12,6 @@
 #include "convex_hull_detail.hpp"
 #include "format.hpp"
 #include "recode/geometry/exact_predicates.hpp"
-#include "recode/geometry/validate.hpp"
 
 namespace recode::core {
 namespace {
@@ -90,19 +89,6 @@ ConvexHull convexHull(std::span<const Eigen::Vector3d> points, std::string_view 
   for (const Triangle& t : triangles)
     hull.mesh.triangles.push_back({newIndex[t[0]], newIndex[t[1]], newIndex[t[2]]});
   return hull;
-}
-
-TriangleMesh convexHullBlock(std::span<const Eigen::Vector3d> points,
-                             std::string_view sourceName) {
-  ConvexHull hull = convexHull(points, sourceName);
-  const ValidationReport report = checkConvexBlock(hull.mesh, 1e-9, 1);
-  if (!report.ok()) {
-    fail(sourceName, "the convex hull of its " + pointsText(points.size()) +
-                         " is not a valid convex block (" + report.problems.front().message +
-                         "); the points are too close to one plane, line or point for the "
-                         "validation tolerance");
-  }
-  return std::move(hull.mesh);
 }
 
 }  // namespace recode::core

@@ -172,11 +172,33 @@ TEST_CASE("the hull is exact; a block also needs its triangles above the toleran
         hull.mesh.vertices.end());
   CHECK(convexHullBlock(points, "prism").vertexCount() == 7);
 
-  points.emplace_back(2 - 1e-12, -1e-12, 0);
-  CHECK(convexHull(points, "prism").mesh.vertexCount() == 8);
-  const std::string message = meshErrorMessage([&] { (void)convexHullBlock(points, "prism"); });
-  CHECK_THAT(message, Catch::StartsWith("prism: the convex hull of its 8 points is not a valid "
-                                        "convex block (triangle "));
+  const Eigen::Vector3d near(2 - 1e-12, -1e-12, 0);
+  points.push_back(near);
+  const ConvexHull exact = convexHull(points, "prism");
+  CHECK(exact.mesh.vertexCount() == 8);
+  CHECK_FALSE(checkConvexBlock(exact.mesh).ok());  // a triangle 1e-12 thin
+  // The block drops one of the two close corners, and only that.
+  const TriangleMesh block = convexHullBlock(points, "prism");
+  CHECK(checkConvexBlock(block).ok());
+  CHECK(block.vertexCount() == 7);
+  const auto has = [&](const Eigen::Vector3d& q) {
+    return std::find(block.vertices.begin(), block.vertices.end(), q) != block.vertices.end();
+  };
+  CHECK(has(raised));
+  CHECK(has(near) != has(Eigen::Vector3d(2, 0, 0)));
+}
+
+TEST_CASE("a hull too thin for the tolerance is refused with the rule", "[hull]") {
+  // A unit square slab 1e-12 thick: exact, it spans a volume; as a block it cannot.
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 8; ++i)
+    points.emplace_back(i & 1, (i >> 1) & 1, (i & 4) ? 1e-12 : 0.0);
+  CHECK(convexHull(points, "slab.obj").mesh.vertexCount() == 8);
+  const std::string message = meshErrorMessage([&] { (void)convexHullBlock(points, "slab.obj"); });
+  CHECK_THAT(message, Catch::StartsWith("slab.obj: the convex hull of its 8 points is not a "
+                                        "valid convex block ("));
+  CHECK_THAT(message, Catch::EndsWith("); its points are too close to one plane, line or point "
+                                      "for the validation tolerance"));
 }
 
 TEST_CASE("degenerate point sets are refused with the rule", "[hull]") {

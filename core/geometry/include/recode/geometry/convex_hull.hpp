@@ -32,10 +32,14 @@ struct ConvexHull {
 [[nodiscard]] ConvexHull convexHull(std::span<const Eigen::Vector3d> points,
                                     std::string_view sourceName);
 
-// The hull as a convex block: convexHull, then validateConvexBlock with the default tolerance,
-// so the result is one the pair algorithm can draw. A hull that is exact but too thin for the
-// tolerance (points nearly in one plane, corners closer than the tolerance) throws
-// MeshError("<sourceName>: the convex hull of its N points is not a valid convex block: ...").
+// The hull as a convex block, one the pair algorithm can draw: convexHull, then, while a
+// triangle's height over its longest edge is within the validation tolerance (1e-9 times the
+// hull's bounding-box diagonal), the corner opposite that edge is dropped (it lies within the
+// tolerance of the hull of the other points) and the hull made again; then
+// validateConvexBlock. Points that span no volume at that tolerance (nearly in one plane)
+// throw MeshError("<sourceName>: the convex hull of its N points is not a valid convex block
+// (<problem>); its points are too close to one plane, line or point for the validation
+// tolerance"); the degenerate sets of convexHull throw its errors.
 [[nodiscard]] TriangleMesh convexHullBlock(std::span<const Eigen::Vector3d> points,
                                            std::string_view sourceName);
 
