@@ -46,8 +46,8 @@ void checkSpansVolume(std::span<const Eigen::Vector3d> points, std::string_view 
   if (n > std::numeric_limits<VertexIndex>::max())
     fail(sourceName, "convex hull: " + pointsText(n) + ", more than the vertex index allows");
   const Eigen::Vector3d& a = points[0];
-  const auto other = std::find_if(points.begin(), points.end(),
-                                  [&](const Eigen::Vector3d& q) { return q != a; });
+  const auto other =
+      std::find_if(points.begin(), points.end(), [&](const Eigen::Vector3d& q) { return q != a; });
   if (other == points.end())
     fail(sourceName, "convex hull: all " + pointsText(n) + " are the same point " +
                          detail::formatPoint(a) + " (" + kRule + ")");

@@ -37,8 +37,7 @@ int thinCorner(const TriangleMesh& mesh, const Triangle& t, double tol) {
     }
   }
   const Eigen::Vector3d& a = mesh.vertices[t[0]];
-  const double twiceArea =
-      (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+  const double twiceArea = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
   const double height = twiceArea / longestLength;
   return height <= tol ? (longest + 2) % 3 : -1;
 }
@@ -49,8 +48,7 @@ std::string pointsText(std::size_t n) {
 
 }  // namespace
 
-TriangleMesh convexHullBlock(std::span<const Eigen::Vector3d> points,
-                             std::string_view sourceName) {
+TriangleMesh convexHullBlock(std::span<const Eigen::Vector3d> points, std::string_view sourceName) {
   const std::string prefix = std::string(sourceName) + ": the convex hull of its " +
                              pointsText(points.size()) + " is not a valid convex block (";
   const std::string rule =

@@ -113,13 +113,11 @@ class QuickHull {
     };
     const VertexIndex b = firstExact([&](VertexIndex i) { return (p(i) - p(a)).squaredNorm(); },
                                      [&](VertexIndex i) { return p(i) != p(a); });
-    const VertexIndex c = firstExact(
-        [&](VertexIndex i) { return (p(b) - p(a)).cross(p(i) - p(a)).squaredNorm(); },
-        [&](VertexIndex i) { return !collinear(p(a), p(b), p(i)); });
+    const VertexIndex c =
+        firstExact([&](VertexIndex i) { return (p(b) - p(a)).cross(p(i) - p(a)).squaredNorm(); },
+                   [&](VertexIndex i) { return !collinear(p(a), p(b), p(i)); });
     const VertexIndex d = firstExact(
-        [&](VertexIndex i) {
-          return std::abs((p(b) - p(a)).cross(p(c) - p(a)).dot(p(i) - p(a)));
-        },
+        [&](VertexIndex i) { return std::abs((p(b) - p(a)).cross(p(c) - p(a)).dot(p(i) - p(a))); },
         [&](VertexIndex i) { return orient3d(p(a), p(b), p(c), p(i)) != 0; });
     return {a, b, c, d};
   }

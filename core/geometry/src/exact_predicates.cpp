@@ -172,8 +172,7 @@ int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
   const double adxcdy = adx * cdy;
   const double adxbdy = adx * bdy;
   const double bdxady = bdx * ady;
-  const double det =
-      adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
   const double permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * std::abs(adz) +
                            (std::abs(cdxady) + std::abs(adxcdy)) * std::abs(bdz) +
                            (std::abs(adxbdy) + std::abs(bdxady)) * std::abs(cdz);

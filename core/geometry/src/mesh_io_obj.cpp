@@ -202,8 +202,8 @@ ParsedObj loadObj(const fs::path& path, const std::string& text) {
   std::string warnings;
   std::string errors;
   std::istringstream stream(text);
-  const bool ok = tinyobj::LoadObj(&attrib, &parsed.shapes, &materials, &warnings, &errors,
-                                   &stream, /*readMatFn=*/nullptr, /*triangulate=*/false,
+  const bool ok = tinyobj::LoadObj(&attrib, &parsed.shapes, &materials, &warnings, &errors, &stream,
+                                   /*readMatFn=*/nullptr, /*triangulate=*/false,
                                    /*default_vcols_fallback=*/false);
   if (!ok || !errors.empty()) {
     failFromTinyObj(path, errors);
@@ -263,8 +263,7 @@ std::vector<MeshGroup> parseObjGroups(const fs::path& path, const std::string& t
       names.push_back(name);
       faces.emplace_back();
     }
-    appendShapeFaces(path, shape, parsed.summary.faceSizes, positions.size(), faceCount,
-                     faces[g]);
+    appendShapeFaces(path, shape, parsed.summary.faceSizes, positions.size(), faceCount, faces[g]);
   }
   checkFaceCount(path, faceCount, parsed.summary);
 

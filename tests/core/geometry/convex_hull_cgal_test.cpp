@@ -110,83 +110,98 @@ void runFamily(const std::string& name, const Generator& make, int sets, bool ex
   }
   // Each family has points that are not extreme, so dropping them is tested too.
   CHECK(extremeTotal < pointTotal);
-  INFO(name << ": " << extremeTotal << " extreme points of " << pointTotal
-             << ", blocks dropped " << dropped);
+  INFO(name << ": " << extremeTotal << " extreme points of " << pointTotal << ", blocks dropped "
+            << dropped);
   CHECK((dropped > 0) == expectDrops);
 }
 
 TEST_CASE("hull equals CGAL's: uniform points in a box", "[hull][cgal]") {
-  runFamily("uniform", [](std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(-3.0, 5.0);
-    std::vector<Eigen::Vector3d> points(4 + rng() % 300);
-    for (auto& p : points)
-      p = {u(rng), u(rng), 0.5 * u(rng)};
-    return points;
-  }, 40, false);
+  runFamily(
+      "uniform",
+      [](std::mt19937_64& rng) {
+        std::uniform_real_distribution<double> u(-3.0, 5.0);
+        std::vector<Eigen::Vector3d> points(4 + rng() % 300);
+        for (auto& p : points)
+          p = {u(rng), u(rng), 0.5 * u(rng)};
+        return points;
+      },
+      40, false);
 }
 
 TEST_CASE("hull equals CGAL's: points on a sphere", "[hull][cgal]") {
-  runFamily("sphere", [](std::mt19937_64& rng) {
-    std::normal_distribution<double> g;
-    std::vector<Eigen::Vector3d> points(20 + rng() % 400);
-    for (auto& p : points)
-      p = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized() * 2.5;
-    points.push_back(Eigen::Vector3d::Zero());  // the centre: never extreme
-    return points;
-  }, 40, false);
+  runFamily(
+      "sphere",
+      [](std::mt19937_64& rng) {
+        std::normal_distribution<double> g;
+        std::vector<Eigen::Vector3d> points(20 + rng() % 400);
+        for (auto& p : points)
+          p = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized() * 2.5;
+        points.push_back(Eigen::Vector3d::Zero());  // the centre: never extreme
+        return points;
+      },
+      40, false);
 }
 
 TEST_CASE("hull equals CGAL's: grids with many coplanar points", "[hull][cgal]") {
-  runFamily("grid", [](std::mt19937_64& rng) {
-    // A random subset of a small grid, spacing 0.1 (not exact in binary, but equal indices give
-    // equal coordinates, so whole planes and lines of points are exactly coplanar).
-    std::vector<Eigen::Vector3d> points;
-    const int side = 3 + static_cast<int>(rng() % 5);
-    for (int x = 0; x < side; ++x)
-      for (int y = 0; y < side; ++y)
-        for (int z = 0; z < side; ++z)
-          if (rng() % 3 != 0 || (x + y + z) % 5 == 0)
-            points.emplace_back(0.1 * x, 0.1 * y, 0.1 * z);
-    return points;
-  }, 40, false);
+  runFamily(
+      "grid",
+      [](std::mt19937_64& rng) {
+        // A random subset of a small grid, spacing 0.1 (not exact in binary, but equal indices give
+        // equal coordinates, so whole planes and lines of points are exactly coplanar).
+        std::vector<Eigen::Vector3d> points;
+        const int side = 3 + static_cast<int>(rng() % 5);
+        for (int x = 0; x < side; ++x)
+          for (int y = 0; y < side; ++y)
+            for (int z = 0; z < side; ++z)
+              if (rng() % 3 != 0 || (x + y + z) % 5 == 0)
+                points.emplace_back(0.1 * x, 0.1 * y, 0.1 * z);
+        return points;
+      },
+      40, false);
 }
 
 TEST_CASE("hull equals CGAL's: rotated grids, planes broken by rounding", "[hull][cgal]") {
-  runFamily("rotated grid", [](std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> angle(0.0, 3.0);
-    const Eigen::Matrix3d r = (Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitZ()) *
-                               Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitX()))
-                                  .toRotationMatrix();
-    std::vector<Eigen::Vector3d> points;
-    for (int x = 0; x < 5; ++x)
-      for (int y = 0; y < 4; ++y)
-        for (int z = 0; z < 4; ++z)
-          points.push_back(r * Eigen::Vector3d(x, y, z));
-    return points;
-  }, 30, true);
+  runFamily(
+      "rotated grid",
+      [](std::mt19937_64& rng) {
+        std::uniform_real_distribution<double> angle(0.0, 3.0);
+        const Eigen::Matrix3d r = (Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitZ()) *
+                                   Eigen::AngleAxisd(angle(rng), Eigen::Vector3d::UnitX()))
+                                      .toRotationMatrix();
+        std::vector<Eigen::Vector3d> points;
+        for (int x = 0; x < 5; ++x)
+          for (int y = 0; y < 4; ++y)
+            for (int z = 0; z < 4; ++z)
+              points.push_back(r * Eigen::Vector3d(x, y, z));
+        return points;
+      },
+      30, true);
 }
 
 TEST_CASE("hull equals CGAL's: near-duplicates and points a hair off faces", "[hull][cgal]") {
-  runFamily("near-duplicates", [](std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    std::uniform_int_distribution<int> ulps(-2, 2);
-    std::vector<Eigen::Vector3d> points;
-    for (int i = 0; i < 40; ++i) {
-      const Eigen::Vector3d base(u(rng), u(rng), u(rng));
-      points.push_back(base);
-      // Copies a few units in the last place away, and exact repeats.
-      for (int k = 0; k < 3; ++k) {
-        Eigen::Vector3d q = base;
-        for (int axis = 0; axis < 3; ++axis) {
-          for (int step = ulps(rng); step != 0; step += step > 0 ? -1 : 1)
-            q[axis] = std::nextafter(q[axis], step > 0 ? 2.0 : -2.0);
+  runFamily(
+      "near-duplicates",
+      [](std::mt19937_64& rng) {
+        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        std::uniform_int_distribution<int> ulps(-2, 2);
+        std::vector<Eigen::Vector3d> points;
+        for (int i = 0; i < 40; ++i) {
+          const Eigen::Vector3d base(u(rng), u(rng), u(rng));
+          points.push_back(base);
+          // Copies a few units in the last place away, and exact repeats.
+          for (int k = 0; k < 3; ++k) {
+            Eigen::Vector3d q = base;
+            for (int axis = 0; axis < 3; ++axis) {
+              for (int step = ulps(rng); step != 0; step += step > 0 ? -1 : 1)
+                q[axis] = std::nextafter(q[axis], step > 0 ? 2.0 : -2.0);
+            }
+            points.push_back(q);
+          }
+          points.push_back(base);
         }
-        points.push_back(q);
-      }
-      points.push_back(base);
-    }
-    return points;
-  }, 30, true);
+        return points;
+      },
+      30, true);
 }
 
 }  // namespace

@@ -37,8 +37,8 @@ int orient3dInteger(const Int3& a, const Int3& b, const Int3& c, const Int3& d) 
   const I adx = a[0] - d[0], ady = a[1] - d[1], adz = a[2] - d[2];
   const I bdx = b[0] - d[0], bdy = b[1] - d[1], bdz = b[2] - d[2];
   const I cdx = c[0] - d[0], cdy = c[1] - d[1], cdz = c[2] - d[2];
-  const I det = adx * (bdy * cdz - bdz * cdy) - ady * (bdx * cdz - bdz * cdx) +
-                adz * (bdx * cdy - bdy * cdx);
+  const I det =
+      adx * (bdy * cdz - bdz * cdy) - ady * (bdx * cdz - bdz * cdx) + adz * (bdx * cdy - bdy * cdx);
   return (det > 0) - (det < 0);
 }
 
@@ -123,8 +123,7 @@ TEST_CASE("the hull of a cube keeps its 8 corners and drops points inside, on fa
   CHECK(signedVolume(hull.mesh) == 8.0);
 }
 
-TEST_CASE("the hull of a grid is its 8 corners, however many points lie on its faces",
-          "[hull]") {
+TEST_CASE("the hull of a grid is its 8 corners, however many points lie on its faces", "[hull]") {
   std::vector<Eigen::Vector3d> points;
   for (int x = 0; x <= 6; ++x)
     for (int y = 0; y <= 4; ++y)
@@ -161,8 +160,8 @@ TEST_CASE("the hull is exact; a block also needs its triangles above the toleran
   // A prism, a point one unit in the last place above the middle of its top face (a corner of
   // the exact hull; its nearly flat triangles make a valid block), and a second corner 1e-12
   // from (2, 0, 0) (also a corner, but its edge to (2, 0, 0) is far below the tolerance).
-  std::vector<Eigen::Vector3d> points{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 1}, {2, 0, 1},
-                                      {0, 2, 1}};
+  std::vector<Eigen::Vector3d> points{{0, 0, 0}, {2, 0, 0}, {0, 2, 0},
+                                      {0, 0, 1}, {2, 0, 1}, {0, 2, 1}};
   const Eigen::Vector3d raised(0.5, 0.5, std::nextafter(1.0, 2.0));
   points.push_back(raised);
   const ConvexHull hull = convexHull(points, "prism");
