@@ -41,7 +41,8 @@ ConvexBlockPtr ConvexBlock::fromFile(const std::filesystem::path& path) {
 ConvexBlockPtr ConvexBlock::fromHull(std::span<const Eigen::Vector3d> points, std::string name) {
   // convexHullBlock has validated it; fromMesh validates again, which costs little next to the
   // hull and keeps one way in.
-  return fromMesh(core::convexHullBlock(points, name), std::move(name));
+  core::TriangleMesh hull = core::convexHullBlock(points, name);  // before name is moved
+  return fromMesh(std::move(hull), std::move(name));
 }
 
 ConvexBlockPtr ConvexBlock::fromFileHull(const std::filesystem::path& path) {
