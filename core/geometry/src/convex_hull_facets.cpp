@@ -38,6 +38,7 @@ std::vector<Triangle> cornerTriangulation(std::span<const Eigen::Vector3d> point
                                           const std::vector<Triangle>& triangles) {
   const auto p = [&](VertexIndex i) -> const Eigen::Vector3d& { return points[i]; };
   std::unordered_map<std::uint64_t, std::size_t> edgeTriangle;
+  edgeTriangle.reserve(3 * triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (std::size_t i = 0; i < 3; ++i)
       edgeTriangle[edgeKey(triangles[t][i], triangles[t][(i + 1) % 3])] = t;
@@ -62,20 +63,32 @@ std::vector<Triangle> cornerTriangulation(std::span<const Eigen::Vector3d> point
     }
   }
 
-  // Each face's boundary as "next vertex after u" (a convex polygon passes each vertex once).
+  // A face of one triangle (the usual case on curved surfaces) is kept as it is: its three
+  // vertices are not collinear, so all are corners.
+  std::vector<std::size_t> faceSize(triangles.size(), 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    ++faceSize[faces.find(t)];
+  std::vector<Triangle> result;
+  result.reserve(triangles.size());
+  // Each larger face's boundary as "next vertex after u" (a convex polygon passes each vertex
+  // once).
   std::unordered_map<std::size_t, std::unordered_map<VertexIndex, VertexIndex>> boundary;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const std::size_t face = faces.find(t);
+    if (faceSize[face] == 1) {
+      result.push_back(triangles[t]);
+      continue;
+    }
     for (std::size_t i = 0; i < 3; ++i) {
-      if (faces.find(across(t, i)) != faces.find(t))
-        boundary[faces.find(t)][triangles[t][i]] = triangles[t][(i + 1) % 3];
+      if (faces.find(across(t, i)) != face)
+        boundary[face][triangles[t][i]] = triangles[t][(i + 1) % 3];
     }
   }
 
-  std::vector<Triangle> result;
   std::vector<VertexIndex> loop;
   std::vector<VertexIndex> corners;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
-    if (faces.find(t) != t)
+    if (faces.find(t) != t || faceSize[t] == 1)
       continue;
     const auto& next = boundary.at(t);
     loop.clear();

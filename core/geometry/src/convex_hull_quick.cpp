@@ -33,6 +33,7 @@ class QuickHull {
   explicit QuickHull(std::span<const Eigen::Vector3d> points) : points_(points) {}
 
   std::vector<Triangle> run() {
+    edgeFace_.reserve(6 * points_.size());  // at most 2n - 4 faces alive, 3 edges each
     start();
     while (!pending_.empty()) {
       const std::size_t f = pending_.back();
