@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "recode/geometry/convex_hull.hpp"
 #include "recode/geometry/mesh_io.hpp"
 #include "recode/geometry/validate.hpp"
 #include "recode/scene/scene.hpp"
@@ -27,7 +28,25 @@ ConvexBlockPtr ConvexBlock::fromArrays(std::span<const Eigen::Vector3d> vertices
 
 ConvexBlockPtr ConvexBlock::fromFile(const std::filesystem::path& path) {
   // Named by the path, as a scene's mesh file is (core/scene/src/scene_shapes.cpp).
-  return fromMesh(core::readMesh(path), path.string());
+  core::TriangleMesh mesh = core::readMesh(path);
+  try {
+    return fromMesh(std::move(mesh), path.string());
+  } catch (const core::MeshError& e) {
+    throw core::MeshError(std::string(e.what()) +
+                          " (to use the convex hull of its vertices instead, use "
+                          "ConvexBlock::fromFileHull)");
+  }
+}
+
+ConvexBlockPtr ConvexBlock::fromHull(std::span<const Eigen::Vector3d> points, std::string name) {
+  // convexHullBlock has validated it; fromMesh validates again, which costs little next to the
+  // hull and keeps one way in.
+  core::TriangleMesh hull = core::convexHullBlock(points, name);  // before name is moved
+  return fromMesh(std::move(hull), std::move(name));
+}
+
+ConvexBlockPtr ConvexBlock::fromFileHull(const std::filesystem::path& path) {
+  return fromHull(core::readMesh(path).vertices, path.string());
 }
 
 namespace {
@@ -62,6 +81,18 @@ CollisionGeometryPtr CollisionGeometry::compound(std::vector<BlockPart> parts, s
     root.children.push_back(leafOf(part));
   core::ObjectTree tree(root);
   return CollisionGeometryPtr(new CollisionGeometry(std::move(parts), std::move(tree)));
+}
+
+CollisionGeometryPtr CollisionGeometry::fromObjGroups(const std::filesystem::path& path,
+                                                      bool hull) {
+  std::vector<BlockPart> parts;
+  for (core::MeshGroup& group : core::readObjGroups(path)) {
+    std::string name = path.string() + ": group '" + group.name + "'";
+    parts.push_back({hull ? ConvexBlock::fromHull(group.mesh.vertices, std::move(name))
+                          : ConvexBlock::fromMesh(std::move(group.mesh), std::move(name)),
+                     Eigen::Isometry3d::Identity()});
+  }
+  return compound(std::move(parts), path.string());
 }
 
 CollisionGeometry::CollisionGeometry(std::vector<BlockPart> parts, core::ObjectTree tree)

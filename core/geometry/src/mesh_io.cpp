@@ -72,6 +72,13 @@ TriangleMesh readObj(const std::filesystem::path& path) {
   return detail::parseObj(path, readWholeFile(path));
 }
 
+std::vector<MeshGroup> readObjGroups(const std::filesystem::path& path) {
+  if (lowercaseExtension(path) != ".obj") {
+    fail(path, "only an OBJ file has groups (\"parts_from_groups\" needs a .obj file)");
+  }
+  return detail::parseObjGroups(path, readWholeFile(path));
+}
+
 TriangleMesh readOff(const std::filesystem::path& path) {
   return detail::parseOff(path, readWholeFile(path));
 }

@@ -157,73 +157,142 @@ void crossCheckVertices(const fs::path& path, const tinyobj::attrib_t& attrib,
   }
 }
 
-// Appends the fan triangulation of every face of every shape to triangles, walking
+// Appends the fan triangulation of every face of one shape to triangles, walking
 // tinyobjloader's indices with the line check's face sizes (its own counts wrap at 256);
-// returns the number of faces, which must match the line check's count.
-std::size_t appendShapeFaces(const fs::path& path, const std::vector<tinyobj::shape_t>& shapes,
-                             const std::vector<std::size_t>& faceSizes, std::size_t vertexCount,
-                             std::vector<Triangle>& triangles) {
-  std::size_t faceCount = 0;
+// faceCount counts the faces of the file so far and must stay within the line check's count.
+void appendShapeFaces(const fs::path& path, const tinyobj::shape_t& shape,
+                      const std::vector<std::size_t>& faceSizes, std::size_t vertexCount,
+                      std::size_t& faceCount, std::vector<Triangle>& triangles) {
   std::vector<VertexIndex> polygon;
-  for (const tinyobj::shape_t& shape : shapes) {
-    std::size_t offset = 0;
-    for (const unsigned int wrappedSize : shape.mesh.num_face_vertices) {
-      if (faceCount >= faceSizes.size() || faceSizes[faceCount] % 256 != wrappedSize) {
-        fail(path, "internal error: tinyobjloader's face " + std::to_string(faceCount + 1) +
-                       " does not match the line check's");
-      }
-      const std::size_t size = faceSizes[faceCount];
-      if (offset + size > shape.mesh.indices.size()) {
-        fail(path, "internal error: tinyobjloader returned too few face indices");
-      }
-      polygon.clear();
-      for (std::size_t k = 0; k < size; ++k) {
-        const int index = shape.mesh.indices[offset + k].vertex_index;
-        if (index < 0 || static_cast<std::size_t>(index) >= vertexCount) {
-          fail(path, "internal error: tinyobjloader returned " + outOfRange(index, vertexCount));
-        }
-        polygon.push_back(static_cast<VertexIndex>(index));
-      }
-      offset += size;
-      appendFan(triangles, polygon);
-      ++faceCount;
+  std::size_t offset = 0;
+  for (const unsigned int wrappedSize : shape.mesh.num_face_vertices) {
+    if (faceCount >= faceSizes.size() || faceSizes[faceCount] % 256 != wrappedSize) {
+      fail(path, "internal error: tinyobjloader's face " + std::to_string(faceCount + 1) +
+                     " does not match the line check's");
     }
+    const std::size_t size = faceSizes[faceCount];
+    if (offset + size > shape.mesh.indices.size()) {
+      fail(path, "internal error: tinyobjloader returned too few face indices");
+    }
+    polygon.clear();
+    for (std::size_t k = 0; k < size; ++k) {
+      const int index = shape.mesh.indices[offset + k].vertex_index;
+      if (index < 0 || static_cast<std::size_t>(index) >= vertexCount) {
+        fail(path, "internal error: tinyobjloader returned " + outOfRange(index, vertexCount));
+      }
+      polygon.push_back(static_cast<VertexIndex>(index));
+    }
+    offset += size;
+    appendFan(triangles, polygon);
+    ++faceCount;
   }
-  return faceCount;
 }
 
-}  // namespace
-
-TriangleMesh parseObj(const fs::path& path, const std::string& text) {
-  ObjLineSummary summary = checkObjLines(path, text);
-
-  tinyobj::attrib_t attrib;
+// The file as tinyobjloader's shapes (one per `o` or `g` record that is followed by faces),
+// with the line check's positions and face sizes.
+struct ParsedObj {
+  ObjLineSummary summary;
   std::vector<tinyobj::shape_t> shapes;
+};
+
+ParsedObj loadObj(const fs::path& path, const std::string& text) {
+  ParsedObj parsed{checkObjLines(path, text), {}};
+  tinyobj::attrib_t attrib;
   std::vector<tinyobj::material_t> materials;
   std::string warnings;
   std::string errors;
   std::istringstream stream(text);
-  const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warnings, &errors, &stream,
+  const bool ok = tinyobj::LoadObj(&attrib, &parsed.shapes, &materials, &warnings, &errors, &stream,
                                    /*readMatFn=*/nullptr, /*triangulate=*/false,
                                    /*default_vcols_fallback=*/false);
   if (!ok || !errors.empty()) {
     failFromTinyObj(path, errors);
   }
+  crossCheckVertices(path, attrib, parsed.summary.positions);
+  return parsed;
+}
 
-  crossCheckVertices(path, attrib, summary.positions);
-  TriangleMesh mesh;
-  mesh.vertices = std::move(summary.positions);
-  const std::size_t faceCount =
-      appendShapeFaces(path, shapes, summary.faceSizes, mesh.vertices.size(), mesh.triangles);
+void checkFaceCount(const fs::path& path, std::size_t faceCount, const ObjLineSummary& summary) {
   if (faceCount != summary.faceSizes.size()) {
     fail(path, "internal error: tinyobjloader returned " + std::to_string(faceCount) +
                    " faces where the line check counted " +
                    std::to_string(summary.faceSizes.size()));
   }
+}
+
+// A group's name as the file gives it, without surrounding blanks (tinyobjloader keeps the
+// rest of an `o` line as is).
+std::string groupName(const std::string& raw) {
+  const auto first = std::find_if_not(raw.begin(), raw.end(), [](char c) { return isBlank(c); });
+  const auto last = std::find_if_not(raw.rbegin(), raw.rend(), [](char c) { return isBlank(c); });
+  if (first == raw.end())
+    return "(unnamed)";
+  return std::string(first, last.base());
+}
+
+}  // namespace
+
+TriangleMesh parseObj(const fs::path& path, const std::string& text) {
+  ParsedObj parsed = loadObj(path, text);
+  TriangleMesh mesh;
+  mesh.vertices = std::move(parsed.summary.positions);
+  std::size_t faceCount = 0;
+  for (const tinyobj::shape_t& shape : parsed.shapes) {
+    appendShapeFaces(path, shape, parsed.summary.faceSizes, mesh.vertices.size(), faceCount,
+                     mesh.triangles);
+  }
+  checkFaceCount(path, faceCount, parsed.summary);
   if (mesh.triangles.empty()) {
     fail(path, "the file has no faces (empty mesh)");
   }
   return mesh;
+}
+
+std::vector<MeshGroup> parseObjGroups(const fs::path& path, const std::string& text) {
+  const ParsedObj parsed = loadObj(path, text);
+  const std::vector<Eigen::Vector3d>& positions = parsed.summary.positions;
+  // The faces of each name, in the order names first appear (a name used twice is one group).
+  std::vector<std::string> names;
+  std::vector<std::vector<Triangle>> faces;
+  std::size_t faceCount = 0;
+  for (const tinyobj::shape_t& shape : parsed.shapes) {
+    const std::string name = groupName(shape.name);
+    const auto it = std::find(names.begin(), names.end(), name);
+    const std::size_t g = static_cast<std::size_t>(it - names.begin());
+    if (it == names.end()) {
+      names.push_back(name);
+      faces.emplace_back();
+    }
+    appendShapeFaces(path, shape, parsed.summary.faceSizes, positions.size(), faceCount, faces[g]);
+  }
+  checkFaceCount(path, faceCount, parsed.summary);
+
+  std::vector<MeshGroup> groups;
+  std::vector<VertexIndex> local(positions.size());
+  for (std::size_t g = 0; g < names.size(); ++g) {
+    if (faces[g].empty())
+      continue;
+    // The file's vertices this group's faces use, in file order.
+    MeshGroup group{names[g], {}};
+    std::vector<bool> used(positions.size(), false);
+    for (const Triangle& t : faces[g]) {
+      for (const VertexIndex v : t)
+        used[v] = true;
+    }
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+      if (used[v]) {
+        local[v] = static_cast<VertexIndex>(group.mesh.vertices.size());
+        group.mesh.vertices.push_back(positions[v]);
+      }
+    }
+    for (const Triangle& t : faces[g])
+      group.mesh.triangles.push_back({local[t[0]], local[t[1]], local[t[2]]});
+    groups.push_back(std::move(group));
+  }
+  if (groups.empty()) {
+    fail(path, "the file has no faces (empty mesh)");
+  }
+  return groups;
 }
 
 }  // namespace recode::core::detail

@@ -20,6 +20,7 @@
 
 #include "recode/geometry/mesh.hpp"
 #include "recode/geometry/mesh_error.hpp"
+#include "recode/geometry/mesh_io.hpp"
 
 namespace recode::core::detail {
 
@@ -145,5 +146,6 @@ inline void appendFan(std::vector<Triangle>& triangles, const std::vector<Vertex
 // The two readers, given the file's whole contents; path is for messages only.
 TriangleMesh parseOff(const std::filesystem::path& path, std::string_view text);
 TriangleMesh parseObj(const std::filesystem::path& path, const std::string& text);
+std::vector<MeshGroup> parseObjGroups(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace recode::core::detail

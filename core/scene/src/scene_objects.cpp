@@ -33,12 +33,13 @@ SceneObject ObjectReader::node(const json& v, const std::string& path,
                                const std::string& defaultName, int depth) {
   fields_.requireObject(v, path);
   fields_.requireOnlyKeys(v, path,
-                          {"name", "mesh", "shape", "children", "part", "position", "rotation_deg",
-                           "motion", "keyframes", "joint"});
+                          {"name", "mesh", "hull", "parts_from_groups", "shape", "children", "part",
+                           "position", "rotation_deg", "motion", "keyframes", "joint"});
   if (depth > kMaxDepth)
     fields_.fail(path, "objects nested more than " + std::to_string(kMaxDepth) + " levels deep");
   requireOneGeometry(v, path);
 
+  (void)shapes_.checkMeshOptions(v, path);  // "hull" next to "part" is refused, not ignored
   SceneObject object;
   if (v.contains("part")) {
     const std::string p = childPath(path, "part");
@@ -74,8 +75,21 @@ void ObjectReader::requireOneGeometry(const json& v, const std::string& path) co
 
 void ObjectReader::geometry(const json& v, const std::string& path, int depth,
                             SceneObject& object) {
+  const bool fromGroups = shapes_.checkMeshOptions(v, path);
   if (v.contains("children")) {
     children(v.at("children"), childPath(path, "children"), depth, object);
+    return;
+  }
+  if (fromGroups) {
+    // One child block per OBJ object or group, at the node's own frame.
+    for (auto& [name, mesh] : shapes_.meshGroups(v, path)) {
+      countBlocks(1, path);
+      SceneObject leaf;
+      leaf.name = name;
+      leaf.jsonPath = childPath(childPath(path, "mesh"), name);
+      leaf.localMesh = std::move(mesh);
+      object.children.push_back(std::move(leaf));
+    }
     return;
   }
   countBlocks(1, path);
@@ -113,7 +127,7 @@ SceneObject ObjectReader::part(const std::string& name, const std::string& usePa
   const std::string path = childPath("parts", name);
   const json& v = parts_.definition(name);
   fields_.requireObject(v, path);
-  fields_.requireOnlyKeys(v, path, {"mesh", "shape", "children"},
+  fields_.requireOnlyKeys(v, path, {"mesh", "hull", "parts_from_groups", "shape", "children"},
                           " for a part (a part is geometry only; place it where it is used)");
   const int given = static_cast<int>(v.contains("mesh")) + static_cast<int>(v.contains("shape")) +
                     static_cast<int>(v.contains("children"));

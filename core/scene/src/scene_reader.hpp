@@ -32,11 +32,24 @@ class ShapeReader {
   ShapeReader(const JsonFieldReader& fields, std::filesystem::path baseDir)
       : fields_(fields), baseDir_(std::move(baseDir)) {}
 
-  // The local mesh of a node (or part) `v` at `path` that has "mesh" or "shape".
+  // The local mesh of a node (or part) `v` at `path` that has "mesh" or "shape" (a mesh
+  // hulled when it says "hull": true).
   [[nodiscard]] TriangleMesh leafMesh(const json& v, const std::string& path) const;
+  // Refuses "hull" and "parts_from_groups" on a node without "mesh", or that are not booleans;
+  // returns "parts_from_groups" (false when absent).
+  [[nodiscard]] bool checkMeshOptions(const json& v, const std::string& path) const;
+  // The blocks of a node with "mesh" and "parts_from_groups": true, one per OBJ object or
+  // group (name, block), each validated, or hulled with "hull": true.
+  [[nodiscard]] std::vector<std::pair<std::string, TriangleMesh>> meshGroups(
+      const json& v, const std::string& path) const;
 
  private:
-  [[nodiscard]] TriangleMesh meshFile(const json& v, const std::string& path) const;
+  // The block of a mesh file at `path` (the value of "mesh"), validated or hulled.
+  [[nodiscard]] TriangleMesh meshFile(const json& v, const std::string& path, bool hull) const;
+  // A block from a mesh read from `file`: its vertices within range, then validated (with a
+  // hint to use "hull" when that fails) or replaced by their hull. `what` names it in messages.
+  [[nodiscard]] TriangleMesh meshBlock(TriangleMesh mesh, const std::string& what,
+                                       const std::string& path, bool hull) const;
   // The shape's mesh; *typeName is set to its "type".
   [[nodiscard]] TriangleMesh shape(const json& v, const std::string& path,
                                    std::string* typeName) const;

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "recode/geometry/convex_hull.hpp"
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/mesh_error.hpp"
 #include "recode/geometry/mesh_io.hpp"
@@ -28,6 +29,11 @@ struct ShapeSpec {
   std::string_view type;
   std::initializer_list<std::string_view> keys;  // besides "type"
 };
+
+// Appended when a mesh file is not a valid convex block: the way out for collision meshes that
+// are convex in shape but not clean closed surfaces.
+constexpr const char* kHullHint =
+    " (to use the convex hull of its vertices instead, give \"hull\": true)";
 
 constexpr std::string_view kShapeTypesText = "cone, cylinder, capped_cone, ellipsoid, sphere, box";
 
@@ -132,8 +138,10 @@ TriangleMesh generate(const ShapeFields& f, const json& v, const std::string& pa
 }  // namespace
 
 TriangleMesh ShapeReader::leafMesh(const json& v, const std::string& path) const {
-  if (v.contains("mesh"))
-    return meshFile(v.at("mesh"), childPath(path, "mesh"));
+  if (v.contains("mesh")) {
+    const bool hull = v.contains("hull") && v.at("hull").get<bool>();
+    return meshFile(v.at("mesh"), childPath(path, "mesh"), hull);
+  }
   const std::string p = childPath(path, "shape");
   std::string type;
   TriangleMesh mesh = shape(v.at("shape"), p, &type);
@@ -145,28 +153,80 @@ TriangleMesh ShapeReader::leafMesh(const json& v, const std::string& path) const
   return mesh;
 }
 
+bool ShapeReader::checkMeshOptions(const json& v, const std::string& path) const {
+  bool groups = false;
+  for (const char* key : {"hull", "parts_from_groups"}) {
+    if (!v.contains(key))
+      continue;
+    const std::string p = childPath(path, key);
+    if (!v.contains("mesh"))
+      fields_.fail(p, std::string("\"") + key + "\" applies to a \"mesh\" only");
+    if (!v.at(key).is_boolean())
+      fields_.fail(p, "expected true or false, got " + describeJsonValue(v.at(key)));
+    if (std::string_view(key) == "parts_from_groups")
+      groups = v.at(key).get<bool>();
+  }
+  return groups;
+}
+
 // Relative to the scene file's directory; the mesh reader's and validator's messages are kept.
-// Vertices are held to the scene's coordinate range before validation, whose tolerances
-// overflow for coordinates near 1e300 ("height ... is -nan (tolerance inf)").
-TriangleMesh ShapeReader::meshFile(const json& v, const std::string& path) const {
+TriangleMesh ShapeReader::meshFile(const json& v, const std::string& path, bool hull) const {
   const fs::path file = baseDir_ / fs::path(fields_.nonEmptyString(v, path));
+  TriangleMesh mesh;
   try {
-    TriangleMesh mesh = readMesh(file);
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-      const Eigen::Vector3d& p = mesh.vertices[i];
-      if (p.cwiseAbs().maxCoeff() > kMaxCoordinate) {
-        using recode::json::shortNumber;
-        fields_.fail(path, file.string() + ": vertex " + std::to_string(i) + " (" +
-                               shortNumber(p.x()) + ", " + shortNumber(p.y()) + ", " +
-                               shortNumber(p.z()) +
-                               ") has a coordinate outside -1e+09..1e+09 (world units)");
-      }
-    }
-    validateConvexBlock(mesh, file.string());
-    return mesh;
+    mesh = readMesh(file);
   } catch (const MeshError& e) {
     fields_.fail(path, e.what());
   }
+  return meshBlock(std::move(mesh), file.string(), path, hull);
+}
+
+std::vector<std::pair<std::string, TriangleMesh>> ShapeReader::meshGroups(
+    const json& v, const std::string& path) const {
+  const bool hull = v.contains("hull") && v.at("hull").get<bool>();
+  const std::string p = childPath(path, "mesh");
+  const fs::path file = baseDir_ / fs::path(fields_.nonEmptyString(v.at("mesh"), p));
+  std::vector<MeshGroup> groups;
+  try {
+    groups = readObjGroups(file);
+  } catch (const MeshError& e) {
+    fields_.fail(p, e.what());
+  }
+  std::vector<std::pair<std::string, TriangleMesh>> blocks;
+  for (MeshGroup& group : groups) {
+    TriangleMesh block =
+        meshBlock(std::move(group.mesh), file.string() + ": group '" + group.name + "'", p, hull);
+    blocks.emplace_back(group.name, std::move(block));
+  }
+  return blocks;
+}
+
+// Vertices are held to the scene's coordinate range before validation, whose tolerances
+// overflow for coordinates near 1e300 ("height ... is -nan (tolerance inf)").
+TriangleMesh ShapeReader::meshBlock(TriangleMesh mesh, const std::string& what,
+                                    const std::string& path, bool hull) const {
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Eigen::Vector3d& p = mesh.vertices[i];
+    if (p.cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      using recode::json::shortNumber;
+      fields_.fail(path, what + ": vertex " + std::to_string(i) + " (" + shortNumber(p.x()) + ", " +
+                             shortNumber(p.y()) + ", " + shortNumber(p.z()) +
+                             ") has a coordinate outside -1e+09..1e+09 (world units)");
+    }
+  }
+  if (hull) {
+    try {
+      return convexHullBlock(mesh.vertices, what);
+    } catch (const MeshError& e) {
+      fields_.fail(path, e.what());
+    }
+  }
+  try {
+    validateConvexBlock(mesh, what);
+  } catch (const MeshError& e) {
+    fields_.fail(path, std::string(e.what()) + kHullHint);
+  }
+  return mesh;
 }
 
 TriangleMesh ShapeReader::shape(const json& v, const std::string& path,

@@ -32,8 +32,19 @@ class ConvexBlock {
   [[nodiscard]] static ConvexBlockPtr fromArrays(std::span<const Eigen::Vector3d> vertices,
                                                  std::span<const core::Triangle> triangles,
                                                  std::string name);
-  // An OBJ or OFF file (core::readMesh); its errors are MeshErrors too, named by the path.
+  // An OBJ or OFF file (core::readMesh); its errors are MeshErrors too, named by the path. A
+  // file that reads but is not a valid convex block says so and points to fromFileHull.
   [[nodiscard]] static ConvexBlockPtr fromFile(const std::filesystem::path& path);
+  // The convex hull of the points (core::convexHullBlock: exact, extreme points only, corners
+  // closer than the validation tolerance merged). Bullet's btConvexHullShape and FCL's Convex
+  // from qhull take a point set the same way. Fewer than 4 points, or points all on one point,
+  // line or plane, throw core::MeshError("<name>: convex hull: ...") naming the rule.
+  [[nodiscard]] static ConvexBlockPtr fromHull(std::span<const Eigen::Vector3d> points,
+                                               std::string name);
+  // The convex hull of all the vertices of an OBJ or OFF file (its faces are read and checked
+  // for syntax, not used): for collision meshes that are convex in shape but not a clean closed
+  // surface (an edge used by three triangles, stray faces, holes). Named by the path.
+  [[nodiscard]] static ConvexBlockPtr fromFileHull(const std::filesystem::path& path);
 
   [[nodiscard]] const core::TriangleMesh& mesh() const { return mesh_; }
   [[nodiscard]] const std::string& name() const { return name_; }
@@ -65,6 +76,12 @@ class CollisionGeometry {
   // Throws std::invalid_argument for no parts or a null block.
   [[nodiscard]] static CollisionGeometryPtr compound(std::vector<BlockPart> parts,
                                                      std::string name = "compound");
+  // One block per object or group of an OBJ file (core::readObjGroups), as convex
+  // decompositions (V-HACD, CoACD) write them: `o convex_0`, `o convex_1`, ... Block i is the
+  // i-th group in file order, named "<path>: group '<name>'", each validated (or, with hull,
+  // the convex hull of the group's vertices); a bad group throws core::MeshError with that name.
+  [[nodiscard]] static CollisionGeometryPtr fromObjGroups(const std::filesystem::path& path,
+                                                          bool hull = false);
 
   [[nodiscard]] std::size_t blockCount() const { return parts_.size(); }
   [[nodiscard]] const BlockPart& part(std::size_t i) const { return parts_.at(i); }

@@ -11,6 +11,8 @@
 // to a line, else "<path>: <problem>". docs/geometry.md lists the messages.
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "recode/geometry/mesh.hpp"
 #include "recode/geometry/mesh_error.hpp"
@@ -25,6 +27,19 @@ namespace recode::core {
 // `f` line needs at least three vertex references whose vertex index is a non-zero integer
 // in range (negative indices count back from the last vertex defined so far).
 [[nodiscard]] TriangleMesh readObj(const std::filesystem::path& path);
+
+// One object or group of an OBJ file: its name and the faces under it.
+struct MeshGroup {
+  std::string name;   // the `o` or `g` record's name, "(unnamed)" for faces before any
+  TriangleMesh mesh;  // the file's vertices its faces use (in file order), renumbered
+};
+
+// An OBJ file read as readObj does, split at its `o` and `g` records (convex decompositions
+// such as V-HACD and CoACD write each piece as `o convex_0`, `o convex_1`, ...): one group per
+// distinct name that has faces, in the order the names first appear; faces under a name used
+// twice join its group. A group is not validated. Errors as readObj's, and
+// "<path>: only an OBJ file has groups ..." for another extension.
+[[nodiscard]] std::vector<MeshGroup> readObjGroups(const std::filesystem::path& path);
 
 // OFF: the keyword "OFF" on the first non-blank line (optionally followed by the counts on
 // the same line), then "numVertices numFaces [numEdges]", then one vertex per line (exactly
