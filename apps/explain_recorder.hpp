@@ -35,4 +35,16 @@ class StepRecorder final : public core::PairObserver {
 [[nodiscard]] raster::PixelBuffer<std::uint8_t> blockCoverage(const PairSetup& setup,
                                                               double depthMin, double depthMax);
 
+// Where one block's surface lies along every pixel's ray, drawn on a device of its own with
+// the view of the pair: the nearest front-facing fragment (back faces culled, LEQUAL from a
+// clear to 1) and the farthest back-facing one (front faces culled, GEQUAL from a clear to 0),
+// the very fragments the Amin tests of steps 4 and 5 compare. Pixels without such a face keep
+// the clear value.
+struct FaceDepths {
+  raster::PixelBuffer<std::uint32_t> front;  // kDepthMax where no front face
+  raster::PixelBuffer<std::uint32_t> back;   // 0 where no back face
+};
+[[nodiscard]] FaceDepths faceDepths(const PairSetup& setup, const core::TriangleMesh& mesh,
+                                    double depthMin, double depthMax);
+
 }  // namespace recode::app::explain

@@ -99,6 +99,46 @@ std::string stepTitle(PairStep step) {
   return "?";
 }
 
+std::string originText(PairStep step) {
+  const auto paper = [](std::string_view why) {
+    return "<p class=\"origin\"><span class=\"paper\">from the paper</span>" + std::string(why) +
+           "</p>";
+  };
+  const auto ours = [](std::string_view why) {
+    return "<p class=\"origin\"><span class=\"ours\">added here</span>" + std::string(why) + "</p>";
+  };
+  switch (step) {
+    case PairStep::SetZ:
+      return paper(
+          "RenderSetZ is the paper's first pass; drawing all of A's faces rather than only its "
+          "back faces is ours: the same A<sub>max</sub> on a convex block, and right at "
+          "silhouette pixels where rounding puts a front face a step behind a back face.");
+    case PairStep::TestZ:
+      return paper("RenderTestZ and the count 0-3 in the stencil's low bits are the paper's.");
+    case PairStep::LoadAmin:
+      return ours(
+          "The count alone leaves cases together (1 with 2, 3 with 4, 5 with 6 and 7); the paper "
+          "mentions a second rendering without spelling it out, and this is ours: A's near side "
+          "for the two tests that follow.");
+    case PairStep::TestAminFront:
+    case PairStep::TestAminBack:
+      return ours(
+          "One stencil bit per face of B, written through face culling and a write mask with a "
+          "single reference value: this project's way of separating the cases the count "
+          "leaves together.");
+    case PairStep::ReadStencil:
+      return paper(
+          "One stencil read-back over the MOR decides the verdict, as in the paper; decoding "
+          "the count together with bits 2 and 3 into nine cases is ours.");
+    case PairStep::ContactNear:
+    case PairStep::ContactFar:
+      return ours(
+          "The verdict needs only the stencil; these two depth passes are this project's way "
+          "of measuring the contact region.");
+  }
+  return "";
+}
+
 // A declarative table, one paragraph per step: long, but each case reads on its own.
 std::string stepText(PairStep step) {
   switch (step) {
@@ -131,7 +171,7 @@ std::string stepText(PairStep step) {
              "is cleared to 1 (the farthest value) and A is drawn again with <code>LEQUAL"
              "</code> and depth writes on: each pixel keeps the nearest point of A, "
              "A<sub>min</sub>, where the ray enters A. MOR pixels A does not cover keep 1 "
-             "(black).</p>"
+             "(dark red).</p>"
              "<p>With A's near side in the depth buffer the next two steps can ask where B's "
              "two faces lie relative to it.</p>";
     case PairStep::TestAminFront:

@@ -126,6 +126,17 @@ int main(int argc, char** argv) {
     fail("index.html does not start with <!DOCTYPE html>");
 
   const int width = j.at("width"), height = j.at("height");
+  // The part of the frame the pictures show: within the frame, and holding the MOR.
+  const std::array<int, 4> view = j.at("view");
+  {
+    const std::array<int, 4> m = j.at("mor");
+    const bool inFrame = view[0] >= 0 && view[1] >= 0 && view[2] <= width && view[3] <= height &&
+                         view[0] < view[2] && view[1] < view[3];
+    const bool holdsMor =
+        m[2] <= m[0] || (view[0] <= m[0] && view[1] <= m[1] && m[2] <= view[2] && m[3] <= view[3]);
+    if (!inFrame || !holdsMor)
+      fail("explain.json's view is not a part of the frame holding the MOR");
+  }
   std::map<std::string, Picture> byFile;
   const Json* lastStencil = nullptr;
   const Json* cases = nullptr;
@@ -161,12 +172,17 @@ int main(int argc, char** argv) {
     const bool zoom = p.at("zoom");
     if (zoom)
       continue;
-    if (region != std::array<int, 4>{0, 0, width, height})
-      fail(file + ": a whole-frame picture with region other than the frame");
+    const std::string kind = p.at("kind");
+    if (kind == "overview") {
+      if (region != std::array<int, 4>{0, 0, width, height})
+        fail(file + ": the overview's region is not the whole frame");
+      continue;
+    }
+    if (region != view)
+      fail(file + ": a picture that is not a close-up shows other than the view region");
     if (scale < 3)
       fail(file + ": scale " + std::to_string(scale) +
            " too small to sample pixel centres past the outlines (run with a small resolution)");
-    const std::string kind = p.at("kind");
     if (kind == "stencil")
       lastStencil = &p;
     else if (kind == "cases")
@@ -264,8 +280,8 @@ int main(int argc, char** argv) {
       const Picture& contactPic = byFile.at(contact->at("file"));
       const Rgb highlight = colourOf(palettes.at("interfering"));
       long long highlighted = 0;
-      for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
+      for (int y = view[1]; y < view[3]; ++y)
+        for (int x = view[0]; x < view[2]; ++x)
           highlighted += contactPic.at(x, y) == highlight ? 1 : 0;
       if (highlighted != interferingExpected)
         fail("contact picture: " + std::to_string(highlighted) +
