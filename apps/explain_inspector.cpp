@@ -9,6 +9,7 @@ namespace {
 
 // clang-format off
 constexpr std::string_view kStyle = R"CSS(
+@media screen and (min-width:1100px){body{margin-left:1em;margin-right:530px}}
 #inspector{position:fixed;right:.5em;bottom:.5em;width:500px;max-height:92vh;overflow:auto;
 background:#fff;border:2px solid #333;border-radius:6px;padding:.5em .7em;font-size:.85em;
 box-shadow:0 2px 10px rgba(0,0,0,.3);z-index:10}
@@ -146,7 +147,7 @@ constexpr std::string_view kScript = R"JS(
     let hi = vals.length ? Math.max.apply(null, vals) : D;
     const pad = Math.max((hi - lo) * 0.15, 2);
     lo = Math.max(0, lo - pad); hi = Math.min(D, hi + pad);
-    const W = 470, L = 60, R = 450;
+    const W = 470, L = 80, R = 400;
     const X = function (d) { return L + (R - L) * (d - lo) / Math.max(1, hi - lo); };
     let s = '<svg id="ray-svg" xmlns="http://www.w3.org/2000/svg" width="' + W + '" height="150" ' +
       'viewBox="0 0 ' + W + ' 150" role="img" aria-label="the ray through the pixel">';
@@ -154,12 +155,14 @@ constexpr std::string_view kScript = R"JS(
     s += '<polygon points="22,28 34,34 22,40" fill="#333"/>';
     s += '<line x1="' + L + '" y1="34" x2="' + R + '" y2="34" stroke="#333" stroke-dasharray="4 3"/>';
     s += '<text x="' + (R - 60) + '" y="24" font-size="11">ray, depth &#8594;</text>';
+    // The entry depth under the bar's left end (anchored there, to the left), the exit under
+    // its right end (to the right), so that the two never overlap.
     const bar = function (y, a, b, colour, name) {
       const x0 = X(a), x1 = X(b);
       return '<rect x="' + x0 + '" y="' + y + '" width="' + Math.max(2, x1 - x0) + '" height="16" fill="' +
         colour + '" opacity="0.85"/><text x="4" y="' + (y + 12) + '" font-size="12" font-weight="bold">' +
-        name + '</text><text x="' + x0 + '" y="' + (y + 29) + '" font-size="10">' + norm(a) + '</text>' +
-        '<text x="' + x1 + '" y="' + (y + 29) + '" font-size="10" text-anchor="end">' + norm(b) + '</text>';
+        name + '</text><text x="' + x0 + '" y="' + (y + 29) + '" font-size="10" text-anchor="end">' +
+        norm(a) + '</text><text x="' + (x1 + 2) + '" y="' + (y + 29) + '" font-size="10">' + norm(b) + '</text>';
     };
     s += hasA ? bar(46, data.a_front[i], data.a_back[i], '#3a78d8', 'A')
               : '<text x="4" y="58" font-size="12">A: not on this ray</text>';
@@ -167,9 +170,10 @@ constexpr std::string_view kScript = R"JS(
               : '<text x="4" y="98" font-size="12">B: not on this ray</text>';
     const dx = X(Math.min(hi, Math.max(lo, dk)));
     s += '<line x1="' + dx + '" y1="40" x2="' + dx + '" y2="130" stroke="#0a0" stroke-width="2"/>';
-    s += '<text x="' + Math.min(dx + 3, 330) + '" y="144" font-size="11" fill="#060">depth after ' +
+    s += '<text x="' + Math.min(dx + 3, 250) + '" y="144" font-size="11" fill="#060">depth after ' +
       esc(TITLES[ids[k]] || ids[k]) + ': ' + norm(dk) + (dk < lo || dk > hi ? ' (off the drawing)' : '') + '</text>';
-    s += '<text x="' + L + '" y="144" font-size="9" fill="#666">' + norm(lo) + '</text>';
+    s += '<text x="' + L + '" y="12" font-size="10" fill="#666">drawn from depth ' + norm(lo) +
+      ' to ' + norm(hi) + ' (stretched to this ray)</text>';
     s += '</svg>';
     return s;
   }

@@ -5,7 +5,10 @@
 // drawn separately, agree with the cases (interference only where both blocks are); and the
 // contact picture highlights exactly the interfering pixels.
 //
-// Usage: recode_check_explain DIR
+// With --has-case N, also that case N has pixels (the gallery's pairs are each built to show
+// one case).
+//
+// Usage: recode_check_explain DIR [--has-case N]
 
 #include <stb/stb_image.h>
 
@@ -109,8 +112,9 @@ std::string text(const Rgb& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: recode_check_explain DIR\n";
+  const bool hasCaseOption = argc == 4 && std::string(argv[2]) == "--has-case";
+  if (argc != 2 && !hasCaseOption) {
+    std::cerr << "usage: recode_check_explain DIR [--has-case N]\n";
     return 2;
   }
   const fs::path dir(argv[1]);
@@ -290,6 +294,12 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (hasCaseOption) {
+    const std::string wanted = argv[3];
+    const Json& counts = j.at("case_counts");
+    if (!counts.contains(wanted) || counts.at(wanted).get<long long>() <= 0)
+      fail("case " + wanted + " has no pixel, the pair was chosen to show it");
+  }
   if (failures == 0)
     std::cout << "explain output OK: " << j.at("pictures").size() << " pictures; case map "
               << interfering << " interfering of " << (mor[2] - mor[0]) * (mor[3] - mor[1])

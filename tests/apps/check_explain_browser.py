@@ -165,11 +165,14 @@ def first_pixel_of_case(pgm_path, wanted):
     return None
 
 
-# Clicks framebuffer pixel (x, y) on the first picture showing it that the pointer can reach
-# (the inspector panel may cover part of the page). Returns the picture's file name.
+# Where to click framebuffer pixel (x, y): on the first picture showing it that the pointer can
+# reach (the inspector panel may cover part of the page), case maps first.
 CLICK_TARGET_JS = """
 (function (x, y) {
-  for (const img of document.querySelectorAll('img[data-region]')) {
+  const all = Array.from(document.querySelectorAll('img[data-region]'));
+  const ordered = all.filter(i => i.alt.startsWith('cases')).concat(
+      all.filter(i => !i.alt.startsWith('cases')));
+  for (const img of ordered) {
     const r = img.dataset.region.split(',').map(Number);
     if (x < r[0] || x >= r[2] || y < r[1] || y >= r[3]) continue;
     img.scrollIntoView({block: 'center'});
@@ -258,6 +261,7 @@ def main():
         target = dt.evaluate(CLICK_TARGET_JS % (x, y))
         if target is None:
             fail("no picture shows pixel (%d, %d) where the pointer can reach it" % (x, y))
+        print("clicking pixel (%d, %d) on %s" % (x, y, target["file"]))
         for kind in ("mouseMoved", "mousePressed", "mouseReleased"):
             dt.call("Input.dispatchMouseEvent", type=kind, x=target["x"], y=target["y"],
                     button="left", clickCount=1)
