@@ -119,8 +119,11 @@ class DevTools:
                 out.append("failed load: " + p.get("errorText", "") + " " + p.get("requestId", ""))
         return out
 
-    def screenshot(self, path):
-        r = self.call("Page.captureScreenshot", format="png")
+    def screenshot(self, path, clip=None):
+        params = {"format": "png"}
+        if clip:
+            params["clip"] = dict(clip, scale=1)
+        r = self.call("Page.captureScreenshot", **params)
         with open(path, "wb") as f:
             f.write(base64.b64decode(r["data"]))
 
@@ -290,6 +293,10 @@ def main():
             errors.append("the ray drawing shows %d interval bars, expected A's and B's"
                           % shown["bars"])
         dt.screenshot(os.path.join(work, "inspector-case4.png"))
+        panel = dt.evaluate("(function () { const b = document.getElementById('inspector')"
+                            ".getBoundingClientRect(); return {x: b.left + window.scrollX, y: b.top + window.scrollY, "
+                            "width: b.width, height: b.height}; })()")
+        dt.screenshot(os.path.join(work, "inspector-panel.png"), panel)
 
         # One step back with the keyboard: the highlighted row must move to the step before.
         steps = list(expected["steps"])
