@@ -14,6 +14,7 @@
 #include "atomic_file.hpp"
 #include "explain_format.hpp"
 #include "explain_gallery.hpp"
+#include "explain_hierarchy.hpp"
 #include "explain_page.hpp"
 #include "explain_pictures.hpp"
 #include "explain_rays.hpp"
@@ -40,6 +41,8 @@ struct ExplainOptions {
   std::string resolution;
   bool boxTest = true;
   bool gallery = false;
+  std::string pair;  // --pair NAME_A:NAME_B; empty: the scene's first two objects
+  int frame = 0;     // --frame K, with --pair
 };
 
 // Which buffers a step is about (a buffer that changed is pictured as well).
@@ -88,7 +91,8 @@ explain::Section stepSection(const explain::StepSnapshot& snap,
 std::vector<explain::Section> buildSections(const core::PairResult& result,
                                             const std::vector<explain::StepSnapshot>& snapshots,
                                             core::MorMode mor, bool boxTest,
-                                            explain::PictureWriter& pictures) {
+                                            explain::PictureWriter& pictures,
+                                            const std::string& descentHtml) {
   std::vector<explain::Section> sections;
   const auto next = [&sections] { return static_cast<int>(sections.size()) + 1; };
   const raster::PixelRect frame = pictures.frame();
@@ -98,6 +102,13 @@ std::vector<explain::Section> buildSections(const core::PairResult& result,
   first.text = explain::silhouettesText(result, mor, boxTest, frame);
   first.pictures = pictures.silhouettes(next());
   sections.push_back(std::move(first));
+  if (!descentHtml.empty()) {
+    explain::Section descent;
+    descent.id = "descent";
+    descent.title = "The box descent: how recode run came to this pair";
+    descent.text = descentHtml;
+    sections.push_back(std::move(descent));
+  }
   const raster::PixelBuffer<std::uint8_t> noStencil(frame, std::uint8_t{0});
   const raster::PixelBuffer<std::uint32_t> farDepth(frame, raster::kDepthMax);
   const raster::PixelBuffer<std::uint8_t>* prevStencil = &noStencil;
@@ -121,7 +132,7 @@ std::vector<explain::Section> buildSections(const core::PairResult& result,
 }  // namespace
 
 ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morName, bool boxTest,
-                               const fs::path& dir) {
+                               const fs::path& dir, const std::string& descentHtml) {
   const core::FrameSpec& f = setup.frame;
   if (f.width > kMaxExplainSide || f.height > kMaxExplainSide)
     throw std::invalid_argument("the frame is " + std::to_string(f.width) + "x" +
@@ -146,7 +157,7 @@ ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morNam
 
   explain::PictureWriter pictures(dir, setup, result, coverage);
   const std::vector<explain::Section> sections =
-      buildSections(result, recorder.snapshots(), request.mor, boxTest, pictures);
+      buildSections(result, recorder.snapshots(), request.mor, boxTest, pictures, descentHtml);
 
   const explain::FaceDepths facesA = explain::faceDepths(setup, setup.a, range[0], range[1]);
   const explain::FaceDepths facesB = explain::faceDepths(setup, setup.b, range[0], range[1]);
@@ -188,13 +199,23 @@ int runExplain(const ExplainOptions& options) {
   }
   const core::FrameOverrides overrides =
       options.resolution.empty() ? core::FrameOverrides{} : parseResolution(options.resolution);
-  const PairSetup setup = loadPairSetup(
-      options.scene.empty() ? std::nullopt : std::optional<std::string>(options.scene), overrides);
+  explain::HierarchyPair chosen;
+  if (!options.pair.empty()) {
+    if (options.scene.empty())
+      throw std::invalid_argument("--pair " + options.pair + ": needs a scene file");
+    chosen = explain::hierarchyPair(options.scene, options.frame, options.pair, overrides);
+  } else {
+    chosen.setup = loadPairSetup(
+        options.scene.empty() ? std::nullopt : std::optional<std::string>(options.scene),
+        overrides);
+  }
+  const PairSetup& setup = chosen.setup;
   const core::FrameSpec& f = setup.frame;
   // Removed again, with what was written into it, if anything below fails.
   const fs::path dir(options.out);
   CreatedDirectory created(dir, "--out " + options.out);
-  const ExplainSummary summary = explainPairInto(setup, options.mor, options.boxTest, dir);
+  const ExplainSummary summary =
+      explainPairInto(setup, options.mor, options.boxTest, dir, chosen.descentHtml);
   const core::PairResult& result = summary.result;
   created.keep();
   const std::size_t written = summary.pictures;
@@ -232,6 +253,13 @@ void addExplainCommand(CLI::App& app, int& exitCode) {
                       std::to_string(kMaxExplainSide) + " a side");
   cmd->add_flag("!--no-box-test", opts->boxTest,
                 "run the passes even when the blocks' boxes are apart (shows cases 1, 2, 7, 8)");
+  CLI::Option* pair = cmd->add_option(
+      "--pair", opts->pair,
+      "NAME_A:NAME_B: two blocks of the scene's objects (paths like 'dumbbell/bar', or names "
+      "when unique), for scenes whose objects have children; adds the box descent");
+  cmd->add_option("--frame", opts->frame, "with --pair: the frame to pose the scene at")
+      ->needs(pair)
+      ->capture_default_str();
   cmd->add_flag("--gallery", opts->gallery,
                 "write one page per case 1-8 from small built-in pairs, and a pair that is "
                 "apart, with an index.html linking them (no scene; --mor and --no-box-test "

@@ -26,8 +26,10 @@ struct ExplainSummary {
 // Runs the pair with MOR mode `morName` (min, max or full) and writes its pictures,
 // index.html and explain.json into the existing directory `dir`. Throws
 // std::invalid_argument for a frame over kMaxExplainSide, std::runtime_error for a file.
+// `descentHtml`, when not empty, is a section after the first (the box descent of --pair).
 ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morName, bool boxTest,
-                               const std::filesystem::path& dir);
+                               const std::filesystem::path& dir,
+                               const std::string& descentHtml = {});
 
 void addExplainCommand(CLI::App& app, int& exitCode);
 
