@@ -55,6 +55,20 @@ bool stepWritesStencil(PairStep s) {
          s == PairStep::TestAminBack;
 }
 
+// The depth a step clears to inside its rectangle (docs/algorithm.md section 3), -1 for none.
+double clearDepthOf(PairStep s) {
+  switch (s) {
+    case PairStep::SetZ:
+    case PairStep::ContactNear:
+      return 0.0;
+    case PairStep::LoadAmin:
+    case PairStep::ContactFar:
+      return 1.0;
+    default:
+      return -1.0;
+  }
+}
+
 void append(std::vector<explain::Picture>& to, std::vector<explain::Picture> pictures) {
   for (explain::Picture& p : pictures)
     to.push_back(std::move(p));
@@ -72,6 +86,8 @@ explain::Section stepSection(const explain::StepSnapshot& snap,
   s.step = s.id;
   s.title = explain::stepTitle(snap.step);
   s.text = explain::originText(snap.step) + explain::stepText(snap.step);
+  if (snap.state && snap.step != PairStep::ReadStencil)
+    s.text += explain::stateText(*snap.state, clearDepthOf(snap.step));
   if (snap.step == PairStep::ReadStencil) {
     s.text += explain::caseTableHtml(result);
     append(s.pictures, pictures.cases(number));

@@ -9,8 +9,11 @@ namespace recode::app::explain {
 
 void StepRecorder::afterStep(core::PairStep step, raster::DepthStencilDevice& device) {
   const raster::PixelRect all{0, 0, device.width(), device.height()};
+  std::optional<raster::RenderState> state;
+  if (const auto* cpu = dynamic_cast<const raster::CpuDevice*>(&device))
+    state = cpu->state();
   snapshots_.push_back(
-      {step, raster::readStencilBuffer(device, all), raster::readDepthBuffer(device, all)});
+      {step, raster::readStencilBuffer(device, all), raster::readDepthBuffer(device, all), state});
 }
 
 raster::PixelBuffer<std::uint8_t> blockCoverage(const PairSetup& setup, double depthMin,

@@ -2,11 +2,13 @@
 // The buffers `recode explain` pictures: depth and stencil after every step, and block coverage.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "pair_setup.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/pixel_buffer.hpp"
+#include "recode/raster/state.hpp"
 
 namespace recode::app::explain {
 
@@ -15,6 +17,10 @@ struct StepSnapshot {
   core::PairStep step;
   raster::PixelBuffer<std::uint8_t> stencil;
   raster::PixelBuffer<std::uint32_t> depth;
+  // The device's state after the step: the state its draws ran with, since every step sets
+  // all the state they depend on (docs/algorithm.md section 3). Empty on a device that does
+  // not show its state.
+  std::optional<raster::RenderState> state;
 };
 
 // Keeps a full-frame copy of the stencil and depth buffers after every step of the pair

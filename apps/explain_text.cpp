@@ -7,6 +7,7 @@
 #include "explain_format.hpp"
 #include "explain_palette.hpp"
 #include "recode/pair/pair_cases.hpp"
+#include "recode/raster/state.hpp"
 
 namespace recode::app::explain {
 
@@ -137,6 +138,33 @@ std::string originText(PairStep step) {
           "of measuring the contact region.");
   }
   return "";
+}
+
+std::string stateText(const raster::RenderState& st, double clearDepth) {
+  const auto hex = [](unsigned v) {
+    std::ostringstream o;
+    o << "0x" << std::hex << std::uppercase << (v < 16 ? "0" : "") << v;
+    return o.str();
+  };
+  const auto ops = [](const raster::StencilOps& o) {
+    return std::string(raster::toString(o.stencilFail)) + " / " +
+           std::string(raster::toString(o.depthFail)) + " / " +
+           std::string(raster::toString(o.depthPass));
+  };
+  std::ostringstream t;
+  t << "<p class=\"state\"><b>Device state</b> (read from the device after the step): scissor "
+    << rectText(st.scissor);
+  if (clearDepth >= 0.0)
+    t << ", depth cleared to " << formatNumber(clearDepth);
+  t << "; depth test <code>" << raster::toString(st.depthFunc) << "</code>, depth writes "
+    << (st.depthWrite ? "on" : "off") << "; stencil test <code>" << raster::toString(st.stencilFunc)
+    << "</code> (ref " << int{st.stencilRef} << ", mask " << hex(st.stencilValueMask)
+    << "), ops sfail / dpfail / dppass <code>" << ops(st.frontOps) << "</code>";
+  if (st.frontOps != st.backOps)
+    t << " (front), <code>" << ops(st.backOps) << "</code> (back)";
+  t << ", stencil write mask " << hex(st.stencilWriteMask) << "; culling <code>"
+    << raster::toString(st.cull) << "</code>.</p>";
+  return t.str();
 }
 
 // A declarative table, one paragraph per step: long, but each case reads on its own.
