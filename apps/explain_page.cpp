@@ -1,12 +1,14 @@
 // Writes the explain page: index.html (sections of text and pictures) and explain.json.
 #include "explain_page.hpp"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "atomic_file.hpp"
 #include "explain_format.hpp"
+#include "explain_inspector.hpp"
 #include "explain_palette.hpp"
 #include "explain_text.hpp"
 
@@ -28,7 +30,7 @@ nlohmann::json colourJson(Rgb c) {
 // The page's head: its title and the style every section shares.
 constexpr const char* kPageHead =
     "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-    "<title>RECODE step by step</title><style>\n"
+    "<title>RECODE step by step</title><link rel=\"icon\" href=\"data:,\"><style>\n"
     "body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;"
     "line-height:1.45;color:#222}\n"
     "section{border-top:1px solid #ccc;margin-top:2em;padding-top:.5em}\n"
@@ -40,11 +42,12 @@ constexpr const char* kPageHead =
     ".grad{display:inline-block;width:12em;height:1.1em;border:1px solid #555;"
     "vertical-align:middle;background:linear-gradient(to right,#ffffff,#000000)}\n"
     "ul.legend{list-style:none;padding-left:0;font-size:.9em}\n"
+    ".axes{font-size:.8em;color:#555;max-width:520px}.scalebar{display:inline-block;"
+    "height:.5em;border:2px solid #222;border-top:none;vertical-align:middle}\n"
     "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #bbb;"
     "padding:.2em .5em;text-align:left}tr.hit{background:#fff3d6}\n"
     ".verdict{font-size:1.3em;font-weight:bold}.verdict.yes{color:#b3261e}"
-    ".verdict.no{color:#1e6b2e}\ncode{background:#f2f2f2;padding:0 .2em}\n"
-    "</style></head><body>\n";
+    ".verdict.no{color:#1e6b2e}\ncode{background:#f2f2f2;padding:0 .2em}\n";
 
 void writeHowItWorks(std::ostream& h, int scale) {
   h << "<h2>How RECODE works, and how to read the pictures</h2>\n"
@@ -69,21 +72,88 @@ void writeHowItWorks(std::ostream& h, int scale) {
        "<p>Pictures: each framebuffer pixel is shown as a "
     << scale << " &times; " << scale
     << " block (close-ups magnify more), the top of the picture is the top of the frame. "
-       "The cyan frame is the MOR; dimmed, hatched pixels are outside the rectangle a step "
-       "works in (the step does not touch them). Depth pictures show near as bright and far "
-       "as dark. Notation: A<sub>min</sub> and A<sub>max</sub> are the depths where a "
+       "Nothing outside the MOR is ever drawn, so the pictures show the MOR with a margin "
+       "(the first picture shows where that lies in the whole frame); the line under each "
+       "picture gives its edges in pixels and world units, the viewer's side and a scale "
+       "bar. The cyan frame is the MOR, the green frame where the close-up is; dimmed, "
+       "hatched pixels are outside the rectangle a step works in (the step does not touch "
+       "them). The &ldquo;changed&rdquo; pictures colour each stencil change (old value "
+       "&rarr; new value) on its own. Depth pictures show near as bright and far "
+       "as dark, stretched over the depths drawn in the step. <b>Point at any pixel of any "
+       "picture</b> (click to pin it) to follow its ray through every step in the inspector "
+       "at the bottom right; the slider or the &larr; and &rarr; keys move through the "
+       "steps. Notation: A<sub>min</sub> and A<sub>max</sub> are the depths where a "
        "pixel's ray enters and leaves A, likewise B<sub>min</sub>, B<sub>max</sub>.</p>\n";
 }
 
-void writeFigure(std::ostream& h, const Picture& p) {
+// The world axes the image plane's u and v are (docs/algorithm.md section 2), and the axis
+// the viewer looks along.
+struct PlaneAxes {
+  const char* u;
+  const char* v;
+  const char* depth;
+};
+PlaneAxes planeAxes(core::ViewAxis axis) {
+  switch (axis) {
+    case core::ViewAxis::X:
+      return {"y", "z", "x"};
+    case core::ViewAxis::Y:
+      return {"z", "x", "y"};
+    case core::ViewAxis::Z:
+      break;
+  }
+  return {"x", "y", "z"};
+}
+
+// A round length (1, 2 or 5 times a power of ten) of world units that spans 40 to 120
+// picture pixels at `pixelsPerUnit`.
+double scaleBarLength(double pixelsPerUnit) {
+  double length = std::pow(10.0, std::floor(std::log10(80.0 / pixelsPerUnit)));
+  for (double step : {1.0, 2.0, 5.0, 10.0})
+    if (step * length * pixelsPerUnit >= 40.0)
+      return step * length;
+  return 10.0 * length;
+}
+
+// Under each picture: what its edges are in pixels and world units, where the viewer is, and
+// a scale bar.
+void writeAxes(std::ostream& h, const Picture& p, const core::FrameSpec& f) {
+  const PlaneAxes a = planeAxes(f.axis);
+  const core::ViewWindow& w = f.window;
+  const double pw = (w.umax - w.umin) / f.width, ph = (w.vmax - w.vmin) / f.height;
+  const PixelRect& r = p.region;
+  h << "<div class=\"axes\">x &rarr; pixels " << r.x0 << "&ndash;" << r.x1 - 1 << " (world " << a.u
+    << " " << formatNumber(w.umin + r.x0 * pw) << " to " << formatNumber(w.umin + r.x1 * pw)
+    << "); y &uarr; rows " << r.y0 << "&ndash;" << r.y1 - 1 << " (world " << a.v << " "
+    << formatNumber(w.vmin + r.y0 * ph) << " to " << formatNumber(w.vmin + r.y1 * ph)
+    << "). Viewer on the +" << a.depth << " side, looking along &minus;" << a.depth
+    << " into the picture. ";
+  const double pixelsPerUnit = p.scale / pw;
+  if (std::isfinite(pixelsPerUnit) && pixelsPerUnit > 0) {
+    const double length = scaleBarLength(pixelsPerUnit);
+    h << "<span class=\"scalebar\" style=\"width:" << std::lround(length * pixelsPerUnit)
+      << "px\"></span> " << formatNumber(length) << " world units";
+  }
+  h << "</div>";
+}
+
+void writeFigure(std::ostream& h, const Picture& p, const core::FrameSpec& frame) {
+  const PixelRect& r = p.region;
   h << "<figure><img src=\"" << p.file << "\" width=\"" << p.width << "\" height=\"" << p.height
-    << "\" alt=\"" << p.kind << (p.zoom ? " close-up" : "") << "\"><figcaption>" << p.caption
-    << "<ul class=\"legend\">";
-  if (p.depthLegend)
+    << "\" data-region=\"" << r.x0 << ',' << r.y0 << ',' << r.x1 << ',' << r.y1 << "\" alt=\""
+    << p.kind << (p.zoom ? " close-up" : "") << "\">";
+  writeAxes(h, p, frame);
+  h << "<figcaption>" << p.caption << "<ul class=\"legend\">";
+  if (p.depthLegend) {
+    const bool clearedToOne = p.depthClear == 1.0;
     h << "<li>near (" << formatNumber(p.depthNear) << ") <span class=\"grad\"></span> far ("
-      << formatNumber(p.depthFar) << ")</li><li>" << swatch(kDepthZero)
-      << "exactly 0: a clear to 0 left it (nothing drawn here)</li><li>" << swatch(kHatch)
-      << "hatched, dimmed: outside the rectangle this step draws in</li>";
+      << formatNumber(p.depthFar) << "), stretched over the depths drawn here</li><li>"
+      << swatch(clearedToOne ? kDepthOne : kDepthZero) << "exactly " << (clearedToOne ? "1" : "0")
+      << ": this step cleared depth to " << (clearedToOne ? "1" : "0")
+      << " and drew nothing here</li><li>" << swatch(clearedToOne ? kDepthZero : kDepthOne)
+      << "exactly " << (clearedToOne ? "0" : "1") << ": left by an earlier step</li><li>"
+      << swatch(kHatch) << "hatched, dimmed: outside the rectangle this step draws in</li>";
+  }
   for (const LegendEntry& e : p.legend) {
     h << "<li>" << swatch(e.colour) << e.label;
     if (e.pixels >= 0)
@@ -157,7 +227,7 @@ void writeIndexHtml(const fs::path& dir, const Page& page) {
   const core::FrameSpec& f = page.setup.frame;
   const std::string source = escapeHtml(page.setup.source);
   std::ostringstream h;
-  h << kPageHead;
+  h << kPageHead << inspectorStyle() << "</style></head><body>\n";
   h << "<h1>RECODE step by step</h1>\n<p>Block A: <b>" << escapeHtml(page.setup.nameA)
     << "</b>, block B: <b>" << escapeHtml(page.setup.nameB) << "</b>, from " << source << ". View "
     << "along the " << core::toString(f.axis) << " axis, " << f.width << " &times; " << f.height
@@ -167,11 +237,11 @@ void writeIndexHtml(const fs::path& dir, const Page& page) {
   for (const Section& s : page.sections) {
     h << "<section id=\"" << s.id << "\"><h2>" << s.title << "</h2>\n" << s.text << '\n';
     for (const Picture& p : s.pictures)
-      writeFigure(h, p);
+      writeFigure(h, p, f);
     h << "</section>\n";
   }
   h << "<section id=\"verdict\"><h2>Verdict</h2>" << verdictHtml(page.result) << "</section>\n"
-    << "</body></html>\n";
+    << inspectorHtml(page.rayData) << "</body></html>\n";
   writeText(dir / "index.html", h.str());
 }
 
@@ -185,6 +255,7 @@ void writeExplainJson(const fs::path& dir, const Page& page) {
   j["width"] = f.width;
   j["height"] = f.height;
   j["scale"] = page.scale;
+  j["view"] = rectJson(page.view);
   j["mor_mode"] = page.morMode;
   j["collide"] = result.collide;
   j["boxes_overlap"] = result.boxesOverlap;

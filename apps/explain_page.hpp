@@ -2,6 +2,7 @@
 // Writes the explain page: index.html (sections of text and pictures) and explain.json.
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,10 @@ struct Page {
   const PairSetup& setup;
   std::string morMode;  // as given: min, max or full
   const core::PairResult& result;
-  int scale;  // picture pixels per framebuffer pixel in the whole-frame pictures
+  int scale;               // picture pixels per framebuffer pixel in the pictures of `view`
+  raster::PixelRect view;  // the part of the frame the pictures show (not the close-ups)
   const std::vector<Section>& sections;
+  const nlohmann::json& rayData;  // the inspector's data (explain_rays.hpp)
 };
 
 // dir/index.html: the run, how RECODE works, every section with its pictures and legends,

@@ -15,11 +15,31 @@ inline constexpr Rgb kColourB{214, 69, 69};      // block B
 inline constexpr Rgb kColourBoth{155, 64, 192};  // A and B on the same pixel
 inline constexpr Rgb kMorOutline{0, 229, 255};   // the MOR rectangle
 inline constexpr Rgb kContactOutline{255, 255, 255};
-inline constexpr Rgb kHatch{70, 78, 88};          // outside the rectangle a step works on
-inline constexpr Rgb kNotExamined{43, 43, 43};    // case map outside the MOR
-inline constexpr Rgb kDepthZero{27, 59, 111};     // depth exactly 0 (a clear to 0 left it)
-inline constexpr Rgb kInterfering{255, 210, 63};  // contact picture highlight
-inline constexpr Rgb kUnexpected{255, 0, 255};    // a stencil value the encoding never produces
+inline constexpr Rgb kZoomOutline{120, 255, 80};   // where the close-up is
+inline constexpr Rgb kViewOutline{255, 255, 255};  // the part of the frame the pictures show
+inline constexpr Rgb kHatch{70, 78, 88};           // outside the rectangle a step works on
+inline constexpr Rgb kNotExamined{43, 43, 43};     // case map outside the MOR
+inline constexpr Rgb kDepthZero{27, 59, 111};      // depth exactly 0 (a clear to 0 left it)
+inline constexpr Rgb kDepthOne{96, 32, 32};        // depth exactly 1 (a clear to 1 left it)
+inline constexpr Rgb kInterfering{255, 210, 63};   // contact picture highlight
+inline constexpr Rgb kUnexpected{255, 0, 255};     // a stencil value the encoding never produces
+inline constexpr Rgb kNotInterfering{72, 52,
+                                     72};  // contact depth at a pixel that does not interfere
+
+// The "what this step changed" pictures: one colour per stencil transition (old -> new), in
+// order of how many pixels made it, chosen far apart so that e.g. 3 -> 7 and 2 -> 6 differ.
+inline constexpr std::array<Rgb, 10> kChangePalette = {{
+    {255, 215, 0},    // gold
+    {255, 0, 200},    // magenta
+    {0, 200, 255},    // cyan
+    {120, 255, 80},   // lime
+    {255, 120, 0},    // orange
+    {170, 110, 255},  // violet
+    {255, 255, 255},  // white
+    {0, 110, 255},    // blue
+    {255, 80, 80},    // red
+    {0, 255, 180},    // aqua
+}};
 
 // Stencil values 0..15: the hue is the count in bits 0-1 (grey: A absent, blue: A only so
 // far, orange: one face of B at or before Amax, green: both), the lightness the two Amin

@@ -5,11 +5,13 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <utility>
 
 #include "explain_format.hpp"
 #include "explain_palette.hpp"
+#include "explain_rays.hpp"
 #include "explain_text.hpp"
 #include "recode/pair/pair_cases.hpp"
 
@@ -28,15 +30,22 @@ Rgb stencilColour(std::uint8_t value) {
 }
 
 // Grey from depth: near bright, far dark. `nearest`..`farthest` map onto white..black (the
-// whole range normally; a close-up stretches its own range). Exactly 0 has its own colour.
-Rgb depthColour(std::uint32_t depth, std::uint32_t nearest = 0,
-                std::uint32_t farthest = raster::kDepthMax) {
+// depths drawn in the step, stretched). Exactly 0 and exactly 1, the two clear values, have
+// colours of their own.
+Rgb depthColour(std::uint32_t depth, std::uint32_t nearest, std::uint32_t farthest) {
   if (depth == 0)
     return kDepthZero;
+  if (depth == raster::kDepthMax)
+    return kDepthOne;
   const double span = std::max(1.0, static_cast<double>(farthest) - static_cast<double>(nearest));
   const double nearness = 1.0 - (static_cast<double>(depth) - static_cast<double>(nearest)) / span;
   const auto g = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(nearness, 0.0, 1.0)));
   return {g, g, g};
+}
+
+// The depth a step clears to inside its rectangle.
+double clearDepthOf(PairStep step) {
+  return step == PairStep::LoadAmin || step == PairStep::ContactFar ? 1.0 : 0.0;
 }
 
 bool contains(const PixelRect& r, int x, int y) {
@@ -105,23 +114,50 @@ PictureWriter::PictureWriter(std::filesystem::path dir, const PairSetup& setup,
       result_(result),
       coverage_(coverage),
       frame_{0, 0, setup.frame.width, setup.frame.height},
-      painter_(frame_, 512),
+      view_(viewRegion(result.mor, frame_)),
+      painter_(view_, 512),
+      overview_(frame_, 160),
       zoom_(zoomPainter()) {}
 
+// The MOR with a margin when that is at most half the frame (the rest of the frame is never
+// drawn in, so showing it would only shrink what matters), else the whole frame.
+PixelRect PictureWriter::viewRegion(const PixelRect& mor, const PixelRect& frame) {
+  const PixelRect crop = morWithMargin(mor, frame);
+  if (crop.empty() || 2 * crop.area() > frame.area())
+    return frame;
+  return crop;
+}
+
 std::vector<Picture> PictureWriter::silhouettes(int section) {
-  RgbImage image = painter_.paint([&](int x, int y) { return coverageColour(coverage_.at(x, y)); });
+  std::vector<Picture> pictures;
+  const auto colourAt = [&](int x, int y) { return coverageColour(coverage_.at(x, y)); };
+  if (view_ != frame_) {
+    // The whole frame, small, with the part the other pictures show framed.
+    RgbImage overview = overview_.paint(colourAt);
+    overview_.outline(overview, view_, kViewOutline);
+    Picture o = makePicture(overview_, fileStem(section, "frame"), "overview", overview);
+    o.caption =
+        "The whole frame, small: the other pictures show only the part in the white "
+        "frame, the MOR and a margin (nothing outside the MOR is ever drawn).";
+    o.legend = {{kViewOutline, "the part shown in the other pictures", -1}};
+    pictures.push_back(std::move(o));
+  }
+  RgbImage image = painter_.paint(colourAt);
   painter_.outline(image, mor(), kMorOutline);
+  if (zoom_)
+    painter_.outline(image, zoom_->region(), kZoomOutline);
   std::array<long long, 4> counts{};
   for (std::uint8_t c : coverage_.data)
     ++counts[c & 3u];
   Picture p = makePicture(painter_, fileStem(section, "silhouettes"), "silhouettes", image);
-  p.caption = "Coverage of A and B over the whole frame; cyan: the MOR.";
+  p.caption = "Coverage of A and B; cyan: the MOR (pixel counts over the whole frame).";
   p.legend = {{kColourA, "A only (" + escapeHtml(setup_.nameA) + ")", counts[1]},
               {kColourB, "B only (" + escapeHtml(setup_.nameB) + ")", counts[2]},
               {kColourBoth, "both A and B", counts[3]},
               {kEmpty, "neither", counts[0]},
               {kMorOutline, "MOR outline", -1}};
-  std::vector<Picture> pictures;
+  if (zoom_)
+    p.legend.push_back({kZoomOutline, "the close-up shown beside later pictures", -1});
   pictures.push_back(std::move(p));
   return pictures;
 }
@@ -134,6 +170,56 @@ std::vector<Picture> PictureWriter::depth(const StepSnapshot& snap, int section)
 std::vector<Picture> PictureWriter::stencil(const StepSnapshot& snap, int section) {
   return wholeAndCloseUp(painter_, zoom_,
                          [&](const Painter& p) { return stencilPicture(p, snap, section); });
+}
+
+std::vector<Picture> PictureWriter::changes(const StepSnapshot& snap,
+                                            const raster::PixelBuffer<std::uint8_t>& before,
+                                            int section) {
+  const PixelRect active = activeRect(snap.step);
+  // The transitions, most pixels first.
+  std::map<std::pair<int, int>, long long> counts;
+  for (int y = active.y0; y < active.y1; ++y)
+    for (int x = active.x0; x < active.x1; ++x)
+      if (before.at(x, y) != snap.stencil.at(x, y))
+        ++counts[{before.at(x, y), snap.stencil.at(x, y)}];
+  if (counts.empty())
+    return {};
+  std::vector<std::pair<std::pair<int, int>, long long>> order(counts.begin(), counts.end());
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& l, const auto& r) { return l.second > r.second; });
+  std::map<std::pair<int, int>, Rgb> colour;
+  for (std::size_t i = 0; i < order.size(); ++i)
+    colour[order[i].first] = i < kChangePalette.size() ? kChangePalette[i] : kUnexpected;
+  const Painter& painter = zoom_ ? *zoom_ : painter_;
+  const RgbImage image = bufferImage(painter, active, [&](int x, int y) {
+    const int from = before.at(x, y), to = snap.stencil.at(x, y);
+    if (from == to)
+      return dimmed(stencilColour(static_cast<std::uint8_t>(to)), 0.3);
+    return colour.at({from, to});
+  });
+  const bool zoom = isZoom(painter);
+  Picture p = makePicture(painter,
+                          fileStem(section, std::string(core::toString(snap.step)) +
+                                                (zoom ? "-changes-zoom" : "-changes")),
+                          "changes", image);
+  p.caption =
+      "The stencil bits this step changed: one colour per change (old value &rarr; new "
+      "value), unchanged pixels dimmed.";
+  for (const auto& [change, n] : order) {
+    std::ostringstream label;
+    label << "<code>" << change.first << " &rarr; " << change.second << "</code> (";
+    for (int bit = 3; bit >= 0; --bit)
+      label << ((change.first >> bit) & 1);
+    label << " &rarr; ";
+    for (int bit = 3; bit >= 0; --bit)
+      label << ((change.second >> bit) & 1);
+    label << "): " << stencilMeaning(static_cast<std::uint8_t>(change.second), snap.step);
+    p.legend.push_back({colour.at(change), label.str(), n});
+  }
+  p.legend.push_back({dimmed(kStencilPalette[1], 0.3), "dimmed: unchanged by this step", -1});
+  std::vector<Picture> pictures;
+  pictures.push_back(std::move(p));
+  return pictures;
 }
 
 std::vector<Picture> PictureWriter::cases(int section) {
@@ -163,7 +249,7 @@ std::optional<Painter> PictureWriter::zoomPainter() const {
   const PixelRect region =
       PixelRect{c.x0 - margin, c.y0 - margin, c.x1 + margin, c.y1 + margin}.intersect(frame_);
   Painter zoom(region, 384);
-  if (2 * region.width() > frame_.width() && 2 * region.height() > frame_.height())
+  if (2 * region.width() > view_.width() && 2 * region.height() > view_.height())
     return std::nullopt;
   if (zoom.scale() < 2 * painter_.scale())
     return std::nullopt;
@@ -176,7 +262,7 @@ Picture PictureWriter::makePicture(const Painter& painter, const std::string& st
   p.file = stem + ".png";
   writePng(dir_ / p.file, image);
   p.kind = std::move(kind);
-  p.zoom = painter.region() != frame_;
+  p.zoom = isZoom(painter);
   p.region = painter.region();
   p.scale = painter.scale();
   p.width = image.width();
@@ -203,16 +289,18 @@ RgbImage PictureWriter::bufferImage(const Painter& painter, const PixelRect& act
   painter.outline(image, mor(), kMorOutline);
   if (active != mor())
     painter.outline(image, active, kContactOutline);
+  if (zoom_ && !isZoom(painter))
+    painter.outline(image, zoom_->region(), kZoomOutline);
   return image;
 }
 
 Picture PictureWriter::depthPicture(const Painter& painter, const StepSnapshot& snap, int number) {
   const PixelRect active = activeRect(snap.step);
-  const bool zoom = painter.region() != frame_;
-  // A close-up stretches the grey levels over the depths inside the step's rectangle
-  // (leaving out the clear values 0 and 1), so small differences show.
+  const bool zoom = isZoom(painter);
+  // The grey levels stretch over the depths inside the step's rectangle (leaving out the
+  // clear values 0 and 1, which have colours of their own), so small differences show.
   std::uint32_t nearest = 0, farthest = raster::kDepthMax;
-  if (zoom) {
+  {
     std::uint32_t lo = raster::kDepthMax, hi = 0;
     const PixelRect shown = active.intersect(painter.region());
     for (int y = shown.y0; y < shown.y1; ++y)
@@ -228,16 +316,28 @@ Picture PictureWriter::depthPicture(const Painter& painter, const StepSnapshot& 
       farthest = hi;
     }
   }
+  // The contact passes measure the overlap only where the blocks interfere; elsewhere in
+  // their rectangle the depth they leave means nothing and is masked.
+  const bool contactStep = snap.step == PairStep::ContactNear || snap.step == PairStep::ContactFar;
   const RgbImage image = bufferImage(painter, active, [&](int x, int y) {
+    if (contactStep && contains(active, x, y) && !core::isInterfering(caseAt(x, y)))
+      return kNotInterfering;
     return depthColour(snap.depth.at(x, y), nearest, farthest);
   });
   Picture p = makePicture(
       painter,
       fileStem(number, std::string(core::toString(snap.step)) + (zoom ? "-depth-zoom" : "-depth")),
       "depth", image);
-  p.caption = zoom ? "Close-up of where both blocks are, grey levels stretched over the depths "
-                     "drawn there in this step."
-                   : "Depth buffer after this step: near is bright, far is dark.";
+  p.caption = zoom ? "Close-up of where both blocks are." : "Depth buffer after this step.";
+  p.caption +=
+      " Grey levels are stretched over the depths drawn in the step's rectangle (near "
+      "bright, far dark), not over the whole range 0-1.";
+  p.depthClear = clearDepthOf(snap.step);
+  if (contactStep)
+    p.legend.push_back({kNotInterfering,
+                        "in the rectangle but not interfering: masked, the depth here is no "
+                        "part of the contact region",
+                        -1});
   const double scale = 1.0 / static_cast<double>(raster::kDepthMax);
   p.depthNear = nearest * scale;
   p.depthFar = farthest * scale;
@@ -250,7 +350,7 @@ Picture PictureWriter::stencilPicture(const Painter& painter, const StepSnapshot
   const PixelRect active = activeRect(snap.step);
   const RgbImage image = bufferImage(
       painter, active, [&](int x, int y) { return stencilColour(snap.stencil.at(x, y)); });
-  const bool zoom = painter.region() != frame_;
+  const bool zoom = isZoom(painter);
   if (zoom) {
     Picture p = makePicture(
         painter, fileStem(number, std::string(core::toString(snap.step)) + "-stencil-zoom"),
@@ -297,7 +397,7 @@ Picture PictureWriter::casePicture(const Painter& painter, int number) {
   });
   painter.hatchOutside(image, mor());
   painter.outline(image, mor(), kMorOutline);
-  const bool zoom = painter.region() != frame_;
+  const bool zoom = isZoom(painter);
   if (zoom)
     painter.outline(image, result_.contactRect, kContactOutline);
   Picture p = makePicture(painter, fileStem(number, zoom ? "cases-zoom" : "cases"), "cases", image);
@@ -325,7 +425,7 @@ Picture PictureWriter::contactPicture(const Painter& painter, int number) {
   });
   painter.outline(image, mor(), kMorOutline);
   painter.outline(image, result_.contactRect, kContactOutline);
-  const bool zoom = painter.region() != frame_;
+  const bool zoom = isZoom(painter);
   Picture p =
       makePicture(painter, fileStem(number, zoom ? "contact-zoom" : "contact"), "contact", image);
   p.caption =

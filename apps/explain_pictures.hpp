@@ -34,6 +34,7 @@ struct Picture {
   bool depthLegend = false;
   double depthNear = 0.0;  // the depths shown white and black
   double depthFar = 1.0;
+  double depthClear = 0.0;  // the value the step cleared depth to (0 or 1)
 };
 
 // Paints a region of the frame (the whole frame, or a zoom on part of it), each framebuffer
@@ -79,12 +80,20 @@ class PictureWriter {
 
   // The whole frame, and picture pixels per framebuffer pixel in the whole-frame pictures.
   [[nodiscard]] const raster::PixelRect& frame() const { return frame_; }
+  // The part of the frame the pictures show: the MOR with a margin, or the whole frame.
+  [[nodiscard]] const raster::PixelRect& view() const { return view_; }
   [[nodiscard]] int scale() const { return painter_.scale(); }
 
-  // Coverage of A and B, and the MOR (whole frame only).
+  // The whole frame, small, with the part shown framed (when that is not the whole frame),
+  // then the coverage of A and B over the part shown, with the MOR.
   [[nodiscard]] std::vector<Picture> silhouettes(int section);
   [[nodiscard]] std::vector<Picture> depth(const StepSnapshot& snap, int section);
   [[nodiscard]] std::vector<Picture> stencil(const StepSnapshot& snap, int section);
+  // The pixels whose stencil this step changed, one colour per transition (the close-up
+  // where there is one, else the whole frame); nothing when the step changed no pixel.
+  [[nodiscard]] std::vector<Picture> changes(const StepSnapshot& snap,
+                                             const raster::PixelBuffer<std::uint8_t>& before,
+                                             int section);
   // The case of every MOR pixel.
   [[nodiscard]] std::vector<Picture> cases(int section);
   // The interfering pixels over the dimmed silhouettes.
@@ -92,7 +101,10 @@ class PictureWriter {
 
  private:
   [[nodiscard]] const raster::PixelRect& mor() const { return result_.mor; }
+  [[nodiscard]] static raster::PixelRect viewRegion(const raster::PixelRect& mor,
+                                                    const raster::PixelRect& frame);
   [[nodiscard]] std::optional<Painter> zoomPainter() const;
+  [[nodiscard]] bool isZoom(const Painter& painter) const { return zoom_ && &painter == &*zoom_; }
   Picture makePicture(const Painter& painter, const std::string& stem, std::string kind,
                       const RgbImage& image);
   [[nodiscard]] raster::PixelRect activeRect(core::PairStep step) const;
@@ -110,7 +122,9 @@ class PictureWriter {
   const core::PairResult& result_;
   const raster::PixelBuffer<std::uint8_t>& coverage_;
   raster::PixelRect frame_;
-  Painter painter_;
+  raster::PixelRect view_;
+  Painter painter_;   // the part shown
+  Painter overview_;  // the whole frame, small
   std::optional<Painter> zoom_;
 };
 

@@ -7,6 +7,7 @@
 #include "explain_format.hpp"
 #include "explain_palette.hpp"
 #include "recode/pair/pair_cases.hpp"
+#include "recode/raster/state.hpp"
 
 namespace recode::app::explain {
 
@@ -99,6 +100,73 @@ std::string stepTitle(PairStep step) {
   return "?";
 }
 
+std::string originText(PairStep step) {
+  const auto paper = [](std::string_view why) {
+    return "<p class=\"origin\"><span class=\"paper\">from the paper</span>" + std::string(why) +
+           "</p>";
+  };
+  const auto ours = [](std::string_view why) {
+    return "<p class=\"origin\"><span class=\"ours\">added here</span>" + std::string(why) + "</p>";
+  };
+  switch (step) {
+    case PairStep::SetZ:
+      return paper(
+          "RenderSetZ is the paper's first pass; drawing all of A's faces rather than only its "
+          "back faces is ours: the same A<sub>max</sub> on a convex block, and right at "
+          "silhouette pixels where rounding puts a front face a step behind a back face.");
+    case PairStep::TestZ:
+      return paper("RenderTestZ and the count 0-3 in the stencil's low bits are the paper's.");
+    case PairStep::LoadAmin:
+      return ours(
+          "The count alone leaves cases together (1 with 2, 3 with 4, 5 with 6 and 7); the paper "
+          "mentions a second rendering without spelling it out, and this is ours: A's near side "
+          "for the two tests that follow.");
+    case PairStep::TestAminFront:
+    case PairStep::TestAminBack:
+      return ours(
+          "One stencil bit per face of B, written through face culling and a write mask with a "
+          "single reference value: this project's way of separating the cases the count "
+          "leaves together.");
+    case PairStep::ReadStencil:
+      return paper(
+          "One stencil read-back over the MOR decides the verdict, as in the paper; decoding "
+          "the count together with bits 2 and 3 into nine cases is ours.");
+    case PairStep::ContactNear:
+    case PairStep::ContactFar:
+      return ours(
+          "The verdict needs only the stencil; these two depth passes are this project's way "
+          "of measuring the contact region.");
+  }
+  return "";
+}
+
+std::string stateText(const raster::RenderState& st, double clearDepth) {
+  const auto hex = [](unsigned v) {
+    std::ostringstream o;
+    o << "0x" << std::hex << std::uppercase << (v < 16 ? "0" : "") << v;
+    return o.str();
+  };
+  const auto ops = [](const raster::StencilOps& o) {
+    return std::string(raster::toString(o.stencilFail)) + " / " +
+           std::string(raster::toString(o.depthFail)) + " / " +
+           std::string(raster::toString(o.depthPass));
+  };
+  std::ostringstream t;
+  t << "<p class=\"state\"><b>Device state</b> (read from the device after the step): scissor "
+    << rectText(st.scissor);
+  if (clearDepth >= 0.0)
+    t << ", depth cleared to " << formatNumber(clearDepth);
+  t << "; depth test <code>" << raster::toString(st.depthFunc) << "</code>, depth writes "
+    << (st.depthWrite ? "on" : "off") << "; stencil test <code>" << raster::toString(st.stencilFunc)
+    << "</code> (ref " << int{st.stencilRef} << ", mask " << hex(st.stencilValueMask)
+    << "), ops sfail / dpfail / dppass <code>" << ops(st.frontOps) << "</code>";
+  if (st.frontOps != st.backOps)
+    t << " (front), <code>" << ops(st.backOps) << "</code> (back)";
+  t << ", stencil write mask " << hex(st.stencilWriteMask) << "; culling <code>"
+    << raster::toString(st.cull) << "</code>.</p>";
+  return t.str();
+}
+
 // A declarative table, one paragraph per step: long, but each case reads on its own.
 std::string stepText(PairStep step) {
   switch (step) {
@@ -131,7 +199,7 @@ std::string stepText(PairStep step) {
              "is cleared to 1 (the farthest value) and A is drawn again with <code>LEQUAL"
              "</code> and depth writes on: each pixel keeps the nearest point of A, "
              "A<sub>min</sub>, where the ray enters A. MOR pixels A does not cover keep 1 "
-             "(black).</p>"
+             "(dark red).</p>"
              "<p>With A's near side in the depth buffer the next two steps can ask where B's "
              "two faces lie relative to it.</p>";
     case PairStep::TestAminFront:

@@ -15,6 +15,11 @@ inline constexpr std::string_view kContactTitle = "The contact region";
 
 // The heading of a step's section.
 [[nodiscard]] std::string stepTitle(core::PairStep step);
+// Whether the step is the paper's or was added here, with one sentence why (a paragraph).
+[[nodiscard]] std::string originText(core::PairStep step);
+// The device state a step ran with, read from the device, and the depth it cleared to (a
+// paragraph); `clearDepth` < 0: the step clears no depth.
+[[nodiscard]] std::string stateText(const raster::RenderState& state, double clearDepth);
 // What the step does and why, as paragraphs.
 [[nodiscard]] std::string stepText(core::PairStep step);
 // What a stencil value means once `step` has run (a legend label).

@@ -1,8 +1,11 @@
 #include "pair_command.hpp"
 
+#include <array>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "frame_options.hpp"
@@ -26,7 +29,24 @@ struct PairOptions {
   bool contact = true;
   bool boxTest = true;
   bool picture = true;
+  std::string pixel;  // --pixel X,Y; empty: not given
 };
+
+// "X,Y" inside the frame, or std::invalid_argument naming the option, the value and the rule.
+std::array<int, 2> parsePixel(const std::string& text, const core::FrameSpec& frame) {
+  int x = -1, y = -1;
+  char comma = 0;
+  std::istringstream in(text);
+  const auto bad = [&](const std::string& rule) {
+    return std::invalid_argument("--pixel " + text + ": " + rule);
+  };
+  if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof())
+    throw bad("expected X,Y (two whole numbers)");
+  if (x < 0 || y < 0 || x >= frame.width || y >= frame.height)
+    throw bad("outside the " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+              " frame (x from the left, y from the bottom, from 0)");
+  return {x, y};
+}
 
 int runPairCommand(const PairOptions& o) {
   const PairSetup setup = loadPairSetup(
@@ -37,7 +57,13 @@ int runPairCommand(const PairOptions& o) {
   request.contact = o.contact;
   request.boxTest = o.boxTest;
   raster::CpuDevice device(setup.frame.width, setup.frame.height);
-  const core::PairResult result = core::collidePair(device, setup.a, setup.b, request);
+  std::optional<PixelProbe> probe;
+  if (!o.pixel.empty()) {
+    const auto [x, y] = parsePixel(o.pixel, setup.frame);
+    probe.emplace(x, y);
+  }
+  const core::PairResult result =
+      core::collidePair(device, setup.a, setup.b, request, probe ? &*probe : nullptr);
   if (!o.dumpCases.empty())
     writePgmBottomUp(o.dumpCases, setup.frame.width, setup.frame.height,
                      frameCaseImage(setup.frame, result));
@@ -45,6 +71,8 @@ int runPairCommand(const PairOptions& o) {
     nlohmann::ordered_json j = pairResultToJson(setup, request, result);
     if (o.noTiming)
       removeTimingFields(j);
+    if (probe)
+      j["pixel"] = probe->toJson(result);
     std::cout << j.dump(2) << '\n';
   } else
     printPairReport(std::cout, setup, request, result, o.picture);
@@ -78,6 +106,10 @@ void addPairCommand(CLI::App& app, int& exitCode) {
                 "skip the two depth passes that measure the overlap (points, box, depth)");
   cmd->add_flag("!--no-box-test", o->boxTest,
                 "run the passes even when the blocks' boxes are apart (shows cases 1, 2, 7, 8)");
+  cmd->add_option("--pixel", o->pixel,
+                  "with --json: add one pixel's case and its depth and stencil after every step "
+                  "(X,Y from the bottom-left, from 0)")
+      ->needs(json);
   cmd->add_flag("!--no-picture", o->picture, "leave the character picture out of the report");
   cmd->callback([o, &exitCode]() { exitCode = runPairCommand(*o); });
 }

@@ -19,10 +19,13 @@ ordered_json rect(const raster::PixelRect& r) {
   return ordered_json::array({r.x0, r.y0, r.x1, r.y1});
 }
 
-// One character per case for the text picture: the interfering cases stand out.
+// One character per case for the text picture: the case's digit, so that every case can be
+// told apart (1 A only, 2 B behind A, 7 B in front of A, 8 B only), with '.' for case 0 so
+// the blocks stand out from the empty background.
 char caseGlyph(int c) {
-  static constexpr char kGlyphs[] = {'.', 'a', 'a', '3', '4', '5', '6', 'a', 'b'};
-  return c < 0 ? ' ' : kGlyphs[c];
+  if (c < 0)
+    return ' ';
+  return c == 0 ? '.' : static_cast<char>('0' + c);
 }
 
 // Which case a cell of several pixels shows: interference first, then the others by how
@@ -72,8 +75,8 @@ void printTiming(std::ostream& out, const core::PairResult& r) {
 // At most 72 x 30 characters, each cell the most telling case among its pixels.
 void printCasePicture(std::ostream& out, const core::PairResult& r) {
   const int cols = std::min(r.mor.width(), 72), rows = std::min(r.mor.height(), 30);
-  out << "  cases in the MOR, top row first ('.' 0, 'a' A only or no contact, 'b' B only, "
-         "'3'-'6' interference):\n";
+  out << "  cases in the MOR, top row first ('.' 0, digits 1-8 the case, '3'-'6' "
+         "interference):\n";
   for (int row = rows - 1; row >= 0; --row) {
     std::string line = "    ";
     const int y0 = row * r.mor.height() / rows, y1 = (row + 1) * r.mor.height() / rows;
@@ -161,6 +164,22 @@ void printPairReport(std::ostream& out, const PairSetup& setup, const core::Pair
   printTiming(out, r);
   if (picture)
     printCasePicture(out, r);
+}
+
+void PixelProbe::afterStep(core::PairStep step, raster::DepthStencilDevice& device) {
+  const raster::PixelRect one{x_, y_, x_ + 1, y_ + 1};
+  steps_[std::string(core::toString(step))] = {{"depth", device.readDepth(one).at(0)},
+                                               {"stencil", device.readStencil(one).at(0)}};
+}
+
+ordered_json PixelProbe::toJson(const core::PairResult& r) const {
+  ordered_json j;
+  j["x"] = x_;
+  j["y"] = y_;
+  const bool inMor = x_ >= r.mor.x0 && x_ < r.mor.x1 && y_ >= r.mor.y0 && y_ < r.mor.y1;
+  j["case"] = inMor ? ordered_json(int{r.caseMap.at(x_, y_)}) : ordered_json(nullptr);
+  j["steps"] = steps_;
+  return j;
 }
 
 std::vector<std::uint8_t> frameCaseImage(const core::FrameSpec& frame, const core::PairResult& r) {

@@ -14,6 +14,21 @@ namespace recode::app {
                                                       const core::PairRequest& request,
                                                       const core::PairResult& result);
 
+// Records one pixel's depth and stencil after every step, for `recode pair --pixel X,Y`: an
+// independent read of the device (one pixel at a time) that `recode explain`'s ray inspector
+// can be checked against.
+class PixelProbe final : public core::PairObserver {
+ public:
+  PixelProbe(int x, int y) : x_(x), y_(y) {}
+  void afterStep(core::PairStep step, raster::DepthStencilDevice& device) override;
+  // {"x", "y", "case" (null outside the MOR), "steps": {step: {"depth", "stencil"}}}.
+  [[nodiscard]] nlohmann::ordered_json toJson(const core::PairResult& result) const;
+
+ private:
+  int x_, y_;
+  nlohmann::ordered_json steps_ = nlohmann::ordered_json::object();
+};
+
 // The human-readable report; `picture` adds a character picture of the MOR's cases.
 void printPairReport(std::ostream& out, const PairSetup& setup, const core::PairRequest& request,
                      const core::PairResult& result, bool picture);

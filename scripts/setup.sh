@@ -11,6 +11,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers glslang-tools
   clang-14 libfuzzer-14-dev
   libfcl-dev libbullet-dev gnuplot-nox
+  chromium python3-websocket
 )
 
 missing=()

@@ -5,7 +5,10 @@
 // drawn separately, agree with the cases (interference only where both blocks are); and the
 // contact picture highlights exactly the interfering pixels.
 //
-// Usage: recode_check_explain DIR
+// With --has-case N, also that case N has pixels (the gallery's pairs are each built to show
+// one case).
+//
+// Usage: recode_check_explain DIR [--has-case N]
 
 #include <stb/stb_image.h>
 
@@ -109,8 +112,9 @@ std::string text(const Rgb& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: recode_check_explain DIR\n";
+  const bool hasCaseOption = argc == 4 && std::string(argv[2]) == "--has-case";
+  if (argc != 2 && !hasCaseOption) {
+    std::cerr << "usage: recode_check_explain DIR [--has-case N]\n";
     return 2;
   }
   const fs::path dir(argv[1]);
@@ -126,6 +130,17 @@ int main(int argc, char** argv) {
     fail("index.html does not start with <!DOCTYPE html>");
 
   const int width = j.at("width"), height = j.at("height");
+  // The part of the frame the pictures show: within the frame, and holding the MOR.
+  const std::array<int, 4> view = j.at("view");
+  {
+    const std::array<int, 4> m = j.at("mor");
+    const bool inFrame = view[0] >= 0 && view[1] >= 0 && view[2] <= width && view[3] <= height &&
+                         view[0] < view[2] && view[1] < view[3];
+    const bool holdsMor =
+        m[2] <= m[0] || (view[0] <= m[0] && view[1] <= m[1] && m[2] <= view[2] && m[3] <= view[3]);
+    if (!inFrame || !holdsMor)
+      fail("explain.json's view is not a part of the frame holding the MOR");
+  }
   std::map<std::string, Picture> byFile;
   const Json* lastStencil = nullptr;
   const Json* cases = nullptr;
@@ -161,12 +176,17 @@ int main(int argc, char** argv) {
     const bool zoom = p.at("zoom");
     if (zoom)
       continue;
-    if (region != std::array<int, 4>{0, 0, width, height})
-      fail(file + ": a whole-frame picture with region other than the frame");
+    const std::string kind = p.at("kind");
+    if (kind == "overview") {
+      if (region != std::array<int, 4>{0, 0, width, height})
+        fail(file + ": the overview's region is not the whole frame");
+      continue;
+    }
+    if (region != view)
+      fail(file + ": a picture that is not a close-up shows other than the view region");
     if (scale < 3)
       fail(file + ": scale " + std::to_string(scale) +
            " too small to sample pixel centres past the outlines (run with a small resolution)");
-    const std::string kind = p.at("kind");
     if (kind == "stencil")
       lastStencil = &p;
     else if (kind == "cases")
@@ -264,8 +284,8 @@ int main(int argc, char** argv) {
       const Picture& contactPic = byFile.at(contact->at("file"));
       const Rgb highlight = colourOf(palettes.at("interfering"));
       long long highlighted = 0;
-      for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
+      for (int y = view[1]; y < view[3]; ++y)
+        for (int x = view[0]; x < view[2]; ++x)
           highlighted += contactPic.at(x, y) == highlight ? 1 : 0;
       if (highlighted != interferingExpected)
         fail("contact picture: " + std::to_string(highlighted) +
@@ -274,6 +294,12 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (hasCaseOption) {
+    const std::string wanted = argv[3];
+    const Json& counts = j.at("case_counts");
+    if (!counts.contains(wanted) || counts.at(wanted).get<long long>() <= 0)
+      fail("case " + wanted + " has no pixel, the pair was chosen to show it");
+  }
   if (failures == 0)
     std::cout << "explain output OK: " << j.at("pictures").size() << " pictures; case map "
               << interfering << " interfering of " << (mor[2] - mor[0]) * (mor[3] - mor[1])

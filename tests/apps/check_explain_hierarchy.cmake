@@ -1,0 +1,42 @@
+cmake_minimum_required(VERSION 3.25)
+# `recode explain SCENE --frame K --pair A:B` explains the block pair `recode run` tests at that
+# frame, in the same pair frame: its interfering pixels must be what `recode run` reports for
+# that pair at frame K, and the page must have the box-descent section marking the pair as
+# reached. Variables: RECODE, SCENE, FRAME, LEAF_A, LEAF_B, OUT.
+math(EXPR frames "${FRAME} + 1")
+execute_process(COMMAND ${RECODE} run ${SCENE} --frames ${frames} --json --no-timing --threads 1
+                OUTPUT_VARIABLE run RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "recode run failed with ${rc}")
+endif()
+string(JSON pairs GET "${run}" frames ${FRAME} pairs)
+string(JSON count LENGTH "${pairs}")
+set(expected "")
+if(count GREATER 0)
+  math(EXPR last "${count} - 1")
+  foreach(i RANGE ${last})
+    string(JSON a GET "${pairs}" ${i} leaf_a)
+    string(JSON b GET "${pairs}" ${i} leaf_b)
+    if(a STREQUAL LEAF_A AND b STREQUAL LEAF_B)
+      string(JSON expected GET "${pairs}" ${i} interfering_pixels)
+    endif()
+  endforeach()
+endif()
+if(expected STREQUAL "")
+  message(FATAL_ERROR "recode run reports no contact of ${LEAF_A} and ${LEAF_B} at frame ${FRAME}")
+endif()
+file(REMOVE_RECURSE ${OUT})
+execute_process(COMMAND ${RECODE} explain ${SCENE} --frame ${FRAME} --pair ${LEAF_A}:${LEAF_B}
+                        --out ${OUT}
+                OUTPUT_VARIABLE explained RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "recode explain failed with ${rc}")
+endif()
+if(NOT explained MATCHES "collide \\(${expected} interfering pixels\\)")
+  message(FATAL_ERROR "recode run reports ${expected} interfering pixels, explain says: ${explained}")
+endif()
+file(READ ${OUT}/index.html html)
+if(NOT html MATCHES "<section id=\"descent\">.*The pair explained here is one of them.*\\(this pair\\)")
+  message(FATAL_ERROR "index.html lacks the box descent reaching the pair")
+endif()
+message("hierarchy pair OK: ${expected} interfering pixels, as recode run reports")
