@@ -25,9 +25,7 @@ def filtered(lines):
             m = TRAILING.match(lines[i])
             if m:
                 out[i] = f"{m.group(1)}{m.group(2)}///< {m.group(3)}"
-            if lines[i].strip() == "#pragma once":
-                out[i] = "#pragma once  /** \\file */"
-            elif lines[i].strip():
+            if lines[i].strip():
                 opening = opening and lines[i].startswith("#pragma")
             i += 1
             continue
@@ -43,6 +41,8 @@ def filtered(lines):
             continue
         for k in range(start, i):
             out[k] = COMMENT.sub(lambda m: f"{m.group(1)}{mark} {m.group(2)}", lines[k])
+        if opening:
+            out[i - 1] += r" \file"  # with no name after it: this file
         opening = False
     return out
 

@@ -11,6 +11,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers glslang-tools
   clang-14 libfuzzer-14-dev
   libfcl-dev libbullet-dev gnuplot-nox
+  pybind11-dev python3-dev python3-numpy python3-pytest doxygen
 )
 
 missing=()
