@@ -72,10 +72,10 @@ struct CollisionRequest {
   // when the overlap is flat on the image plane), but never finer than the longer side of the
   // union over kMaxResolutionFrameSide pixels.
   std::optional<double> pixelSize;
-  int resolution = 256;  // 1..16384, used without pixelSize
+  int resolution = 256;                    // 1..16384, used without pixelSize
   core::MorMode mor = core::MorMode::Min;  // the rectangle the passes run over (core::MorMode)
   AxisChoice axis = AxisChoice::Auto;      // the view axis (AxisChoice)
-  bool contact = true;  // the two depth passes that measure the contact region
+  bool contact = true;                     // the two depth passes that measure the contact region
 };
 
 // One pair of blocks whose pixels interfere.

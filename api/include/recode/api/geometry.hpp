@@ -50,7 +50,7 @@ class ConvexBlock {
 
 // A block placed in its object's coordinates.
 struct BlockPart {
-  ConvexBlockPtr block;  // the block, shared
+  ConvexBlockPtr block;                                    // the block, shared
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // block -> object coordinates
 };
 

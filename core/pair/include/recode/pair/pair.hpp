@@ -96,16 +96,16 @@ struct PairResult {
   bool boxesOverlap = false;  // false with the box test on: nothing was drawn
   raster::PixelRect mor;      // the rectangle the passes ran over (empty if none)
   std::array<long long, kCaseCount> caseCounts{};  // pixels of each case inside the MOR
-  long long interferingPixels = 0;  // pixels in cases 3-6
+  long long interferingPixels = 0;                 // pixels in cases 3-6
   // Case of every MOR pixel (rect == mor; empty when nothing was drawn).
   raster::PixelBuffer<std::uint8_t> caseMap;
-  raster::PixelRect contactRect;  // bounding rectangle of the interfering pixels
+  raster::PixelRect contactRect;    // bounding rectangle of the interfering pixels
   ContactRegion contact;            // the contact region (points and box with the contact passes)
   long long stencilPixelsRead = 0;  // the MOR's area
   long long depthPixelsRead = 0;    // twice the contact rectangle's area (both contact passes)
-  double depthMin = 0.0;  // the world range along the view axis mapped onto depth [1, 0]
-  double depthMax = 0.0;  // the upper end of that range
-  PairTiming timing;      // per step
+  double depthMin = 0.0;            // the world range along the view axis mapped onto depth [1, 0]
+  double depthMax = 0.0;            // the upper end of that range
+  PairTiming timing;                // per step
 };
 
 // Runs RECODE for A and B (world coordinates, each a closed convex block) on `device`, whose
