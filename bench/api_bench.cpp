@@ -1,7 +1,7 @@
 // The collision API per pair (docs/api.md#cost): recode::collide on the built-in pair of
 // `recode pair` (two cones tip to tip, viewed along x with its pixel size), and on one pair of
-// the generated suite with the API's defaults. Measured around the call, as a user pays it
-// (clearing and filling the result included); collision_us is the API's own timing.
+// the generated suite, auto axis at 256 pixels (the default) and 64. Measured around the call, as a
+// user pays it (clearing and filling the result included); collision_us is the API's own timing.
 //
 //   build/bench/recode_api_bench --benchmark_min_time=1
 #include <benchmark/benchmark.h>
@@ -45,14 +45,19 @@ void builtinPair(benchmark::State& state) {
 }
 BENCHMARK(builtinPair)->Unit(benchmark::kMicrosecond);
 
-// Pair `index` of the generated suite (504 pairs), API defaults (auto axis, 256 pixels).
+// Pair `index` of the generated suite (504 pairs), auto axis at `resolution` pixels over the
+// overlap (256: the API's default).
 void suitePair(benchmark::State& state) {
-  const verify::SuitePair p =
-      verify::generatePairSuite()[static_cast<std::size_t>(state.range(0))];
+  const verify::SuitePair p = verify::generatePairSuite()[static_cast<std::size_t>(state.range(0))];
   state.SetLabel(p.label);
-  run(state, objectOf(p.a), objectOf(p.b), CollisionRequest{});
+  CollisionRequest request;
+  request.resolution = static_cast<int>(state.range(1));
+  run(state, objectOf(p.a), objectOf(p.b), request);
 }
-BENCHMARK(suitePair)->Arg(28)->Unit(benchmark::kMicrosecond);
+BENCHMARK(suitePair)
+    ->ArgsProduct({{28}, {256, 64}})
+    ->ArgNames({"pair", "res"})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
