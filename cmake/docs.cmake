@@ -5,6 +5,11 @@
 # base's `//` comments; cmake/doxygen_filter.py lets Doxygen read them (the comment directly
 # above a declaration, a trailing `// ...` after a member). Without Doxygen (doxygen, Debian)
 # there is no target.
+# Only for this project built on its own: a project that adds it with add_subdirectory may have
+# a `docs` target of its own.
+if(NOT PROJECT_IS_TOP_LEVEL)
+  return()
+endif()
 find_package(Doxygen QUIET)
 find_package(Python COMPONENTS Interpreter QUIET)
 if(NOT DOXYGEN_FOUND OR NOT Python_Interpreter_FOUND)
