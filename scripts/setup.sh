@@ -12,6 +12,7 @@ packages=(
   clang-14 libfuzzer-14-dev
   libfcl-dev libbullet-dev gnuplot-nox
   chromium python3-websocket
+  pybind11-dev python3-dev python3-numpy python3-pytest doxygen
 )
 
 missing=()

@@ -35,9 +35,12 @@ class CollisionObject {
 
   // Object -> world. Updates the world boxes of every block at once.
   void setTransform(const Eigen::Isometry3d& transform);
+  // The pose: object -> world.
   [[nodiscard]] const Eigen::Isometry3d& transform() const { return transform_; }
 
+  // The shape, shared with other objects.
   [[nodiscard]] const CollisionGeometry& geometry() const { return *geometry_; }
+  // The shape's shared pointer, to make another object of the same shape.
   [[nodiscard]] const CollisionGeometryPtr& geometryPtr() const { return geometry_; }
   // The world box of the whole object at its pose.
   [[nodiscard]] const core::Aabb& worldBox() const { return tree_.root().worldAabb; }
@@ -62,16 +65,17 @@ enum class AxisChoice { X, Y, Z, Auto };
 // would otherwise ask for a frame of millions of pixels a side.
 inline constexpr double kMaxResolutionFrameSide = 2048.0;
 
+// What collide() measures and how finely: the request half of the request -> result shape.
 struct CollisionRequest {
   // Square pixels of this size, in world units. Without it, the pixel size is the longer side
   // of the overlap box on the image plane divided by `resolution` (the union of the two boxes'
   // when the overlap is flat on the image plane), but never finer than the longer side of the
   // union over kMaxResolutionFrameSide pixels.
   std::optional<double> pixelSize;
-  int resolution = 256;  // 1..16384, used without pixelSize
-  core::MorMode mor = core::MorMode::Min;
-  AxisChoice axis = AxisChoice::Auto;
-  bool contact = true;  // the two depth passes that measure the contact region
+  int resolution = 256;                    // 1..16384, used without pixelSize
+  core::MorMode mor = core::MorMode::Min;  // the rectangle the passes run over (core::MorMode)
+  AxisChoice axis = AxisChoice::Auto;      // the view axis (AxisChoice)
+  bool contact = true;                     // the two depth passes that measure the contact region
 };
 
 // One pair of blocks whose pixels interfere.
@@ -82,8 +86,10 @@ struct BlockContact {
   core::PairResult pair;   // collidePair's result (its case map kept)
 };
 
+// What collide() found for two objects: the verdict, the contact region over all their block
+// pairs, each block pair in contact, and the cost.
 struct CollisionResult {
-  bool collide = false;
+  bool collide = false;             // some pair of blocks interferes
   long long interferingPixels = 0;  // summed over the block pairs
   // The union over the block pairs: all points, the box around their boxes, the summed area
   // and pixels, the greatest depth. Empty without contact (or with request.contact off: then
@@ -95,6 +101,7 @@ struct CollisionResult {
   double collisionUs = 0.0;            // the whole call, device making left out
   double deviceSetupUs = 0.0;          // making devices for sizes not seen before
 
+  // Back to a default result (collide() clears the result it is given).
   void clear() { *this = CollisionResult{}; }
 };
 

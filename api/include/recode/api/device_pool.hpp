@@ -14,8 +14,10 @@
 
 namespace recode {
 
+// Devices by frame size, made on first use by a factory (the seam for a device of your own).
 class DevicePool {
  public:
+  // `factory` makes a device of a given size; empty: raster::CpuDevice.
   explicit DevicePool(core::DeviceFactory factory = {}) : factory_(std::move(factory)) {}
 
   // The device of this size, made if new (its making timed into setupUs()). Throws
@@ -25,6 +27,7 @@ class DevicePool {
 
   // Microseconds spent making devices so far: a one-off cost, kept out of collision times.
   [[nodiscard]] double setupUs() const { return setupUs_; }
+  // The number of devices made: one per frame size seen.
   [[nodiscard]] std::size_t size() const { return devices_.size(); }
 
  private:

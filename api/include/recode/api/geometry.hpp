@@ -19,6 +19,7 @@
 namespace recode {
 
 class ConvexBlock;
+// Blocks are shared, immutable once made.
 using ConvexBlockPtr = std::shared_ptr<const ConvexBlock>;
 
 // A closed convex block in its own coordinates. Every way of making one validates it with
@@ -46,7 +47,9 @@ class ConvexBlock {
   // surface (an edge used by three triangles, stray faces, holes). Named by the path.
   [[nodiscard]] static ConvexBlockPtr fromFileHull(const std::filesystem::path& path);
 
+  // The validated mesh, in the block's own coordinates.
   [[nodiscard]] const core::TriangleMesh& mesh() const { return mesh_; }
+  // The name given when it was made (the path for a file), which starts its error messages.
   [[nodiscard]] const std::string& name() const { return name_; }
 
  private:
@@ -58,11 +61,12 @@ class ConvexBlock {
 
 // A block placed in its object's coordinates.
 struct BlockPart {
-  ConvexBlockPtr block;
+  ConvexBlockPtr block;                                    // the block, shared
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // block -> object coordinates
 };
 
 class CollisionGeometry;
+// Shapes are shared by the objects that use them, immutable once made.
 using CollisionGeometryPtr = std::shared_ptr<const CollisionGeometry>;
 
 // An object's shape: its blocks, held as a core::ObjectTree (the tree `recode run` uses: AABBs
@@ -83,7 +87,9 @@ class CollisionGeometry {
   [[nodiscard]] static CollisionGeometryPtr fromObjGroups(const std::filesystem::path& path,
                                                           bool hull = false);
 
+  // The number of blocks.
   [[nodiscard]] std::size_t blockCount() const { return parts_.size(); }
+  // Block i and its pose in the object. Throws std::out_of_range for i >= blockCount().
   [[nodiscard]] const BlockPart& part(std::size_t i) const { return parts_.at(i); }
   // The tree at the identity pose; each CollisionObject poses a copy of it.
   [[nodiscard]] const core::ObjectTree& tree() const { return tree_; }

@@ -14,20 +14,23 @@
 
 namespace recode {
 
+// A CollisionManager's name for an object it holds (never reused within a manager).
 using ObjectId = int;
 
 // One object pair in contact; a < b.
 struct ObjectContact {
-  ObjectId a = 0;
-  ObjectId b = 0;
-  CollisionResult result;
+  ObjectId a = 0;          // the smaller id
+  ObjectId b = 0;          // the larger id
+  CollisionResult result;  // recode::collide's result for the two objects
 };
 
+// What the last CollisionManager::collide() did.
 struct ManagerStats {
   long long candidatePairs = 0;  // pairs whose world boxes overlap (the broad phase's output)
-  long long pairsInContact = 0;
+  long long pairsInContact = 0;  // of those, the pairs whose pixels interfere
 };
 
+// Objects by id, and every pair of them in contact (sort and sweep, then recode::collide).
 class CollisionManager {
  public:
   // `factory` makes the devices pairs are drawn on; empty: raster::CpuDevice.
@@ -39,7 +42,9 @@ class CollisionManager {
   void remove(ObjectId id);
   // Moves an object (the same as object(id).setTransform(transform)).
   void update(ObjectId id, const Eigen::Isometry3d& transform);
+  // The object of this id. Throws std::out_of_range for an id not in the manager.
   [[nodiscard]] CollisionObject& object(ObjectId id);
+  // The number of objects held.
   [[nodiscard]] std::size_t size() const { return entries_.size(); }
 
   // Every pair in contact at the objects' current poses, ordered by (a, b).
@@ -48,7 +53,9 @@ class CollisionManager {
   void collide(const CollisionRequest& request,
                const std::function<void(ObjectId, ObjectId, const CollisionResult&)>& onContact);
 
-  [[nodiscard]] const ManagerStats& stats() const { return stats_; }  // of the last collide()
+  // What the last collide() did.
+  [[nodiscard]] const ManagerStats& stats() const { return stats_; }
+  // The devices pairs are drawn on (one per frame size).
   [[nodiscard]] const DevicePool& devices() const { return devices_; }
 
  private:

@@ -16,16 +16,22 @@ namespace recode::raster {
 // (i + 0.5, j + 0.5), depth z in [0, 1]. x and y are expected on the 1/256-pixel grid
 // (see snapToSubpixel); a device snaps them to that grid itself with round-half-to-even.
 struct WindowVertex {
-  float x = 0.0f;
-  float y = 0.0f;
-  float z = 0.0f;
+  float x = 0.0f;  // pixels from the left edge
+  float y = 0.0f;  // pixels from the bottom edge
+  float z = 0.0f;  // depth, 0 nearest and 1 farthest
 };
 
+// A framebuffer of width() x height() pixels with a 24-bit depth and an 8-bit stencil value
+// per pixel, and the commands RECODE draws with. Implementations: raster::CpuDevice (the
+// bit-exact reference) and the GL and Vulkan devices of verify/; a DevicePool's factory makes
+// them for the collision API.
 class DepthStencilDevice {
  public:
   virtual ~DepthStencilDevice() = default;
 
+  // Framebuffer width in pixels, fixed when the device is made.
   [[nodiscard]] virtual int width() const = 0;
+  // Framebuffer height in pixels, fixed when the device is made.
   [[nodiscard]] virtual int height() const = 0;
 
   // Drawing, clears and read-backs are all limited to the scissor rectangle (half-open,
@@ -35,15 +41,21 @@ class DepthStencilDevice {
   // Clear depth (quantised like fragment depth) / stencil inside the scissor. As in GL, the
   // depth write mask and the stencil write mask apply to clears too.
   virtual void clearDepth(double depth) = 0;
+  // Sets the stencil inside the scissor to `value` (bits outside the write mask kept).
   virtual void clearStencil(std::uint8_t value) = 0;
 
+  // The depth test: a fragment passes when func(fragment depth, stored depth) holds.
   virtual void setDepthFunc(CompareFunc func) = 0;
+  // Whether fragments that pass the tests (and clears) write depth.
   virtual void setDepthWriteMask(bool write) = 0;
 
+  // The stencil test: passes when func(ref & valueMask, stored & valueMask) holds.
   virtual void setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) = 0;
   virtual void setStencilOps(Face face, const StencilOps& ops) = 0;  // face Front, Back or Both
+  // The stencil bits that stencil operations and clears may change.
   virtual void setStencilWriteMask(std::uint8_t mask) = 0;
 
+  // Which triangles are discarded by their winding in window coordinates.
   virtual void setCullMode(CullMode mode) = 0;
 
   // Draws indexed triangles (three indices each). Throws std::invalid_argument for an index
@@ -56,6 +68,7 @@ class DepthStencilDevice {
   // rows from the bottom (y = rect.y0) up, as glReadPixels returns them. Depth values are
   // 24-bit unsigned normalised integers in [0, 2^24 - 1].
   [[nodiscard]] virtual std::vector<std::uint8_t> readStencil(const PixelRect& rect) const = 0;
+  // The depth values over `rect`, laid out as readStencil's.
   [[nodiscard]] virtual std::vector<std::uint32_t> readDepth(const PixelRect& rect) const = 0;
 };
 

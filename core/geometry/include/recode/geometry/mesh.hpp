@@ -17,13 +17,17 @@
 
 namespace recode::core {
 
+// The position of a vertex in TriangleMesh::vertices.
 using VertexIndex = std::uint32_t;
+// Three vertex indices, counter-clockwise seen from outside a closed mesh.
 using Triangle = std::array<VertexIndex, 3>;
 
 // An axis-aligned box. The default value is empty (min = +inf, max = -inf), so that
 // extending it by a point gives that point's box.
 struct Aabb {
+  // The smallest x, y, z (+inf in an empty box).
   Eigen::Vector3d min = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  // The largest x, y, z (-inf in an empty box).
   Eigen::Vector3d max = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
 
   // True if no point has been added (any min component above the max component).
@@ -47,11 +51,14 @@ struct Aabb {
   [[nodiscard]] double diagonal() const { return isEmpty() ? 0.0 : extent().norm(); }
 };
 
+// A mesh of triangles over shared vertices (the conventions above).
 struct TriangleMesh {
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<Triangle> triangles;
+  std::vector<Eigen::Vector3d> vertices;  // points, indexed by the triangles
+  std::vector<Triangle> triangles;        // indices into vertices
 
+  // vertices.size()
   [[nodiscard]] std::size_t vertexCount() const { return vertices.size(); }
+  // triangles.size()
   [[nodiscard]] std::size_t triangleCount() const { return triangles.size(); }
 };
 
@@ -64,6 +71,7 @@ struct TriangleMesh {
 // triangle's last two indices are swapped, so outward faces stay outward.
 [[nodiscard]] TriangleMesh transformed(const TriangleMesh& mesh,
                                        const Eigen::Isometry3d& transform);
+// The same for an affine map, which may also scale or shear.
 [[nodiscard]] TriangleMesh transformed(const TriangleMesh& mesh, const Eigen::Affine3d& transform);
 
 // Signed volume enclosed by the triangles (divergence theorem: the sum over triangles of

@@ -14,20 +14,21 @@ namespace recode::core {
 
 // A concrete frame: what the device is sized to and the view maps onto.
 struct FrameSpec {
-  ViewAxis axis = ViewAxis::Z;
-  ViewWindow window;
-  int width = 800;
-  int height = 800;
+  ViewAxis axis = ViewAxis::Z;  // the view direction: one of the world axes
+  ViewWindow window;            // the world rectangle on the image plane the pixels cover
+  int width = 800;              // pixels across the window
+  int height = 800;             // pixel rows
 };
 
 // Command-line overrides of the scene's resolution ("--resolution W[xH]", "--pixel-size S").
 // At most one of width and pixelSize may be set; height only with width.
 struct FrameOverrides {
-  std::optional<int> width;
-  std::optional<int> height;
-  std::optional<double> pixelSize;
+  std::optional<int> width;         // W of --resolution
+  std::optional<int> height;        // H of --resolution WxH
+  std::optional<double> pixelSize;  // S of --pixel-size, world units
 };
 
+// W and H of a frame when neither the scene nor an override gives a resolution.
 inline constexpr int kDefaultResolution = 800;
 // The default window is the objects' bounds on the image plane grown by this fraction of
 // their larger in-plane extent on every side.

@@ -30,9 +30,10 @@ enum class MorMode { Min, Max, Full };
 [[nodiscard]] std::string_view toString(MorMode mode);                     // "min", "max", "full"
 [[nodiscard]] std::optional<MorMode> parseMorMode(std::string_view name);  // nullopt if unknown
 
+// What collidePair draws and measures.
 struct PairRequest {
-  FrameSpec frame;
-  MorMode mor = MorMode::Min;
+  FrameSpec frame;             // the frame; the device must be of its size
+  MorMode mor = MorMode::Min;  // the rectangle the passes run over
   // Run the two extra depth passes that measure the overlap interval of interfering pixels
   // (contact points, box, greatest depth). Without them only the verdict, the cases, the
   // pixel count and the area are known.
@@ -54,7 +55,8 @@ enum class PairStep {
   ContactNear,    // depth = max(Amin, Bmin) over the interfering pixels' rectangle
   ContactFar,     // depth = min(Amax, Bmax) over the same rectangle
 };
-inline constexpr int kPairStepCount = 8;
+inline constexpr int kPairStepCount = 8;  // the number of PairStep values
+// The step's name in reports and JSON ("set_z", "test_z", ...).
 [[nodiscard]] std::string_view toString(PairStep step);
 
 // Called after each step with the device in its state after that step. An observer may read
@@ -62,16 +64,18 @@ inline constexpr int kPairStepCount = 8;
 class PairObserver {
  public:
   virtual ~PairObserver() = default;
+  // Called once for each step that runs, in order.
   virtual void afterStep(PairStep step, raster::DepthStencilDevice& device) = 0;
 };
 
+// Where two blocks overlap, as the interfering pixels measure it.
 struct ContactRegion {
   // One point per interfering pixel: the pixel centre, halfway along the overlap interval.
   std::vector<Eigen::Vector3d> points;
   // Box of both ends of every pixel's overlap interval (empty without interference or
   // without the contact passes).
   Aabb box;
-  long long pixels = 0;
+  long long pixels = 0;   // interfering pixels
   double area = 0.0;      // pixels * pixel width * pixel height, world units squared
   double maxDepth = 0.0;  // greatest overlap interval length along the view axis, world units
   // Pixels whose measured near end lay one or more steps beyond the far end: the blocks
@@ -79,27 +83,29 @@ struct ContactRegion {
   long long collapsedPixels = 0;
 };
 
+// Wall-clock time of one collidePair call, microseconds.
 struct PairTiming {
   std::array<double, kPairStepCount> stepUs{};  // indexed by PairStep
   double classifyUs = 0.0;                      // decoding the stencil, building the contact
-  double totalUs = 0.0;
+  double totalUs = 0.0;                         // the whole call
 };
 
+// Everything collidePair found for a pair.
 struct PairResult {
-  bool collide = false;
+  bool collide = false;       // some pixel is in case 3-6: the blocks interfere
   bool boxesOverlap = false;  // false with the box test on: nothing was drawn
   raster::PixelRect mor;      // the rectangle the passes ran over (empty if none)
   std::array<long long, kCaseCount> caseCounts{};  // pixels of each case inside the MOR
-  long long interferingPixels = 0;
+  long long interferingPixels = 0;                 // pixels in cases 3-6
   // Case of every MOR pixel (rect == mor; empty when nothing was drawn).
   raster::PixelBuffer<std::uint8_t> caseMap;
-  raster::PixelRect contactRect;  // bounding rectangle of the interfering pixels
-  ContactRegion contact;
-  long long stencilPixelsRead = 0;
-  long long depthPixelsRead = 0;
-  double depthMin = 0.0;  // the world range along the view axis mapped onto depth [1, 0]
-  double depthMax = 0.0;
-  PairTiming timing;
+  raster::PixelRect contactRect;    // bounding rectangle of the interfering pixels
+  ContactRegion contact;            // the contact region (points and box with the contact passes)
+  long long stencilPixelsRead = 0;  // the MOR's area
+  long long depthPixelsRead = 0;    // twice the contact rectangle's area (both contact passes)
+  double depthMin = 0.0;            // the world range along the view axis mapped onto depth [1, 0]
+  double depthMax = 0.0;            // the upper end of that range
+  PairTiming timing;                // per step
 };
 
 // Runs RECODE for A and B (world coordinates, each a closed convex block) on `device`, whose

@@ -1,0 +1,301 @@
+// CollisionObject, CollisionRequest, CollisionResult and collide() (recode/api/collision.hpp).
+// Results are the C++ structs themselves; their vectors reach Python as read-only NumPy views
+// whose base keeps the result alive, so reading a large case map or point list copies nothing.
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "recode/api/collision.hpp"
+
+namespace recode::python {
+
+namespace {
+
+using ObjectHolder = std::shared_ptr<CollisionObject>;
+
+// A shape argument: a CollisionGeometry, or a ConvexBlock taken as a geometry of one block.
+CollisionGeometryPtr shapeFrom(const py::handle& shape) {
+  if (py::isinstance<ConvexBlock>(shape))
+    return CollisionGeometry::single(shape.cast<std::shared_ptr<ConvexBlock>>());
+  if (py::isinstance<CollisionGeometry>(shape))
+    return shape.cast<std::shared_ptr<CollisionGeometry>>();
+  throw py::type_error("shape: expected a ConvexBlock or a CollisionGeometry, got " +
+                       py::str(py::type::of(shape)).cast<std::string>());
+}
+
+py::object boxOf(const core::Aabb& box) {
+  if (box.isEmpty())
+    return py::none();
+  py::array_t<double> out({2, 3});
+  auto w = out.mutable_unchecked<2>();
+  for (int k = 0; k < 3; ++k) {
+    w(0, k) = box.min[k];
+    w(1, k) = box.max[k];
+  }
+  return out;
+}
+
+py::array_t<long long> countsOf(const std::array<long long, core::kCaseCount>& counts) {
+  py::array_t<long long> out(core::kCaseCount);
+  std::copy(counts.begin(), counts.end(), out.mutable_data());
+  return out;
+}
+
+py::tuple rectOf(const raster::PixelRect& r) {
+  return py::make_tuple(r.x0, r.y0, r.x1, r.y1);
+}
+
+std::string morName(core::MorMode mode) {
+  return std::string(core::toString(mode));
+}
+core::MorMode morFrom(const std::string& name) {
+  if (const auto mode = core::parseMorMode(name))
+    return *mode;
+  throw py::value_error("mor: '" + name + "' is not a MOR mode (min, max or full)");
+}
+
+std::string axisName(AxisChoice axis) {
+  switch (axis) {
+    case AxisChoice::X:
+      return "x";
+    case AxisChoice::Y:
+      return "y";
+    case AxisChoice::Z:
+      return "z";
+    case AxisChoice::Auto:
+      break;
+  }
+  return "auto";
+}
+AxisChoice axisFrom(const std::string& name) {
+  if (name == "x")
+    return AxisChoice::X;
+  if (name == "y")
+    return AxisChoice::Y;
+  if (name == "z")
+    return AxisChoice::Z;
+  if (name == "auto")
+    return AxisChoice::Auto;
+  throw py::value_error("axis: '" + name + "' is not a view axis (x, y, z or auto)");
+}
+
+std::optional<double> pixelSizeFrom(const std::optional<double>& size) {
+  if (size && !(std::isfinite(*size) && *size > 0.0))
+    throw py::value_error("pixel_size: " + py::str(py::float_(*size)).cast<std::string>() +
+                          " is not a positive finite number of world units");
+  return size;
+}
+
+int resolutionFrom(int resolution) {
+  if (resolution < 1 || resolution > raster::kMaxFramebufferSize)
+    throw py::value_error("resolution: " + std::to_string(resolution) + " is outside 1.." +
+                          std::to_string(raster::kMaxFramebufferSize));
+  return resolution;
+}
+
+std::string repr(const CollisionRequest& r) {
+  return "CollisionRequest(pixel_size=" +
+         (r.pixelSize ? py::str(py::float_(*r.pixelSize)).cast<std::string>() : "None") +
+         ", resolution=" + std::to_string(r.resolution) + ", mor='" + morName(r.mor) + "', axis='" +
+         axisName(r.axis) + "', contact=" + (r.contact ? "True" : "False") + ")";
+}
+
+// The case map of the result's one block pair in contact; None without contact.
+py::object singleCaseMap(const py::object& self) {
+  const auto& result = self.cast<const CollisionResult&>();
+  if (result.contacts.empty())
+    return py::none();
+  if (result.contacts.size() > 1)
+    throw py::value_error(std::to_string(result.contacts.size()) +
+                          " block pairs are in contact, each with its own case map and frame: "
+                          "read result.contacts[i].case_map");
+  const py::object first =
+      py::cast(&result.contacts.front(), py::return_value_policy::reference_internal, self);
+  return first.attr("case_map");
+}
+
+}  // namespace
+
+void bindCollision(py::module_& m) {
+  py::class_<CollisionObject, ObjectHolder>(
+      m, "CollisionObject",
+      "A shape at a pose (object -> world). Poses are 4 x 4 matrices [[R, t], [0, 0, 0, 1]] or "
+      "rotation (3 x 3) and translation (3,) keywords.")
+      .def(py::init([](const py::handle& shape, std::optional<py::object> pose,
+                       std::optional<py::object> rotation, std::optional<py::object> translation) {
+             return std::make_shared<CollisionObject>(
+                 shapeFrom(shape), poseFromArguments(pose, rotation, translation));
+           }),
+           py::arg("shape"), py::arg("pose") = py::none(), py::kw_only(),
+           py::arg("rotation") = py::none(), py::arg("translation") = py::none())
+      .def(
+          "set_transform",
+          [](CollisionObject& o, std::optional<py::object> pose, std::optional<py::object> rotation,
+             std::optional<py::object> translation) {
+            o.setTransform(poseFromArguments(pose, rotation, translation));
+          },
+          py::arg("pose") = py::none(), py::kw_only(), py::arg("rotation") = py::none(),
+          py::arg("translation") = py::none(), "Moves the object (its world boxes follow).")
+      .def_property_readonly(
+          "transform", [](const CollisionObject& o) { return matrixOf(o.transform()); },
+          "The pose, 4 x 4 (a copy).")
+      .def_property_readonly("geometry",
+                             [](const CollisionObject& o) {
+                               return std::const_pointer_cast<CollisionGeometry>(o.geometryPtr());
+                             })
+      .def_property_readonly(
+          "world_box", [](const CollisionObject& o) { return boxOf(o.worldBox()); },
+          "[[min x, y, z], [max x, y, z]] of the object at its pose.");
+
+  py::class_<CollisionRequest>(m, "CollisionRequest",
+                               "What collide() measures and how finely (docs/api.md).")
+      .def(py::init([](std::optional<double> pixelSize, int resolution, const std::string& mor,
+                       const std::string& axis, bool contact) {
+             CollisionRequest r;
+             r.pixelSize = pixelSizeFrom(pixelSize);
+             r.resolution = resolutionFrom(resolution);
+             r.mor = morFrom(mor);
+             r.axis = axisFrom(axis);
+             r.contact = contact;
+             return r;
+           }),
+           py::kw_only(), py::arg("pixel_size") = py::none(), py::arg("resolution") = 256,
+           py::arg("mor") = "min", py::arg("axis") = "auto", py::arg("contact") = true)
+      .def_property(
+          "pixel_size", [](const CollisionRequest& r) { return r.pixelSize; },
+          [](CollisionRequest& r, std::optional<double> s) { r.pixelSize = pixelSizeFrom(s); },
+          "Square pixels of this size in world units; None: use resolution.")
+      .def_property(
+          "resolution", [](const CollisionRequest& r) { return r.resolution; },
+          [](CollisionRequest& r, int n) { r.resolution = resolutionFrom(n); },
+          "Pixels along the longer side of the blocks' overlap box (without pixel_size).")
+      .def_property(
+          "mor", [](const CollisionRequest& r) { return morName(r.mor); },
+          [](CollisionRequest& r, const std::string& s) { r.mor = morFrom(s); },
+          "'min' (default), 'max' or 'full'.")
+      .def_property(
+          "axis", [](const CollisionRequest& r) { return axisName(r.axis); },
+          [](CollisionRequest& r, const std::string& s) { r.axis = axisFrom(s); },
+          "'x', 'y', 'z' or 'auto' (the overlap box's thinnest side).")
+      .def_readwrite("contact", &CollisionRequest::contact,
+                     "Measure the contact region (points, box, depth).")
+      .def("__repr__", &repr);
+
+  py::class_<core::FrameSpec>(m, "Frame", "The frame a block pair was drawn in.")
+      .def_property_readonly(
+          "axis", [](const core::FrameSpec& f) { return std::string(core::toString(f.axis)); })
+      .def_property_readonly(
+          "window",
+          [](const core::FrameSpec& f) {
+            return py::make_tuple(f.window.umin, f.window.vmin, f.window.umax, f.window.vmax);
+          },
+          "(umin, vmin, umax, vmax) in world units on the image plane.")
+      .def_readonly("width", &core::FrameSpec::width)
+      .def_readonly("height", &core::FrameSpec::height)
+      .def_property_readonly("pixel_size", [](const core::FrameSpec& f) {
+        return (f.window.umax - f.window.umin) / f.width;
+      });
+
+  py::class_<core::ContactRegion>(m, "ContactRegion")
+      .def_property_readonly(
+          "points",
+          [](const py::object& self) {
+            return pointsView(self.cast<const core::ContactRegion&>().points, self);
+          },
+          "(n, 3) float64, one world point per interfering pixel (read-only).")
+      .def_property_readonly(
+          "box", [](const core::ContactRegion& c) { return boxOf(c.box); },
+          "[[min], [max]] of the overlap intervals' ends, or None.")
+      .def_readonly("pixels", &core::ContactRegion::pixels)
+      .def_readonly("area", &core::ContactRegion::area, "World units squared.")
+      .def_readonly("max_depth", &core::ContactRegion::maxDepth,
+                    "Longest overlap along the view axis, world units.")
+      .def_readonly("collapsed_pixels", &core::ContactRegion::collapsedPixels);
+
+  py::class_<BlockContact>(m, "BlockContact", "One pair of blocks whose pixels interfere.")
+      .def_readonly("block_a", &BlockContact::blockA)
+      .def_readonly("block_b", &BlockContact::blockB)
+      .def_readonly("frame", &BlockContact::frame)
+      .def_property_readonly(
+          "case_counts", [](const BlockContact& c) { return countsOf(c.pair.caseCounts); },
+          "Pixels of each case 0-8 inside the MOR, int64 (9,).")
+      .def_property_readonly(
+          "case_map",
+          [](const py::object& self) {
+            const auto& map = self.cast<const BlockContact&>().pair.caseMap;
+            return gridView(map.data, map.rect.height(), map.rect.width(), self);
+          },
+          "uint8 (rows, columns) over the MOR, read-only: case_map[y - mor[1], x - mor[0]], "
+          "row 0 the bottom row.")
+      .def_property_readonly(
+          "mor", [](const BlockContact& c) { return rectOf(c.pair.mor); },
+          "(x0, y0, x1, y1) in pixels, half-open, y from the bottom.")
+      .def_property_readonly("interfering_pixels",
+                             [](const BlockContact& c) { return c.pair.interferingPixels; })
+      .def_property_readonly(
+          "contact",
+          [](const BlockContact& c) -> const core::ContactRegion& { return c.pair.contact; },
+          py::return_value_policy::reference_internal)
+      .def_property_readonly(
+          "timing_us", [](const BlockContact& c) { return c.pair.timing.totalUs; },
+          "Wall time of the pair algorithm, microseconds.");
+
+  py::class_<CollisionResult>(m, "CollisionResult")
+      .def_readonly("collide", &CollisionResult::collide)
+      .def("__bool__", [](const CollisionResult& r) { return r.collide; })
+      .def_readonly("interfering_pixels", &CollisionResult::interferingPixels)
+      .def_readonly("contact", &CollisionResult::contact,
+                    "The union over the block pairs in contact.")
+      .def_property_readonly(
+          "contacts",
+          [](const py::object& self) {
+            py::list list;
+            for (const BlockContact& c : self.cast<const CollisionResult&>().contacts)
+              list.append(py::cast(&c, py::return_value_policy::reference_internal, self));
+            return list;
+          },
+          "The block pairs in contact, by (block_a, block_b).")
+      .def_property_readonly(
+          "case_counts",
+          [](const CollisionResult& r) {
+            std::array<long long, core::kCaseCount> sum{};
+            for (const BlockContact& c : r.contacts)
+              for (int k = 0; k < core::kCaseCount; ++k)
+                sum[static_cast<std::size_t>(k)] += c.pair.caseCounts[static_cast<std::size_t>(k)];
+            return countsOf(sum);
+          },
+          "Cases 0-8 summed over the block pairs in contact, int64 (9,).")
+      .def_property_readonly("case_map", &singleCaseMap,
+                             "The case map of the one block pair in contact (None without "
+                             "contact; ValueError with several: see contacts).")
+      .def_readonly("box_tests", &CollisionResult::boxTests)
+      .def_readonly("block_pairs_drawn", &CollisionResult::blockPairsDrawn)
+      .def_readonly("collision_us", &CollisionResult::collisionUs,
+                    "The whole call, microseconds, device making left out.")
+      .def_readonly("device_setup_us", &CollisionResult::deviceSetupUs)
+      .def("__repr__", [](const CollisionResult& r) {
+        return "<recode.CollisionResult collide=" + std::string(r.collide ? "True" : "False") +
+               " interfering_pixels=" + std::to_string(r.interferingPixels) +
+               " block_pairs=" + std::to_string(r.contacts.size()) + ">";
+      });
+
+  m.def(
+      "collide",
+      [](const CollisionObject& a, const CollisionObject& b,
+         const std::optional<CollisionRequest>& request) {
+        CollisionResult result;
+        collide(a, b, request.value_or(CollisionRequest{}), result);
+        return result;
+      },
+      py::arg("a"), py::arg("b"), py::arg("request") = py::none(),
+      "Collides two objects at their current poses; returns a CollisionResult (true when they "
+      "collide).");
+}
+
+}  // namespace recode::python

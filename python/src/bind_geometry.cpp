@@ -1,0 +1,169 @@
+// ConvexBlock and CollisionGeometry (recode/api/geometry.hpp), and the primitive solids of
+// recode/geometry/generators.hpp as ready-made blocks. The API shares its shapes as
+// std::shared_ptr<const T>; Python holds the same objects (shapes are immutable: the module
+// exposes no way to change one).
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "recode/api/geometry.hpp"
+#include "recode/geometry/generators.hpp"
+
+namespace recode::python {
+
+namespace {
+
+using BlockHolder = std::shared_ptr<ConvexBlock>;
+using GeometryHolder = std::shared_ptr<CollisionGeometry>;
+
+BlockHolder held(ConvexBlockPtr block) {
+  return std::const_pointer_cast<ConvexBlock>(block);
+}
+GeometryHolder held(CollisionGeometryPtr g) {
+  return std::const_pointer_cast<CollisionGeometry>(g);
+}
+BlockHolder heldBlock(const py::handle& block) {
+  return block.cast<BlockHolder>();
+}
+
+// A missing file is FileNotFoundError, as open() raises it; anything wrong inside a file is
+// the reader's MeshError.
+BlockHolder blockFromFile(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) {
+    const py::object error =
+        py::module_::import("builtins")
+            .attr("FileNotFoundError")(ENOENT, "no such mesh file", path.string());
+    PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+    throw py::error_already_set();
+  }
+  return held(ConvexBlock::fromFile(path));
+}
+
+BlockHolder blockFromArrays(const py::handle& vertices, const py::handle& faces, std::string name) {
+  const std::vector<Eigen::Vector3d> v = verticesFrom(vertices, "vertices");
+  const std::vector<core::Triangle> f = facesFrom(faces, v.size(), "faces");
+  return held(ConvexBlock::fromArrays(v, f, std::move(name)));
+}
+
+// One part of a compound: a block (at the identity) or a (block, pose) pair.
+BlockPart partFrom(const py::handle& item, std::size_t index) {
+  const std::string what = "parts[" + std::to_string(index) + "]";
+  if (py::isinstance<ConvexBlock>(item))
+    return {heldBlock(item), Eigen::Isometry3d::Identity()};
+  if (py::isinstance<py::tuple>(item) && py::len(item) == 2 &&
+      py::isinstance<ConvexBlock>(item[py::int_(0)])) {
+    BlockPart part{heldBlock(item[py::int_(0)]), Eigen::Isometry3d::Identity()};
+    try {
+      part.pose = poseFrom(item[py::int_(1)]);
+    } catch (const py::value_error& e) {
+      throw py::value_error(what + ": " + e.what());
+    }
+    return part;
+  }
+  throw py::type_error(what + ": expected a ConvexBlock or a (ConvexBlock, 4 x 4 pose) tuple");
+}
+
+}  // namespace
+
+void bindGeometry(py::module_& m) {
+  py::class_<ConvexBlock, BlockHolder>(
+      m, "ConvexBlock",
+      "A closed convex block, validated when made (recode.MeshError names the problem).")
+      .def_static("from_arrays", &blockFromArrays, py::arg("vertices"), py::arg("faces"),
+                  py::arg("name") = "block",
+                  "A block from an (n, 3) array of vertices and an (m, 3) array of vertex "
+                  "indices, counter-clockwise seen from outside. `name` starts error messages.")
+      .def_static("from_file", &blockFromFile, py::arg("path"),
+                  "A block from an OBJ or OFF file, named by its path.")
+      .def_property_readonly("name", &ConvexBlock::name)
+      .def_property_readonly(
+          "vertices",
+          [](const py::object& self) {
+            return pointsView(self.cast<const ConvexBlock&>().mesh().vertices, self);
+          },
+          "(n, 3) float64, read-only")
+      .def_property_readonly(
+          "faces",
+          [](const py::object& self) {
+            const auto& triangles = self.cast<const ConvexBlock&>().mesh().triangles;
+            static_assert(sizeof(core::Triangle) == 3 * sizeof(core::VertexIndex));
+            std::vector<core::VertexIndex> flat;  // a copy: Triangle is std::array
+            flat.reserve(3 * triangles.size());
+            for (const core::Triangle& t : triangles)
+              flat.insert(flat.end(), t.begin(), t.end());
+            py::array_t<core::VertexIndex> out({static_cast<long>(triangles.size()), 3L});
+            std::copy(flat.begin(), flat.end(), out.mutable_data());
+            return out;
+          },
+          "(m, 3) uint32 vertex indices (a copy)")
+      .def("__repr__", [](const ConvexBlock& b) {
+        return "<recode.ConvexBlock '" + b.name() + "': " + std::to_string(b.mesh().vertexCount()) +
+               " vertices, " + std::to_string(b.mesh().triangleCount()) + " triangles>";
+      });
+
+  m.def(
+      "cone",
+      [](double radius, double height, int segments, std::string name) {
+        return held(ConvexBlock::fromMesh(core::makeCone(radius, height, segments), name));
+      },
+      py::arg("radius"), py::arg("height"), py::arg("segments") = 32, py::arg("name") = "cone",
+      "A cone: base disc of `radius` in z = 0 centred at the origin, apex at (0, 0, height).");
+  m.def(
+      "cylinder",
+      [](double radius, double height, int segments, std::string name) {
+        return held(ConvexBlock::fromMesh(core::makeCylinder(radius, height, segments), name));
+      },
+      py::arg("radius"), py::arg("height"), py::arg("segments") = 32, py::arg("name") = "cylinder",
+      "A cylinder along z from z = 0 to z = height.");
+  m.def(
+      "box",
+      [](double hx, double hy, double hz, std::string name) {
+        return held(ConvexBlock::fromMesh(core::makeBox(hx, hy, hz), name));
+      },
+      py::arg("hx"), py::arg("hy"), py::arg("hz"), py::arg("name") = "box",
+      "An axis-aligned box centred at the origin with half extents hx, hy, hz.");
+  m.def(
+      "sphere",
+      [](double radius, int segments, int rings, std::string name) {
+        return held(ConvexBlock::fromMesh(core::makeSphere(radius, segments, rings), name));
+      },
+      py::arg("radius"), py::arg("segments") = 32, py::arg("rings") = 16,
+      py::arg("name") = "sphere", "A tessellated sphere centred at the origin.");
+
+  py::class_<CollisionGeometry, GeometryHolder>(
+      m, "CollisionGeometry",
+      "An object's shape: one or several convex blocks fixed together; shared by objects.")
+      .def_static(
+          "single", [](const BlockHolder& block) { return held(CollisionGeometry::single(block)); },
+          py::arg("block"))
+      .def_static(
+          "compound",
+          [](const py::sequence& parts, std::string name) {
+            std::vector<BlockPart> list;
+            for (std::size_t i = 0; i < py::len(parts); ++i)
+              list.push_back(partFrom(parts[i], i));
+            return held(CollisionGeometry::compound(std::move(list), std::move(name)));
+          },
+          py::arg("parts"), py::arg("name") = "compound",
+          "Blocks, each a ConvexBlock or a (ConvexBlock, 4 x 4 pose in the object) tuple; "
+          "results name blocks by their index here.")
+      .def_property_readonly("block_count", &CollisionGeometry::blockCount)
+      .def("__len__", &CollisionGeometry::blockCount)
+      .def(
+          "block", [](const CollisionGeometry& g, std::size_t i) { return held(g.part(i).block); },
+          py::arg("index"))
+      .def(
+          "block_pose",
+          [](const CollisionGeometry& g, std::size_t i) { return matrixOf(g.part(i).pose); },
+          py::arg("index"), "Block `index`'s pose in the object, 4 x 4.");
+}
+
+}  // namespace recode::python

@@ -1,0 +1,15 @@
+#pragma once
+// The parts of the module `recode`, each binding one header of the collision API
+// (recode/api/*.hpp); module.cpp calls them in order, since later parts name earlier types.
+
+#include <pybind11/pybind11.h>
+
+namespace recode::python {
+
+namespace py = pybind11;
+
+void bindGeometry(py::module_& m);   // ConvexBlock, CollisionGeometry, the primitive solids
+void bindCollision(py::module_& m);  // CollisionObject, CollisionRequest, CollisionResult, collide
+void bindManager(py::module_& m);    // CollisionManager, ObjectContact
+
+}  // namespace recode::python
