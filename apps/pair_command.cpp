@@ -12,6 +12,7 @@
 #include "pgm.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
+#include "recode/refine/adaptive.hpp"
 
 namespace recode::app {
 
@@ -26,7 +27,56 @@ struct PairOptions {
   bool contact = true;
   bool boxTest = true;
   bool picture = true;
+  std::string mode = "reference";  // --mode
 };
+
+nlohmann::ordered_json boxJson(const core::Aabb& box) {
+  if (box.isEmpty())
+    return nullptr;
+  return {{box.min.x(), box.min.y(), box.min.z()}, {box.max.x(), box.max.y(), box.max.z()}};
+}
+
+// The --mode object: what the adaptive or conservative mode decided, beside the reference
+// run's report (which stays as it was).
+nlohmann::ordered_json modeJson(core::PairMode mode, raster::CpuDevice& device,
+                                const PairSetup& setup, const core::PairRequest& request) {
+  nlohmann::ordered_json j;
+  j["name"] = core::toString(mode);
+  if (mode == core::PairMode::Conservative) {
+    const core::ConservativeResult r = core::collideConservative(device, setup.a, setup.b, request);
+    j["verdict"] = r.pair.collide ? "collide" : "apart";
+    j["growth"] = {r.growth.x(), r.growth.y(), r.growth.z()};
+    j["interfering_pixels"] = r.pair.interferingPixels;
+    j["contact_box"] = boxJson(r.pair.contact.box);
+    return j;
+  }
+  core::AdaptivePairTester tester;
+  const core::AdaptiveResult r = tester.collide(device, setup.a, setup.b, request);
+  j["verdict"] = core::toString(r.verdict);
+  j["runs"] = r.runs;
+  j["deepest_level"] = r.deepestLevel;
+  j["finest_pixel"] = r.finestPixel;
+  if (r.contact) {
+    const core::FrameSpec& f = r.contactFrame;
+    j["contact_frame"] = {{"width", f.width},
+                          {"height", f.height},
+                          {"window", {f.window.umin, f.window.vmin, f.window.umax, f.window.vmax}}};
+    j["interfering_pixels"] = r.contact->interferingPixels;
+    j["contact_box"] = boxJson(r.contact->contact.box);
+    j["contact_area"] = r.contact->contact.area;
+  }
+  if (r.verdict == core::PairVerdict::ApartAtLimit)
+    j["unresolved_box"] = boxJson(r.unresolved);
+  return j;
+}
+
+void printMode(std::ostream& out, const nlohmann::ordered_json& j) {
+  out << "mode " << j["name"].get<std::string>() << ": " << j["verdict"].get<std::string>();
+  for (const char* key : {"runs", "deepest_level", "finest_pixel", "interfering_pixels"})
+    if (j.contains(key))
+      out << ", " << key << " " << j[key].dump();
+  out << '\n';
+}
 
 int runPairCommand(const PairOptions& o) {
   const PairSetup setup = loadPairSetup(
@@ -41,13 +91,22 @@ int runPairCommand(const PairOptions& o) {
   if (!o.dumpCases.empty())
     writePgmBottomUp(o.dumpCases, setup.frame.width, setup.frame.height,
                      frameCaseImage(setup.frame, result));
+  const core::PairMode mode = *core::parsePairMode(o.mode);
+  std::optional<nlohmann::ordered_json> modeReport;
+  if (mode != core::PairMode::Reference)
+    modeReport = modeJson(mode, device, setup, request);
   if (o.json) {
     nlohmann::ordered_json j = pairResultToJson(setup, request, result);
+    if (modeReport)
+      j["mode"] = *modeReport;
     if (o.noTiming)
       removeTimingFields(j);
     std::cout << j.dump(2) << '\n';
-  } else
+  } else {
     printPairReport(std::cout, setup, request, result, o.picture);
+    if (modeReport)
+      printMode(std::cout, *modeReport);
+  }
   return 0;
 }
 
@@ -79,6 +138,13 @@ void addPairCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("!--no-box-test", o->boxTest,
                 "run the passes even when the blocks' boxes are apart (shows cases 1, 2, 7, 8)");
   cmd->add_flag("!--no-picture", o->picture, "leave the character picture out of the report");
+  cmd->add_option("--mode", o->mode,
+                  "also decide the pair in another mode (docs/algorithm.md, \"Beyond the "
+                  "paper\"): adaptive (refined on finer frames where a finer grid could change "
+                  "the answer: collide, apart or apart_at_limit) or conservative (blocks grown "
+                  "by a pixel: never misses); the reference report stays as it is")
+      ->check(CLI::IsMember({"reference", "adaptive", "conservative"}))
+      ->capture_default_str();
   cmd->callback([o, &exitCode]() { exitCode = runPairCommand(*o); });
 }
 
