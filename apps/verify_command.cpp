@@ -76,9 +76,11 @@ int runVerifyCommand(const VerifyOptions& o) {
     request.mor = o.frameOptions.mor();
     run.pairs.push_back(verifier.verify(std::move(p.label), p.a, p.b, request));
     run.totals.add(run.pairs.back());
-    if (run.modes)
-      run.modes->add(verify::checkModes(p.a, p.b, p.frame, run.pairs.back().exact->intersect,
-                                        *tester));
+    if (run.modes) {
+      run.modeChecks.push_back(
+          verify::checkModes(p.a, p.b, p.frame, run.pairs.back().exact->intersect, *tester));
+      run.modes->add(run.modeChecks.back());
+    }
   }
   if (o.json) {
     nlohmann::ordered_json j = verifyRunToJson(run);

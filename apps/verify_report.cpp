@@ -205,8 +205,16 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
   j["pairs_checked"] = t.pairs;
   j["recode_collisions"] = t.recodeCollisions;
   ordered_json pairs = ordered_json::array();
-  for (const verify::PairVerification& p : run.pairs)
-    pairs.push_back(pairJson(p));
+  for (std::size_t i = 0; i < run.pairs.size(); ++i) {
+    pairs.push_back(pairJson(run.pairs[i]));
+    if (i < run.modeChecks.size()) {
+      const verify::ModeCheck& m = run.modeChecks[i];
+      pairs.back()["modes"] = {{"adaptive", core::toString(m.adaptive)},
+                               {"adaptive_runs", m.adaptiveRuns},
+                               {"adaptive_level", m.adaptiveLevel},
+                               {"conservative", m.conservativeCollide}};
+    }
+  }
   j["pairs"] = std::move(pairs);
   if (run.oracles.embree) {
     j["embree"] = embreeJson(t.embree);

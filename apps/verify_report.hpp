@@ -22,6 +22,7 @@ struct VerifyRun {
   // --modes: the adaptive and conservative modes against CGAL (absent otherwise, so the
   // reference output is unchanged).
   std::optional<verify::ModeCounts> modes;
+  std::vector<verify::ModeCheck> modeChecks;  // per pair, with --modes
 };
 
 // Per-pair lines for failing pairs and resolution misses, every pair when `everyPair`; then the

@@ -47,6 +47,10 @@ Aabb grown(Aabb box, const Eigen::Vector3d& by) {
   return box;
 }
 
+// The smallest growth along the view, relative to the coordinates' magnitude: hundreds of
+// ulps, so that grown and clipped geometry is never lost to double rounding.
+constexpr double kGrowthRoundingFloor = 1e-13;
+
 }  // namespace
 
 Eigen::Vector3d conservativeGrowth(const FrameSpec& frame, const Aabb& a, const Aabb& b) {
@@ -59,6 +63,11 @@ Eigen::Vector3d conservativeGrowth(const FrameSpec& frame, const Aabb& a, const 
   const double range = std::max(a.max[ax.d], b.max[ax.d]) - std::min(a.min[ax.d], b.min[ax.d]);
   const double n = static_cast<double>(raster::kDepthMax);
   half[ax.d] = kConservativeDepthSteps * range / (n - 2.0 * kConservativeDepthSteps);
+  // Deep in a refinement the range can be so short that four of its steps are below the
+  // rounding of the coordinates themselves; the growth never goes below that rounding.
+  const double scale = std::max({std::abs(a.min[ax.d]), std::abs(a.max[ax.d]),
+                                  std::abs(b.min[ax.d]), std::abs(b.max[ax.d])});
+  half[ax.d] = std::max(half[ax.d], kGrowthRoundingFloor * scale);
   return half;
 }
 
@@ -75,7 +84,35 @@ struct AdaptivePairTester::Search {
   const RefineLimits& limits;
   raster::DepthStencilDevice& tileDevice;
   AdaptiveResult& out;
+  const TriangleMesh& wholeA;  // the blocks as given: grown, then clipped, at every level
+  const TriangleMesh& wholeB;
   bool hitLimit = false;
+
+  // The conservative run for the pieces of A and B in `tile` (nullopt: the whole blocks). The
+  // whole blocks are grown and then clipped to the tile grown alike: that holds every point of
+  // the grown pieces (a superset: still never misses), and the growth only ever sweeps the
+  // valid blocks as given, never a clipped piece with its slivers.
+  ConservativeResult conservative(raster::DepthStencilDevice& device, const TriangleMesh& a,
+                                  const TriangleMesh& b, const std::optional<Aabb>& tile,
+                                  const PairRequest& request) const {
+    if (!tile)
+      return collideConservative(device, a, b, request);
+    // Steps of the range the grown pieces can span: the tile's along the view.
+    Aabb span = boundingBox(a);
+    span.extend(boundingBox(b));
+    const PlaneAxes ax = planeAxes(request.frame.axis);
+    span.min[ax.d] = std::min(span.min[ax.d], tile->min[ax.d]);
+    span.max[ax.d] = std::max(span.max[ax.d], tile->max[ax.d]);
+    ConservativeResult r;
+    r.growth = conservativeGrowth(request.frame, span, span);
+    const Aabb grownTile = grown(*tile, r.growth);
+    const TriangleMesh ga = clippedToBox(grownByBox(wholeA, r.growth), grownTile);
+    const TriangleMesh gb = clippedToBox(grownByBox(wholeB, r.growth), grownTile);
+    if (ga.triangles.empty() || gb.triangles.empty())
+      return r;  // nothing of one grown block near the tile: apart there
+    r.pair = collidePair(device, ga, gb, request);
+    return r;
+  }
 
   PairRequest requestFor(const FrameSpec& frame) const {
     PairRequest r;
@@ -93,11 +130,11 @@ struct AdaptivePairTester::Search {
 
   // True when a contact was seen in this frame or below it.
   bool refine(raster::DepthStencilDevice& device, const TriangleMesh& a, const TriangleMesh& b,
-              const FrameSpec& frame, int level) {
+              const std::optional<Aabb>& tileBox, const FrameSpec& frame, int level) {
     noteFrame(frame, level);
     const PairRequest request = requestFor(frame);
     ++out.runs;
-    const ConservativeResult wide = collideConservative(device, a, b, request);
+    const ConservativeResult wide = conservative(device, a, b, tileBox, request);
     if (!wide.pair.collide)
       return false;  // not even within a pixel: no finer grid can see a contact here
     ++out.runs;
@@ -158,7 +195,7 @@ struct AdaptivePairTester::Search {
         sub.window = {tile.min[ax.u], tile.min[ax.v], tile.min[ax.u] + tileU,
                       tile.min[ax.v] + tileV};
         try {
-          if (refine(tileDevice, ca, cb, sub, level + 1))
+          if (refine(tileDevice, ca, cb, tile, sub, level + 1))
             return true;
         } catch (const std::invalid_argument&) {
           // A clipped piece the view cannot map (both flat in one depth plane): unresolved.
@@ -191,8 +228,8 @@ AdaptiveResult AdaptivePairTester::collide(raster::DepthStencilDevice& device,
   // Boxes apart (closed): exactly apart, nothing to draw.
   if (!aabbsOverlap(boundingBox(a), boundingBox(b)))
     return out;
-  Search search{limits_, *tileDevice_, out};
-  if (search.refine(device, a, b, request.frame, 0)) {
+  Search search{limits_, *tileDevice_, out, a, b};
+  if (search.refine(device, a, b, std::nullopt, request.frame, 0)) {
     out.verdict = PairVerdict::Collide;
     return out;
   }
