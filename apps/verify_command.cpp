@@ -125,8 +125,9 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
       ->needs(suite);
   cmd->add_flag("--embree", o->embree,
                 "per pixel: Embree ray casts (naming no oracle runs --embree --cgal)");
-  CLI::Option* cgalFlag = cmd->add_flag("--cgal", o->cgal,
-                "per pair: CGAL exact intersection (naming no oracle runs --embree --cgal)");
+  CLI::Option* cgalFlag =
+      cmd->add_flag("--cgal", o->cgal,
+                    "per pair: CGAL exact intersection (naming no oracle runs --embree --cgal)");
   cmd->add_flag("--gl", o->gl, "replay every pair's commands on OSMesa and compare the buffers");
   cmd->add_flag("--gl-exact", o->glExact,
                 "replay every pair's commands on the exact GL device (shaders, OpenGL 4.5) and "

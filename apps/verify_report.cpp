@@ -131,8 +131,8 @@ void printModes(std::ostream& out, const verify::ModeCounts& m) {
   row("reference     ", m.reference);
   row("adaptive      ", m.adaptive);
   out << "      apart_at_limit " << m.apartAtLimit << " (" << m.apartAtLimitTrue
-      << " intersect), missed by the reference but seen at finer pixels " << m.seenFiner
-      << ", " << m.adaptiveRuns << " pair runs, deepest level " << m.deepestLevel << '\n';
+      << " intersect), missed by the reference but seen at finer pixels " << m.seenFiner << ", "
+      << m.adaptiveRuns << " pair runs, deepest level " << m.deepestLevel << '\n';
   row("conservative  ", m.conservative);
   out << "      extras beyond the bound (CGAL) " << m.conservativeExtrasBeyondBound << '\n';
   out << "    time, ms: reference " << m.referenceUs / 1000 << ", adaptive " << m.adaptiveUs / 1000

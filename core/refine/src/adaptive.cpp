@@ -31,8 +31,12 @@ PlaneAxes planeAxes(ViewAxis axis) {
   return {0, 1, 2};
 }
 
-double pixelU(const FrameSpec& f) { return (f.window.umax - f.window.umin) / f.width; }
-double pixelV(const FrameSpec& f) { return (f.window.vmax - f.window.vmin) / f.height; }
+double pixelU(const FrameSpec& f) {
+  return (f.window.umax - f.window.umin) / f.width;
+}
+double pixelV(const FrameSpec& f) {
+  return (f.window.vmax - f.window.vmin) / f.height;
+}
 
 Aabb intersection(const Aabb& a, const Aabb& b) {
   Aabb r;
@@ -65,8 +69,8 @@ Eigen::Vector3d conservativeGrowth(const FrameSpec& frame, const Aabb& a, const 
   half[ax.d] = kConservativeDepthSteps * range / (n - 2.0 * kConservativeDepthSteps);
   // Deep in a refinement the range can be so short that four of its steps are below the
   // rounding of the coordinates themselves; the growth never goes below that rounding.
-  const double scale = std::max({std::abs(a.min[ax.d]), std::abs(a.max[ax.d]),
-                                  std::abs(b.min[ax.d]), std::abs(b.max[ax.d])});
+  const double scale = std::max(
+      {std::abs(a.min[ax.d]), std::abs(a.max[ax.d]), std::abs(b.min[ax.d]), std::abs(b.max[ax.d])});
   half[ax.d] = std::max(half[ax.d], kGrowthRoundingFloor * scale);
   return half;
 }
@@ -75,8 +79,7 @@ ConservativeResult collideConservative(raster::DepthStencilDevice& device, const
                                        const TriangleMesh& b, const PairRequest& request) {
   ConservativeResult out;
   out.growth = conservativeGrowth(request.frame, boundingBox(a), boundingBox(b));
-  out.pair =
-      collidePair(device, grownByBox(a, out.growth), grownByBox(b, out.growth), request);
+  out.pair = collidePair(device, grownByBox(a, out.growth), grownByBox(b, out.growth), request);
   return out;
 }
 
@@ -235,8 +238,8 @@ AdaptiveResult AdaptivePairTester::collide(raster::DepthStencilDevice& device,
   }
   // Unresolved: keep what the request's frame saw (a touch within rounding stays a contact).
   if (search.hitLimit)
-    out.verdict = out.reference && out.reference->collide ? PairVerdict::Collide
-                                                           : PairVerdict::ApartAtLimit;
+    out.verdict =
+        out.reference && out.reference->collide ? PairVerdict::Collide : PairVerdict::ApartAtLimit;
   return out;
 }
 

@@ -75,7 +75,8 @@ class Clipper {
     std::unordered_set<std::uint64_t> edges;
     for (const Triangle& t : out_.triangles)
       for (int k = 0; k < 3; ++k)
-        edges.insert(edgeKey(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]));
+        edges.insert(
+            edgeKey(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]));
     std::unordered_map<VertexIndex, VertexIndex> next;  // cap edge b -> a for border edge a -> b
     for (const Triangle& t : out_.triangles)
       for (int k = 0; k < 3; ++k) {

@@ -29,8 +29,9 @@ PairResult testPair(raster::DepthStencilDevice& device, const PairTask& task, Pa
     case PairMode::Adaptive: {
       thread_local AdaptivePairTester tester;
       AdaptiveResult r = tester.collide(device, *task.meshA, *task.meshB, task.request);
-      PairResult out = r.contact ? std::move(*r.contact)
-                                 : r.reference ? std::move(*r.reference) : PairResult{};
+      PairResult out = r.contact     ? std::move(*r.contact)
+                       : r.reference ? std::move(*r.reference)
+                                     : PairResult{};
       out.collide = r.verdict == PairVerdict::Collide;
       return out;
     }

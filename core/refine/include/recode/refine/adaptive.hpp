@@ -36,8 +36,8 @@ inline constexpr double kConservativeDepthSteps = 4.0;
                                                  const Aabb& b);
 
 struct ConservativeResult {
-  PairResult pair;          // collidePair of the grown blocks (its contact region is theirs)
-  Eigen::Vector3d growth;   // the half-sides each block was grown by, world x, y, z
+  PairResult pair;         // collidePair of the grown blocks (its contact region is theirs)
+  Eigen::Vector3d growth;  // the half-sides each block was grown by, world x, y, z
 };
 
 // RECODE on both blocks grown by conservativeGrowth(request.frame, ...).

@@ -18,6 +18,7 @@ enum class PairMode { Reference, Adaptive, Conservative };
 // could not be ruled out above the bound).
 enum class PairVerdict { Collide, Apart, ApartAtLimit };
 
-[[nodiscard]] std::string_view toString(PairVerdict verdict);  // "collide", "apart", "apart_at_limit"
+[[nodiscard]] std::string_view toString(
+    PairVerdict verdict);  // "collide", "apart", "apart_at_limit"
 
 }  // namespace recode::core
