@@ -51,7 +51,7 @@ PairAnswer decidePair(raster::DepthStencilDevice& device, const core::TriangleMe
   if (r.contact) {
     out.pair = std::move(*r.contact);
     out.frame = r.contactFrame;
-    out.level = r.deepestLevel;
+    out.level = r.contactLevel;
   } else if (r.reference) {
     out.pair = std::move(*r.reference);
   }

@@ -150,6 +150,7 @@ struct AdaptivePairTester::Search {
     if (deep || (ref.collide && last)) {
       out.contact = std::move(ref);
       out.contactFrame = frame;
+      out.contactLevel = level;
       return true;
     }
     const Aabb boxA = boundingBox(a), boxB = boundingBox(b);

@@ -62,6 +62,7 @@ struct AdaptiveResult {
   // The run that saw the contact (the reference one, or a refined one) and its frame.
   std::optional<PairResult> contact;
   FrameSpec contactFrame;
+  int contactLevel = 0;    // the level of contactFrame (0: the request's frame)
   int deepestLevel = 0;    // 0: decided in the request's frame
   int runs = 0;            // collidePair calls
   double finestPixel = 0;  // the larger side of the smallest pixel drawn, world units
