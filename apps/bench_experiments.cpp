@@ -11,10 +11,19 @@ namespace {
 
 using Kind = AlgorithmSpec::Kind;
 
-// RECODE on every device (MIN MOR, as `recode run` defaults) against the three peers.
+// RECODE on every device (MIN MOR, as `recode run` defaults), its adaptive and conservative
+// modes on the CPU device, and the three peers.
 std::vector<AlgorithmSpec> recodeAndPeers() {
+  AlgorithmSpec adaptive{"recode-adaptive", Kind::Recode, verify::RecodeDevice::Cpu,
+                         core::MorMode::Min};
+  adaptive.mode = core::PairMode::Adaptive;
+  AlgorithmSpec conservative = adaptive;
+  conservative.name = "recode-conservative";
+  conservative.mode = core::PairMode::Conservative;
   return {
       {"recode-cpu", Kind::Recode, verify::RecodeDevice::Cpu, core::MorMode::Min},
+      adaptive,
+      conservative,
       {"recode-gl", Kind::Recode, verify::RecodeDevice::Gl, core::MorMode::Min},
       {"recode-gl-exact", Kind::Recode, verify::RecodeDevice::GlExact, core::MorMode::Min},
       {"recode-vulkan", Kind::Recode, verify::RecodeDevice::Vulkan, core::MorMode::Min},

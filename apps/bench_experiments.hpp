@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "recode/pair/frame.hpp"
+#include "recode/refine/pair_mode.hpp"
 #include "recode/verify/recode_detector.hpp"
 
 namespace recode::app {
@@ -19,6 +20,8 @@ struct AlgorithmSpec {
   verify::RecodeDevice device = verify::RecodeDevice::Cpu;  // Recode only
   core::MorMode mor = core::MorMode::Min;                   // Recode only
   bool onScreen = false;  // Recode only: core::RunOptions::drawOnScreen (the paper's screen)
+  // Recode only: core::RunOptions::pairMode (recode-adaptive, recode-conservative)
+  core::PairMode mode = core::PairMode::Reference;
 };
 
 struct Experiment {

@@ -144,7 +144,8 @@ void writeAccuracyTable(std::ostream& out, const std::vector<const BenchRow*>& r
       const BenchRow* r = find(rows, level, a);
       out << ' '
           << (r ? grouped(r->score.found) + " (" + std::to_string(r->score.missed) + " / " +
-                      std::to_string(r->score.extra) + ")"
+                      std::to_string(r->score.extra) +
+                      (r->seenFiner ? "; " + std::to_string(*r->seenFiner) + " finer" : "") + ")"
                 : "")
           << " |";
     }
@@ -157,7 +158,7 @@ void writeAccuracyTable(std::ostream& out, const std::vector<const BenchRow*>& r
 void writeBenchCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
   out << "experiment,scene,triangles_per_block,triangles,algorithm,frames,judged_frames,"
          "total_ms,mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
-         "stencil_pixels_read,depth_pixels_read\n";
+         "stencil_pixels_read,depth_pixels_read,seen_finer\n";
   for (const BenchRow& r : rows) {
     out << r.experiment << ',' << r.scene << ',' << r.trianglesPerBlock << ',' << r.triangles << ','
         << r.algorithm << ',' << r.frames << ',' << r.judgedFrames << ',' << fixed(r.totalMs, 4)
@@ -169,6 +170,9 @@ void writeBenchCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
           << ',' << r.recode->depthPixelsRead;
     else
       out << ",,,";
+    out << ',';
+    if (r.seenFiner)
+      out << *r.seenFiner;
     out << '\n';
   }
 }
@@ -200,7 +204,8 @@ void writeBenchSummary(std::ostream& out, const std::vector<const Experiment*>& 
       }
       out << "Mean collision time per frame, ms (standard deviation):\n\n";
       writeTimeTable(out, sceneRows);
-      out << "\nColliding pairs found on the judged frames (missed / extra against CGAL):\n\n";
+      out << "\nColliding pairs found on the judged frames (missed / extra against CGAL; for "
+             "recode-adaptive also the pairs recode-cpu missed that it saw at finer pixels):\n\n";
       writeAccuracyTable(out, sceneRows);
     }
   }

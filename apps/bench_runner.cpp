@@ -1,6 +1,7 @@
 // Running one bench case: the judge, then each algorithm over the same motion.
 #include "bench_runner.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -23,6 +24,7 @@ std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
       options.mor = spec.mor;
       options.drawOnScreen = spec.onScreen;
       options.threads = threads;
+      options.pairMode = spec.mode;
       return std::make_unique<verify::RecodeDetector>(scene, options, spec.device, spec.name);
     }
     case AlgorithmSpec::Kind::FclGjk:
@@ -134,26 +136,52 @@ BenchRow runJudge(LoadedCase& c, const std::vector<int>& judged, GroundTruth& tr
   return row;
 }
 
+// recode-cpu's answers on the judged frames, kept so that recode-adaptive can count the pairs
+// it found that recode-cpu missed.
+using FoundByFrame = std::vector<std::vector<verify::LeafPairId>>;
+
+long long missedButFound(const std::vector<verify::LeafPairId>& truth,
+                         const std::vector<verify::LeafPairId>& reference,
+                         const std::vector<verify::LeafPairId>& found) {
+  long long n = 0;
+  for (const verify::LeafPairId& p : truth)
+    if (!std::binary_search(reference.begin(), reference.end(), p) &&
+        std::binary_search(found.begin(), found.end(), p))
+      ++n;
+  return n;
+}
+
 BenchRow runAlgorithm(LoadedCase& c, const AlgorithmSpec& spec, int threads,
-                      const GroundTruth& truth, CaseSteps& step) {
+                      const GroundTruth& truth, CaseSteps& step, FoundByFrame& referenceFound) {
+  const bool isReference = spec.name == "recode-cpu";
+  const bool isAdaptive = spec.mode == core::PairMode::Adaptive && !referenceFound.empty();
+  if (isReference)
+    referenceFound.assign(truth.pairs.size(), {});
   const std::unique_ptr<verify::SceneDetector> detector =
       makeDetector(spec, c.scene, c.trees, threads);
   auto* recode = dynamic_cast<verify::RecodeDetector*>(detector.get());
   BenchRow row = c.row(spec.name);
   if (recode)
     row.recode = RecodeCounters{};
+  if (isAdaptive)
+    row.seenFiner = 0;
   pose(c.trees, 0);
   (void)detector->detect(c.trees, 0);  // warm-up, untimed
   std::vector<double> us;
   us.reserve(static_cast<std::size_t>(c.frames));
   for (int k = 0; k < c.frames; ++k) {
     pose(c.trees, k);
-    const verify::Detection d = detector->detect(c.trees, k);
+    verify::Detection d = detector->detect(c.trees, k);
     us.push_back(d.collisionUs);
     row.contacts += static_cast<long long>(d.pairs.size());
-    if (truth.judged[static_cast<std::size_t>(k)]) {
-      row.score += verify::scoreDetection(truth.pairs[static_cast<std::size_t>(k)], d.pairs);
+    const auto frame = static_cast<std::size_t>(k);
+    if (truth.judged[frame]) {
+      row.score += verify::scoreDetection(truth.pairs[frame], d.pairs);
       ++row.judgedFrames;
+      if (isAdaptive)
+        *row.seenFiner += missedButFound(truth.pairs[frame], referenceFound[frame], d.pairs);
+      if (isReference)
+        referenceFound[frame] = std::move(d.pairs);
     }
     if (recode)
       addCounters(*row.recode, recode->lastReport());
@@ -186,8 +214,9 @@ std::vector<BenchRow> runBenchCase(const Experiment& experiment, const std::stri
   GroundTruth truth(c.frames);
   std::vector<BenchRow> rows;
   rows.push_back(runJudge(c, judged, truth, step));
+  FoundByFrame referenceFound;
   for (const AlgorithmSpec& spec : experiment.algorithms)
-    rows.push_back(runAlgorithm(c, spec, threads, truth, step));
+    rows.push_back(runAlgorithm(c, spec, threads, truth, step, referenceFound));
   return rows;
 }
 

@@ -36,6 +36,9 @@ struct BenchRow {
   long long contacts = 0;        // colliding pairs reported, summed over all timed frames
   verify::DetectionScore score;  // on the judged frames only
   std::optional<RecodeCounters> recode;
+  // recode-adaptive only: pairs recode-cpu missed on the judged frames that this algorithm
+  // found (it saw them at finer pixels); nullopt elsewhere or without a recode-cpu row.
+  std::optional<long long> seenFiner;
 };
 
 // Called with the share of the case done so far, in [0, 1].

@@ -15,6 +15,7 @@
 #include "pgm.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
+#include "recode/refine/adaptive.hpp"
 
 namespace recode::app {
 
@@ -30,7 +31,56 @@ struct PairOptions {
   bool boxTest = true;
   bool picture = true;
   std::string pixel;  // --pixel X,Y; empty: not given
+  std::string mode = "reference";  // --mode
 };
+
+nlohmann::ordered_json boxJson(const core::Aabb& box) {
+  if (box.isEmpty())
+    return nullptr;
+  return {{box.min.x(), box.min.y(), box.min.z()}, {box.max.x(), box.max.y(), box.max.z()}};
+}
+
+// The --mode object: what the adaptive or conservative mode decided, beside the reference
+// run's report (which stays as it was).
+nlohmann::ordered_json modeJson(core::PairMode mode, raster::CpuDevice& device,
+                                const PairSetup& setup, const core::PairRequest& request) {
+  nlohmann::ordered_json j;
+  j["name"] = core::toString(mode);
+  if (mode == core::PairMode::Conservative) {
+    const core::ConservativeResult r = core::collideConservative(device, setup.a, setup.b, request);
+    j["verdict"] = r.pair.collide ? "collide" : "apart";
+    j["growth"] = {r.growth.x(), r.growth.y(), r.growth.z()};
+    j["interfering_pixels"] = r.pair.interferingPixels;
+    j["contact_box"] = boxJson(r.pair.contact.box);
+    return j;
+  }
+  core::AdaptivePairTester tester;
+  const core::AdaptiveResult r = tester.collide(device, setup.a, setup.b, request);
+  j["verdict"] = core::toString(r.verdict);
+  j["runs"] = r.runs;
+  j["deepest_level"] = r.deepestLevel;
+  j["finest_pixel"] = r.finestPixel;
+  if (r.contact) {
+    const core::FrameSpec& f = r.contactFrame;
+    j["contact_frame"] = {{"width", f.width},
+                          {"height", f.height},
+                          {"window", {f.window.umin, f.window.vmin, f.window.umax, f.window.vmax}}};
+    j["interfering_pixels"] = r.contact->interferingPixels;
+    j["contact_box"] = boxJson(r.contact->contact.box);
+    j["contact_area"] = r.contact->contact.area;
+  }
+  if (r.verdict == core::PairVerdict::ApartAtLimit)
+    j["unresolved_box"] = boxJson(r.unresolved);
+  return j;
+}
+
+void printMode(std::ostream& out, const nlohmann::ordered_json& j) {
+  out << "mode " << j["name"].get<std::string>() << ": " << j["verdict"].get<std::string>();
+  for (const char* key : {"runs", "deepest_level", "finest_pixel", "interfering_pixels"})
+    if (j.contains(key))
+      out << ", " << key << " " << j[key].dump();
+  out << '\n';
+}
 
 // "X,Y" inside the frame, or std::invalid_argument naming the option, the value and the rule.
 std::array<int, 2> parsePixel(const std::string& text, const core::FrameSpec& frame) {
@@ -67,15 +117,24 @@ int runPairCommand(const PairOptions& o) {
   if (!o.dumpCases.empty())
     writePgmBottomUp(o.dumpCases, setup.frame.width, setup.frame.height,
                      frameCaseImage(setup.frame, result));
+  const core::PairMode mode = *core::parsePairMode(o.mode);
+  std::optional<nlohmann::ordered_json> modeReport;
+  if (mode != core::PairMode::Reference)
+    modeReport = modeJson(mode, device, setup, request);
   if (o.json) {
     nlohmann::ordered_json j = pairResultToJson(setup, request, result);
+    if (modeReport)
+      j["mode"] = *modeReport;
     if (o.noTiming)
       removeTimingFields(j);
     if (probe)
       j["pixel"] = probe->toJson(result);
     std::cout << j.dump(2) << '\n';
-  } else
+  } else {
     printPairReport(std::cout, setup, request, result, o.picture);
+    if (modeReport)
+      printMode(std::cout, *modeReport);
+  }
   return 0;
 }
 
@@ -111,6 +170,13 @@ void addPairCommand(CLI::App& app, int& exitCode) {
                   "(X,Y from the bottom-left, from 0)")
       ->needs(json);
   cmd->add_flag("!--no-picture", o->picture, "leave the character picture out of the report");
+  cmd->add_option("--mode", o->mode,
+                  "also decide the pair in another mode (docs/algorithm.md, \"Beyond the "
+                  "paper\"): adaptive (refined on finer frames where a finer grid could change "
+                  "the answer: collide, apart or apart_at_limit) or conservative (blocks grown "
+                  "by a pixel: never misses); the reference report stays as it is")
+      ->check(CLI::IsMember({"reference", "adaptive", "conservative"}))
+      ->capture_default_str();
   cmd->callback([o, &exitCode]() { exitCode = runPairCommand(*o); });
 }
 

@@ -31,6 +31,7 @@ struct VerifyOptions {
   bool json = false;
   bool noTiming = false;  // --no-timing
   bool verbose = false;
+  bool modes = false;  // --modes
   FrameOptions frameOptions;
   int frame = 0;
 };
@@ -62,6 +63,11 @@ int runVerifyCommand(const VerifyOptions& o) {
   run.oracles = selectedOracles(o);
   VerifyPairs input = pairsToVerify(o);        // the input's errors first, whatever the build
   verify::PairVerifier verifier(run.oracles);  // throws for an oracle this build lacks
+  std::optional<core::AdaptivePairTester> tester;
+  if (o.modes) {
+    run.modes.emplace();
+    tester.emplace();
+  }
   if (run.oracles.glExact)
     run.glPlatform = verify::resolveGlPlatform(run.oracles.glPlatform);  // no context: an error
   run.source = input.source;
@@ -76,6 +82,11 @@ int runVerifyCommand(const VerifyOptions& o) {
       throw std::invalid_argument(input.source + ": blocks \"" + p.label + "\": " + e.what());
     }
     run.totals.add(run.pairs.back());
+    if (run.modes) {
+      run.modeChecks.push_back(
+          verify::checkModes(p.a, p.b, p.frame, run.pairs.back().exact->intersect, *tester));
+      run.modes->add(run.modeChecks.back());
+    }
   }
   if (o.json) {
     nlohmann::ordered_json j = verifyRunToJson(run);
@@ -84,7 +95,10 @@ int runVerifyCommand(const VerifyOptions& o) {
     std::cout << j.dump(2) << '\n';
   } else
     printVerifyReport(std::cout, run, o.verbose);
-  return run.totals.passed() ? 0 : 2;
+  // The conservative mode's guarantees: nothing missed, every extra within its bound.
+  const bool modesHold = !run.modes || (run.modes->conservative.missed == 0 &&
+                                        run.modes->conservativeExtrasBeyondBound == 0);
+  return run.totals.passed() && modesHold ? 0 : 2;
 }
 
 }  // namespace
@@ -117,8 +131,9 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
       ->needs(suite);
   cmd->add_flag("--embree", o->embree,
                 "per pixel: Embree ray casts (naming no oracle runs --embree --cgal)");
-  cmd->add_flag("--cgal", o->cgal,
-                "per pair: CGAL exact intersection (naming no oracle runs --embree --cgal)");
+  CLI::Option* cgalFlag =
+      cmd->add_flag("--cgal", o->cgal,
+                    "per pair: CGAL exact intersection (naming no oracle runs --embree --cgal)");
   cmd->add_flag("--gl", o->gl, "replay every pair's commands on OSMesa and compare the buffers");
   cmd->add_flag("--gl-exact", o->glExact,
                 "replay every pair's commands on the exact GL device (shaders, OpenGL 4.5) and "
@@ -136,6 +151,12 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
       cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   addNoTimingFlag(*cmd, json, o->noTiming);
   cmd->add_flag("--verbose", o->verbose, "list every pair, not only failures and misses");
+  cmd->add_flag("--modes", o->modes,
+                "also run the adaptive and conservative modes (docs/algorithm.md, \"Beyond the "
+                "paper\") and count their missed and extra pairs against CGAL; needs --cgal. "
+                "Exit status 2 also when the conservative mode misses or an extra is beyond "
+                "its bound")
+      ->needs(cgalFlag);
   const FrameOptionHandles frameOptions =
       addFrameOptions(*cmd, o->frameOptions,
                       {"region the passes run over: min, max, full",

@@ -122,6 +122,45 @@ ordered_json pairJson(const verify::PairVerification& p) {
 
 }  // namespace
 
+void printModes(std::ostream& out, const verify::ModeCounts& m) {
+  const auto row = [&out](const char* name, const verify::MissExtra& e) {
+    out << "    " << name << e.found << " found, " << e.missed << " missed, " << e.extra
+        << " extra\n";
+  };
+  out << "  modes   " << m.pairs << " pairs, " << m.truth << " intersect (CGAL)\n";
+  row("reference     ", m.reference);
+  row("adaptive      ", m.adaptive);
+  out << "      apart_at_limit " << m.apartAtLimit << " (" << m.apartAtLimitTrue
+      << " intersect), missed by the reference but seen at finer pixels " << m.seenFiner << ", "
+      << m.adaptiveRuns << " pair runs, deepest level " << m.deepestLevel << '\n';
+  row("conservative  ", m.conservative);
+  out << "      extras beyond the bound (CGAL) " << m.conservativeExtrasBeyondBound << '\n';
+  out << "    time, ms: reference " << m.referenceUs / 1000 << ", adaptive " << m.adaptiveUs / 1000
+      << ", conservative " << m.conservativeUs / 1000 << '\n';
+}
+
+ordered_json missExtraJson(const verify::MissExtra& e) {
+  return {{"found", e.found}, {"missed", e.missed}, {"extra", e.extra}};
+}
+
+ordered_json modesJson(const verify::ModeCounts& m) {
+  return {{"pairs", m.pairs},
+          {"intersect", m.truth},
+          {"reference", missExtraJson(m.reference)},
+          {"adaptive", missExtraJson(m.adaptive)},
+          {"apart_at_limit", m.apartAtLimit},
+          {"apart_at_limit_intersect", m.apartAtLimitTrue},
+          {"seen_at_finer_pixels", m.seenFiner},
+          {"adaptive_runs", m.adaptiveRuns},
+          {"deepest_level", m.deepestLevel},
+          {"conservative", missExtraJson(m.conservative)},
+          {"conservative_extras_beyond_bound", m.conservativeExtrasBeyondBound},
+          {"timing_us",
+           {{"reference", m.referenceUs},
+            {"adaptive", m.adaptiveUs},
+            {"conservative", m.conservativeUs}}}};
+}
+
 void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) {
   const verify::VerificationTotals& t = run.totals;
   out << "recode verify: " << run.source << "\n  " << t.pairs << " pairs, RECODE finds "
@@ -149,6 +188,8 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
         << ", " << t.glExactSeconds << " s)\n";
   if (run.oracles.vulkan)
     out << "  vulkan  " << glExactLine(t.vulkan) << "  (" << t.vulkanSeconds << " s)\n";
+  if (run.modes)
+    printModes(out, *run.modes);
   out << "verdict: "
       << (t.passed() ? "VERIFIED"
                      : "FAILED (" + std::to_string(t.failedPairs) +
@@ -164,8 +205,16 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
   j["pairs_checked"] = t.pairs;
   j["recode_collisions"] = t.recodeCollisions;
   ordered_json pairs = ordered_json::array();
-  for (const verify::PairVerification& p : run.pairs)
-    pairs.push_back(pairJson(p));
+  for (std::size_t i = 0; i < run.pairs.size(); ++i) {
+    pairs.push_back(pairJson(run.pairs[i]));
+    if (i < run.modeChecks.size()) {
+      const verify::ModeCheck& m = run.modeChecks[i];
+      pairs.back()["modes"] = {{"adaptive", core::toString(m.adaptive)},
+                               {"adaptive_runs", m.adaptiveRuns},
+                               {"adaptive_level", m.adaptiveLevel},
+                               {"conservative", m.conservativeCollide}};
+    }
+  }
   j["pairs"] = std::move(pairs);
   if (run.oracles.embree) {
     j["embree"] = embreeJson(t.embree);
@@ -191,6 +240,8 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
     j["vulkan"] = glExactJson(t.vulkan);
     j["vulkan"]["seconds"] = t.vulkanSeconds;
   }
+  if (run.modes)
+    j["modes"] = modesJson(*run.modes);
   j["passed"] = t.passed();
   return j;
 }

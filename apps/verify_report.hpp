@@ -3,10 +3,12 @@
 // JSON object (keys in docs/cli.md).
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "recode/verify/mode_check.hpp"
 #include "recode/verify/verify_pair.hpp"
 
 namespace recode::app {
@@ -17,6 +19,10 @@ struct VerifyRun {
   verify::GlPlatform glPlatform = verify::GlPlatform::Auto;  // the exact GL device's, resolved
   std::vector<verify::PairVerification> pairs;
   verify::VerificationTotals totals;
+  // --modes: the adaptive and conservative modes against CGAL (absent otherwise, so the
+  // reference output is unchanged).
+  std::optional<verify::ModeCounts> modes;
+  std::vector<verify::ModeCheck> modeChecks;  // per pair, with --modes
 };
 
 // Per-pair lines for failing pairs and resolution misses, every pair when `everyPair`; then the

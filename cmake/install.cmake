@@ -7,7 +7,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(recode_installed_libraries recode_io recode_raster recode_raster_files recode_json
-                               recode_geometry recode_pair recode_scene recode_sim recode_api)
+                               recode_geometry recode_pair recode_refine recode_scene recode_sim recode_api)
 install(TARGETS ${recode_installed_libraries} recode_all
         EXPORT recodeTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "recode/api/collision.hpp"
+#include "recode/refine/adaptive.hpp"
 
 namespace recode {
 
@@ -19,6 +20,43 @@ void merge(core::ContactRegion& into, const core::ContactRegion& from) {
   into.area += from.area;
   into.maxDepth = std::max(into.maxDepth, from.maxDepth);
   into.collapsedPixels += from.collapsedPixels;
+}
+
+struct PairAnswer {
+  core::PairResult pair;
+  core::FrameSpec frame;
+  int level = 0;
+  bool atLimit = false;
+};
+
+// One block pair in the request's mode.
+PairAnswer decidePair(raster::DepthStencilDevice& device, const core::TriangleMesh& a,
+                      const core::TriangleMesh& b, const core::PairRequest& pair,
+                      core::PairMode mode) {
+  PairAnswer out;
+  out.frame = pair.frame;
+  switch (mode) {
+    case core::PairMode::Reference:
+      out.pair = core::collidePair(device, a, b, pair);
+      return out;
+    case core::PairMode::Conservative:
+      out.pair = core::collideConservative(device, a, b, pair).pair;
+      return out;
+    case core::PairMode::Adaptive:
+      break;
+  }
+  thread_local core::AdaptivePairTester tester;
+  core::AdaptiveResult r = tester.collide(device, a, b, pair);
+  out.atLimit = r.verdict == core::PairVerdict::ApartAtLimit;
+  if (r.contact) {
+    out.pair = std::move(*r.contact);
+    out.frame = r.contactFrame;
+    out.level = r.contactLevel;
+  } else if (r.reference) {
+    out.pair = std::move(*r.reference);
+  }
+  out.pair.collide = r.verdict == core::PairVerdict::Collide;
+  return out;
 }
 
 }  // namespace
@@ -38,9 +76,11 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     pair.mor = request.mor;
     pair.contact = request.contact;
     raster::DepthStencilDevice& device = devices.device(pair.frame.width, pair.frame.height);
-    core::PairResult r =
-        core::collidePair(device, a.tree().worldMesh(lp.leafA), b.tree().worldMesh(lp.leafB), pair);
+    PairAnswer answer = decidePair(device, a.tree().worldMesh(lp.leafA),
+                                   b.tree().worldMesh(lp.leafB), pair, request.mode);
+    core::PairResult& r = answer.pair;
     ++result.blockPairsDrawn;
+    result.apartAtLimit += answer.atLimit ? 1 : 0;
     if (!r.collide)
       continue;
     result.collide = true;
@@ -48,7 +88,7 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     merge(result.contact, r.contact);
     result.contacts.push_back({static_cast<std::size_t>(a.geometry().blockOfNode(lp.leafA)),
                                static_cast<std::size_t>(b.geometry().blockOfNode(lp.leafB)),
-                               pair.frame, std::move(r)});
+                               answer.frame, std::move(r), answer.level});
   }
   result.deviceSetupUs = devices.setupUs() - setupBefore;
   result.collisionUs = std::chrono::duration<double, std::micro>(Clock::now() - start).count() -

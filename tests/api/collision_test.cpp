@@ -131,3 +131,28 @@ TEST_CASE("a device factory is the seam, and a wrong device is refused") {
   DevicePool none([](int, int) { return std::unique_ptr<raster::DepthStencilDevice>(); });
   CHECK_THROWS_AS(collide(a, b, request, mine, none), std::logic_error);
 }
+
+TEST_CASE("the request's mode: a needle thinner than a pixel is missed, refined or grown into") {
+  // A square needle 1e-4 wide along z through a cube, pixels of 0.05 seen along z: no pixel
+  // centre lies in the needle's cross-section (the chance is (1e-4 / 0.05)^2), so the reference
+  // misses the contact; pixels 4^5 times smaller see it; the grown blocks meet at once.
+  const auto needle = CollisionGeometry::single(
+      ConvexBlock::fromMesh(core::makeBox(0.5e-4, 0.5e-4, 1.0), "needle"));
+  CollisionObject cube(boxShape(0.5)), pin(needle);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(0.0123, -0.0311, 0.0);
+  pin.setTransform(pose);
+  CollisionRequest request;
+  request.pixelSize = 0.05;
+  request.axis = AxisChoice::Z;
+  CollisionResult result;
+  CHECK_FALSE(collide(cube, pin, request, result));
+  request.mode = core::PairMode::Adaptive;
+  REQUIRE(collide(cube, pin, request, result));
+  REQUIRE(result.contacts.size() == 1);
+  CHECK(result.contacts[0].refineLevel >= 1);
+  CHECK(result.contacts[0].frame.window.umax - result.contacts[0].frame.window.umin < 0.05 * 64);
+  CHECK(result.apartAtLimit == 0);
+  request.mode = core::PairMode::Conservative;
+  CHECK(collide(cube, pin, request, result));
+}

@@ -41,7 +41,7 @@ void fail(const std::string& message) {
 const char* const kHeader =
     "experiment,scene,triangles_per_block,triangles,algorithm,frames,judged_frames,total_ms,"
     "mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
-    "stencil_pixels_read,depth_pixels_read";
+    "stencil_pixels_read,depth_pixels_read,seen_finer";
 
 struct Row {
   std::map<std::string, std::string> field;
@@ -73,8 +73,9 @@ struct Expected {
 
 std::vector<Expected> expectations() {
   const std::vector<std::string> all = {
-      "cgal",          "recode-cpu", "recode-gl",  "recode-gl-exact",
-      "recode-vulkan", "fcl-gjk",    "fcl-obbrss", "bullet"};
+      "cgal",       "recode-cpu",      "recode-adaptive", "recode-conservative",
+      "recode-gl",  "recode-gl-exact", "recode-vulkan",   "fcl-gjk",
+      "fcl-obbrss", "bullet"};
   return {
       {"table1",
        {"hierarchy-9"},
@@ -226,6 +227,18 @@ int main(int argc, char** argv) {
         for (const char* key : {"contacts", "missed", "extra", "stencil_pixels_read"})
           for (const char* device : {"recode-gl", "recode-gl-exact", "recode-vulkan"})
             same("recode-cpu", device, key);
+        // The modes' promises (docs/algorithm.md, "Beyond the paper"): the conservative mode
+        // misses nothing, and the pairs recode-cpu missed that recode-adaptive found are at
+        // least those it missed less.
+        const auto cpu = rows.find(prefix + "recode-cpu");
+        const auto adaptive = rows.find(prefix + "recode-adaptive");
+        const auto conservative = rows.find(prefix + "recode-conservative");
+        if (conservative != rows.end() && conservative->second.count("missed") != 0)
+          fail(prefix + "recode-conservative missed pairs");
+        if (cpu != rows.end() && adaptive != rows.end() &&
+            adaptive->second.count("seen_finer") <
+                cpu->second.count("missed") - adaptive->second.count("missed"))
+          fail(prefix + "recode-adaptive: seen_finer below recode-cpu's misses less its own");
         const fs::path png =
             dir /
             ((scene.rfind(e.experiment, 0) == 0 ? scene : e.experiment + "-" + scene) + ".png");

@@ -10,15 +10,39 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include "recode/refine/adaptive.hpp"
+
 #include "device_pool.hpp"
 
 namespace recode::core {
 
 namespace {
 
-void runOne(raster::DepthStencilDevice& device, const PairTask& task, PairOutcome& outcome) {
+// The pair test of `mode`. The adaptive mode's tester (and its refinement device) is one per
+// thread, as each lane runs its tests in turn on one thread.
+PairResult testPair(raster::DepthStencilDevice& device, const PairTask& task, PairMode mode) {
+  switch (mode) {
+    case PairMode::Reference:
+      break;
+    case PairMode::Conservative:
+      return collideConservative(device, *task.meshA, *task.meshB, task.request).pair;
+    case PairMode::Adaptive: {
+      thread_local AdaptivePairTester tester;
+      AdaptiveResult r = tester.collide(device, *task.meshA, *task.meshB, task.request);
+      PairResult out = r.contact     ? std::move(*r.contact)
+                       : r.reference ? std::move(*r.reference)
+                                     : PairResult{};
+      out.collide = r.verdict == PairVerdict::Collide;
+      return out;
+    }
+  }
+  return collidePair(device, *task.meshA, *task.meshB, task.request);
+}
+
+void runOne(raster::DepthStencilDevice& device, const PairTask& task, PairOutcome& outcome,
+            PairMode mode) {
   try {
-    outcome.result = collidePair(device, *task.meshA, *task.meshB, task.request);
+    outcome.result = testPair(device, task, mode);
     // The report keeps no case map; dropping it here bounds the memory the slots hold.
     outcome.result.caseMap = {};
     // Swapped with an empty vector: `points = {}` would keep the capacity (9 MB for a pair of
@@ -61,7 +85,8 @@ class PairTestRunner::Impl {
   std::optional<tbb::task_arena> arena;  // none on the sequential path
 };
 
-PairTestRunner::PairTestRunner(const RunOptions& options) : concurrency_(pairTestThreads(options)) {
+PairTestRunner::PairTestRunner(const RunOptions& options)
+    : concurrency_(pairTestThreads(options)), mode_(options.pairMode) {
   impl_ = std::make_unique<Impl>(options.deviceFactory, concurrency_);
 }
 
@@ -107,7 +132,7 @@ std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
   if (!impl_->arena) {
     for (std::size_t i = 0; i < count; ++i) {
       const auto [width, height] = sizeOf(tasks[i]);
-      runOne(pool.at(width, height, 0), tasks[i], outcomes[i]);
+      runOne(pool.at(width, height, 0), tasks[i], outcomes[i], mode_);
       if (outcomes[i].error)
         break;
     }
@@ -129,7 +154,7 @@ std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
   impl_->arena->execute([&] {
     tbb::parallel_for(std::size_t{0}, lanes.size(), [&](std::size_t l) {
       for (std::size_t i : lanes[l].tasks) {
-        runOne(*lanes[l].device, tasks[i], outcomes[i]);
+        runOne(*lanes[l].device, tasks[i], outcomes[i], mode_);
         if (outcomes[i].error)
           break;
       }

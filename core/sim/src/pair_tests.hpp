@@ -70,6 +70,7 @@ class PairTestRunner {
   class Impl;
   std::unique_ptr<Impl> impl_;
   int concurrency_ = 1;
+  PairMode mode_ = PairMode::Reference;
   std::map<std::pair<int, int>, int> lanes_;  // devices per frame size this frame
 };
 

@@ -6,3 +6,9 @@ target_link_libraries(recode_verify_cgal_tests PRIVATE recode_verify recode_warn
 # pair_test_support.hpp: running a pair, boxes and frames, shared with the pair suites.
 target_include_directories(recode_verify_cgal_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/core/pair)
 catch_discover_tests(recode_verify_cgal_tests)
+
+# The modes above the reference (core/refine) against CGAL on a third of the suite.
+add_executable(recode_verify_modes_tests oracles/modes_test.cpp)
+target_link_libraries(recode_verify_modes_tests PRIVATE recode_verify recode_warnings
+                                                        Catch2::Catch2WithMain)
+catch_discover_tests(recode_verify_modes_tests)

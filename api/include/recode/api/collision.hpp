@@ -22,6 +22,7 @@
 #include "recode/api/geometry.hpp"
 #include "recode/pair/frame.hpp"
 #include "recode/pair/pair.hpp"
+#include "recode/refine/pair_mode.hpp"
 #include "recode/sim/hierarchy.hpp"
 
 namespace recode {
@@ -76,6 +77,12 @@ struct CollisionRequest {
   core::MorMode mor = core::MorMode::Min;  // the rectangle the passes run over (core::MorMode)
   AxisChoice axis = AxisChoice::Auto;      // the view axis (AxisChoice)
   bool contact = true;                     // the two depth passes that measure the contact region
+  // How each block pair is decided (docs/algorithm.md, "Beyond the paper"): Reference, the
+  // paper's algorithm in the chosen frame; Adaptive, refined on finer frames where a finer grid
+  // could change the answer (a contact's `pair` and `frame` are those of the run that saw it);
+  // Conservative, both blocks grown by a pixel across and 4 depth steps along the view, so no
+  // contact is missed (the `pair` is that of the grown blocks).
+  core::PairMode mode = core::PairMode::Reference;
 };
 
 // One pair of blocks whose pixels interfere.
@@ -84,6 +91,8 @@ struct BlockContact {
   std::size_t blockB = 0;  // and in the second's
   core::FrameSpec frame;   // the frame it was drawn in
   core::PairResult pair;   // collidePair's result (its case map kept)
+  // Adaptive mode: the refinement level the contact was seen at (0: the chosen frame).
+  int refineLevel = 0;
 };
 
 // What collide() found for two objects: the verdict, the contact region over all their block
@@ -100,6 +109,9 @@ struct CollisionResult {
   long long blockPairsDrawn = 0;       // block pairs given to collidePair
   double collisionUs = 0.0;            // the whole call, device making left out
   double deviceSetupUs = 0.0;          // making devices for sizes not seen before
+  // Adaptive mode: block pairs left apart_at_limit (a contact could not be ruled out within the
+  // refinement limits; they are not contacts).
+  long long apartAtLimit = 0;
 
   // Back to a default result (collide() clears the result it is given).
   void clear() { *this = CollisionResult{}; }

@@ -20,6 +20,7 @@
 #include "recode/pair/frame.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/device.hpp"
+#include "recode/refine/pair_mode.hpp"
 #include "recode/scene/scene.hpp"
 #include "recode/sim/broad_phase.hpp"
 #include "recode/sim/hierarchy.hpp"
@@ -68,6 +69,11 @@ struct RunOptions {
   // prints only counts, area and box, and turns this off so that a frame's memory does not
   // grow with its contact areas.
   bool keepContactPoints = true;
+  // How each leaf pair is decided (docs/algorithm.md, "Beyond the paper"): the reference
+  // algorithm in the pair's frame, adaptive refinement (a contact is one the refinement saw;
+  // the result is the run that saw it) or the conservative mode (the result is that of the
+  // grown blocks). Reports of the reference mode are unchanged.
+  PairMode pairMode = PairMode::Reference;
 };
 
 // A leaf pair whose blocks interfere at this frame.

@@ -1,0 +1,247 @@
+#include "recode/refine/adaptive.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "recode/geometry/obb.hpp"
+#include "recode/raster/cpu_device.hpp"
+#include "recode/raster/state.hpp"
+#include "recode/refine/block_clip.hpp"
+#include "recode/refine/block_growth.hpp"
+
+namespace recode::core {
+
+namespace {
+
+// World axes of the image plane's u and v and of the view direction.
+struct PlaneAxes {
+  int u, v, d;
+};
+
+PlaneAxes planeAxes(ViewAxis axis) {
+  switch (axis) {
+    case ViewAxis::X:
+      return {1, 2, 0};
+    case ViewAxis::Y:
+      return {2, 0, 1};
+    case ViewAxis::Z:
+      break;
+  }
+  return {0, 1, 2};
+}
+
+double pixelU(const FrameSpec& f) {
+  return (f.window.umax - f.window.umin) / f.width;
+}
+double pixelV(const FrameSpec& f) {
+  return (f.window.vmax - f.window.vmin) / f.height;
+}
+
+Aabb intersection(const Aabb& a, const Aabb& b) {
+  Aabb r;
+  r.min = a.min.cwiseMax(b.min);
+  r.max = a.max.cwiseMin(b.max);
+  return r;
+}
+
+Aabb grown(Aabb box, const Eigen::Vector3d& by) {
+  box.min -= by;
+  box.max += by;
+  return box;
+}
+
+// The smallest growth along the view, relative to the coordinates' magnitude: hundreds of
+// ulps, so that grown and clipped geometry is never lost to double rounding.
+constexpr double kGrowthRoundingFloor = 1e-13;
+
+}  // namespace
+
+Eigen::Vector3d conservativeGrowth(const FrameSpec& frame, const Aabb& a, const Aabb& b) {
+  const PlaneAxes ax = planeAxes(frame.axis);
+  constexpr double kAcross = 0.5 + 2.0 / 256.0;
+  Eigen::Vector3d half;
+  half[ax.u] = kAcross * pixelU(frame);
+  half[ax.v] = kAcross * pixelV(frame);
+  // The grown pair's range is range + 2e and e must be k of its steps: e = k range / (N - 2k).
+  const double range = std::max(a.max[ax.d], b.max[ax.d]) - std::min(a.min[ax.d], b.min[ax.d]);
+  const double n = static_cast<double>(raster::kDepthMax);
+  half[ax.d] = kConservativeDepthSteps * range / (n - 2.0 * kConservativeDepthSteps);
+  // Deep in a refinement the range can be so short that four of its steps are below the
+  // rounding of the coordinates themselves; the growth never goes below that rounding.
+  const double scale = std::max(
+      {std::abs(a.min[ax.d]), std::abs(a.max[ax.d]), std::abs(b.min[ax.d]), std::abs(b.max[ax.d])});
+  half[ax.d] = std::max(half[ax.d], kGrowthRoundingFloor * scale);
+  return half;
+}
+
+ConservativeResult collideConservative(raster::DepthStencilDevice& device, const TriangleMesh& a,
+                                       const TriangleMesh& b, const PairRequest& request) {
+  ConservativeResult out;
+  out.growth = conservativeGrowth(request.frame, boundingBox(a), boundingBox(b));
+  out.pair = collidePair(device, grownByBox(a, out.growth), grownByBox(b, out.growth), request);
+  return out;
+}
+
+struct AdaptivePairTester::Search {
+  const RefineLimits& limits;
+  raster::DepthStencilDevice& tileDevice;
+  AdaptiveResult& out;
+  const TriangleMesh& wholeA;  // the blocks as given: grown, then clipped, at every level
+  const TriangleMesh& wholeB;
+  bool hitLimit = false;
+
+  // The conservative run for the pieces of A and B in `tile` (nullopt: the whole blocks). The
+  // whole blocks are grown and then clipped to the tile grown alike: that holds every point of
+  // the grown pieces (a superset: still never misses), and the growth only ever sweeps the
+  // valid blocks as given, never a clipped piece with its slivers.
+  ConservativeResult conservative(raster::DepthStencilDevice& device, const TriangleMesh& a,
+                                  const TriangleMesh& b, const std::optional<Aabb>& tile,
+                                  const PairRequest& request) const {
+    if (!tile)
+      return collideConservative(device, a, b, request);
+    // Steps of the range the grown pieces can span: the tile's along the view.
+    Aabb span = boundingBox(a);
+    span.extend(boundingBox(b));
+    const PlaneAxes ax = planeAxes(request.frame.axis);
+    span.min[ax.d] = std::min(span.min[ax.d], tile->min[ax.d]);
+    span.max[ax.d] = std::max(span.max[ax.d], tile->max[ax.d]);
+    ConservativeResult r;
+    r.growth = conservativeGrowth(request.frame, span, span);
+    const Aabb grownTile = grown(*tile, r.growth);
+    const TriangleMesh ga = clippedToBox(grownByBox(wholeA, r.growth), grownTile);
+    const TriangleMesh gb = clippedToBox(grownByBox(wholeB, r.growth), grownTile);
+    if (ga.triangles.empty() || gb.triangles.empty())
+      return r;  // nothing of one grown block near the tile: apart there
+    r.pair = collidePair(device, ga, gb, request);
+    return r;
+  }
+
+  PairRequest requestFor(const FrameSpec& frame) const {
+    PairRequest r;
+    r.frame = frame;
+    r.mor = MorMode::Min;
+    r.contact = true;
+    return r;
+  }
+
+  void noteFrame(const FrameSpec& frame, int level) {
+    const double p = std::max(pixelU(frame), pixelV(frame));
+    out.finestPixel = out.runs == 0 ? p : std::min(out.finestPixel, p);
+    out.deepestLevel = std::max(out.deepestLevel, level);
+  }
+
+  // True when a contact was seen in this frame or below it.
+  bool refine(raster::DepthStencilDevice& device, const TriangleMesh& a, const TriangleMesh& b,
+              const std::optional<Aabb>& tileBox, const FrameSpec& frame, int level) {
+    noteFrame(frame, level);
+    const PairRequest request = requestFor(frame);
+    ++out.runs;
+    const ConservativeResult wide = conservative(device, a, b, tileBox, request);
+    if (!wide.pair.collide)
+      return false;  // not even within a pixel: no finer grid can see a contact here
+    ++out.runs;
+    PairResult ref = collidePair(device, a, b, request);
+    const double step = (ref.depthMax - ref.depthMin) / static_cast<double>(raster::kDepthMax);
+    const bool deep = ref.collide && ref.contact.maxDepth > limits.touchSteps * step;
+    const bool last = level >= limits.maxLevel || out.runs + 2 > limits.maxRuns;
+    if (level == 0)
+      out.reference = ref;
+    if (deep || (ref.collide && last)) {
+      out.contact = std::move(ref);
+      out.contactFrame = frame;
+      out.contactLevel = level;
+      return true;
+    }
+    const Aabb boxA = boundingBox(a), boxB = boundingBox(b);
+    // Every common point of A and B lies within one growth of the grown blocks' contact box
+    // (the pixel that must see it is within half a pixel across, its overlap interval holds
+    // the point's depth) and in both boxes.
+    const Eigen::Vector3d margin = 2.0 * wide.growth;
+    const Aabb region = intersection(grown(wide.pair.contact.box, margin),
+                                     intersection(grown(boxA, margin), grown(boxB, margin)));
+    if (region.isEmpty())
+      return false;
+    if (last) {
+      hitLimit = true;
+      out.unresolved.extend(region);
+      return false;
+    }
+    const PlaneAxes ax = planeAxes(frame.axis);
+    const int side = limits.tileSide;
+    const double pu = pixelU(frame) / limits.factor, pv = pixelV(frame) / limits.factor;
+    const double tileU = side * pu, tileV = side * pv;
+    const double u0 = region.min[ax.u], v0 = region.min[ax.v];
+    const int nu = std::max(1, static_cast<int>(std::ceil((region.max[ax.u] - u0) / tileU)));
+    const int nv = std::max(1, static_cast<int>(std::ceil((region.max[ax.v] - v0) / tileV)));
+    for (int j = 0; j < nv; ++j) {
+      for (int i = 0; i < nu; ++i) {
+        if (out.runs + 2 > limits.maxRuns) {
+          hitLimit = true;
+          out.unresolved.extend(region);
+          return false;
+        }
+        Aabb tile = region;
+        tile.min[ax.u] = u0 + i * tileU;
+        tile.max[ax.u] = std::min(region.max[ax.u], u0 + (i + 1) * tileU);
+        tile.min[ax.v] = v0 + j * tileV;
+        tile.max[ax.v] = std::min(region.max[ax.v], v0 + (j + 1) * tileV);
+        const TriangleMesh ca = clippedToBox(a, tile);
+        if (ca.triangles.empty())
+          continue;
+        const TriangleMesh cb = clippedToBox(b, tile);
+        if (cb.triangles.empty())
+          continue;
+        FrameSpec sub;
+        sub.axis = frame.axis;
+        sub.width = side;
+        sub.height = side;
+        sub.window = {tile.min[ax.u], tile.min[ax.v], tile.min[ax.u] + tileU,
+                      tile.min[ax.v] + tileV};
+        try {
+          if (refine(tileDevice, ca, cb, tile, sub, level + 1))
+            return true;
+        } catch (const std::invalid_argument&) {
+          // A clipped piece the view cannot map (both flat in one depth plane): unresolved.
+          hitLimit = true;
+          out.unresolved.extend(tile);
+        }
+      }
+    }
+    return false;
+  }
+};
+
+AdaptivePairTester::AdaptivePairTester(RefineLimits limits) : limits_(limits) {
+  if (limits_.maxLevel < 0 || limits_.factor < 2 || limits_.tileSide < 1 ||
+      limits_.tileSide > raster::kMaxFramebufferSize || limits_.maxRuns < 2 ||
+      !(limits_.touchSteps >= 0.0))
+    throw std::invalid_argument(
+        "refine limits: maxLevel >= 0, factor >= 2, 1 <= tileSide <= 16384, maxRuns >= 2 and "
+        "touchSteps >= 0 are required");
+  tileDevice_ = std::make_unique<raster::CpuDevice>(limits_.tileSide, limits_.tileSide);
+}
+
+AdaptivePairTester::~AdaptivePairTester() = default;
+
+AdaptiveResult AdaptivePairTester::collide(raster::DepthStencilDevice& device,
+                                           const TriangleMesh& a, const TriangleMesh& b,
+                                           const PairRequest& request) {
+  AdaptiveResult out;
+  out.contactFrame = request.frame;
+  // Boxes apart (closed): exactly apart, nothing to draw.
+  if (!aabbsOverlap(boundingBox(a), boundingBox(b)))
+    return out;
+  Search search{limits_, *tileDevice_, out, a, b};
+  if (search.refine(device, a, b, std::nullopt, request.frame, 0)) {
+    out.verdict = PairVerdict::Collide;
+    return out;
+  }
+  // Unresolved: keep what the request's frame saw (a touch within rounding stays a contact).
+  if (search.hitLimit)
+    out.verdict =
+        out.reference && out.reference->collide ? PairVerdict::Collide : PairVerdict::ApartAtLimit;
+  return out;
+}
+
+}  // namespace recode::core

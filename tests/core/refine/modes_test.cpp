@@ -1,0 +1,133 @@
+// The adaptive and conservative modes on constructed pairs whose exact answer is known by
+// construction: a needle thinner than a pixel through a box (the reference misses it), boxes a
+// fraction of a pixel apart (the conservative mode reports them, the adaptive mode rules them
+// out), and a gap below any bound (apart_at_limit).
+
+#include <catch2/catch.hpp>
+#include <utility>
+
+#include "recode/geometry/generators.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/raster/cpu_device.hpp"
+#include "recode/refine/adaptive.hpp"
+
+using namespace recode;
+using Eigen::Vector3d;
+
+namespace {
+
+core::TriangleMesh boxBetween(const Vector3d& lo, const Vector3d& hi) {
+  const Eigen::Affine3d move(Eigen::Translation3d(0.5 * (lo + hi)));
+  return core::transformed(core::makeBox(0.5 * (hi - lo)), move);
+}
+
+// Two cubes of half-side 0.6 turned 45 degrees about z, facing each other across the plane
+// n.x = 0 with n = (1, 1, 0)/sqrt(2), `gap` apart along n: their boxes overlap whatever the gap,
+// and seen along z the gap lies across the view.
+std::pair<core::TriangleMesh, core::TriangleMesh> diagonalPair(double gap) {
+  const Vector3d n = Vector3d(1, 1, 0).normalized();
+  const Eigen::AngleAxisd turn(0.25 * 3.14159265358979323846, Vector3d::UnitZ());
+  const core::TriangleMesh cube = core::makeBox(0.6, 0.6, 0.3);
+  const Eigen::Affine3d poseA(Eigen::Translation3d(-0.6 * n) * turn);
+  const Eigen::Affine3d poseB(Eigen::Translation3d((0.6 + gap) * n) * turn);
+  return {core::transformed(cube, poseA), core::transformed(cube, poseB)};
+}
+
+// Seen along z over [-1, 1]^2 at 16 x 16: pixels 0.125 wide, centres at odd multiples of 1/16.
+core::PairRequest frame16() {
+  core::PairRequest r;
+  r.frame.axis = core::ViewAxis::Z;
+  r.frame.window = {-1, -1, 1, 1};
+  r.frame.width = 16;
+  r.frame.height = 16;
+  return r;
+}
+
+struct Modes {
+  bool reference = false;
+  core::AdaptiveResult adaptive;
+  bool conservative = false;
+};
+
+Modes runModes(const core::TriangleMesh& a, const core::TriangleMesh& b,
+               const core::RefineLimits& limits = {}) {
+  const core::PairRequest request = frame16();
+  raster::CpuDevice device(16, 16);
+  core::AdaptivePairTester tester(limits);
+  Modes m;
+  m.reference = core::collidePair(device, a, b, request).collide;
+  m.adaptive = tester.collide(device, a, b, request);
+  m.conservative = core::collideConservative(device, a, b, request).pair.collide;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("a needle between pixel centres: the reference misses it, the other modes see it") {
+  // A thin bar along z between the centres at x = 0.0625 and 0.1875, y likewise; it passes
+  // through the box, so the blocks intersect.
+  const auto needle = boxBetween({0.09, 0.09, -0.8}, {0.16, 0.16, 0.8});
+  const auto box = boxBetween({-0.7, -0.7, -0.2}, {0.7, 0.7, 0.2});
+  const Modes m = runModes(needle, box);
+  CHECK_FALSE(m.reference);
+  CHECK(m.adaptive.verdict == core::PairVerdict::Collide);
+  CHECK(m.adaptive.deepestLevel >= 1);
+  REQUIRE(m.adaptive.contact);
+  CHECK(m.adaptive.contact->interferingPixels > 0);
+  CHECK(m.conservative);
+}
+
+TEST_CASE("blocks a third of a pixel apart across the view: conservative extra, adaptive apart") {
+  const auto [a, b] = diagonalPair(0.125 / 3);
+  const Modes m = runModes(a, b);
+  CHECK_FALSE(m.reference);
+  CHECK(m.conservative);  // within a pixel: reported
+  CHECK(m.adaptive.verdict == core::PairVerdict::Apart);
+  CHECK(m.adaptive.deepestLevel >= 1);  // it took a finer frame to rule out
+}
+
+TEST_CASE("blocks two pixels apart: every mode says apart in the request's frame") {
+  // The box growth reaches (0.5 + 2/256) * 0.125 * sqrt(2) = 0.09 along n from each block.
+  const auto [a, b] = diagonalPair(2 * 0.125);
+  const Modes m = runModes(a, b);
+  CHECK_FALSE(m.reference);
+  CHECK_FALSE(m.conservative);
+  CHECK(m.adaptive.verdict == core::PairVerdict::Apart);
+  CHECK(m.adaptive.deepestLevel == 0);
+  CHECK(m.adaptive.runs == 1);
+}
+
+TEST_CASE("a gap below the finest level's pixel is apart_at_limit, with the region named") {
+  const double gap = 1e-6;  // the pixels of level 2, 0.125 / 16, are far wider
+  const auto [a, b] = diagonalPair(gap);
+  core::RefineLimits limits;
+  limits.maxLevel = 2;
+  const Modes m = runModes(a, b, limits);
+  CHECK_FALSE(m.reference);
+  CHECK(m.conservative);
+  CHECK(m.adaptive.verdict == core::PairVerdict::ApartAtLimit);
+  CHECK(m.adaptive.deepestLevel == 2);
+  CHECK(m.adaptive.runs <= limits.maxRuns);
+  REQUIRE_FALSE(m.adaptive.unresolved.isEmpty());
+  // The gap's strip runs through the origin.
+  CHECK(m.adaptive.unresolved.min.x() <= 0.0);
+  CHECK(m.adaptive.unresolved.max.x() >= 0.0);
+  CHECK(m.adaptive.unresolved.min.y() <= 0.0);
+  CHECK(m.adaptive.unresolved.max.y() >= 0.0);
+}
+
+TEST_CASE("a deep overlap is a contact in the request's frame, without refinement") {
+  const auto a = boxBetween({-0.6, -0.6, -0.3}, {0.1, 0.6, 0.3});
+  const auto b = boxBetween({-0.1, -0.6, -0.3}, {0.6, 0.6, 0.3});
+  const Modes m = runModes(a, b);
+  CHECK(m.reference);
+  CHECK(m.conservative);
+  CHECK(m.adaptive.verdict == core::PairVerdict::Collide);
+  CHECK(m.adaptive.deepestLevel == 0);
+}
+
+TEST_CASE("bad refine limits are refused, naming the rules") {
+  core::RefineLimits limits;
+  limits.factor = 1;
+  CHECK_THROWS_WITH(core::AdaptivePairTester(limits), Catch::Contains("factor >= 2"));
+}
