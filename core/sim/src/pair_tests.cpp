@@ -18,7 +18,7 @@ namespace {
 
 void runOne(raster::DepthStencilDevice& device, const PairTask& task, PairOutcome& outcome) {
   try {
-    outcome.result = collidePair(device, *task.meshA, *task.meshB, task.request);
+    outcome.result = collidePair(device, *task.blockA, *task.blockB, task.request);
     // The report keeps no case map; dropping it here bounds the memory the slots hold.
     outcome.result.caseMap = {};
   } catch (...) {
