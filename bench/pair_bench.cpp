@@ -81,6 +81,8 @@ void thinMorSpheres(benchmark::State& state) {
     last = core::collidePair(device, blockA, blockB, request);
     benchmark::DoNotOptimize(last.collide);
   }
+  state.counters["triangles_drawn"] = static_cast<double>(device.counters().trianglesSubmitted) /
+                                      static_cast<double>(state.iterations());
   state.counters["triangles_per_block"] = static_cast<double>(a.triangleCount());
   state.counters["mor_px"] = static_cast<double>(last.mor.area());
   state.counters["interfering_px"] = static_cast<double>(last.interferingPixels);

@@ -9,7 +9,7 @@ namespace recode::core {
 
 namespace {
 
-constexpr std::uint32_t kLeafTriangles = 8;
+constexpr std::uint32_t kLeafTriangles = 4;
 
 struct Builder {
   const std::vector<Aabb>& boxes;

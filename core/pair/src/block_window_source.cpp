@@ -13,24 +13,23 @@ namespace {
 using raster::PixelRect;
 using raster::WindowVertex;
 
-// The world-space column over a pixel rectangle, widened by one pixel on every side (far more
-// than the 1/512-pixel snapping and the rounding of the view's arithmetic), unbounded along
-// the view axis, as ranges of the image-plane coordinates u and v.
-struct Column {
-  double u0, u1, v0, v1;
-};
-
-Column columnOver(const PixelRect& rect, const OrthoView& view) {
-  const ViewWindow& w = view.window();
-  const double du = view.pixelWidth(), dv = view.pixelHeight();
-  return {w.umin + (rect.x0 - 1) * du, w.umin + (rect.x1 + 1) * du, w.vmin + (rect.y0 - 1) * dv,
-          w.vmin + (rect.y1 + 1) * dv};
+// Whether a window range [lo, hi] (pixels, before snapping) can hold, once snapped, the centre
+// i + 0.5 of a pixel with first <= i < end. Snapping moves a coordinate by at most 1/512 pixel;
+// the range is widened by 1/64.
+bool holdsCentre(double lo, double hi, int first, int end) {
+  constexpr double kSnapMargin = 1.0 / 64.0;
+  const double i0 = std::max(std::ceil(lo - kSnapMargin - 0.5), static_cast<double>(first));
+  const double i1 = std::min(std::floor(hi + kSnapMargin - 0.5), static_cast<double>(end - 1));
+  return i0 <= i1;
 }
 
-// The box's image-plane ranges after the pose, grown by a relative margin for the rounding of
-// the world vertices (each made as linear * p + translation).
-bool boxMeetsColumn(const Aabb& local, const Eigen::Isometry3d& pose, bool identity,
-                    const OrthoView& view, const Column& c) {
+// Whether a hierarchy box, moved by the pose, can hold a vertex of a triangle that covers a
+// pixel centre of `rect`: the box's image-plane ranges, grown by a relative margin for the
+// rounding of the world vertices (each made as linear * p + translation), mapped to the window
+// by the view's own formula. That formula is monotonic, so a vertex inside the box maps inside
+// the mapped range; a triangle covering a centre has that centre inside its vertices' box.
+bool boxCanCover(const Aabb& local, const Eigen::Isometry3d& pose, bool identity,
+                 const OrthoView& view, const PixelRect& rect) {
   Eigen::Vector3d centre = local.center(), half = 0.5 * local.extent();
   if (!identity) {
     const Eigen::Matrix3d linear = pose.linear();
@@ -39,7 +38,11 @@ bool boxMeetsColumn(const Aabb& local, const Eigen::Isometry3d& pose, bool ident
   }
   half += Eigen::Vector3d::Constant(1e-9 * (centre.cwiseAbs().maxCoeff() + half.maxCoeff()));
   const Eigen::Vector3d lo = view.toPlane(centre - half), hi = view.toPlane(centre + half);
-  return lo.x() <= c.u1 && hi.x() >= c.u0 && lo.y() <= c.v1 && hi.y() >= c.v0;
+  const ViewWindow& w = view.window();
+  const auto toX = [&](double u) { return (u - w.umin) / (w.umax - w.umin) * view.width(); };
+  const auto toY = [&](double v) { return (v - w.vmin) / (w.vmax - w.vmin) * view.height(); };
+  return holdsCentre(toX(lo.x()), toX(hi.x()), rect.x0, rect.x1) &&
+         holdsCentre(toY(lo.y()), toY(hi.y()), rect.y0, rect.y1);
 }
 
 // Whether the closed box of three window vertices holds the centre of a pixel of `rect`: the
@@ -107,12 +110,10 @@ void BlockWindowSource::gather(const PixelRect& rect) const {
   nearIndices_.clear();
   if (rect.empty())
     return;
-  const Column column = columnOver(rect, view_);
   const Eigen::Isometry3d& pose = block_.localToWorld();
   const bool identity = pose.matrix().isIdentity(0.0);
   block_.hierarchy()->collect(
-      [&](const Aabb& box) { return boxMeetsColumn(box, pose, identity, view_, column); },
-      candidates_);
+      [&](const Aabb& box) { return boxCanCover(box, pose, identity, view_, rect); }, candidates_);
   const TriangleMesh& mesh = block_.mesh();
   for (const std::uint32_t t : candidates_) {
     const Triangle& tri = mesh.triangles[t];
