@@ -112,8 +112,12 @@ int runPairCommand(const PairOptions& o) {
     const auto [x, y] = parsePixel(o.pixel, setup.frame);
     probe.emplace(x, y);
   }
+  // Each block with its triangle hierarchy, as a run's leaves have theirs: the pair's time
+  // (timing_us) then follows what the MOR covers; building them is not part of it.
+  const core::PairBlock a = core::PairBlock::withHierarchy(setup.a);
+  const core::PairBlock b = core::PairBlock::withHierarchy(setup.b);
   const core::PairResult result =
-      core::collidePair(device, setup.a, setup.b, request, probe ? &*probe : nullptr);
+      core::collidePair(device, a, b, request, probe ? &*probe : nullptr);
   if (!o.dumpCases.empty())
     writePgmBottomUp(o.dumpCases, setup.frame.width, setup.frame.height,
                      frameCaseImage(setup.frame, result));

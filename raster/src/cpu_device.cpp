@@ -1,6 +1,7 @@
 #include "recode/raster/cpu_device.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -114,6 +115,18 @@ void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,
   FragmentWriter writer(state_, depth_, stencil_);
   raster::drawTriangles(state_, vertices, indices, writer, &counters_);
   counters_.fragments += writer.fragments;
+}
+
+void CpuDevice::drawMesh(const TriangleSource& source) {
+  // Triangles that cover no pixel centre in the scissor write nothing, so leaving them out
+  // changes no bit; a source that cannot tell (or whose full draw would be refused) is drawn
+  // whole, so its refusal is the full draw's.
+  const std::optional<TriangleDraw> near = source.trianglesMeeting(state_.scissor);
+  if (!near) {
+    const TriangleDraw all = source.allTriangles();
+    return drawTriangles(all.vertices, all.indices);
+  }
+  drawTriangles(near->vertices, near->indices);
 }
 
 std::vector<std::uint8_t> CpuDevice::readStencil(const PixelRect& rect) const {

@@ -11,6 +11,7 @@
 #include "recode/raster/pixel_buffer.hpp"
 #include "recode/raster/state.hpp"
 
+#include "block_window_source.hpp"
 #include "pair_passes.hpp"
 
 namespace recode::core {
@@ -143,10 +144,10 @@ void requireDeviceSize(const raster::DepthStencilDevice& device, const FrameSpec
   }
 }
 
-// Both blocks as the device will draw them: snapped window vertices and index lists.
+// Both blocks as the device will draw them.
 struct DrawnPair {
-  std::vector<raster::WindowVertex> va, vb;
-  std::vector<std::uint32_t> ia, ib;
+  const detail::BlockWindowSource& a;
+  const detail::BlockWindowSource& b;
 };
 
 // The rectangle the passes run over (the paper's Table 1). MIN is empty when the footprints do
@@ -247,10 +248,10 @@ class StepRunner {
 // r.boxesOverlap and, when the passes are to run, r.mor; returns whether they are.
 bool choosePassRegion(const DrawnPair& drawn, const PairRequest& request, PairResult& r) {
   const FrameSpec& frame = request.frame;
-  const PixelRect footA = pixelFootprint(drawn.va, frame.width, frame.height);
-  const PixelRect footB = pixelFootprint(drawn.vb, frame.width, frame.height);
-  r.boxesOverlap =
-      !footA.intersect(footB).empty() && depthSpansMeet(depthSpan(drawn.va), depthSpan(drawn.vb));
+  const PixelRect footA = pixelFootprint(drawn.a.extremes(), frame.width, frame.height);
+  const PixelRect footB = pixelFootprint(drawn.b.extremes(), frame.width, frame.height);
+  r.boxesOverlap = !footA.intersect(footB).empty() &&
+                   depthSpansMeet(depthSpan(drawn.a.extremes()), depthSpan(drawn.b.extremes()));
   if (request.boxTest && !r.boxesOverlap)
     return false;
   r.mor = chooseMor(request.mor, footA, footB, frame);
@@ -262,6 +263,11 @@ bool choosePassRegion(const DrawnPair& drawn, const PairRequest& request, PairRe
 
 PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a,
                        const TriangleMesh& b, const PairRequest& request, PairObserver* observer) {
+  return collidePair(device, PairBlock(a), PairBlock(b), request, observer);
+}
+
+PairResult collidePair(raster::DepthStencilDevice& device, const PairBlock& a, const PairBlock& b,
+                       const PairRequest& request, PairObserver* observer) {
   const Clock::time_point start = Clock::now();
   const FrameSpec& frame = request.frame;
   requireDeviceSize(device, frame);
@@ -270,15 +276,18 @@ PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a
     r.timing.totalUs = microsecondsSince(start);
     return std::move(r);
   };
-  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, boundingBox(a), boundingBox(b));
+  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, a.box(), b.box());
   r.depthMin = depthMin;
   r.depthMax = depthMax;
   const OrthoView view(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
-  const DrawnPair drawn{view.toWindow(a), view.toWindow(b), triangleIndices(a), triangleIndices(b)};
+  // A before B, each whole unless it can be drawn culled, so a vertex the view cannot map is
+  // refused as it always was: before anything is drawn, A's first.
+  const detail::BlockWindowSource sourceA(a, view), sourceB(b, view);
+  const DrawnPair drawn{sourceA, sourceB};
   if (!choosePassRegion(drawn, request, r))
     return finish();
 
-  detail::PassRunner passes(device, drawn.va, drawn.ia, drawn.vb, drawn.ib);
+  detail::PassRunner passes(device, sourceA, sourceB);
   StepRunner steps(device, observer, r.timing);
   steps.run(PairStep::SetZ, [&] { passes.setZ(r.mor); });
   steps.run(PairStep::TestZ, [&] { passes.testZ(); });

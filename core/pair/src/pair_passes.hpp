@@ -3,10 +3,10 @@
 // collidePair: one function per pass, each setting every piece of state its draws depend on.
 
 #include <cstdint>
-#include <span>
 
 #include "recode/pair/pair_cases.hpp"
 #include "recode/raster/device.hpp"
+#include "recode/raster/triangle_source.hpp"
 
 namespace recode::core::detail {
 
@@ -14,10 +14,11 @@ namespace recode::core::detail {
 // of state its draws depend on, so the sequence does not rely on what the device held before.
 class PassRunner {
  public:
-  PassRunner(raster::DepthStencilDevice& device, std::span<const raster::WindowVertex> va,
-             std::span<const std::uint32_t> ia, std::span<const raster::WindowVertex> vb,
-             std::span<const std::uint32_t> ib)
-      : dev_(device), va_(va), ia_(ia), vb_(vb), ib_(ib) {}
+  // Each block is drawn with drawMesh: the stream is drawTriangles of the whole block, and a
+  // device may draw only what meets its scissor (raster/triangle_source.hpp).
+  PassRunner(raster::DepthStencilDevice& device, const raster::TriangleSource& a,
+             const raster::TriangleSource& b)
+      : dev_(device), a_(a), b_(b) {}
 
   // RenderSetZ(A, GEQUAL): depth cleared to 0 then raised to the farthest face of A, so the
   // depth buffer holds Amax; stencil cleared to 0 and set to 1 wherever A is drawn. All of
@@ -34,7 +35,7 @@ class PassRunner {
     dev_.setStencilFunc(raster::CompareFunc::Always, 1, 0xFF);
     dev_.setStencilOps(raster::Face::Both, {raster::StencilOp::Keep, raster::StencilOp::Keep,
                                             raster::StencilOp::Replace});
-    dev_.drawTriangles(va_, ia_);
+    dev_.drawMesh(a_);
   }
 
   // RenderTestZ(B, LEQUAL): where A is present (1 <= count), every face of B at or in front
@@ -47,7 +48,7 @@ class PassRunner {
                        {raster::StencilOp::Keep, raster::StencilOp::Keep, raster::StencilOp::Incr});
     dev_.setStencilWriteMask(kCountBits);
     dev_.setCullMode(raster::CullMode::None);
-    dev_.drawTriangles(vb_, ib_);
+    dev_.drawMesh(b_);
   }
 
   // Depth cleared to 1 and lowered to A's nearest face: the depth buffer holds Amin. The
@@ -61,7 +62,7 @@ class PassRunner {
     dev_.setStencilOps(raster::Face::Both,
                        {raster::StencilOp::Keep, raster::StencilOp::Keep, raster::StencilOp::Keep});
     dev_.setCullMode(raster::CullMode::None);
-    dev_.drawTriangles(va_, ia_);
+    dev_.drawMesh(a_);
   }
 
   // One of B's two faces (front: cull back faces; back: cull front faces) against Amin with
@@ -77,7 +78,7 @@ class PassRunner {
                                             raster::StencilOp::Invert});
     dev_.setStencilWriteMask(bit);
     dev_.setCullMode(culled);
-    dev_.drawTriangles(vb_, ib_);
+    dev_.drawMesh(b_);
   }
 
   // Depth over `rect` becomes, for the faces facing the viewer (near end: cull back, GEQUAL
@@ -93,16 +94,14 @@ class PassRunner {
     dev_.setStencilFunc(raster::CompareFunc::Always, 0, 0xFF);
     dev_.setStencilOps(raster::Face::Both,
                        {raster::StencilOp::Keep, raster::StencilOp::Keep, raster::StencilOp::Keep});
-    dev_.drawTriangles(va_, ia_);
-    dev_.drawTriangles(vb_, ib_);
+    dev_.drawMesh(a_);
+    dev_.drawMesh(b_);
   }
 
  private:
   raster::DepthStencilDevice& dev_;
-  std::span<const raster::WindowVertex> va_;
-  std::span<const std::uint32_t> ia_;
-  std::span<const raster::WindowVertex> vb_;
-  std::span<const std::uint32_t> ib_;
+  const raster::TriangleSource& a_;
+  const raster::TriangleSource& b_;
 };
 
 }  // namespace recode::core::detail

@@ -48,6 +48,8 @@ ObjectTree::ObjectTree(const SceneObject& root) {
   fitLocalBoxes();
   boundsAt_.assign(nodes_.size(), Eigen::Isometry3d::Identity());
   boundsValid_.assign(nodes_.size(), false);
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    hierarchies_.push_back(std::make_shared<LazyHierarchy>());
   pose(0);
 }
 
@@ -161,6 +163,14 @@ void ObjectTree::updateBounds() {
 TriangleMesh ObjectTree::worldMesh(int node) const {
   const HierarchyNode& n = nodes_.at(static_cast<std::size_t>(node));
   return transformed(n.localMesh, n.world);
+}
+
+std::shared_ptr<const TriangleBvh> ObjectTree::triangleHierarchy(int node) const {
+  const HierarchyNode& n = nodes_.at(static_cast<std::size_t>(node));
+  LazyHierarchy& lazy = *hierarchies_[static_cast<std::size_t>(node)];
+  std::call_once(lazy.built,
+                 [&] { lazy.hierarchy = std::make_shared<const TriangleBvh>(n.localMesh); });
+  return lazy.hierarchy;
 }
 
 bool nodeBoxesOverlap(const HierarchyNode& a, const HierarchyNode& b) {

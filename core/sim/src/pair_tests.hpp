@@ -20,8 +20,8 @@ namespace recode::core {
 struct PairTask {
   int objectA = 0, objectB = 0;
   LeafPair leaves;
-  const TriangleMesh* meshA = nullptr;  // world meshes, alive while the tests run
-  const TriangleMesh* meshB = nullptr;
+  const PairBlock* blockA = nullptr;  // world blocks, alive while the tests run
+  const PairBlock* blockB = nullptr;
   PairRequest request;
   bool keepContactPoints = true;  // RunOptions::keepContactPoints
 };

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -38,21 +39,32 @@ std::vector<Aabb> updateRootBoxes(std::vector<ObjectTree>& objects) {
   return roots;
 }
 
-// World meshes of the leaves drawn this frame, made once per leaf.
-class LeafMeshes {
+// The leaves drawn this frame, each made once: its world mesh, with the triangle hierarchy
+// of its local mesh (built once per leaf for the whole run) and its pose, so that a pair test
+// draws only the triangles near its MOR.
+class LeafBlocks {
  public:
-  explicit LeafMeshes(const std::vector<ObjectTree>& objects) : objects_(objects) {}
+  explicit LeafBlocks(const std::vector<ObjectTree>& objects) : objects_(objects) {}
 
-  const TriangleMesh& of(int object, int leaf) {
-    auto [it, added] = meshes_.try_emplace({object, leaf});
-    if (added)
-      it->second = objects_[static_cast<std::size_t>(object)].worldMesh(leaf);
-    return it->second;
+  const PairBlock& of(int object, int leaf) {
+    auto [it, added] = blocks_.try_emplace({object, leaf});
+    if (added) {
+      const ObjectTree& tree = objects_[static_cast<std::size_t>(object)];
+      Leaf& l = it->second;
+      l.mesh = tree.worldMesh(leaf);
+      l.block.emplace(l.mesh, tree.triangleHierarchy(leaf),
+                      tree.nodes()[static_cast<std::size_t>(leaf)].world);
+    }
+    return *it->second.block;
   }
 
  private:
+  struct Leaf {
+    TriangleMesh mesh;
+    std::optional<PairBlock> block;  // refers to mesh, which a map node keeps in place
+  };
   const std::vector<ObjectTree>& objects_;
-  std::map<std::pair<int, int>, TriangleMesh> meshes_;
+  std::map<std::pair<int, int>, Leaf> blocks_;
 };
 
 // Counts one pair test into the report; a contact keeps its result (the runner has cleared
@@ -180,7 +192,7 @@ FrameReport Simulation::runFrame(int frame) {
 
   // The pair tests are listed first, in the order of the sequential loop (candidates, then
   // the descent's leaf pairs), and read back in that order whatever threads ran them.
-  LeafMeshes meshes(objects_);
+  LeafBlocks blocks(objects_);
   std::vector<PairTask> tasks;
   std::vector<LeafPair> leafPairs;
   for (const auto& [ia, ib] : candidates) {
@@ -194,7 +206,7 @@ FrameReport Simulation::runFrame(int frame) {
       throw std::invalid_argument(
           tooManyPairTests(frame, tasks.size() + leafPairs.size(), options_.maxPairTestsPerFrame));
     for (const LeafPair& lp : leafPairs) {
-      PairTask task{ia, ib, lp, &meshes.of(ia, lp.leafA), &meshes.of(ib, lp.leafB), {}, true};
+      PairTask task{ia, ib, lp, &blocks.of(ia, lp.leafA), &blocks.of(ib, lp.leafB), {}, true};
       try {
         task.request.frame = pairFrame(a.nodes()[static_cast<std::size_t>(lp.leafA)].worldAabb,
                                        b.nodes()[static_cast<std::size_t>(lp.leafB)].worldAabb);

@@ -34,6 +34,8 @@ class CpuDevice final : public DepthStencilDevice {
   void setCullMode(CullMode mode) override { state_.cull = mode; }
   void drawTriangles(std::span<const WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override;
+  // Draws source.trianglesMeeting(scissor) when the source offers it, else the whole block.
+  void drawMesh(const TriangleSource& source) override;
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const PixelRect& rect) const override;
   [[nodiscard]] std::vector<std::uint32_t> readDepth(const PixelRect& rect) const override;
 

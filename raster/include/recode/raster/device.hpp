@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "recode/raster/state.hpp"
+#include "recode/raster/triangle_source.hpp"
 
 namespace recode::raster {
 
@@ -63,6 +64,16 @@ class DepthStencilDevice {
   // finite, lies beyond kMaxWindowCoordinate, or has z outside [0, 1].
   virtual void drawTriangles(std::span<const WindowVertex> vertices,
                              std::span<const std::uint32_t> indices) = 0;
+
+  // Draws a whole block: by definition drawTriangles(source.allTriangles()), which is what this
+  // default does, so a device that does not override it sees the same commands as before. A
+  // device may instead draw only source.trianglesMeeting(its scissor): the triangles left out
+  // cover no pixel centre inside the scissor, so the buffers come out the same bits (CpuDevice
+  // does this, so a pair's cost follows its MOR rather than its meshes).
+  virtual void drawMesh(const TriangleSource& source) {
+    const TriangleDraw draw = source.allTriangles();
+    drawTriangles(draw.vertices, draw.indices);
+  }
 
   // Read-backs over a rectangle (clamped to the framebuffer, not to the scissor), row-major,
   // rows from the bottom (y = rect.y0) up, as glReadPixels returns them. Depth values are

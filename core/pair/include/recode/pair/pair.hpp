@@ -15,6 +15,7 @@
 
 #include "recode/geometry/mesh.hpp"
 #include "recode/pair/frame.hpp"
+#include "recode/pair/pair_block.hpp"
 #include "recode/pair/pair_cases.hpp"
 #include "recode/pair/view.hpp"
 #include "recode/raster/device.hpp"
@@ -113,6 +114,13 @@ struct PairResult {
 // vertex the view cannot map (beyond fixed-point range).
 [[nodiscard]] PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a,
                                      const TriangleMesh& b, const PairRequest& request,
+                                     PairObserver* observer = nullptr);
+
+// The same for blocks that carry what can be worked out once (pair_block.hpp): with a
+// hierarchy, a device that draws only what meets its scissor is handed only the triangles near
+// the MOR. The commands and the result are those of the overload above, bit for bit.
+[[nodiscard]] PairResult collidePair(raster::DepthStencilDevice& device, const PairBlock& a,
+                                     const PairBlock& b, const PairRequest& request,
                                      PairObserver* observer = nullptr);
 
 // The pieces collidePair is made of, for tests and back-end authors.

@@ -16,6 +16,8 @@
 
 #include <cstddef>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@
 
 #include "recode/geometry/mesh.hpp"
 #include "recode/geometry/obb.hpp"
+#include "recode/geometry/triangle_bvh.hpp"
 #include "recode/scene/motion.hpp"
 #include "recode/scene/scene.hpp"
 
@@ -74,6 +77,11 @@ class ObjectTree {
   // A leaf's block in world coordinates at the current frame.
   [[nodiscard]] TriangleMesh worldMesh(int node) const;
 
+  // A leaf's triangle hierarchy in its own coordinates (the triangles of worldMesh(node) are
+  // its triangles): built on first use, once even when threads ask at the same time, then
+  // shared and never changed.
+  [[nodiscard]] std::shared_ptr<const TriangleBvh> triangleHierarchy(int node) const;
+
  private:
   int add(const SceneObject& object, int parent, const std::string& parentPath);
   void fitLocalBoxes();
@@ -83,6 +91,11 @@ class ObjectTree {
   std::vector<Eigen::Isometry3d> boundsAt_;  // per node: the transform its AABB was made at
   std::vector<bool> boundsValid_;
   std::size_t triangles_ = 0;
+  struct LazyHierarchy {
+    std::once_flag built;
+    std::shared_ptr<const TriangleBvh> hierarchy;
+  };
+  std::vector<std::shared_ptr<LazyHierarchy>> hierarchies_;  // per node
 };
 
 // Whether two nodes' boxes overlap: their world AABBs and their world OBBs.

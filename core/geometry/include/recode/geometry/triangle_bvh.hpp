@@ -1,0 +1,63 @@
+#pragma once
+// A bounding-volume hierarchy over a mesh's triangles, in the mesh's own coordinates: built
+// once, then immutable (safe to share between threads). It answers "which triangles can meet
+// this region", with the region given as a test on axis-aligned boxes, so the caller decides
+// how a box maps into its space (a pose, a view).
+
+#include <cstdint>
+#include <vector>
+
+#include "recode/geometry/mesh.hpp"
+
+namespace recode::core {
+
+class TriangleBvh {
+ public:
+  // Throws std::out_of_range if a triangle index is not below mesh.vertexCount().
+  explicit TriangleBvh(const TriangleMesh& mesh);
+
+  [[nodiscard]] std::size_t triangleCount() const { return order_.size(); }
+  [[nodiscard]] std::size_t nodeCount() const { return nodes_.size(); }
+
+  // Appends to `out`, in increasing order, every triangle whose box (that of its three
+  // vertices) is inside a node box for which meets(box) held, down to the leaf. `meets` must be
+  // conservative: true for any box containing a point of interest (it may say true more often).
+  template <class BoxTest>
+  void collect(const BoxTest& meets, std::vector<std::uint32_t>& out) const;
+
+ private:
+  struct Node {
+    Aabb box;
+    std::uint32_t first = 0;  // leaf: range in order_; inner: index of the second child
+    std::uint32_t count = 0;  // triangles of a leaf, 0 for an inner node (first child follows)
+  };
+  void sortAppended(std::vector<std::uint32_t>& out, std::size_t from) const;
+
+  std::vector<Node> nodes_;           // depth first: an inner node's first child is next
+  std::vector<std::uint32_t> order_;  // triangle ids, grouped by leaf
+};
+
+template <class BoxTest>
+void TriangleBvh::collect(const BoxTest& meets, std::vector<std::uint32_t>& out) const {
+  if (nodes_.empty())
+    return;
+  const std::size_t from = out.size();
+  std::uint32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[stack[--top]];
+    if (!meets(n.box))
+      continue;
+    if (n.count > 0) {
+      out.insert(out.end(), order_.begin() + n.first, order_.begin() + n.first + n.count);
+      continue;
+    }
+    const auto self = static_cast<std::uint32_t>(&n - nodes_.data());
+    stack[top++] = n.first;
+    stack[top++] = self + 1;
+  }
+  sortAppended(out, from);
+}
+
+}  // namespace recode::core

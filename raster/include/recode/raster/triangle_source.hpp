@@ -1,0 +1,44 @@
+#pragma once
+// A block of triangles handed to a device whole (DepthStencilDevice::drawMesh), so that a device
+// may draw only the triangles that can reach its scissor. The draw's meaning is exactly
+// drawTriangles(allTriangles()): a device that draws less must write the same bits.
+
+#include <cstdint>
+#include <optional>
+#include <span>
+
+#include "recode/raster/state.hpp"
+
+namespace recode::raster {
+
+struct WindowVertex;
+
+// One indexed draw, as drawTriangles takes it. The spans stay valid while the source lives
+// and until its next call.
+struct TriangleDraw {
+  std::span<const WindowVertex> vertices;
+  std::span<const std::uint32_t> indices;
+};
+
+class TriangleSource {
+ public:
+  virtual ~TriangleSource() = default;
+
+  // The whole block: every vertex and every triangle, in the block's order. May throw what
+  // making its vertices throws (a vertex a view cannot map).
+  [[nodiscard]] virtual TriangleDraw allTriangles() const = 0;
+
+  // Optional: the block's triangles that can cover the centre of a pixel of `rect`, in the
+  // block's order, each with the same window coordinates as in allTriangles() (the indices
+  // may point into a different vertex array). Leaving out only triangles that cover no pixel
+  // centre of `rect` makes drawing these under a scissor inside `rect` write exactly what
+  // drawing allTriangles() writes. nullopt when the source cannot tell, or when
+  // allTriangles() would throw or give a draw that drawTriangles refuses (so that the refusal
+  // stays the full draw's); otherwise the draw it gives is valid.
+  [[nodiscard]] virtual std::optional<TriangleDraw> trianglesMeeting(const PixelRect& rect) const {
+    (void)rect;
+    return std::nullopt;
+  }
+};
+
+}  // namespace recode::raster
