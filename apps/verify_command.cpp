@@ -84,7 +84,7 @@ int runVerifyCommand(const VerifyOptions& o) {
     run.totals.add(run.pairs.back());
     if (run.modes) {
       run.modeChecks.push_back(
-          verify::checkModes(p.a, p.b, p.frame, run.pairs.back().exact->intersect, *tester));
+          verify::checkModes(*p.a, *p.b, p.frame, run.pairs.back().exact->intersect, *tester));
       run.modes->add(run.modeChecks.back());
     }
   }
