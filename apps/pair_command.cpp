@@ -30,7 +30,7 @@ struct PairOptions {
   bool contact = true;
   bool boxTest = true;
   bool picture = true;
-  std::string pixel;  // --pixel X,Y; empty: not given
+  std::string pixel;               // --pixel X,Y; empty: not given
   std::string mode = "reference";  // --mode
 };
 

@@ -25,10 +25,12 @@ PairResult testPair(raster::DepthStencilDevice& device, const PairTask& task, Pa
     case PairMode::Reference:
       break;
     case PairMode::Conservative:
-      return collideConservative(device, task.blockA->mesh(), task.blockB->mesh(), task.request).pair;
+      return collideConservative(device, task.blockA->mesh(), task.blockB->mesh(), task.request)
+          .pair;
     case PairMode::Adaptive: {
       thread_local AdaptivePairTester tester;
-      AdaptiveResult r = tester.collide(device, task.blockA->mesh(), task.blockB->mesh(), task.request);
+      AdaptiveResult r =
+          tester.collide(device, task.blockA->mesh(), task.blockB->mesh(), task.request);
       PairResult out = r.contact     ? std::move(*r.contact)
                        : r.reference ? std::move(*r.reference)
                                      : PairResult{};
