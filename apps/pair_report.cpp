@@ -19,13 +19,12 @@ ordered_json rect(const raster::PixelRect& r) {
   return ordered_json::array({r.x0, r.y0, r.x1, r.y1});
 }
 
-// One character per case for the text picture: the case's digit, so that every case can be
-// told apart (1 A only, 2 B behind A, 7 B in front of A, 8 B only), with '.' for case 0 so
-// the blocks stand out from the empty background.
+// One character per case for the text picture: the case's digit 0-8, so that every case can
+// be told apart (1 A only, 2 B behind A, 7 B in front of A, 8 B only).
 char caseGlyph(int c) {
   if (c < 0)
     return ' ';
-  return c == 0 ? '.' : static_cast<char>('0' + c);
+  return static_cast<char>('0' + c);
 }
 
 // Which case a cell of several pixels shows: interference first, then the others by how
@@ -75,7 +74,7 @@ void printTiming(std::ostream& out, const core::PairResult& r) {
 // At most 72 x 30 characters, each cell the most telling case among its pixels.
 void printCasePicture(std::ostream& out, const core::PairResult& r) {
   const int cols = std::min(r.mor.width(), 72), rows = std::min(r.mor.height(), 30);
-  out << "  cases in the MOR, top row first ('.' 0, digits 1-8 the case, '3'-'6' "
+  out << "  cases in the MOR, top row first (the case's digit 0-8, '3'-'6' "
          "interference):\n";
   for (int row = rows - 1; row >= 0; --row) {
     std::string line = "    ";

@@ -47,6 +47,22 @@ BlockHolder blockFromFile(const std::filesystem::path& path) {
   return held(ConvexBlock::fromFile(path));
 }
 
+// Files through the hull and group readers: a missing file is FileNotFoundError as above.
+void requireFile(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) {
+    const py::object error =
+        py::module_::import("builtins")
+            .attr("FileNotFoundError")(ENOENT, "no such mesh file", path.string());
+    PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+    throw py::error_already_set();
+  }
+}
+
+BlockHolder blockFromHull(const py::handle& points, std::string name) {
+  const std::vector<Eigen::Vector3d> p = verticesFrom(points, "points");
+  return held(ConvexBlock::fromHull(p, std::move(name)));
+}
+
 BlockHolder blockFromArrays(const py::handle& vertices, const py::handle& faces, std::string name) {
   const std::vector<Eigen::Vector3d> v = verticesFrom(vertices, "vertices");
   const std::vector<core::Triangle> f = facesFrom(faces, v.size(), "faces");
@@ -83,6 +99,18 @@ void bindGeometry(py::module_& m) {
                   "indices, counter-clockwise seen from outside. `name` starts error messages.")
       .def_static("from_file", &blockFromFile, py::arg("path"),
                   "A block from an OBJ or OFF file, named by its path.")
+      .def_static("from_hull", &blockFromHull, py::arg("points"), py::arg("name") = "hull",
+                  "The convex hull of an (n, 3) array of points (exact; extreme points only). "
+                  "Fewer than 4 points, or all on one line or plane, raise recode.MeshError.")
+      .def_static(
+          "from_file_hull",
+          [](const std::filesystem::path& path) {
+            requireFile(path);
+            return held(ConvexBlock::fromFileHull(path));
+          },
+          py::arg("path"),
+          "The convex hull of all vertices of an OBJ or OFF file, for collision meshes that "
+          "are convex in shape but not a clean closed surface.")
       .def_property_readonly("name", &ConvexBlock::name)
       .def_property_readonly(
           "vertices",
@@ -155,6 +183,15 @@ void bindGeometry(py::module_& m) {
           py::arg("parts"), py::arg("name") = "compound",
           "Blocks, each a ConvexBlock or a (ConvexBlock, 4 x 4 pose in the object) tuple; "
           "results name blocks by their index here.")
+      .def_static(
+          "from_obj_groups",
+          [](const std::filesystem::path& path, bool hull) {
+            requireFile(path);
+            return held(CollisionGeometry::fromObjGroups(path, hull));
+          },
+          py::arg("path"), py::arg("hull") = false,
+          "One block per object or group of an OBJ file (`o convex_0`, ... as convex "
+          "decompositions write them), each validated or, with hull=True, hulled.")
       .def_property_readonly("block_count", &CollisionGeometry::blockCount)
       .def("__len__", &CollisionGeometry::blockCount)
       .def(
