@@ -34,20 +34,8 @@ BlockHolder heldBlock(const py::handle& block) {
   return block.cast<BlockHolder>();
 }
 
-// A missing file is FileNotFoundError, as open() raises it; anything wrong inside a file is
-// the reader's MeshError.
-BlockHolder blockFromFile(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) {
-    const py::object error =
-        py::module_::import("builtins")
-            .attr("FileNotFoundError")(ENOENT, "no such mesh file", path.string());
-    PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
-    throw py::error_already_set();
-  }
-  return held(ConvexBlock::fromFile(path));
-}
-
-// Files through the hull and group readers: a missing file is FileNotFoundError as above.
+// A missing mesh file is FileNotFoundError, as open() raises it; anything wrong inside a file
+// is the reader's MeshError.
 void requireFile(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) {
     const py::object error =
@@ -56,6 +44,11 @@ void requireFile(const std::filesystem::path& path) {
     PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
     throw py::error_already_set();
   }
+}
+
+BlockHolder blockFromFile(const std::filesystem::path& path) {
+  requireFile(path);
+  return held(ConvexBlock::fromFile(path));
 }
 
 BlockHolder blockFromHull(const py::handle& points, std::string name) {
