@@ -16,7 +16,8 @@ using detail::json;
 using detail::JsonFieldReader;
 
 // Every error names the JSON path of the value it is about.
-Scene readScene(const json& doc, const std::string& sourceName, const fs::path& baseDir) {
+Scene readScene(const json& doc, const std::string& sourceName, const fs::path& baseDir,
+                const SceneReadLimits& limits) {
   const JsonFieldReader fields(sourceName);
   Scene scene;
   scene.sourceName = sourceName;
@@ -27,7 +28,8 @@ Scene readScene(const json& doc, const std::string& sourceName, const fs::path& 
   if (doc.contains("frames"))
     scene.frames =
         static_cast<int>(fields.integerInRange(doc.at("frames"), "frames", 1, kMaxFrames));
-  detail::ObjectReader objects(fields, baseDir, doc.contains("parts") ? &doc.at("parts") : nullptr);
+  detail::ObjectReader objects(fields, baseDir, doc.contains("parts") ? &doc.at("parts") : nullptr,
+                               limits.maxTriangles);
   if (!doc.contains("objects"))
     fields.fail("", "missing key \"objects\" (the list of objects)");
   scene.objects = objects.objects(doc.at("objects"), "objects");
@@ -44,9 +46,10 @@ TriangleMesh SceneObject::worldMesh() const {
 // The JSON reading layer throws its own error; callers catch SceneError, whose message it
 // keeps byte for byte.
 Scene parseScene(std::string_view jsonText, const std::string& sourceName,
-                 const std::filesystem::path& baseDir) {
+                 const std::filesystem::path& baseDir, const SceneReadLimits& limits) {
   try {
-    return readScene(recode::json::parseJsonDocument(jsonText, sourceName), sourceName, baseDir);
+    return readScene(recode::json::parseJsonDocument(jsonText, sourceName), sourceName, baseDir,
+                     limits);
   } catch (const SceneError&) {
     throw;
   } catch (const recode::json::JsonError& e) {
@@ -54,14 +57,14 @@ Scene parseScene(std::string_view jsonText, const std::string& sourceName,
   }
 }
 
-Scene loadScene(const std::filesystem::path& file) {
+Scene loadScene(const std::filesystem::path& file, const SceneReadLimits& limits) {
   std::string text;
   try {
     text = recode::io::readBoundedFile(file, recode::io::kMaxJsonFileBytes, "scene file");
   } catch (const recode::io::FileReadError& e) {
     throw SceneError(e.file(), "", e.problem());
   }
-  return parseScene(text, file.string(), file.parent_path());
+  return parseScene(text, file.string(), file.parent_path(), limits);
 }
 
 }  // namespace recode::core

@@ -121,6 +121,7 @@ void ObjectReader::children(const json& list, const std::string& path, int depth
 SceneObject ObjectReader::part(const std::string& name, const std::string& usePath, int depth) {
   if (const PartTable::Done* done = parts_.done(name)) {
     countBlocks(done->blocks, usePath);
+    triangles_.take(done->triangles, usePath);
     return done->geometry;
   }
   parts_.enter(name, usePath);
@@ -134,9 +135,10 @@ SceneObject ObjectReader::part(const std::string& name, const std::string& usePa
   if (given != 1)
     fields_.fail(path, "give exactly one of \"mesh\", \"shape\" and \"children\"");
   const long long before = blocks_;
+  const std::size_t trianglesBefore = triangles_.used();
   SceneObject geometryOnly;
   geometry(v, path, depth, geometryOnly);
-  parts_.leave(name, geometryOnly, blocks_ - before);
+  parts_.leave(name, geometryOnly, blocks_ - before, triangles_.used() - trianglesBefore);
   return geometryOnly;
 }
 
@@ -147,6 +149,23 @@ void ObjectReader::countBlocks(long long more, const std::string& path) {
     fields_.fail(path, "more than " + std::to_string(kMaxBlocks) +
                            " blocks in the scene (parts used inside parts multiply)");
   }
+}
+
+void TriangleBudget::check(double triangles, const std::string& path) const {
+  const double total = static_cast<double>(used_) + triangles;
+  if (total > static_cast<double>(limit_)) {
+    // Whole counts print as integers; a count from huge shape parameters, in short form.
+    const std::string count = total < 1e15 ? std::to_string(static_cast<long long>(total))
+                                           : recode::json::shortNumber(total);
+    fields_.fail(path, "this block would bring the scene to " + count +
+                           " triangles, over the limit of " + std::to_string(limit_) +
+                           " triangles in a scene (each use of a part counts again)");
+  }
+}
+
+void TriangleBudget::take(std::size_t triangles, const std::string& path) {
+  check(static_cast<double>(triangles), path);
+  used_ += triangles;
 }
 
 }  // namespace recode::core::detail

@@ -57,9 +57,10 @@ void PartTable::enter(const std::string& name, const std::string& usePath) {
   expanding_.push_back(name);
 }
 
-void PartTable::leave(const std::string& name, const SceneObject& geometry, long long blocks) {
+void PartTable::leave(const std::string& name, const SceneObject& geometry, long long blocks,
+                      std::size_t triangles) {
   expanding_.pop_back();
-  done_.emplace(name, Done{geometry, blocks});
+  done_.emplace(name, Done{geometry, blocks, triangles});
 }
 
 }  // namespace recode::core::detail

@@ -4,6 +4,7 @@
 // motion. They share the JSON reading layer's field reader, so that every error names the file
 // and the JSON path the same way.
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -25,12 +26,33 @@ using recode::json::JsonFieldReader;
 [[nodiscard]] ViewSpec readView(const JsonFieldReader& fields, const json& v,
                                 const std::string& path);
 
+// The triangles of a scene's blocks so far, against SceneReadLimits::maxTriangles
+// (scene_objects.cpp).
+class TriangleBudget {
+ public:
+  TriangleBudget(const JsonFieldReader& fields, std::size_t limit)
+      : fields_(fields), limit_(limit) {}
+
+  // Refuses, at `path`, a block that would have `triangles` more (a count predicted from a
+  // shape's parameters, so possibly huge) before it is built.
+  void check(double triangles, const std::string& path) const;
+  // Counts `triangles` more, made for the block at `path`, refusing the scene past the limit.
+  void take(std::size_t triangles, const std::string& path);
+  [[nodiscard]] std::size_t used() const { return used_; }
+
+ private:
+  const JsonFieldReader& fields_;
+  std::size_t limit_;
+  std::size_t used_ = 0;
+};
+
 // The block of a leaf: its "mesh" file or its "shape", validated closed and convex
-// (scene_shapes.cpp).
+// (scene_shapes.cpp). Every block's triangles are counted in the scene's budget.
 class ShapeReader {
  public:
-  ShapeReader(const JsonFieldReader& fields, std::filesystem::path baseDir)
-      : fields_(fields), baseDir_(std::move(baseDir)) {}
+  ShapeReader(const JsonFieldReader& fields, std::filesystem::path baseDir,
+              TriangleBudget& triangles)
+      : fields_(fields), baseDir_(std::move(baseDir)), triangles_(triangles) {}
 
   // The local mesh of a node (or part) `v` at `path` that has "mesh" or "shape" (a mesh
   // hulled when it says "hull": true).
@@ -58,6 +80,7 @@ class ShapeReader {
 
   const JsonFieldReader& fields_;
   std::filesystem::path baseDir_;
+  TriangleBudget& triangles_;
 };
 
 // position, rotation_deg, motion, keyframes, joint (scene_placement.cpp).
@@ -100,10 +123,11 @@ class PartTable {
   // Every part's name, in the document's order.
   [[nodiscard]] std::vector<std::string> list() const;
 
-  // A part read before: its geometry and the blocks one use of it adds.
+  // A part read before: its geometry and the blocks and triangles one use of it adds.
   struct Done {
     SceneObject geometry;
     long long blocks = 0;
+    std::size_t triangles = 0;
   };
   // Null for a part not read yet.
   [[nodiscard]] const Done* done(const std::string& name) const;
@@ -111,7 +135,8 @@ class PartTable {
   // Brackets the reading of part `name`, used at `usePath`: enter() refuses a part that is
   // already being read (a cycle); leave() records the result.
   void enter(const std::string& name, const std::string& usePath);
-  void leave(const std::string& name, const SceneObject& geometry, long long blocks);
+  void leave(const std::string& name, const SceneObject& geometry, long long blocks,
+             std::size_t triangles);
 
  private:
   const JsonFieldReader& fields_;
@@ -123,9 +148,14 @@ class PartTable {
 // The "objects" array and the tree below each object, expanding parts (scene_objects.cpp).
 class ObjectReader {
  public:
+  // `maxTriangles` is SceneReadLimits::maxTriangles.
   ObjectReader(const JsonFieldReader& fields, const std::filesystem::path& baseDir,
-               const json* parts)
-      : fields_(fields), shapes_(fields, baseDir), placements_(fields), parts_(fields, parts) {}
+               const json* parts, std::size_t maxTriangles)
+      : fields_(fields),
+        triangles_(fields, maxTriangles),
+        shapes_(fields, baseDir, triangles_),
+        placements_(fields),
+        parts_(fields, parts) {}
 
   // The document's "objects" array at `path`.
   [[nodiscard]] std::vector<SceneObject> objects(const json& list, const std::string& path);
@@ -150,6 +180,7 @@ class ObjectReader {
   static constexpr long long kMaxBlocks = 100000;
 
   const JsonFieldReader& fields_;
+  TriangleBudget triangles_;
   ShapeReader shapes_;
   PlacementReader placements_;
   PartTable parts_;

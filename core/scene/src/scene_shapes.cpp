@@ -92,7 +92,8 @@ class ShapeFields {
 };
 
 // A capped cone's spheres must not contain one another.
-TriangleMesh cappedCone(const ShapeFields& f, const json& v, const std::string& path) {
+TriangleMesh cappedCone(const ShapeFields& f, const json& v, const std::string& path,
+                        const TriangleBudget& budget) {
   const double r0 = f.size("radius0");
   const double r1 = f.size("radius1");
   const double height = f.size("height");
@@ -103,32 +104,37 @@ TriangleMesh cappedCone(const ShapeFields& f, const json& v, const std::string& 
            "must exceed |radius0 - radius1| = " + jsonText(json(std::abs(r0 - r1))) +
                " (otherwise one sphere contains the other), got " + jsonText(v.at("height")));
   }
+  budget.check(4.0 * rings * segments, path);
   return makeCappedCone(r0, r1, height, segments, rings);
 }
 
 // The mesh of a shape of a known type. The fields are read in the order the messages rely on
-// (the first missing or bad one is reported).
+// (the first missing or bad one is reported). The triangle counts of generators.hpp are
+// checked against the scene's budget before anything is built.
 TriangleMesh generate(const ShapeFields& f, const json& v, const std::string& path,
-                      const std::string& type) {
+                      const std::string& type, const TriangleBudget& budget) {
   if (type == "cone" || type == "cylinder") {
     const double radius = f.size("radius");
     const double height = f.size("height");
     const int segments = f.count("segments", 32, 3);
+    budget.check((type == "cone" ? 2.0 : 4.0) * segments, path);
     return type == "cone" ? makeCone(radius, height, segments)
                           : makeCylinder(radius, height, segments);
   }
   if (type == "capped_cone")
-    return cappedCone(f, v, path);
+    return cappedCone(f, v, path, budget);
   if (type == "ellipsoid") {
     const Eigen::Vector3d radii = f.sizes3("radii", "3 positive numbers [a, b, c]");
     const int segments = f.count("segments", 32, 3);
     const int rings = f.count("rings", 16, 2);
+    budget.check(2.0 * (rings - 1) * segments, path);
     return makeEllipsoid(radii.x(), radii.y(), radii.z(), segments, rings);
   }
   if (type == "sphere") {
     const double radius = f.size("radius");
     const int segments = f.count("segments", 32, 3);
     const int rings = f.count("rings", 16, 2);
+    budget.check(2.0 * (rings - 1) * segments, path);
     return makeSphere(radius, segments, rings);
   }
   const Eigen::Vector3d full = f.sizes3("size", "3 positive numbers [sx, sy, sz]");
@@ -205,6 +211,7 @@ std::vector<std::pair<std::string, TriangleMesh>> ShapeReader::meshGroups(
 // overflow for coordinates near 1e300 ("height ... is -nan (tolerance inf)").
 TriangleMesh ShapeReader::meshBlock(TriangleMesh mesh, const std::string& what,
                                     const std::string& path, bool hull) const {
+  triangles_.take(mesh.triangles.size(), path);
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Eigen::Vector3d& p = mesh.vertices[i];
     if (p.cwiseAbs().maxCoeff() > kMaxCoordinate) {
@@ -235,7 +242,9 @@ TriangleMesh ShapeReader::shape(const json& v, const std::string& path,
   const std::string type = shapeType(v, path);
   *typeName = type;
   try {
-    return generate(ShapeFields(fields_, v, path, type), v, path, type);
+    TriangleMesh mesh = generate(ShapeFields(fields_, v, path, type), v, path, type, triangles_);
+    triangles_.take(mesh.triangles.size(), path);
+    return mesh;
   } catch (const std::invalid_argument& e) {
     fields_.fail(path, e.what());
   }

@@ -146,6 +146,43 @@ TEST_CASE("scene hierarchy errors: parts", "[scene][errors]") {
              Catch::Matchers::Contains("more than 100000 blocks in the scene"));
 }
 
+// The scene's triangle budget counts every use of a part again, and refuses a generated shape
+// from its parameters, before it is built.
+TEST_CASE("scene triangle budget", "[scene][errors][limits]") {
+  const std::string cone = R"("shape": {"type": "cone", "radius": 1, "height": 1, "segments": 50})";
+  const std::string tenCones = R"({"parts": {"c": {)" + cone + R"(},
+      "ten": {"children": [{"name": "0", "part": "c"}, {"name": "1", "part": "c"}, {"name": "2",
+        "part": "c"}, {"name": "3", "part": "c"}, {"name": "4", "part": "c"}, {"name": "5",
+        "part": "c"}, {"name": "6", "part": "c"}, {"name": "7", "part": "c"}, {"name": "8",
+        "part": "c"}, {"name": "9", "part": "c"}]}},
+    "objects": [{"part": "ten"}, {"part": "ten"}]})";
+  const auto errorWithLimit = [](const std::string& text, std::size_t maxTriangles) {
+    try {
+      (void)parseScene(text, "t.json", ".", SceneReadLimits{maxTriangles});
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  // 20 cones of 100 triangles: 2000 fit exactly, 1999 do not; the second "ten" is refused
+  // where it is used.
+  CHECK(errorWithLimit(tenCones, 2000) == "(no error)");
+  CHECK(parseScene(tenCones, "t.json", ".", SceneReadLimits{2000}).objects.size() == 2);
+  CHECK(errorWithLimit(tenCones, 1999) ==
+        "t.json: objects[1].part: this block would bring the scene to 2000 triangles, over the "
+        "limit of 1999 triangles in a scene (each use of a part counts again)");
+  // Within the first use of "ten", the tenth cone is one too many.
+  CHECK_THAT(errorWithLimit(tenCones, 999),
+             StartsWith("t.json: parts.ten.children[9].part: this block would bring the scene to "
+                        "1000 triangles"));
+  // The default limit, 2^25, refuses a sphere of 2 * 99,999 * 100,000 triangles unbuilt.
+  CHECK(kMaxSceneTriangles == (std::size_t{1} << 25));
+  CHECK(errorOf(oneObject(R"("shape": {"type": "sphere", "radius": 1, "segments": 100000,
+                                       "rings": 100000})")) ==
+        "h.json: objects[0].shape: this block would bring the scene to 19999800000 triangles, over "
+        "the limit of 33554432 triangles in a scene (each use of a part counts again)");
+}
+
 TEST_CASE("scene hierarchy errors: children", "[scene][errors]") {
   CHECK_THAT(errorOf(oneObject(R"("name": "hand", "children": [{"name": "thumb", )" + kBox +
                                R"(}, {"name": "index", )" + kBox + R"(}, {"name": "thumb", )" +

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -64,6 +65,17 @@ inline constexpr double kMaxAngularRateDeg = 1e6;  // degrees per frame: angular
 // map far beyond the rasterizer's coordinate range.
 inline constexpr double kMinWindowSide = 1e-6;
 
+// The most triangles the blocks of one scene may have together, each use of a part counted
+// again: 2^25, as for one generated shape (about 1 GiB of meshes). Without it a few lines of
+// parts and shapes asked for billions of triangles and ran until memory ran out.
+inline constexpr std::size_t kMaxSceneTriangles = std::size_t{1} << 25;
+
+// What reading one scene may build. A program that reads scenes from untrusted sources can
+// lower it; a generated shape is refused from its parameters, before it is built.
+struct SceneReadLimits {
+  std::size_t maxTriangles = kMaxSceneTriangles;
+};
+
 // ViewSpec (the "view" object) is declared in recode/geometry/projection.hpp.
 
 struct Scene {
@@ -74,10 +86,12 @@ struct Scene {
 };
 
 // Reads and checks a scene file. Mesh paths are relative to the scene file's directory.
-[[nodiscard]] Scene loadScene(const std::filesystem::path& file);
+[[nodiscard]] Scene loadScene(const std::filesystem::path& file,
+                              const SceneReadLimits& limits = {});
 
 // Parses scene JSON text. `sourceName` is used in messages; `baseDir` resolves mesh paths.
 [[nodiscard]] Scene parseScene(std::string_view jsonText, const std::string& sourceName,
-                               const std::filesystem::path& baseDir);
+                               const std::filesystem::path& baseDir,
+                               const SceneReadLimits& limits = {});
 
 }  // namespace recode::core
