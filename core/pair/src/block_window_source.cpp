@@ -40,12 +40,18 @@ struct WindowMap {
     dv = w.vmax - w.vmin;
     width = view.width();
     height = view.height();
+    sx = width / du;
+    sy = height / dv;
   }
   [[nodiscard]] double x(const Eigen::Vector3d& p) const { return (p[u] - umin) / du * width; }
   [[nodiscard]] double y(const Eigen::Vector3d& p) const { return (p[v] - vmin) / dv * height; }
+  // The same up to a few units in the last place (one product for a quotient and a product):
+  // only for tests with holdsCentre's margin, which is far wider.
+  [[nodiscard]] double nearX(double pu) const { return (pu - umin) * sx; }
+  [[nodiscard]] double nearY(double pv) const { return (pv - vmin) * sy; }
 
   int u = 0, v = 1;
-  double umin = 0.0, vmin = 0.0, du = 1.0, dv = 1.0, width = 1.0, height = 1.0;
+  double umin = 0.0, vmin = 0.0, du = 1.0, dv = 1.0, width = 1.0, height = 1.0, sx = 1.0, sy = 1.0;
 };
 
 // Whether a hierarchy box, moved by the pose, can hold a vertex of a triangle that covers a
@@ -65,8 +71,8 @@ bool boxCanCover(const Aabb& local, const Eigen::Isometry3d& pose, bool identity
     lo = centre - half;
     hi = centre + half;
   }
-  return holdsCentre(map.x(lo), map.x(hi), rect.x0, rect.x1) &&
-         holdsCentre(map.y(lo), map.y(hi), rect.y0, rect.y1);
+  return holdsCentre(map.nearX(lo[map.u]), map.nearX(hi[map.u]), rect.x0, rect.x1) &&
+         holdsCentre(map.nearY(lo[map.v]), map.nearY(hi[map.v]), rect.y0, rect.y1);
 }
 
 // Whether the closed box of three window vertices holds the centre of a pixel of `rect`: the
@@ -113,6 +119,14 @@ bool coversPixelCentre(const WindowVertex& a, const WindowVertex& b, const Windo
 // coversPixelCentre on window x and y made as toWindow makes them (the depth plays no part).
 bool worldTriangleCovers(const WindowMap& map, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                          const Eigen::Vector3d& c, const PixelRect& rect) {
+  // First the unsnapped box, with holdsCentre's margin for the snapping: most candidates of a
+  // hierarchy leaf end here, before any rounding call.
+  const auto [xlo, xhi] = std::minmax({a[map.u], b[map.u], c[map.u]});
+  if (!holdsCentre(map.nearX(xlo), map.nearX(xhi), rect.x0, rect.x1))
+    return false;
+  const auto [ylo, yhi] = std::minmax({a[map.v], b[map.v], c[map.v]});
+  if (!holdsCentre(map.nearY(ylo), map.nearY(yhi), rect.y0, rect.y1))
+    return false;
   const auto window = [&map](const Eigen::Vector3d& p) {
     return WindowVertex{raster::snapToSubpixel(map.x(p)), raster::snapToSubpixel(map.y(p)), 0.0f};
   };
