@@ -44,10 +44,14 @@ std::uint64_t clipMask(int bx, int by, const PixelRect& clip) {
   return mask;
 }
 
-// Per-pixel edge evaluation of one block, stepping the exact integer edge values.
-std::uint64_t coverageMask(const TriangleSetup& tri, int bx, int by) {
-  const std::int64_t x = pixelCentreFixed(bx);
-  const std::int64_t y = pixelCentreFixed(by);
+// Per-pixel edge evaluation of the pixels of one block that lie inside `clip` (the rest would
+// be masked off by the caller anyway), stepping the exact integer edge values. A sub-pixel
+// triangle's clipped area is a pixel or two, so this visits that, not all 64.
+std::uint64_t coverageMask(const TriangleSetup& tri, int bx, int by, const PixelRect& clip) {
+  const int c0 = std::max(clip.x0 - bx, 0), c1 = std::min(clip.x1 - bx, kBlockSize);
+  const int r0 = std::max(clip.y0 - by, 0), r1 = std::min(clip.y1 - by, kBlockSize);
+  const std::int64_t x = pixelCentreFixed(bx + c0);
+  const std::int64_t y = pixelCentreFixed(by + r0);
   std::int64_t rowStart[3], stepX[3], stepY[3];
   for (int k = 0; k < 3; ++k) {
     rowStart[k] = tri.edges[k].at(x, y);
@@ -55,9 +59,9 @@ std::uint64_t coverageMask(const TriangleSetup& tri, int bx, int by) {
     stepY[k] = tri.edges[k].b * kSubpixelOne;
   }
   std::uint64_t mask = 0;
-  for (int r = 0; r < kBlockSize; ++r) {
+  for (int r = r0; r < r1; ++r) {
     std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
-    for (int c = 0; c < kBlockSize; ++c) {
+    for (int c = c0; c < c1; ++c) {
       const bool inside = (e0 | e1 | e2) >= 0;  // all three non-negative
       mask |= static_cast<std::uint64_t>(inside) << (r * kBlockSize + c);
       e0 += stepX[0];
@@ -119,7 +123,7 @@ void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink
               mask = inClip;
             } else {
               ++st.blocksPartial;
-              mask = coverageMask(tri, bx, by) & inClip;
+              mask = coverageMask(tri, bx, by, area);
             }
           }
           if (mask == 0)

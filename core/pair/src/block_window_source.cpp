@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "recode/raster/device.hpp"
+#include "recode/raster/fixed_point.hpp"
+#include "recode/raster/triangle_setup.hpp"
 
 namespace recode::core::detail {
 
@@ -23,26 +25,54 @@ bool holdsCentre(double lo, double hi, int first, int end) {
   return i0 <= i1;
 }
 
+// The view's mapping to window x and y, unpacked once per query so that the tests below need
+// no call per box or vertex: (u - umin) / (umax - umin) * width, operation for operation as
+// OrthoView::toWindow, on the coordinates toPlane picks.
+struct WindowMap {
+  explicit WindowMap(const OrthoView& view) {
+    const int axis = view.axis() == ViewAxis::X ? 0 : view.axis() == ViewAxis::Y ? 1 : 2;
+    u = (axis + 1) % 3;  // toPlane: X -> (y, z, x), Y -> (z, x, y), Z -> (x, y, z)
+    v = (axis + 2) % 3;
+    const ViewWindow& w = view.window();
+    umin = w.umin;
+    vmin = w.vmin;
+    du = w.umax - w.umin;
+    dv = w.vmax - w.vmin;
+    width = view.width();
+    height = view.height();
+    sx = width / du;
+    sy = height / dv;
+  }
+  [[nodiscard]] double x(const Eigen::Vector3d& p) const { return (p[u] - umin) / du * width; }
+  [[nodiscard]] double y(const Eigen::Vector3d& p) const { return (p[v] - vmin) / dv * height; }
+  // The same up to a few units in the last place (one product for a quotient and a product):
+  // only for tests with holdsCentre's margin, which is far wider.
+  [[nodiscard]] double nearX(double pu) const { return (pu - umin) * sx; }
+  [[nodiscard]] double nearY(double pv) const { return (pv - vmin) * sy; }
+
+  int u = 0, v = 1;
+  double umin = 0.0, vmin = 0.0, du = 1.0, dv = 1.0, width = 1.0, height = 1.0, sx = 1.0, sy = 1.0;
+};
+
 // Whether a hierarchy box, moved by the pose, can hold a vertex of a triangle that covers a
 // pixel centre of `rect`: the box's image-plane ranges, grown by a relative margin for the
 // rounding of the world vertices (each made as linear * p + translation), mapped to the window
 // by the view's own formula. That formula is monotonic, so a vertex inside the box maps inside
 // the mapped range; a triangle covering a centre has that centre inside its vertices' box.
 bool boxCanCover(const Aabb& local, const Eigen::Isometry3d& pose, bool identity,
-                 const OrthoView& view, const PixelRect& rect) {
-  Eigen::Vector3d centre = local.center(), half = 0.5 * local.extent();
+                 const WindowMap& map, const PixelRect& rect) {
+  Eigen::Vector3d lo = local.min, hi = local.max;
   if (!identity) {
+    Eigen::Vector3d centre = local.center(), half = 0.5 * local.extent();
     const Eigen::Matrix3d linear = pose.linear();
     centre = linear * centre + pose.translation();
     half = linear.cwiseAbs() * half;
+    half += Eigen::Vector3d::Constant(1e-9 * (centre.cwiseAbs().maxCoeff() + half.maxCoeff()));
+    lo = centre - half;
+    hi = centre + half;
   }
-  half += Eigen::Vector3d::Constant(1e-9 * (centre.cwiseAbs().maxCoeff() + half.maxCoeff()));
-  const Eigen::Vector3d lo = view.toPlane(centre - half), hi = view.toPlane(centre + half);
-  const ViewWindow& w = view.window();
-  const auto toX = [&](double u) { return (u - w.umin) / (w.umax - w.umin) * view.width(); };
-  const auto toY = [&](double v) { return (v - w.vmin) / (w.vmax - w.vmin) * view.height(); };
-  return holdsCentre(toX(lo.x()), toX(hi.x()), rect.x0, rect.x1) &&
-         holdsCentre(toY(lo.y()), toY(hi.y()), rect.y0, rect.y1);
+  return holdsCentre(map.nearX(lo[map.u]), map.nearX(hi[map.u]), rect.x0, rect.x1) &&
+         holdsCentre(map.nearY(lo[map.v]), map.nearY(hi[map.v]), rect.y0, rect.y1);
 }
 
 // Whether the closed box of three window vertices holds the centre of a pixel of `rect`: the
@@ -57,6 +87,51 @@ bool boxHoldsPixelCentre(const WindowVertex& a, const WindowVertex& b, const Win
     return first <= last;
   };
   return holds(a.x, b.x, c.x, rect.x0, rect.x1) && holds(a.y, b.y, c.y, rect.y0, rect.y1);
+}
+
+// Whether the triangle with these snapped window x and y covers the centre of a pixel of
+// `rect` under the fill rule: the device's own setup and edge functions (triangle_setup.hpp),
+// evaluated at each centre of its pixel box inside `rect`. A zero-area triangle covers none.
+// Past kMaxTested centres the answer is yes without looking (leaving a triangle in is always
+// safe; only sub-pixel triangles come in numbers).
+bool coversPixelCentre(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                       const PixelRect& rect) {
+  constexpr std::int64_t kMaxTested = 16;
+  const std::optional<raster::TriangleSetup> tri =
+      raster::setupTriangle(raster::snapVertex(a), raster::snapVertex(b), raster::snapVertex(c));
+  if (!tri)
+    return false;
+  const PixelRect area = tri->bounds.intersect(rect);
+  if (area.empty())
+    return false;
+  if (static_cast<std::int64_t>(area.width()) * area.height() > kMaxTested)
+    return true;
+  for (int py = area.y0; py < area.y1; ++py) {
+    for (int px = area.x0; px < area.x1; ++px) {
+      const std::int64_t x = raster::pixelCentreFixed(px), y = raster::pixelCentreFixed(py);
+      if (tri->edges[0].at(x, y) >= 0 && tri->edges[1].at(x, y) >= 0 && tri->edges[2].at(x, y) >= 0)
+        return true;
+    }
+  }
+  return false;
+}
+
+// coversPixelCentre on window x and y made as toWindow makes them (the depth plays no part).
+bool worldTriangleCovers(const WindowMap& map, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                         const Eigen::Vector3d& c, const PixelRect& rect) {
+  // First the unsnapped box, with holdsCentre's margin for the snapping: most candidates of a
+  // hierarchy leaf end here, before any rounding call.
+  const auto [xlo, xhi] = std::minmax({a[map.u], b[map.u], c[map.u]});
+  if (!holdsCentre(map.nearX(xlo), map.nearX(xhi), rect.x0, rect.x1))
+    return false;
+  const auto [ylo, yhi] = std::minmax({a[map.v], b[map.v], c[map.v]});
+  if (!holdsCentre(map.nearY(ylo), map.nearY(yhi), rect.y0, rect.y1))
+    return false;
+  const auto window = [&map](const Eigen::Vector3d& p) {
+    return WindowVertex{raster::snapToSubpixel(map.x(p)), raster::snapToSubpixel(map.y(p)), 0.0f};
+  };
+  const WindowVertex wa = window(a), wb = window(b), wc = window(c);
+  return boxHoldsPixelCentre(wa, wb, wc, rect) && coversPixelCentre(wa, wb, wc, rect);
 }
 
 bool insideRange(const OrthoView& view, const Eigen::Vector3d& p, WindowVertex& out) {
@@ -98,34 +173,58 @@ std::optional<raster::TriangleDraw> BlockWindowSource::trianglesMeeting(
     const PixelRect& rect) const {
   if (!culls_)
     return std::nullopt;
-  if (!nearRect_ || !(*nearRect_ == rect))
-    gather(rect);
-  return raster::TriangleDraw{near_, nearIndices_};
+  if (!nearRect_ || !(*nearRect_ == rect)) {
+    if (baseRect_ && !rect.empty() && baseRect_->intersect(rect) == rect) {
+      narrow(rect);
+    } else {
+      gather(rect);
+      near_ = base_;
+    }
+    nearRect_ = rect;
+  }
+  if (sequence_.size() < near_.size()) {
+    const auto from = static_cast<std::uint32_t>(sequence_.size());
+    sequence_.resize(near_.size());
+    for (auto i = from; i < sequence_.size(); ++i)
+      sequence_[i] = i;
+  }
+  return raster::TriangleDraw{near_, std::span(sequence_).first(near_.size())};
 }
 
 void BlockWindowSource::gather(const PixelRect& rect) const {
-  nearRect_ = rect;
-  candidates_.clear();
-  near_.clear();
-  nearIndices_.clear();
+  baseRect_ = rect;
+  survivors_.clear();
+  base_.clear();
   if (rect.empty())
     return;
   const Eigen::Isometry3d& pose = block_.localToWorld();
   const bool identity = pose.matrix().isIdentity(0.0);
-  block_.hierarchy()->collect(
-      [&](const Aabb& box) { return boxCanCover(box, pose, identity, view_, rect); }, candidates_);
+  const WindowMap map(view_);
   const TriangleMesh& mesh = block_.mesh();
-  for (const std::uint32_t t : candidates_) {
-    const Triangle& tri = mesh.triangles[t];
-    const WindowVertex a = view_.toWindow(mesh.vertices[tri[0]]);
-    const WindowVertex b = view_.toWindow(mesh.vertices[tri[1]]);
-    const WindowVertex c = view_.toWindow(mesh.vertices[tri[2]]);
-    if (!boxHoldsPixelCentre(a, b, c, rect))
-      continue;
-    const auto first = static_cast<std::uint32_t>(near_.size());
-    near_.insert(near_.end(), {a, b, c});
-    nearIndices_.insert(nearIndices_.end(), {first, first + 1, first + 2});
-  }
+  // Only x and y decide; the depth is made for the few that pass. Sorting those restores the
+  // block's order.
+  block_.hierarchy()->visit(
+      [&](const Aabb& box) { return boxCanCover(box, pose, identity, map, rect); },
+      [&](std::uint32_t t) {
+        const Triangle& tri = mesh.triangles[t];
+        if (worldTriangleCovers(map, mesh.vertices[tri[0]], mesh.vertices[tri[1]],
+                                mesh.vertices[tri[2]], rect))
+          survivors_.push_back(t);
+      });
+  std::sort(survivors_.begin(), survivors_.end());
+  base_.reserve(3 * survivors_.size());
+  for (const std::uint32_t t : survivors_)
+    for (const VertexIndex i : mesh.triangles[t])
+      base_.push_back(view_.toWindow(mesh.vertices[i]));
+}
+
+void BlockWindowSource::narrow(const PixelRect& rect) const {
+  narrowed_.clear();
+  for (std::size_t k = 0; k + 2 < base_.size(); k += 3)
+    if (boxHoldsPixelCentre(base_[k], base_[k + 1], base_[k + 2], rect) &&
+        coversPixelCentre(base_[k], base_[k + 1], base_[k + 2], rect))
+      narrowed_.insert(narrowed_.end(), {base_[k], base_[k + 1], base_[k + 2]});
+  near_ = narrowed_;
 }
 
 }  // namespace recode::core::detail

@@ -35,7 +35,10 @@ class BlockWindowSource final : public raster::TriangleSource {
       const raster::PixelRect& rect) const override;
 
  private:
+  // Queries the hierarchy for `rect`: the base list every smaller rectangle is filtered from.
   void gather(const raster::PixelRect& rect) const;
+  // The base triangles whose box holds a pixel centre of `rect` (inside the base rectangle).
+  void narrow(const raster::PixelRect& rect) const;
 
   const PairBlock& block_;
   const OrthoView& view_;
@@ -45,11 +48,18 @@ class BlockWindowSource final : public raster::TriangleSource {
   mutable bool allMade_ = false;
   mutable std::vector<raster::WindowVertex> all_;
   mutable std::vector<std::uint32_t> allIndices_;
-  // The last culled draw and its rectangle (the passes ask for one rectangle several times).
+  // The last hierarchy query (the MOR): its rectangle and triangles, three window vertices
+  // each, in the block's order. A rectangle inside it (the contact rectangle) is served from
+  // this list: a triangle that can cover a centre of the smaller one is in it.
+  mutable std::optional<raster::PixelRect> baseRect_;
+  mutable std::vector<std::uint32_t> survivors_;
+  mutable std::vector<raster::WindowVertex> base_;
+  // The last draw handed out and its rectangle (the passes ask for one rectangle several
+  // times); near_ is base_ itself when the rectangles are the same.
   mutable std::optional<raster::PixelRect> nearRect_;
-  mutable std::vector<std::uint32_t> candidates_;
-  mutable std::vector<raster::WindowVertex> near_;
-  mutable std::vector<std::uint32_t> nearIndices_;
+  mutable std::vector<raster::WindowVertex> narrowed_;
+  mutable std::span<const raster::WindowVertex> near_;
+  mutable std::vector<std::uint32_t> sequence_;  // 0, 1, 2, ...: each triangle its own three
 };
 
 }  // namespace recode::core::detail

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <memory>
 
+#include "recode/geometry/generators.hpp"
 #include "recode/geometry/triangle_bvh.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
@@ -165,4 +166,34 @@ TEST_CASE("culled draws: a part of the suite at width 512 gives the whole draws'
   const auto [culled, whole] = compareSuite(512, 14);
   INFO("triangles drawn: culled " << culled << ", whole " << whole);
   CHECK(culled < whole);
+}
+
+TEST_CASE("culled draws: dense touching spheres under a thin MOR give the whole draws' bits") {
+  // The benchmark's case (docs/benchmarks.md, "A pair's cost and its meshes") at 256 x 128:
+  // thousands of sub-pixel triangles near a 2-pixel column. The culled side must produce the
+  // very same fragments from far fewer triangles.
+  const core::TriangleMesh a = core::makeSphere(1.0, 256, 128);
+  core::TriangleMesh b = a;
+  for (Eigen::Vector3d& p : b.vertices)
+    p.x() += 1.98;
+  core::Aabb bounds = core::boundingBox(a);
+  bounds.extend(core::boundingBox(b));
+  core::PairRequest request;
+  request.frame = core::resolveFrame(core::ViewSpec{}, bounds, {512, 512, {}});
+  raster::CpuDevice wholeInner(512, 512);
+  WholeDrawDevice whole(wholeInner);
+  raster::CpuDevice culled(512, 512);
+  const core::PairResult r0 = core::collidePair(whole, a, b, request);
+  const core::PairResult r1 = core::collidePair(culled, core::PairBlock::withHierarchy(a),
+                                                core::PairBlock::withHierarchy(b), request);
+  REQUIRE(r0.collide);
+  REQUIRE(r0.mor.width() <= 3);
+  requireSameResult(r0, r1);
+  CHECK(std::equal(wholeInner.depthBuffer().begin(), wholeInner.depthBuffer().end(),
+                   culled.depthBuffer().begin(), culled.depthBuffer().end()));
+  CHECK(std::equal(wholeInner.stencilBuffer().begin(), wholeInner.stencilBuffer().end(),
+                   culled.stencilBuffer().begin(), culled.stencilBuffer().end()));
+  CHECK(culled.counters().fragments == wholeInner.counters().fragments);
+  CHECK(culled.counters().fragments > 0);
+  CHECK(culled.counters().trianglesSubmitted < wholeInner.counters().trianglesSubmitted);
 }

@@ -25,6 +25,11 @@ class TriangleBvh {
   template <class BoxTest>
   void collect(const BoxTest& meets, std::vector<std::uint32_t>& out) const;
 
+  // Calls take(t) for the same triangles as collect, leaf by leaf, in no useful order: for a
+  // caller that filters the triangles further and sorts only what is left.
+  template <class BoxTest, class Take>
+  void visit(const BoxTest& meets, const Take& take) const;
+
  private:
   struct Node {
     Aabb box;
@@ -37,11 +42,10 @@ class TriangleBvh {
   std::vector<std::uint32_t> order_;  // triangle ids, grouped by leaf
 };
 
-template <class BoxTest>
-void TriangleBvh::collect(const BoxTest& meets, std::vector<std::uint32_t>& out) const {
+template <class BoxTest, class Take>
+void TriangleBvh::visit(const BoxTest& meets, const Take& take) const {
   if (nodes_.empty())
     return;
-  const std::size_t from = out.size();
   std::uint32_t stack[64];
   int top = 0;
   stack[top++] = 0;
@@ -50,13 +54,20 @@ void TriangleBvh::collect(const BoxTest& meets, std::vector<std::uint32_t>& out)
     if (!meets(n.box))
       continue;
     if (n.count > 0) {
-      out.insert(out.end(), order_.begin() + n.first, order_.begin() + n.first + n.count);
+      for (std::uint32_t k = n.first; k < n.first + n.count; ++k)
+        take(order_[k]);
       continue;
     }
     const auto self = static_cast<std::uint32_t>(&n - nodes_.data());
     stack[top++] = n.first;
     stack[top++] = self + 1;
   }
+}
+
+template <class BoxTest>
+void TriangleBvh::collect(const BoxTest& meets, std::vector<std::uint32_t>& out) const {
+  const std::size_t from = out.size();
+  visit(meets, [&out](std::uint32_t t) { out.push_back(t); });
   sortAppended(out, from);
 }
 
