@@ -108,8 +108,9 @@ int runPairCommand(const PairOptions& o) {
   if (axisRule != core::ViewAxisRule::Scene) {
     core::Aabb bounds = core::boundingBox(setup.a);
     bounds.extend(core::boundingBox(setup.b));
-    const core::ViewAxis axis =
-        core::chooseViewAxis(axisRule, setup.frame.axis, core::axisChoiceInput(setup.a, setup.b));
+    const core::ViewAxis axis = core::chooseViewAxis(
+        axisRule, setup.frame.axis,
+        core::axisChoiceInput(setup.a, setup.b, core::framePixelSize(setup.frame)));
     setup.frame = core::frameAlongAxis(setup.frame, axis, bounds);
   }
   core::PairRequest request;

@@ -110,8 +110,8 @@ int runVerifyCommand(const VerifyOptions& o) {
       // and mode then judges that frame.
       core::Aabb bounds = core::boundingBox(*p.a);
       bounds.extend(core::boundingBox(*p.b));
-      const core::ViewAxis axis =
-          core::chooseViewAxis(axisRule, p.frame.axis, core::axisChoiceInput(*p.a, *p.b));
+      const core::ViewAxis axis = core::chooseViewAxis(
+          axisRule, p.frame.axis, core::axisChoiceInput(*p.a, *p.b, core::framePixelSize(p.frame)));
       p.frame = core::frameAlongAxis(p.frame, axis, bounds);
     }
     request.frame = p.frame;

@@ -21,7 +21,7 @@ CLI::Option* addViewAxisOption(CLI::App& cmd, std::string& rule) {
                   "the axis each pair is drawn along, at the same pixel size: scene (the "
                   "scene's, default), adaptive (the per-pair rule chosen by measurement, " +
                       std::string(core::toString(core::kAdaptiveViewAxisRule)) +
-                      "), or a rule by name: fewest-mor, widest-overlap, separating")
+                      "), or a rule by name: fewest-mor, widest-overlap, separating, thin-overlap")
       ->check(kViewAxisRule)
       ->capture_default_str();
 }

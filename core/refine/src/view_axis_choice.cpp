@@ -79,6 +79,8 @@ std::string_view toString(ViewAxisRule rule) {
       return "widest-overlap";
     case ViewAxisRule::Separating:
       return "separating";
+    case ViewAxisRule::ThinOverlap:
+      return "thin-overlap";
   }
   return "?";
 }
@@ -86,19 +88,25 @@ std::string_view toString(ViewAxisRule rule) {
 std::optional<ViewAxisRule> parseViewAxisRule(std::string_view name) {
   if (name == "adaptive")
     return kAdaptiveViewAxisRule;
-  for (const ViewAxisRule rule : {ViewAxisRule::Scene, ViewAxisRule::FewestMor,
-                                  ViewAxisRule::WidestOverlap, ViewAxisRule::Separating})
+  for (const ViewAxisRule rule :
+       {ViewAxisRule::Scene, ViewAxisRule::FewestMor, ViewAxisRule::WidestOverlap,
+        ViewAxisRule::Separating, ViewAxisRule::ThinOverlap})
     if (name == toString(rule))
       return rule;
   return std::nullopt;
 }
 
 std::string_view viewAxisRuleNames() {
-  return "scene, adaptive, fewest-mor, widest-overlap, separating";
+  return "scene, adaptive, fewest-mor, widest-overlap, separating, thin-overlap";
 }
 
-AxisChoiceInput axisChoiceInput(const TriangleMesh& a, const TriangleMesh& b) {
-  return {boundingBox(a), boundingBox(b), fitObb(a.vertices), fitObb(b.vertices)};
+AxisChoiceInput axisChoiceInput(const TriangleMesh& a, const TriangleMesh& b, double pixelSize) {
+  return {boundingBox(a), boundingBox(b), fitObb(a.vertices), fitObb(b.vertices), pixelSize};
+}
+
+double framePixelSize(const FrameSpec& frame) {
+  return std::max((frame.window.umax - frame.window.umin) / frame.width,
+                  (frame.window.vmax - frame.window.vmin) / frame.height);
 }
 
 ViewAxis chooseViewAxis(ViewAxisRule rule, ViewAxis sceneAxis, const AxisChoiceInput& input) {
@@ -115,6 +123,13 @@ ViewAxis chooseViewAxis(ViewAxisRule rule, ViewAxis sceneAxis, const AxisChoiceI
       return bestAxis(width, sceneAxis, [](double s, double t) { return s > t; });
     case ViewAxisRule::WidestOverlap:
       return bestAxis(width, sceneAxis, [](double s, double t) { return s < t; });
+    case ViewAxisRule::ThinOverlap: {
+      const auto scene = static_cast<std::size_t>(indexOf(sceneAxis));
+      const double across = std::min(width[(scene + 1) % 3], width[(scene + 2) % 3]);
+      if (across >= kThinOverlapPixels * input.pixelSize)
+        return sceneAxis;
+      return bestAxis(width, sceneAxis, [](double s, double t) { return s < t; });
+    }
     case ViewAxisRule::Separating: {
       const Eigen::Vector3d l = leastOverlapDirection(input.obbA, input.obbB);
       return bestAxis({std::fabs(l.x()), std::fabs(l.y()), std::fabs(l.z())}, sceneAxis,
@@ -127,9 +142,7 @@ ViewAxis chooseViewAxis(ViewAxisRule rule, ViewAxis sceneAxis, const AxisChoiceI
 FrameSpec frameAlongAxis(const FrameSpec& base, ViewAxis axis, const Aabb& bounds) {
   if (axis == base.axis)
     return base;
-  const double pixelSize = std::max((base.window.umax - base.window.umin) / base.width,
-                                    (base.window.vmax - base.window.vmin) / base.height);
-  return frameFromPixelSize(axis, defaultWindow(axis, bounds, std::nullopt), pixelSize);
+  return frameFromPixelSize(axis, defaultWindow(axis, bounds, std::nullopt), framePixelSize(base));
 }
 
 }  // namespace recode::core

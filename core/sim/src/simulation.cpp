@@ -187,8 +187,8 @@ FrameSpec Simulation::pairFrame(const Aabb& a, const Aabb& b) const {
 FrameSpec Simulation::leafPairFrame(const HierarchyNode& a, const HierarchyNode& b) const {
   if (screen_ || options_.viewAxisRule == ViewAxisRule::Scene)
     return pairFrame(a.worldAabb, b.worldAabb);
-  const ViewAxis axis = chooseViewAxis(options_.viewAxisRule, axis_,
-                                       {a.worldAabb, b.worldAabb, a.worldObb, b.worldObb});
+  const ViewAxis axis = chooseViewAxis(
+      options_.viewAxisRule, axis_, {a.worldAabb, b.worldAabb, a.worldObb, b.worldObb, pixelSize_});
   return granularPairFrame(axis, pixelSize_, a.worldAabb, b.worldAabb);
 }
 

@@ -32,7 +32,7 @@ struct Plates {
 
 ViewAxis chosen(ViewAxisRule rule, ViewAxis scene, const core::TriangleMesh& a,
                 const core::TriangleMesh& b) {
-  return core::chooseViewAxis(rule, scene, core::axisChoiceInput(a, b));
+  return core::chooseViewAxis(rule, scene, core::axisChoiceInput(a, b, 0.05));
 }
 
 }  // namespace
@@ -51,6 +51,20 @@ TEST_CASE("stacked thin plates: each rule picks the axis its definition names") 
   }
 }
 
+TEST_CASE("thin-overlap leaves the scene axis only when the overlap across it is under 2 px") {
+  const Plates p;  // seen along x the boxes' intersection is 1.2 by 0.02 across
+  const auto thin = [&](double pixelSize) {
+    return core::chooseViewAxis(ViewAxisRule::ThinOverlap, ViewAxis::X,
+                                core::axisChoiceInput(p.a, p.b, pixelSize));
+  };
+  CHECK(thin(0.05) == ViewAxis::Z);    // 0.02 is 0.4 px: switch to widest-overlap's axis
+  CHECK(thin(0.0101) == ViewAxis::Z);  // just under 2 px
+  CHECK(thin(0.0099) == ViewAxis::X);  // just over 2 px: the scene axis stays
+  // Seen along z the intersection is 2 by 1.2 across: wide at any of these pixel sizes.
+  CHECK(core::chooseViewAxis(ViewAxisRule::ThinOverlap, ViewAxis::Z,
+                             core::axisChoiceInput(p.a, p.b, 0.05)) == ViewAxis::Z);
+}
+
 TEST_CASE("a tie keeps the scene axis, then takes x before y before z") {
   // Square plates: the overlap is 2 along x and y, so fewest-mor has two equal axes.
   const auto a = boxBetween({-1, -1, -0.1}, {1, 1, 0.0});
@@ -63,8 +77,8 @@ TEST_CASE("a tie keeps the scene axis, then takes x before y before z") {
 TEST_CASE("blocks whose boxes are apart keep the scene axis under every rule") {
   const auto a = boxBetween({-1, -1, -1}, {0, 1, 1});
   const auto b = boxBetween({0.5, -0.1, -0.1}, {0.6, 0.1, 0.1});
-  for (const ViewAxisRule rule :
-       {ViewAxisRule::FewestMor, ViewAxisRule::WidestOverlap, ViewAxisRule::Separating})
+  for (const ViewAxisRule rule : {ViewAxisRule::FewestMor, ViewAxisRule::WidestOverlap,
+                                  ViewAxisRule::Separating, ViewAxisRule::ThinOverlap})
     CHECK(chosen(rule, ViewAxis::Y, a, b) == ViewAxis::Y);
 }
 
@@ -126,8 +140,9 @@ TEST_CASE("a contact thinner than a pixel across the scene axis is seen along th
 }
 
 TEST_CASE("rule names parse and print; 'adaptive' is the measured rule") {
-  for (const ViewAxisRule rule : {ViewAxisRule::Scene, ViewAxisRule::FewestMor,
-                                  ViewAxisRule::WidestOverlap, ViewAxisRule::Separating})
+  for (const ViewAxisRule rule :
+       {ViewAxisRule::Scene, ViewAxisRule::FewestMor, ViewAxisRule::WidestOverlap,
+        ViewAxisRule::Separating, ViewAxisRule::ThinOverlap})
     CHECK(core::parseViewAxisRule(core::toString(rule)) == rule);
   CHECK(core::parseViewAxisRule("adaptive") == core::kAdaptiveViewAxisRule);
   CHECK_FALSE(core::parseViewAxisRule("diagonal"));

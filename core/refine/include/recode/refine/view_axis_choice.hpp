@@ -24,27 +24,40 @@ enum class ViewAxisRule {
                   // side, in pixels: the one of the smallest w (the other two stay)
   Separating,     // the world axis nearest the direction of least overlap of the two blocks'
                   // OBBs (the separating-axis test's axis of least penetration)
+  ThinOverlap,    // the scene axis, unless the boxes' intersection seen along it is narrower
+                  // than kThinOverlapPixels pixels across: then WidestOverlap's axis
 };
+
+// ThinOverlap's threshold: a box intersection narrower than this many pixels across may hold a
+// contact that falls between pixel centres (one that holds a disc of sqrt(2) pixels cannot);
+// 2 was measured against 1, 4, 8 and 16 on the suite (docs/accuracy.md).
+inline constexpr double kThinOverlapPixels = 2.0;
 
 // The rule `--view-axis adaptive` stands for, chosen by measurement on the generated suite
 // (docs/accuracy.md, "The adaptive view axis").
-inline constexpr ViewAxisRule kAdaptiveViewAxisRule = ViewAxisRule::WidestOverlap;
+inline constexpr ViewAxisRule kAdaptiveViewAxisRule = ViewAxisRule::ThinOverlap;
 
-// "scene", "fewest-mor", "widest-overlap", "separating".
+// "scene", "fewest-mor", "widest-overlap", "separating", "thin-overlap".
 [[nodiscard]] std::string_view toString(ViewAxisRule rule);
 // The names above and "adaptive" (kAdaptiveViewAxisRule); nullopt for anything else.
 [[nodiscard]] std::optional<ViewAxisRule> parseViewAxisRule(std::string_view name);
 // The names parseViewAxisRule accepts, for error messages: "scene, adaptive, ...".
 [[nodiscard]] std::string_view viewAxisRuleNames();
 
-// What a rule looks at: each block's world AABB and an OBB around it.
+// What a rule looks at: each block's world AABB and an OBB around it, and the pixel size
+// (world units; ThinOverlap's only).
 struct AxisChoiceInput {
   Aabb boxA, boxB;
   Obb obbA, obbB;
+  double pixelSize = 0.0;
 };
 
-// The input from two blocks' world meshes (their AABBs and fitObb boxes).
-[[nodiscard]] AxisChoiceInput axisChoiceInput(const TriangleMesh& a, const TriangleMesh& b);
+// The input from two blocks' world meshes (their AABBs and fitObb boxes) and the pixel size.
+[[nodiscard]] AxisChoiceInput axisChoiceInput(const TriangleMesh& a, const TriangleMesh& b,
+                                              double pixelSize);
+
+// The larger side of a frame's pixel, world units: the pixel size frameAlongAxis keeps.
+[[nodiscard]] double framePixelSize(const FrameSpec& frame);
 
 // The axis `rule` chooses. Pairs whose AABBs do not meet (closed) keep `sceneAxis`: the box
 // test decides them apart along any axis. Among equally good axes the scene axis wins, then
