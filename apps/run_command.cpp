@@ -39,6 +39,7 @@ struct RunOptions {
   bool quiet = false;
   int threads = 0;  // core::RunOptions::threads
   long long maxPairTests = core::kDefaultMaxPairTestsPerFrame;
+  std::string mode = "reference";  // --mode
   std::string viewAxis = "scene";  // --view-axis
 };
 
@@ -138,7 +139,8 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.contact = o.contact;
   options.threads = o.threads;
   options.maxPairTestsPerFrame = o.maxPairTests;
-  options.keepContactPoints = false;  // the report prints counts, area and box only
+  options.keepContactPoints = false;                // the report prints counts, area and box only
+  options.pairMode = *core::parsePairMode(o.mode);  // CLI11 checked the name
   options.viewAxisRule = viewAxisRule(o.viewAxis);
   core::Simulation sim = makeSimulation(o, scene, options);
 
@@ -147,6 +149,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   run.source = isFile ? "file" : "built-in";
   run.frames = o.frames > 0 ? o.frames : scene.frames.value_or(core::kDefaultRunFrames);
   run.stopOnContact = o.stopOnContact;
+  run.mode = options.pairMode;
 
   // Written beside the target and renamed at the end: a run that fails midway leaves no
   // partial CSV (and an earlier one as it was).
@@ -246,6 +249,13 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                       std::to_string(core::kDefaultMaxPairTestsPerFrame) +
                       "): a frame holds its tests at once")
       ->check(CLI::Range(1LL, core::kMaxPairTestsPerFrameLimit));
+  cmd->add_option("--mode", o->mode,
+                  "how each block pair is decided (docs/algorithm.md, \"Beyond the paper\"): "
+                  "reference (the paper's algorithm), adaptive (refined on finer frames where "
+                  "a finer grid could change the answer) or conservative (blocks grown by a "
+                  "pixel: never misses, may report blocks a pixel apart)")
+      ->check(CLI::IsMember({"reference", "adaptive", "conservative"}))
+      ->capture_default_str();
   cmd->callback([o, &exitCode]() { exitCode = runRunCommand(*o); });
 }
 

@@ -104,6 +104,8 @@ ordered_json runToJson(const RunDescription& run, const core::Simulation& sim) {
   j["pixel_size"] = sim.pixelSize();
   j["frames_requested"] = run.frames;
   j["stop_on_contact"] = run.stopOnContact;
+  if (run.mode != core::PairMode::Reference)
+    j["mode"] = core::toString(run.mode);
   return j;
 }
 
@@ -119,6 +121,8 @@ void printRunHeader(std::ostream& out, const RunDescription& run, const core::Si
     out << " (per pair: " << core::toString(sim.viewAxisRule()) << ")";
   out << ", pixel size " << sim.pixelSize() << ", frames 0.." << run.frames - 1
       << (run.stopOnContact ? " (stop at first contact)" : "") << "\n";
+  if (run.mode != core::PairMode::Reference)
+    out << "  every block pair decided in the " << core::toString(run.mode) << " mode\n";
 }
 
 void printFrame(std::ostream& out, const core::Simulation& sim, const core::FrameReport& frame) {

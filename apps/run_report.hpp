@@ -16,6 +16,9 @@ struct RunDescription {
   std::string source;  // "file" or "built-in"
   int frames = 0;      // frames asked for
   bool stopOnContact = false;
+  // --mode: how each leaf pair is decided; a mode other than the reference is named in the
+  // header (the reference mode's output is as it always was).
+  core::PairMode mode = core::PairMode::Reference;
 };
 
 // One frame: {"frame", "pairs": [...], counters, times}.

@@ -12,6 +12,7 @@ runs=${1:-20000}
 dir=${2:-build-fuzz}
 jobs=$(nproc 2>/dev/null || echo 2)
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+flags+=" -fsanitize-coverage-ignorelist=$PWD/fuzz/coverage_ignorelist.txt"
 cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DRECODE_LIBRARY_ONLY=ON -DRECODE_BUILD_FUZZERS=ON >/dev/null

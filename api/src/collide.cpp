@@ -29,9 +29,24 @@ struct PairAnswer {
   bool atLimit = false;
 };
 
+// A leaf's world mesh with its triangle hierarchy (built on the object's first use, then
+// kept by its tree), so that the pair tests draw only the triangles near their MOR, as
+// core::Simulation does; the results are those of the bare mesh, bit for bit.
+struct LeafBlock {
+  LeafBlock(const core::ObjectTree& tree, int leaf)
+      : mesh(tree.worldMesh(leaf)),
+        block(mesh, tree.triangleHierarchy(leaf),
+              tree.nodes()[static_cast<std::size_t>(leaf)].world) {}
+  LeafBlock(const LeafBlock&) = delete;
+  LeafBlock& operator=(const LeafBlock&) = delete;
+
+  core::TriangleMesh mesh;
+  core::PairBlock block;  // refers to mesh
+};
+
 // One block pair in the request's mode.
-PairAnswer decidePair(raster::DepthStencilDevice& device, const core::TriangleMesh& a,
-                      const core::TriangleMesh& b, const core::PairRequest& pair,
+PairAnswer decidePair(raster::DepthStencilDevice& device, const core::PairBlock& a,
+                      const core::PairBlock& b, const core::PairRequest& pair,
                       core::PairMode mode) {
   PairAnswer out;
   out.frame = pair.frame;
@@ -40,7 +55,7 @@ PairAnswer decidePair(raster::DepthStencilDevice& device, const core::TriangleMe
       out.pair = core::collidePair(device, a, b, pair);
       return out;
     case core::PairMode::Conservative:
-      out.pair = core::collideConservative(device, a, b, pair).pair;
+      out.pair = core::collideConservative(device, a.mesh(), b.mesh(), pair).pair;
       return out;
     case core::PairMode::Adaptive:
       break;
@@ -76,8 +91,9 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     pair.mor = request.mor;
     pair.contact = request.contact;
     raster::DepthStencilDevice& device = devices.device(pair.frame.width, pair.frame.height);
-    PairAnswer answer = decidePair(device, a.tree().worldMesh(lp.leafA),
-                                   b.tree().worldMesh(lp.leafB), pair, request.mode);
+    const LeafBlock blockA(a.tree(), lp.leafA);
+    const LeafBlock blockB(b.tree(), lp.leafB);
+    PairAnswer answer = decidePair(device, blockA.block, blockB.block, pair, request.mode);
     core::PairResult& r = answer.pair;
     ++result.blockPairsDrawn;
     result.apartAtLimit += answer.atLimit ? 1 : 0;

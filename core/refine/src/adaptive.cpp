@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "recode/geometry/convex_distance.hpp"
 #include "recode/geometry/obb.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/state.hpp"
@@ -131,23 +132,56 @@ struct AdaptivePairTester::Search {
     out.deepestLevel = std::max(out.deepestLevel, level);
   }
 
-  // True when a contact was seen in this frame or below it.
+  // A contact deeper than a touch within depth rounding.
+  bool deep(const PairResult& ref) const {
+    const double step = (ref.depthMax - ref.depthMin) / static_cast<double>(raster::kDepthMax);
+    return ref.collide && ref.contact.maxDepth > limits.touchSteps * step;
+  }
+
+  // The request's frame: the reference run first, as the reference mode draws it; a deep
+  // contact is the answer (refine() would find it after the conservative run, which sees
+  // every contact the reference run sees). Otherwise a finer grid can change the answer only
+  // for blocks that come within reach of its pixels: the conservative growth at the finest
+  // level bounds how far apart blocks can be and still be seen meeting there (grown blocks
+  // lie within |growth| of the blocks; 2.5 |growth| leaves a quarter for the rasterizer's
+  // rounding). Blocks farther apart than that by GJK are apart at every level, so none is
+  // drawn; the rest are refined.
+  bool top(raster::DepthStencilDevice& device, const PairBlock& a, const PairBlock& b,
+           const FrameSpec& frame) {
+    noteFrame(frame, 0);
+    ++out.runs;
+    PairResult ref = collidePair(device, a, b, requestFor(frame));
+    out.reference = ref;
+    if (deep(ref) || (ref.collide && limits.maxLevel == 0)) {
+      out.contact = std::move(ref);
+      out.contactFrame = frame;
+      return true;
+    }
+    const Eigen::Vector3d finestGrowth = conservativeGrowth(frame, a.box(), b.box()) /
+                                         std::pow(static_cast<double>(limits.factor),
+                                                  static_cast<double>(limits.maxLevel));
+    if (convexHullDistance(a.mesh().vertices, b.mesh().vertices) > 2.5 * finestGrowth.norm())
+      return false;
+    return refine(device, a.mesh(), b.mesh(), std::nullopt, frame, 0, std::move(ref));
+  }
+
+  // True when a contact was seen in this frame or below it. `given` is the reference run in
+  // this frame when it was made already.
   bool refine(raster::DepthStencilDevice& device, const TriangleMesh& a, const TriangleMesh& b,
-              const std::optional<Aabb>& tileBox, const FrameSpec& frame, int level) {
-    noteFrame(frame, level);
+              const std::optional<Aabb>& tileBox, const FrameSpec& frame, int level,
+              std::optional<PairResult> given = std::nullopt) {
+    if (!given)
+      noteFrame(frame, level);
     const PairRequest request = requestFor(frame);
     ++out.runs;
     const ConservativeResult wide = conservative(device, a, b, tileBox, request);
     if (!wide.pair.collide)
       return false;  // not even within a pixel: no finer grid can see a contact here
-    ++out.runs;
-    PairResult ref = collidePair(device, a, b, request);
-    const double step = (ref.depthMax - ref.depthMin) / static_cast<double>(raster::kDepthMax);
-    const bool deep = ref.collide && ref.contact.maxDepth > limits.touchSteps * step;
+    if (!given)
+      ++out.runs;
+    PairResult ref = given ? std::move(*given) : collidePair(device, a, b, request);
     const bool last = level >= limits.maxLevel || out.runs + 2 > limits.maxRuns;
-    if (level == 0)
-      out.reference = ref;
-    if (deep || (ref.collide && last)) {
+    if (deep(ref) || (ref.collide && last)) {
       out.contact = std::move(ref);
       out.contactFrame = frame;
       out.contactLevel = level;
@@ -227,13 +261,18 @@ AdaptivePairTester::~AdaptivePairTester() = default;
 AdaptiveResult AdaptivePairTester::collide(raster::DepthStencilDevice& device,
                                            const TriangleMesh& a, const TriangleMesh& b,
                                            const PairRequest& request) {
+  return collide(device, PairBlock(a), PairBlock(b), request);
+}
+
+AdaptiveResult AdaptivePairTester::collide(raster::DepthStencilDevice& device, const PairBlock& a,
+                                           const PairBlock& b, const PairRequest& request) {
   AdaptiveResult out;
   out.contactFrame = request.frame;
   // Boxes apart (closed): exactly apart, nothing to draw.
-  if (!aabbsOverlap(boundingBox(a), boundingBox(b)))
+  if (!aabbsOverlap(a.box(), b.box()))
     return out;
-  Search search{limits_, *tileDevice_, out, a, b};
-  if (search.refine(device, a, b, std::nullopt, request.frame, 0)) {
+  Search search{limits_, *tileDevice_, out, a.mesh(), b.mesh()};
+  if (search.top(device, a, b, request.frame)) {
     out.verdict = PairVerdict::Collide;
     return out;
   }

@@ -29,8 +29,7 @@ PairResult testPair(raster::DepthStencilDevice& device, const PairTask& task, Pa
           .pair;
     case PairMode::Adaptive: {
       thread_local AdaptivePairTester tester;
-      AdaptiveResult r =
-          tester.collide(device, task.blockA->mesh(), task.blockB->mesh(), task.request);
+      AdaptiveResult r = tester.collide(device, *task.blockA, *task.blockB, task.request);
       PairResult out = r.contact     ? std::move(*r.contact)
                        : r.reference ? std::move(*r.reference)
                                      : PairResult{};

@@ -1,7 +1,8 @@
 // The adaptive and conservative modes on constructed pairs whose exact answer is known by
 // construction: a needle thinner than a pixel through a box (the reference misses it), boxes a
 // fraction of a pixel apart (the conservative mode reports them, the adaptive mode rules them
-// out), and a gap below any bound (apart_at_limit).
+// out, by their closest approach or in a finer frame), and a gap below any bound
+// (apart_at_limit).
 
 #include <catch2/catch.hpp>
 #include <utility>
@@ -83,7 +84,17 @@ TEST_CASE("blocks a third of a pixel apart across the view: conservative extra, 
   CHECK_FALSE(m.reference);
   CHECK(m.conservative);  // within a pixel: reported
   CHECK(m.adaptive.verdict == core::PairVerdict::Apart);
-  CHECK(m.adaptive.deepestLevel >= 1);  // it took a finer frame to rule out
+  // By the closest approach, in the request's frame: the gap, 0.042, is more than 2.5 times
+  // the growth of level 6 (0.09 / 4^6), so no frame down to the limit could see them meet.
+  CHECK(m.adaptive.deepestLevel == 0);
+  CHECK(m.adaptive.runs == 1);
+  // With one level allowed, 2.5 times that level's growth (0.056) exceeds the gap: a finer
+  // frame is drawn, and it rules the contact out.
+  core::RefineLimits oneLevel;
+  oneLevel.maxLevel = 1;
+  const Modes refined = runModes(a, b, oneLevel);
+  CHECK(refined.adaptive.verdict == core::PairVerdict::Apart);
+  CHECK(refined.adaptive.deepestLevel == 1);
 }
 
 TEST_CASE("blocks two pixels apart: every mode says apart in the request's frame") {
@@ -124,6 +135,7 @@ TEST_CASE("a deep overlap is a contact in the request's frame, without refinemen
   CHECK(m.conservative);
   CHECK(m.adaptive.verdict == core::PairVerdict::Collide);
   CHECK(m.adaptive.deepestLevel == 0);
+  CHECK(m.adaptive.runs == 1);  // the reference run alone: no grown blocks drawn
 }
 
 TEST_CASE("bad refine limits are refused, naming the rules") {

@@ -11,7 +11,10 @@
 //   (or only a touch within depth rounding), the blocks are clipped to the small region the
 //   conservative contact spans and the pair is run again on frames with pixels `factor` times
 //   smaller, tile by tile, recursively, until the contact is seen, ruled out, or the limit is
-//   reached (apart_at_limit).
+//   reached (apart_at_limit). In the request's frame the reference run comes first: a deep
+//   contact there is the answer, and blocks farther apart (by GJK) than 2.5 times the
+//   conservative growth of the finest level are apart without any refinement: no frame down
+//   to the limit can see them meet.
 
 #include <memory>
 #include <optional>
@@ -21,6 +24,7 @@
 #include "recode/geometry/mesh.hpp"
 #include "recode/pair/frame.hpp"
 #include "recode/pair/pair.hpp"
+#include "recode/pair/pair_block.hpp"
 #include "recode/raster/device.hpp"
 #include "recode/refine/pair_mode.hpp"
 
@@ -82,6 +86,10 @@ class AdaptivePairTester {
   // Throws what collidePair throws for the request's frame.
   [[nodiscard]] AdaptiveResult collide(raster::DepthStencilDevice& device, const TriangleMesh& a,
                                        const TriangleMesh& b, const PairRequest& request);
+  // The same, with the reference run in the request's frame drawn from blocks that may carry
+  // triangle hierarchies (collidePair's culled draws, as the reference mode draws them).
+  [[nodiscard]] AdaptiveResult collide(raster::DepthStencilDevice& device, const PairBlock& a,
+                                       const PairBlock& b, const PairRequest& request);
 
   [[nodiscard]] const RefineLimits& limits() const { return limits_; }
 
