@@ -16,6 +16,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/refine/adaptive.hpp"
+#include "view_axis_option.hpp"
 
 namespace recode::app {
 
@@ -32,6 +33,7 @@ struct PairOptions {
   bool picture = true;
   std::string pixel;               // --pixel X,Y; empty: not given
   std::string mode = "reference";  // --mode
+  std::string viewAxis = "scene";  // --view-axis
 };
 
 nlohmann::ordered_json boxJson(const core::Aabb& box) {
@@ -99,8 +101,18 @@ std::array<int, 2> parsePixel(const std::string& text, const core::FrameSpec& fr
 }
 
 int runPairCommand(const PairOptions& o) {
-  const PairSetup setup = loadPairSetup(
+  PairSetup setup = loadPairSetup(
       o.scene.empty() ? std::nullopt : std::optional<std::string>(o.scene), o.frame.overrides());
+  // Another axis than the scene's: the frame is rebuilt along it at the same pixel size.
+  const core::ViewAxisRule axisRule = viewAxisRule(o.viewAxis);
+  if (axisRule != core::ViewAxisRule::Scene) {
+    core::Aabb bounds = core::boundingBox(setup.a);
+    bounds.extend(core::boundingBox(setup.b));
+    const core::ViewAxis axis = core::chooseViewAxis(
+        axisRule, setup.frame.axis,
+        core::axisChoiceInput(setup.a, setup.b, core::framePixelSize(setup.frame)));
+    setup.frame = core::frameAlongAxis(setup.frame, axis, bounds);
+  }
   core::PairRequest request;
   request.frame = setup.frame;
   request.mor = o.frame.mor();
@@ -129,12 +141,19 @@ int runPairCommand(const PairOptions& o) {
     nlohmann::ordered_json j = pairResultToJson(setup, request, result);
     if (modeReport)
       j["mode"] = *modeReport;
+    if (axisRule != core::ViewAxisRule::Scene) {
+      j["view_axis_rule"] = core::toString(axisRule);
+      j["view_axis"] = core::toString(setup.frame.axis);
+    }
     if (o.noTiming)
       removeTimingFields(j);
     if (probe)
       j["pixel"] = probe->toJson(result);
     std::cout << j.dump(2) << '\n';
   } else {
+    if (axisRule != core::ViewAxisRule::Scene)
+      std::cout << "view axis " << core::toString(setup.frame.axis) << " (rule "
+                << core::toString(axisRule) << ")\n";
     printPairReport(std::cout, setup, request, result, o.picture);
     if (modeReport)
       printMode(std::cout, *modeReport);
@@ -181,6 +200,7 @@ void addPairCommand(CLI::App& app, int& exitCode) {
                   "by a pixel: never misses); the reference report stays as it is")
       ->check(CLI::IsMember({"reference", "adaptive", "conservative"}))
       ->capture_default_str();
+  addViewAxisOption(*cmd, o->viewAxis);
   cmd->callback([o, &exitCode]() { exitCode = runPairCommand(*o); });
 }
 

@@ -18,6 +18,7 @@
 #include "run_report.hpp"
 #include "streamed_json.hpp"
 #include "threads_option.hpp"
+#include "view_axis_option.hpp"
 
 namespace recode::app {
 
@@ -39,6 +40,7 @@ struct RunOptions {
   int threads = 0;  // core::RunOptions::threads
   long long maxPairTests = core::kDefaultMaxPairTestsPerFrame;
   std::string mode = "reference";  // --mode
+  std::string viewAxis = "scene";  // --view-axis
 };
 
 std::string builtinNames() {
@@ -139,6 +141,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.maxPairTestsPerFrame = o.maxPairTests;
   options.keepContactPoints = false;                // the report prints counts, area and box only
   options.pairMode = *core::parsePairMode(o.mode);  // CLI11 checked the name
+  options.viewAxisRule = viewAxisRule(o.viewAxis);
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -240,6 +243,7 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                 "skip the two depth passes that measure each contact region");
   cmd->add_flag("--quiet", o->quiet, "print only the header and the statistics");
   addThreadsOption(*cmd, o->threads);
+  addViewAxisOption(*cmd, o->viewAxis);
   cmd->add_option("--max-pair-tests", o->maxPairTests,
                   "stop with an error when a frame lists more than N pair tests (default " +
                       std::to_string(core::kDefaultMaxPairTestsPerFrame) +

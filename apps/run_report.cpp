@@ -38,6 +38,8 @@ ordered_json frameToJson(const core::Simulation& sim, const core::FrameReport& f
     p["object_a"] = c.objectA;
     p["object_b"] = c.objectB;
     p["interfering_pixels"] = c.result.interferingPixels;
+    if (sim.viewAxisRule() != core::ViewAxisRule::Scene)
+      p["view_axis"] = core::toString(c.viewAxis);
     ordered_json contact;
     contact["pixels"] = c.result.contact.pixels;
     contact["area"] = c.result.contact.area;
@@ -97,6 +99,8 @@ ordered_json runToJson(const RunDescription& run, const core::Simulation& sim) {
   }
   j["objects"] = objects;
   j["axis"] = core::toString(sim.axis());
+  if (sim.viewAxisRule() != core::ViewAxisRule::Scene)
+    j["view_axis_rule"] = core::toString(sim.viewAxisRule());
   j["pixel_size"] = sim.pixelSize();
   j["frames_requested"] = run.frames;
   j["stop_on_contact"] = run.stopOnContact;
@@ -112,9 +116,11 @@ void printRunHeader(std::ostream& out, const RunDescription& run, const core::Si
   out << "recode run: " << io::printable(run.scene) << " (" << run.source << "), "
       << sim.objects().size() << " objects, " << blocks << " blocks, " << sim.triangleCount()
       << " triangles\n"
-      << "  view along " << core::toString(sim.axis()) << ", pixel size " << sim.pixelSize()
-      << ", frames 0.." << run.frames - 1 << (run.stopOnContact ? " (stop at first contact)" : "")
-      << "\n";
+      << "  view along " << core::toString(sim.axis());
+  if (sim.viewAxisRule() != core::ViewAxisRule::Scene)
+    out << " (per pair: " << core::toString(sim.viewAxisRule()) << ")";
+  out << ", pixel size " << sim.pixelSize() << ", frames 0.." << run.frames - 1
+      << (run.stopOnContact ? " (stop at first contact)" : "") << "\n";
   if (run.mode != core::PairMode::Reference)
     out << "  every block pair decided in the " << core::toString(run.mode) << " mode\n";
 }
@@ -131,6 +137,8 @@ void printFrame(std::ostream& out, const core::Simulation& sim, const core::Fram
         << " px, area " << c.result.contact.area;
     if (!c.result.contact.box.isEmpty())
       out << ", depth " << c.result.contact.maxDepth;
+    if (sim.viewAxisRule() != core::ViewAxisRule::Scene)
+      out << ", along " << core::toString(c.viewAxis);
     out << "\n";
   }
 }

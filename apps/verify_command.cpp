@@ -8,9 +8,11 @@
 
 #include "frame_options.hpp"
 #include "no_timing.hpp"
+#include "recode/raster/cpu_device.hpp"
 #include "recode/scene/builtin_scenes.hpp"
 #include "verify_pairs.hpp"
 #include "verify_report.hpp"
+#include "view_axis_option.hpp"
 
 namespace recode::app {
 
@@ -31,7 +33,8 @@ struct VerifyOptions {
   bool json = false;
   bool noTiming = false;  // --no-timing
   bool verbose = false;
-  bool modes = false;  // --modes
+  bool modes = false;              // --modes
+  std::string viewAxis = "scene";  // --view-axis
   FrameOptions frameOptions;
   int frame = 0;
 };
@@ -58,6 +61,30 @@ VerifyPairs pairsToVerify(const VerifyOptions& o) {
   return scenePairs(core::loadScene(o.scene), overrides, o.frame);
 }
 
+// Counts the pair's axis and what its run cost, beside the same pair drawn in its scene-axis
+// frame (run here only when the axis changed; otherwise it is the same run).
+void addViewAxisCost(VerifyRun::ViewAxisTotals& v, const core::PairResult& chosen,
+                     const core::TriangleMesh& a, const core::TriangleMesh& b,
+                     const core::PairRequest& request, const core::FrameSpec& sceneFrame) {
+  const core::ViewAxis axis = request.frame.axis;
+  v.axes.push_back(axis);
+  ++v.along[static_cast<std::size_t>(axis)];
+  v.stencilPixels += chosen.stencilPixelsRead;
+  v.recodeUs += chosen.timing.totalUs;
+  if (axis == sceneFrame.axis) {
+    v.sceneStencilPixels += chosen.stencilPixelsRead;
+    v.sceneRecodeUs += chosen.timing.totalUs;
+    return;
+  }
+  ++v.changed;
+  core::PairRequest sceneRequest = request;
+  sceneRequest.frame = sceneFrame;
+  raster::CpuDevice device(sceneFrame.width, sceneFrame.height);
+  const core::PairResult scene = core::collidePair(device, a, b, sceneRequest);
+  v.sceneStencilPixels += scene.stencilPixelsRead;
+  v.sceneRecodeUs += scene.timing.totalUs;
+}
+
 int runVerifyCommand(const VerifyOptions& o) {
   VerifyRun run;
   run.oracles = selectedOracles(o);
@@ -71,10 +98,23 @@ int runVerifyCommand(const VerifyOptions& o) {
   if (run.oracles.glExact)
     run.glPlatform = verify::resolveGlPlatform(run.oracles.glPlatform);  // no context: an error
   run.source = input.source;
+  const core::ViewAxisRule axisRule = viewAxisRule(o.viewAxis);
+  if (axisRule != core::ViewAxisRule::Scene)
+    run.viewAxis.emplace().rule = axisRule;
   for (PairToVerify& p : input.pairs) {
     core::PairRequest request;
-    request.frame = p.frame;
     request.mor = o.frameOptions.mor();
+    const core::FrameSpec sceneFrame = p.frame;
+    if (run.viewAxis) {
+      // The pair's frame rebuilt along the chosen axis at the same pixel size; every oracle
+      // and mode then judges that frame.
+      core::Aabb bounds = core::boundingBox(*p.a);
+      bounds.extend(core::boundingBox(*p.b));
+      const core::ViewAxis axis = core::chooseViewAxis(
+          axisRule, p.frame.axis, core::axisChoiceInput(*p.a, *p.b, core::framePixelSize(p.frame)));
+      p.frame = core::frameAlongAxis(p.frame, axis, bounds);
+    }
+    request.frame = p.frame;
     try {
       run.pairs.push_back(verifier.verify(p.label, *p.a, *p.b, request));
     } catch (const std::invalid_argument& e) {
@@ -82,6 +122,8 @@ int runVerifyCommand(const VerifyOptions& o) {
       throw std::invalid_argument(input.source + ": blocks \"" + p.label + "\": " + e.what());
     }
     run.totals.add(run.pairs.back());
+    if (run.viewAxis)
+      addViewAxisCost(*run.viewAxis, run.pairs.back().result, *p.a, *p.b, request, sceneFrame);
     if (run.modes) {
       run.modeChecks.push_back(
           verify::checkModes(*p.a, *p.b, p.frame, run.pairs.back().exact->intersect, *tester));
@@ -157,6 +199,7 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
                 "Exit status 2 also when the conservative mode misses or an extra is beyond "
                 "its bound")
       ->needs(cgalFlag);
+  addViewAxisOption(*cmd, o->viewAxis);
   const FrameOptionHandles frameOptions =
       addFrameOptions(*cmd, o->frameOptions,
                       {"region the passes run over: min, max, full",

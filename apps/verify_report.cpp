@@ -190,6 +190,14 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
     out << "  vulkan  " << glExactLine(t.vulkan) << "  (" << t.vulkanSeconds << " s)\n";
   if (run.modes)
     printModes(out, *run.modes);
+  if (run.viewAxis) {
+    const VerifyRun::ViewAxisTotals& v = *run.viewAxis;
+    out << "  view axis " << core::toString(v.rule) << ": along x " << v.along[0] << ", y "
+        << v.along[1] << ", z " << v.along[2] << " (" << v.changed
+        << " not the scene's); stencil pixels read " << v.stencilPixels << " (scene axis "
+        << v.sceneStencilPixels << "), time " << v.recodeUs / 1000 << " ms (scene axis "
+        << v.sceneRecodeUs / 1000 << " ms)\n";
+  }
   out << "verdict: "
       << (t.passed() ? "VERIFIED"
                      : "FAILED (" + std::to_string(t.failedPairs) +
@@ -214,6 +222,8 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
                                {"adaptive_level", m.adaptiveLevel},
                                {"conservative", m.conservativeCollide}};
     }
+    if (run.viewAxis)
+      pairs.back()["view_axis"] = core::toString(run.viewAxis->axes[i]);
   }
   j["pairs"] = std::move(pairs);
   if (run.oracles.embree) {
@@ -242,6 +252,15 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
   }
   if (run.modes)
     j["modes"] = modesJson(*run.modes);
+  if (run.viewAxis) {
+    const VerifyRun::ViewAxisTotals& v = *run.viewAxis;
+    j["view_axis"] = {{"rule", core::toString(v.rule)},
+                      {"along", {{"x", v.along[0]}, {"y", v.along[1]}, {"z", v.along[2]}}},
+                      {"changed", v.changed},
+                      {"stencil_pixels_read", v.stencilPixels},
+                      {"scene_stencil_pixels_read", v.sceneStencilPixels},
+                      {"timing_us", {{"chosen", v.recodeUs}, {"scene", v.sceneRecodeUs}}}};
+  }
   j["passed"] = t.passed();
   return j;
 }

@@ -74,8 +74,8 @@ void addPairTest(FrameReport& report, const PairTask& task, PairResult result) {
   report.stencilPixelsRead += result.stencilPixelsRead;
   report.depthPixelsRead += result.depthPixelsRead;
   if (result.collide)
-    report.contacts.push_back(
-        {task.objectA, task.objectB, task.leaves.leafA, task.leaves.leafB, std::move(result)});
+    report.contacts.push_back({task.objectA, task.objectB, task.leaves.leafA, task.leaves.leafB,
+                               std::move(result), task.request.frame.axis});
 }
 
 // Called in a handler: rethrows the exception being handled, an invalid_argument with the
@@ -140,6 +140,11 @@ Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::m
   pixelSize_ = runPixelSize(scene.view, bounds, options_.overrides);
   if (options_.drawOnScreen)
     screen_ = resolveFrame(scene.view, bounds, options_.overrides);
+  if (options_.drawOnScreen && options_.viewAxisRule != ViewAxisRule::Scene)
+    throw std::invalid_argument(std::string("the view axis rule '") +
+                                std::string(toString(options_.viewAxisRule)) +
+                                "' needs frames around each pair; drawing on the scene's screen "
+                                "keeps the scene's axis (use the view axis rule 'scene')");
   if (!(pixelSize_ > 0.0) || !std::isfinite(pixelSize_))
     throw std::invalid_argument("the run's pixel size " + std::to_string(pixelSize_) +
                                 " is not a positive finite number");
@@ -179,6 +184,14 @@ FrameSpec Simulation::pairFrame(const Aabb& a, const Aabb& b) const {
   return granularPairFrame(axis_, pixelSize_, a, b);
 }
 
+FrameSpec Simulation::leafPairFrame(const HierarchyNode& a, const HierarchyNode& b) const {
+  if (screen_ || options_.viewAxisRule == ViewAxisRule::Scene)
+    return pairFrame(a.worldAabb, b.worldAabb);
+  const ViewAxis axis = chooseViewAxis(
+      options_.viewAxisRule, axis_, {a.worldAabb, b.worldAabb, a.worldObb, b.worldObb, pixelSize_});
+  return granularPairFrame(axis, pixelSize_, a.worldAabb, b.worldAabb);
+}
+
 FrameReport Simulation::runFrame(int frame) {
   FrameReport report;
   report.frame = frame;
@@ -208,8 +221,8 @@ FrameReport Simulation::runFrame(int frame) {
     for (const LeafPair& lp : leafPairs) {
       PairTask task{ia, ib, lp, &blocks.of(ia, lp.leafA), &blocks.of(ib, lp.leafB), {}, true};
       try {
-        task.request.frame = pairFrame(a.nodes()[static_cast<std::size_t>(lp.leafA)].worldAabb,
-                                       b.nodes()[static_cast<std::size_t>(lp.leafB)].worldAabb);
+        task.request.frame = leafPairFrame(a.nodes()[static_cast<std::size_t>(lp.leafA)],
+                                           b.nodes()[static_cast<std::size_t>(lp.leafB)]);
       } catch (...) {
         rethrowNamingPair(objects_, frame, task);
       }

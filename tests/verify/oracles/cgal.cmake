@@ -12,3 +12,9 @@ add_executable(recode_verify_modes_tests oracles/modes_test.cpp)
 target_link_libraries(recode_verify_modes_tests PRIVATE recode_verify recode_warnings
                                                         Catch2::Catch2WithMain)
 catch_discover_tests(recode_verify_modes_tests)
+
+# The adaptive view axis's rules against CGAL on a third of the suite.
+add_executable(recode_verify_view_axis_tests oracles/view_axis_test.cpp)
+target_link_libraries(recode_verify_view_axis_tests PRIVATE recode_verify recode_warnings
+                                                            Catch2::Catch2WithMain)
+catch_discover_tests(recode_verify_view_axis_tests)

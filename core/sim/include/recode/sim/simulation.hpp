@@ -21,6 +21,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/device.hpp"
 #include "recode/refine/pair_mode.hpp"
+#include "recode/refine/view_axis_choice.hpp"
 #include "recode/scene/scene.hpp"
 #include "recode/sim/broad_phase.hpp"
 #include "recode/sim/hierarchy.hpp"
@@ -74,13 +75,19 @@ struct RunOptions {
   // the result is the run that saw it) or the conservative mode (the result is that of the
   // grown blocks). Reports of the reference mode are unchanged.
   PairMode pairMode = PairMode::Reference;
+  // The axis each leaf pair is drawn along (docs/algorithm.md, "Beyond the paper"): the
+  // scene's (the default: reports unchanged), or the one a rule chooses for the pair from its
+  // leaves' world AABBs and OBBs, at the run's pixel size. Composes with every pairMode; not
+  // with drawOnScreen, whose screen has the scene's axis.
+  ViewAxisRule viewAxisRule = ViewAxisRule::Scene;
 };
 
 // A leaf pair whose blocks interfere at this frame.
 struct LeafContact {
-  int objectA = 0, objectB = 0;  // indices into Simulation::objects(), objectA < objectB
-  int leafA = 0, leafB = 0;      // node indices in those trees
-  PairResult result;             // caseMap cleared to keep reports small
+  int objectA = 0, objectB = 0;     // indices into Simulation::objects(), objectA < objectB
+  int leafA = 0, leafB = 0;         // node indices in those trees
+  PairResult result;                // caseMap cleared to keep reports small
+  ViewAxis viewAxis = ViewAxis::Z;  // the axis the pair was drawn along
 };
 
 struct FrameReport {
@@ -118,12 +125,16 @@ class Simulation {
   [[nodiscard]] const std::vector<ObjectTree>& objects() const { return objects_; }
   [[nodiscard]] double pixelSize() const { return pixelSize_; }
   [[nodiscard]] ViewAxis axis() const { return axis_; }
+  [[nodiscard]] ViewAxisRule viewAxisRule() const { return options_.viewAxisRule; }
   [[nodiscard]] std::size_t triangleCount() const;  // NTR: triangles of all leaves
   // How many pair tests may run at once (RunOptions::threads resolved; 1 with a factory).
   [[nodiscard]] int threads() const;
 
   // The frame a leaf pair is drawn in (see above; the screen with RunOptions::drawOnScreen).
   [[nodiscard]] FrameSpec pairFrame(const Aabb& a, const Aabb& b) const;
+  // The frame of two leaves: pairFrame of their world AABBs along the axis
+  // RunOptions::viewAxisRule chooses for them (the scene's with ViewAxisRule::Scene).
+  [[nodiscard]] FrameSpec leafPairFrame(const HierarchyNode& a, const HierarchyNode& b) const;
 
  private:
   std::vector<ObjectTree> objects_;

@@ -1,0 +1,150 @@
+// The adaptive view axis (core/refine view_axis_choice.hpp) on constructed pairs whose answer
+// follows from the rules' definitions: two thin plates stacked along one axis, a pair of boxes
+// apart, plates tilted away from every world axis, and the frame rebuilt along another axis.
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include "recode/geometry/generators.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/raster/cpu_device.hpp"
+#include "recode/refine/view_axis_choice.hpp"
+
+using namespace recode;
+using core::ViewAxis;
+using core::ViewAxisRule;
+using Eigen::Vector3d;
+
+namespace {
+
+core::TriangleMesh boxBetween(const Vector3d& lo, const Vector3d& hi) {
+  const Eigen::Affine3d move(Eigen::Translation3d(0.5 * (lo + hi)));
+  return core::transformed(core::makeBox(0.5 * (hi - lo)), move);
+}
+
+// Two plates 2 wide along x, 1.2 along y, 0.1 thick along z, overlapping by 0.02 in z: the
+// boxes' intersection is 2 x 1.2 x 0.02.
+struct Plates {
+  core::TriangleMesh a = boxBetween({-1, -0.6, -0.1}, {1, 0.6, 0.0});
+  core::TriangleMesh b = boxBetween({-1, -0.6, -0.02}, {1, 0.6, 0.08});
+};
+
+ViewAxis chosen(ViewAxisRule rule, ViewAxis scene, const core::TriangleMesh& a,
+                const core::TriangleMesh& b) {
+  return core::chooseViewAxis(rule, scene, core::axisChoiceInput(a, b, 0.05));
+}
+
+}  // namespace
+
+TEST_CASE("stacked thin plates: each rule picks the axis its definition names") {
+  const Plates p;
+  for (const ViewAxis scene : {ViewAxis::X, ViewAxis::Y, ViewAxis::Z}) {
+    INFO("scene axis " << core::toString(scene));
+    CHECK(chosen(ViewAxisRule::Scene, scene, p.a, p.b) == scene);
+    // The thinnest overlap is along z (0.02): looking along it keeps the 2 x 1.2 overlap.
+    CHECK(chosen(ViewAxisRule::WidestOverlap, scene, p.a, p.b) == ViewAxis::Z);
+    // The widest overlap is along x (2): looking along it leaves a MOR of 1.2 x 0.02.
+    CHECK(chosen(ViewAxisRule::FewestMor, scene, p.a, p.b) == ViewAxis::X);
+    // The boxes' least penetration is along their common normal, z.
+    CHECK(chosen(ViewAxisRule::Separating, scene, p.a, p.b) == ViewAxis::Z);
+  }
+}
+
+TEST_CASE("thin-overlap leaves the scene axis only when the overlap across it is under 2 px") {
+  const Plates p;  // seen along x the boxes' intersection is 1.2 by 0.02 across
+  const auto thin = [&](double pixelSize) {
+    return core::chooseViewAxis(ViewAxisRule::ThinOverlap, ViewAxis::X,
+                                core::axisChoiceInput(p.a, p.b, pixelSize));
+  };
+  CHECK(thin(0.05) == ViewAxis::Z);    // 0.02 is 0.4 px: switch to widest-overlap's axis
+  CHECK(thin(0.0101) == ViewAxis::Z);  // just under 2 px
+  CHECK(thin(0.0099) == ViewAxis::X);  // just over 2 px: the scene axis stays
+  // Seen along z the intersection is 2 by 1.2 across: wide at any of these pixel sizes.
+  CHECK(core::chooseViewAxis(ViewAxisRule::ThinOverlap, ViewAxis::Z,
+                             core::axisChoiceInput(p.a, p.b, 0.05)) == ViewAxis::Z);
+}
+
+TEST_CASE("a tie keeps the scene axis, then takes x before y before z") {
+  // Square plates: the overlap is 2 along x and y, so fewest-mor has two equal axes.
+  const auto a = boxBetween({-1, -1, -0.1}, {1, 1, 0.0});
+  const auto b = boxBetween({-1, -1, -0.02}, {1, 1, 0.08});
+  CHECK(chosen(ViewAxisRule::FewestMor, ViewAxis::Y, a, b) == ViewAxis::Y);
+  CHECK(chosen(ViewAxisRule::FewestMor, ViewAxis::X, a, b) == ViewAxis::X);
+  CHECK(chosen(ViewAxisRule::FewestMor, ViewAxis::Z, a, b) == ViewAxis::X);
+}
+
+TEST_CASE("blocks whose boxes are apart keep the scene axis under every rule") {
+  const auto a = boxBetween({-1, -1, -1}, {0, 1, 1});
+  const auto b = boxBetween({0.5, -0.1, -0.1}, {0.6, 0.1, 0.1});
+  for (const ViewAxisRule rule : {ViewAxisRule::FewestMor, ViewAxisRule::WidestOverlap,
+                                  ViewAxisRule::Separating, ViewAxisRule::ThinOverlap})
+    CHECK(chosen(rule, ViewAxis::Y, a, b) == ViewAxis::Y);
+}
+
+TEST_CASE("tilted plates: the separating rule follows the plates' normal, not the boxes") {
+  // Plates whose normal is turned 30 degrees from x toward y: the normal is nearest x, while
+  // their world boxes' thinnest overlap is along z (0.3 against several tenths along x and y).
+  const Eigen::AngleAxisd turn(3.14159265358979323846 / 6, Vector3d::UnitZ());
+  const core::TriangleMesh plate = core::makeBox(0.05, 1.0, 0.15);
+  const Vector3d normal = turn * Vector3d::UnitX();
+  const auto a =
+      core::transformed(plate, Eigen::Affine3d(Eigen::Translation3d(-0.04 * normal) * turn));
+  const auto b =
+      core::transformed(plate, Eigen::Affine3d(Eigen::Translation3d(0.04 * normal) * turn));
+  CHECK(chosen(ViewAxisRule::Separating, ViewAxis::Z, a, b) == ViewAxis::X);
+  CHECK(chosen(ViewAxisRule::WidestOverlap, ViewAxis::X, a, b) == ViewAxis::Z);
+}
+
+TEST_CASE("the frame along another axis keeps the pixel size and covers the pair") {
+  const Plates p;
+  core::Aabb bounds = core::boundingBox(p.a);
+  bounds.extend(core::boundingBox(p.b));
+  core::FrameSpec base;
+  base.axis = ViewAxis::X;
+  base.window = {-0.7, -0.2, 0.7, 0.2};  // y, z: pixels 0.05 wide
+  base.width = 28;
+  base.height = 8;
+  CHECK(core::frameAlongAxis(base, ViewAxis::X, bounds).window.umin == base.window.umin);
+  const core::FrameSpec z = core::frameAlongAxis(base, ViewAxis::Z, bounds);
+  CHECK(z.axis == ViewAxis::Z);
+  CHECK((z.window.umax - z.window.umin) / z.width == Approx(0.05));
+  CHECK((z.window.vmax - z.window.vmin) / z.height == Approx(0.05));
+  CHECK(z.window.umin <= -1.0);
+  CHECK(z.window.umax >= 1.0);
+  CHECK(z.window.vmin <= -0.6);
+  CHECK(z.window.vmax >= 0.6);
+}
+
+TEST_CASE("a contact thinner than a pixel across the scene axis is seen along the chosen one") {
+  // Plates overlapping by 0.02 along z, seen along x at pixels of 0.05: the overlap lies
+  // between pixel rows (the scene axis misses it); along z it covers the whole plate.
+  const Plates p;
+  core::Aabb bounds = core::boundingBox(p.a);
+  bounds.extend(core::boundingBox(p.b));
+  core::FrameSpec base;
+  base.axis = ViewAxis::X;
+  base.window = {-0.7, -0.2, 0.7, 0.2};  // rows' centres at z = -0.175, -0.125, ..., 0.175
+  base.width = 28;
+  base.height = 8;
+  core::PairRequest request;
+  request.frame = base;
+  raster::CpuDevice sceneDevice(base.width, base.height);
+  CHECK_FALSE(core::collidePair(sceneDevice, p.a, p.b, request).collide);
+  request.frame = core::frameAlongAxis(
+      base, chosen(core::kAdaptiveViewAxisRule, ViewAxis::X, p.a, p.b), bounds);
+  raster::CpuDevice device(request.frame.width, request.frame.height);
+  const core::PairResult r = core::collidePair(device, p.a, p.b, request);
+  CHECK(r.collide);
+  CHECK(r.interferingPixels > 100);
+}
+
+TEST_CASE("rule names parse and print; 'adaptive' is the measured rule") {
+  for (const ViewAxisRule rule :
+       {ViewAxisRule::Scene, ViewAxisRule::FewestMor, ViewAxisRule::WidestOverlap,
+        ViewAxisRule::Separating, ViewAxisRule::ThinOverlap})
+    CHECK(core::parseViewAxisRule(core::toString(rule)) == rule);
+  CHECK(core::parseViewAxisRule("adaptive") == core::kAdaptiveViewAxisRule);
+  CHECK_FALSE(core::parseViewAxisRule("diagonal"));
+  CHECK_FALSE(core::parseViewAxisRule("Scene"));
+}
