@@ -157,9 +157,9 @@ struct AdaptivePairTester::Search {
       out.contactFrame = frame;
       return true;
     }
-    const Eigen::Vector3d finestGrowth = conservativeGrowth(frame, a.box(), b.box()) /
-                                         std::pow(static_cast<double>(limits.factor),
-                                                  static_cast<double>(limits.maxLevel));
+    const Eigen::Vector3d finestGrowth =
+        conservativeGrowth(frame, a.box(), b.box()) /
+        std::pow(static_cast<double>(limits.factor), static_cast<double>(limits.maxLevel));
     if (convexHullDistance(a.mesh().vertices, b.mesh().vertices) > 2.5 * finestGrowth.norm())
       return false;
     return refine(device, a.mesh(), b.mesh(), std::nullopt, frame, 0, std::move(ref));
