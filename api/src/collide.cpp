@@ -75,6 +75,7 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     pair.frame = chooseFrame(na.worldAabb, nb.worldAabb, request);
     pair.mor = request.mor;
     pair.contact = request.contact;
+    pair.normal = request.normal;
     raster::DepthStencilDevice& device = devices.device(pair.frame.width, pair.frame.height);
     PairAnswer answer = decidePair(device, a.tree().worldMesh(lp.leafA),
                                    b.tree().worldMesh(lp.leafB), pair, request.mode);
