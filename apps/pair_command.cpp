@@ -167,8 +167,9 @@ void addPairCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--dump-cases", o->dumpCases,
                   "write each pixel's case (0-8; 255 outside the MOR) as an 8-bit PGM, top row "
                   "first");
-  CLI::Option* noContact = cmd->add_flag("!--no-contact", o->contact,
-                "skip the two depth passes that measure the overlap (points, box, depth)");
+  CLI::Option* noContact =
+      cmd->add_flag("!--no-contact", o->contact,
+                    "skip the two depth passes that measure the overlap (points, box, depth)");
   CLI::Option* normal = cmd->add_flag(
       "--normal", o->normal,
       "also estimate the contact normal (from A towards B) and the penetration depth from the "

@@ -334,8 +334,8 @@ PairResult collidePair(raster::DepthStencilDevice& device, const PairBlock& a, c
         (view.fromPlane({0.5 * view.pixelWidth(), 0.5 * view.pixelHeight(), 0.0}) -
          view.fromPlane(Eigen::Vector3d::Zero()))
             .cwiseAbs();
-    r.contact.normal = contactNormal(OverlapSamples{ends, halfPixel}, a.mesh().vertices,
-                                     b.mesh().vertices);
+    r.contact.normal =
+        contactNormal(OverlapSamples{ends, halfPixel}, a.mesh().vertices, b.mesh().vertices);
   }
   r.timing.classifyUs += microsecondsSince(t);
   return finish();

@@ -4,8 +4,8 @@
 // default request leaving the result as it was.
 
 #include <Eigen/Geometry>
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
@@ -37,7 +37,9 @@ double degreesBetween(const Vector3d& u, const Vector3d& v) {
 }
 
 // One depth step of a pair whose depth range is `range` world units long.
-double depthStep(double range) { return range / 16777215.0; }
+double depthStep(double range) {
+  return range / 16777215.0;
+}
 
 }  // namespace
 

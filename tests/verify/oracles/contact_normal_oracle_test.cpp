@@ -6,11 +6,11 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
-#include <catch2/catch.hpp>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -90,8 +90,8 @@ bool measure(const verify::SuitePair& p, NormalSample& s) {
   const Vector3d& n = r.contact.normal->normal;
   s.label = p.label;
   s.pixels = r.interferingPixels;
-  s.angleToThinnest = std::min(verify::angleDegrees(n, thin.direction),
-                               verify::angleDegrees(-n, thin.direction));
+  s.angleToThinnest =
+      std::min(verify::angleDegrees(n, thin.direction), verify::angleDegrees(-n, thin.direction));
   s.angleToPenetration = verify::angleDegrees(n, pen.direction);
   s.depth = r.contact.normal->depth;
   s.oracleWidth = thin.extent;
@@ -159,14 +159,14 @@ TEST_CASE("the exact intersection solid of two boxes is their overlap box", "[no
   CHECK(box.min.isApprox(Vector3d(0.75, 0, 0.2), 1e-15));
   CHECK(box.max.isApprox(Vector3d(1, 1, 1), 1e-15));
   CHECK(verify::thinnestDirectionOf(solid).direction == Vector3d(1, 0, 0));
-  CHECK(verify::intersectionHull(boxBetween({0, 0, 0}, {1, 1, 1}),
-                                 boxBetween({2, 0, 0}, {3, 1, 1}))
+  CHECK(verify::intersectionHull(boxBetween({0, 0, 0}, {1, 1, 1}), boxBetween({2, 0, 0}, {3, 1, 1}))
             .triangles.empty());
 }
 
-TEST_CASE("contact normal within 5 degrees of the exact solid's thinnest direction on a slice of "
-          "the suite",
-          "[normal]") {
+TEST_CASE(
+    "contact normal within 5 degrees of the exact solid's thinnest direction on a slice of "
+    "the suite",
+    "[normal]") {
   verify::PairSuiteOptions options;
   options.count = 140;  // twenty of each configuration: about a second
   const std::vector<NormalSample> samples = measureSuite(options);
@@ -204,10 +204,11 @@ void printTable(int width, bool eachPair) {
     pen.push_back(s.angleToPenetration);
     excess.push_back(s.widthExcess);
     if (eachPair)
-      std::printf("%-44s %d %6lld px  thinnest %7.2f deg  penetration %7.2f deg  depth %.4f "
-                  "(width %.4f, pen. depth %.4f, excess %.2f px)\n",
-                  s.label.c_str(), s.wellDefined ? 1 : 0, s.pixels, s.angleToThinnest, s.angleToPenetration, s.depth,
-                  s.oracleWidth, s.oracleDepth, s.widthExcess);
+      std::printf(
+          "%-44s %d %6lld px  thinnest %7.2f deg  penetration %7.2f deg  depth %.4f "
+          "(width %.4f, pen. depth %.4f, excess %.2f px)\n",
+          s.label.c_str(), s.wellDefined ? 1 : 0, s.pixels, s.angleToThinnest, s.angleToPenetration,
+          s.depth, s.oracleWidth, s.oracleDepth, s.widthExcess);
   }
   REQUIRE_FALSE(thin.empty());
   for (const auto& [name, v] :
@@ -216,10 +217,11 @@ void printTable(int width, bool eachPair) {
     std::printf("width %d, %s: pairs %zu, median %.2f, p90 %.2f, max %.2f deg, within 5 deg %lld\n",
                 width, name, v.size(), quantile(v, 0.5), quantile(v, 0.9), quantile(v, 1.0),
                 within(v, 5.0));
-  std::printf("width %d, exact width along the normal minus the least: median %.3f px, p90 %.3f "
-              "px, max %.3f px, within half a pixel %lld\n",
-              width, quantile(excess, 0.5), quantile(excess, 0.9), quantile(excess, 1.0),
-              within(excess, 0.5));
+  std::printf(
+      "width %d, exact width along the normal minus the least: median %.3f px, p90 %.3f "
+      "px, max %.3f px, within half a pixel %lld\n",
+      width, quantile(excess, 0.5), quantile(excess, 0.9), quantile(excess, 1.0),
+      within(excess, 0.5));
   // Per configuration: pairs, within 5 degrees of each oracle, width within half a pixel.
   std::map<std::string, std::array<int, 4>> byConfiguration;
   for (const NormalSample& s : samples) {
@@ -230,9 +232,10 @@ void printTable(int width, bool eachPair) {
     c[3] += s.widthExcess <= 0.5 ? 1 : 0;
   }
   for (const auto& [name, c] : byConfiguration)
-    std::printf("width %d, %s: pairs %d, within 5 deg of thinnest %d, of penetration %d, "
-                "width within half a pixel %d\n",
-                width, name.c_str(), c[0], c[1], c[2], c[3]);
+    std::printf(
+        "width %d, %s: pairs %d, within 5 deg of thinnest %d, of penetration %d, "
+        "width within half a pixel %d\n",
+        width, name.c_str(), c[0], c[1], c[2], c[3]);
 }
 
 }  // namespace

@@ -20,8 +20,9 @@ struct ContactNormal {
 };
 
 // The overlap as the contact passes see it: both ends of every interfering pixel's overlap
-// interval, at the pixel centre, in world space (near end then far end, pixel after pixel), and the half size of a pixel along the world
-// axes (half the pixel width and height on the image plane's axes, 0 along the view axis).
+// interval, at the pixel centre, in world space (near end then far end, pixel after pixel), and the
+// half size of a pixel along the world axes (half the pixel width and height on the image plane's
+// axes, 0 along the view axis).
 struct OverlapSamples {
   std::span<const Eigen::Vector3d> ends;
   Eigen::Vector3d halfPixel = Eigen::Vector3d::Zero();
