@@ -30,6 +30,7 @@ struct PairOptions {
   std::string dumpCases;
   bool contact = true;
   bool boxTest = true;
+  bool normal = false;  // --normal
   bool picture = true;
   std::string pixel;               // --pixel X,Y; empty: not given
   std::string mode = "reference";  // --mode
@@ -118,6 +119,7 @@ int runPairCommand(const PairOptions& o) {
   request.mor = o.frame.mor();
   request.contact = o.contact;
   request.boxTest = o.boxTest;
+  request.normal = o.normal;
   raster::CpuDevice device(setup.frame.width, setup.frame.height);
   std::optional<PixelProbe> probe;
   if (!o.pixel.empty()) {
@@ -184,8 +186,14 @@ void addPairCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--dump-cases", o->dumpCases,
                   "write each pixel's case (0-8; 255 outside the MOR) as an 8-bit PGM, top row "
                   "first");
-  cmd->add_flag("!--no-contact", o->contact,
-                "skip the two depth passes that measure the overlap (points, box, depth)");
+  CLI::Option* noContact =
+      cmd->add_flag("!--no-contact", o->contact,
+                    "skip the two depth passes that measure the overlap (points, box, depth)");
+  CLI::Option* normal = cmd->add_flag(
+      "--normal", o->normal,
+      "also estimate the contact normal (from A towards B) and the penetration depth from the "
+      "contact passes' depths (docs/algorithm.md)");
+  normal->excludes(noContact);
   cmd->add_flag("!--no-box-test", o->boxTest,
                 "run the passes even when the blocks' boxes are apart (shows cases 1, 2, 7, 8)");
   cmd->add_option("--pixel", o->pixel,

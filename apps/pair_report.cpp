@@ -59,6 +59,11 @@ void printVerdict(std::ostream& out, const core::PairResult& r) {
         << r.depthPixelsRead << " depth pixels read";
   }
   out << "\n";
+  if (r.contact.normal) {
+    const Eigen::Vector3d& n = r.contact.normal->normal;
+    out << "  contact normal (A towards B): (" << n.x() << ", " << n.y() << ", " << n.z()
+        << "), penetration depth " << r.contact.normal->depth << "\n";
+  }
 }
 
 void printTiming(std::ostream& out, const core::PairResult& r) {
@@ -118,6 +123,10 @@ ordered_json pairResultToJson(const PairSetup& setup, const core::PairRequest& r
   contact["max_depth"] = r.contact.maxDepth;
   contact["pixels"] = r.contact.pixels;
   contact["collapsed_pixels"] = r.contact.collapsedPixels;
+  if (r.contact.normal) {  // only with --normal, so the default report keeps its bytes
+    contact["normal"] = vec(r.contact.normal->normal);
+    contact["penetration_depth"] = r.contact.normal->depth;
+  }
   j["contact"] = contact;
   j["timing_us"] = r.timing.totalUs;
   ordered_json steps;

@@ -90,6 +90,7 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     pair.frame = chooseFrame(na.worldAabb, nb.worldAabb, request);
     pair.mor = request.mor;
     pair.contact = request.contact;
+    pair.normal = request.normal;
     raster::DepthStencilDevice& device = devices.device(pair.frame.width, pair.frame.height);
     const LeafBlock blockA(a.tree(), lp.leafA);
     const LeafBlock blockB(b.tree(), lp.leafB);

@@ -192,9 +192,10 @@ PixelRect classifyStencil(const raster::PixelBuffer<std::uint8_t>& stencil, Pair
 }
 
 // The contact region from the two ends of the overlap interval over the contact rectangle.
+// With `ends`, both ends of every pixel's interval are kept there, near then far.
 void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
                     const raster::PixelBuffer<std::uint32_t>& farDepth, const OrthoView& view,
-                    PairResult& r) {
+                    PairResult& r, std::vector<Eigen::Vector3d>* ends) {
   const double depthScale = 1.0 / static_cast<double>(raster::kDepthMax);
   const double worldPerStep = (r.depthMax - r.depthMin) * depthScale;
   r.contact.points.reserve(static_cast<std::size_t>(r.interferingPixels));
@@ -216,6 +217,10 @@ void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
       r.contact.box.extend(pn);
       r.contact.box.extend(pf);
       r.contact.points.push_back(0.5 * (pn + pf));
+      if (ends) {
+        ends->push_back(pn);
+        ends->push_back(pf);
+      }
       r.contact.maxDepth = std::max(r.contact.maxDepth, (hi - lo) * worldPerStep);
     }
   }
@@ -321,7 +326,17 @@ PairResult collidePair(raster::DepthStencilDevice& device, const PairBlock& a, c
   r.depthPixelsRead = 2 * r.contactRect.area();
 
   t = Clock::now();
-  measureContact(nearDepth, farDepth, view, r);
+  std::vector<Eigen::Vector3d> ends;
+  measureContact(nearDepth, farDepth, view, r, request.normal ? &ends : nullptr);
+  if (request.normal) {
+    // Half a pixel along the image plane's two world axes, none along the view axis.
+    const Eigen::Vector3d halfPixel =
+        (view.fromPlane({0.5 * view.pixelWidth(), 0.5 * view.pixelHeight(), 0.0}) -
+         view.fromPlane(Eigen::Vector3d::Zero()))
+            .cwiseAbs();
+    r.contact.normal =
+        contactNormal(OverlapSamples{ends, halfPixel}, a.mesh().vertices, b.mesh().vertices);
+  }
   r.timing.classifyUs += microsecondsSince(t);
   return finish();
 }

@@ -18,3 +18,11 @@ add_executable(recode_verify_view_axis_tests oracles/view_axis_test.cpp)
 target_link_libraries(recode_verify_view_axis_tests PRIVATE recode_verify recode_warnings
                                                             Catch2::Catch2WithMain)
 catch_discover_tests(recode_verify_view_axis_tests)
+
+# The contact normal against the exact intersection solid's thinnest direction (a slice of the
+# suite; the whole suite's table is the hidden case [.normal-accuracy]).
+add_executable(recode_verify_normal_tests oracles/contact_normal_oracle_test.cpp)
+target_link_libraries(recode_verify_normal_tests PRIVATE recode_verify recode_warnings
+                                                         Catch2::Catch2WithMain)
+target_include_directories(recode_verify_normal_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/core/pair)
+catch_discover_tests(recode_verify_normal_tests)

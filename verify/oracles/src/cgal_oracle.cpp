@@ -25,6 +25,7 @@
 #include <CGAL/intersections.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -147,7 +148,42 @@ bool closedSolidsIntersect(const Mesh& a, const Mesh& b) {
                            CGAL::parameters::do_overlap_test_of_bounded_sides(true));
 }
 
+// Every vertex of A ∩ B, exactly (the method in this file's head comment), sorted and distinct.
+std::vector<Point> intersectionPoints(const ExactPair& pair) {
+  std::vector<Point> points;
+  addEdgeCrossings(pair.a, trianglesOf(pair.b), points);
+  addEdgeCrossings(pair.b, trianglesOf(pair.a), points);
+  addVerticesInside(pair.a, pair.b, points);
+  addVerticesInside(pair.b, pair.a, points);
+  std::sort(points.begin(), points.end(), Kernel::Less_xyz_3());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
 }  // namespace
+
+core::TriangleMesh intersectionHull(const core::TriangleMesh& worldA,
+                                    const core::TriangleMesh& worldB) {
+  const std::vector<Point> points = intersectionPoints(toExactPair(worldA, worldB));
+  core::TriangleMesh out;
+  if (hullVolume(points) <= 0.0)
+    return out;
+  Mesh hull;
+  CGAL::convex_hull_3(points.begin(), points.end(), hull);
+  std::vector<std::uint32_t> index(hull.number_of_vertices());
+  for (const Mesh::Vertex_index v : hull.vertices()) {
+    const Point& p = hull.point(v);
+    index[v.idx()] = static_cast<std::uint32_t>(out.vertices.size());
+    out.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                              CGAL::to_double(p.z()));
+  }
+  for (const Mesh::Face_index f : hull.faces()) {
+    const Mesh::Halfedge_index h = hull.halfedge(f);
+    out.triangles.push_back({index[hull.target(h).idx()], index[hull.target(hull.next(h)).idx()],
+                             index[hull.target(hull.next(hull.next(h))).idx()]});
+  }
+  return out;
+}
 
 bool exactlyIntersect(const core::TriangleMesh& worldA, const core::TriangleMesh& worldB) {
   const ExactPair pair = toExactPair(worldA, worldB);

@@ -77,6 +77,9 @@ struct CollisionRequest {
   core::MorMode mor = core::MorMode::Min;  // the rectangle the passes run over (core::MorMode)
   AxisChoice axis = AxisChoice::Auto;      // the view axis (AxisChoice)
   bool contact = true;                     // the two depth passes that measure the contact region
+  // With `contact`: each block contact's pair.contact.normal, the contact normal and penetration
+  // depth (core::PairRequest::normal). The merged CollisionResult::contact carries none.
+  bool normal = false;
   // How each block pair is decided (docs/algorithm.md, "Beyond the paper"): Reference, the
   // paper's algorithm in the chosen frame; Adaptive, refined on finer frames where a finer grid
   // could change the answer (a contact's `pair` and `frame` are those of the run that saw it);

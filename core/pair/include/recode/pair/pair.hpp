@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "recode/geometry/mesh.hpp"
+#include "recode/pair/contact_normal.hpp"
 #include "recode/pair/frame.hpp"
 #include "recode/pair/pair_block.hpp"
 #include "recode/pair/pair_cases.hpp"
@@ -43,6 +44,9 @@ struct PairRequest {
   // snapped vertices) cannot interfere. The verdict is the same either way; turning it off
   // shows the cases 1, 2, 7 and 8 of blocks that are apart (teaching, tests).
   bool boxTest = true;
+  // Also estimate the contact normal and penetration depth from the contact passes' depths
+  // (ContactRegion::normal; docs/algorithm.md). Needs `contact`; off, nothing changes.
+  bool normal = false;
 };
 
 // The steps of the algorithm, in order, for timing and for observers (recode explain).
@@ -82,6 +86,9 @@ struct ContactRegion {
   // Pixels whose measured near end lay one or more steps beyond the far end: the blocks
   // touch there within depth rounding, and the overlap is taken as one depth between the two.
   long long collapsedPixels = 0;
+  // With PairRequest::normal and interference: the contact normal (from A towards B) and the
+  // penetration depth along it (contact_normal.hpp).
+  std::optional<ContactNormal> normal;
 };
 
 // Wall-clock time of one collidePair call, microseconds.

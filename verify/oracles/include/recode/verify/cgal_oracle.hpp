@@ -102,6 +102,13 @@ struct CgalJudgement {
                                       const core::TriangleMesh& worldB,
                                       const core::PairResult& result);
 
+// The exact intersection solid of the two blocks (its convex hull, built exactly), its
+// vertices rounded to doubles, for the contact normal oracle (contact_normal_oracle.hpp). Empty
+// when the blocks are apart or their intersection has no volume. The same checks and errors as
+// exactIntersection.
+[[nodiscard]] core::TriangleMesh intersectionHull(const core::TriangleMesh& worldA,
+                                                  const core::TriangleMesh& worldB);
+
 struct CgalCounts {
   long long pairs = 0;
   long long agree = 0;
