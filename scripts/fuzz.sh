@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/) with Clang, AddressSanitizer and UndefinedBehaviorSanitizer,
 # the libraries instrumented too, and runs each for a fixed number of executions from a seed
-# corpus made of this tree's data (scenes, golden vectors, meshes). A crash, a sanitizer report,
+# corpus made of this tree's data (scenes, golden vectors, meshes) and of the inputs that once
+# found a defect (fuzz/regressions/). A crash, a sanitizer report,
 # a leak, a timeout or an exception other than the readers' own errors fails the script.
 #
 #   scripts/fuzz.sh [RUNS] [BUILD_DIR]      (defaults: 20000 runs per target, build-fuzz)
@@ -32,7 +33,7 @@ seed() {
 declare -A seeds=(
   [scene_fuzzer]="data/scenes tests/data/bad_inputs"
   [command_stream_fuzzer]="data/golden/fill_square.json data/golden/masks_and_cull.json data/golden/recode_passes.json"
-  [obj_fuzzer]="data/meshes"
+  [obj_fuzzer]="data/meshes fuzz/regressions/obj"
   [off_fuzzer]="data/meshes"
 )
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
+#include <iterator>
 #include <optional>
 #include <regex>
 #include <sstream>
@@ -120,6 +121,30 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
   return summary;
 }
 
+// The records tinyobjloader is given: the ones RECODE reads (`v`, `f`), the ones a face refers
+// to or that name a group (`vt`, `vn`, `o`, `g`), and the material records it already handled
+// harmlessly. Every other record is ignored by RECODE, and some are unsafe in tinyobjloader: a
+// `vw` line converts a joint id to int unchecked (undefined for 1e30) and a `t` line allocates
+// up to 8192 values of each kind whatever its length.
+bool passedToTinyObj(std::string_view keyword) {
+  static constexpr std::string_view kPassed[] = {"v", "vt", "vn", "f", "o", "g", "usemtl", "mtllib"};
+  return std::find(std::begin(kPassed), std::end(kPassed), keyword) != std::end(kPassed);
+}
+
+// The text with every record that tinyobjloader is not given blanked to spaces, so the lines
+// keep their numbers and the file its size.
+std::string textForTinyObj(std::string_view text) {
+  std::string kept(text);
+  forEachLine(text, [&](std::string_view raw, std::size_t /*line*/) {
+    const std::vector<std::string_view> tokens = tokenize(raw);
+    if (!tokens.empty() && tokens[0].front() != '#' && !passedToTinyObj(tokens[0])) {
+      const auto offset = static_cast<std::size_t>(raw.data() - text.data());
+      std::fill_n(kept.begin() + static_cast<std::ptrdiff_t>(offset), raw.size(), ' ');
+    }
+  });
+  return kept;
+}
+
 // Turns tinyobjloader's error text into our message form, using a "line N" it mentions.
 [[noreturn]] void failFromTinyObj(const fs::path& path, std::string text) {
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())) != 0) {
@@ -201,7 +226,7 @@ ParsedObj loadObj(const fs::path& path, const std::string& text) {
   std::vector<tinyobj::material_t> materials;
   std::string warnings;
   std::string errors;
-  std::istringstream stream(text);
+  std::istringstream stream(textForTinyObj(text));
   const bool ok = tinyobj::LoadObj(&attrib, &parsed.shapes, &materials, &warnings, &errors, &stream,
                                    /*readMatFn=*/nullptr, /*triangulate=*/false,
                                    /*default_vcols_fallback=*/false);

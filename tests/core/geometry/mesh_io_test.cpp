@@ -336,3 +336,26 @@ TEST_CASE("readObj: a 259-vertex face is not taken for a triangle", "[mesh_io]")
   CHECK(mesh.triangleCount() == 3 + 257);
   CHECK_THROWS(validateConvexBlock(mesh, "garbage.obj"));
 }
+
+TEST_CASE("readObj: records RECODE does not use are ignored, whatever they hold", "[mesh_io]") {
+  // tinyobjloader rejects a negative `vw` joint id, converts a huge one to int unchecked
+  // (undefined behaviour, found by the OBJ fuzzer) and allocates 8192 values for a short `t`
+  // line; none of these records means anything to RECODE.
+  const TempDir dir;
+  const std::string tetrahedron =
+      "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n";
+  const TriangleMesh plain = readObj(dir.write("plain.obj", tetrahedron));
+  const std::vector<std::string> ignored = {
+      "vw 0 1e30 0.5", "vw 0 -1 0.5", "t crease 8192/8192/8192", "l 1 2 9", "p 7",
+      "s 99999999999", "vp 0.5 0.5", "curv 0 1 1 2"};
+  for (const std::string& record : ignored) {
+    INFO(record);
+    const TriangleMesh mesh = readObj(dir.write("extra.obj", record + "\n" + tetrahedron));
+    CHECK(mesh.vertices == plain.vertices);
+    CHECK(mesh.triangles == plain.triangles);
+  }
+  // Blanked, not removed: a later error keeps its line number.
+  const std::string message =
+      meshErrorMessage([&] { (void)readObj(dir.write("late.obj", "vw 0 -1 0.5\nv 0 0\n")); });
+  CHECK_THAT(message, Contains("late.obj:2: expected 3 coordinates, found 2 values"));
+}
