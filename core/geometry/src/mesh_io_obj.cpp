@@ -127,7 +127,8 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
 // `vw` line converts a joint id to int unchecked (undefined for 1e30) and a `t` line allocates
 // up to 8192 values of each kind whatever its length.
 bool passedToTinyObj(std::string_view keyword) {
-  static constexpr std::string_view kPassed[] = {"v", "vt", "vn", "f", "o", "g", "usemtl", "mtllib"};
+  static constexpr std::string_view kPassed[] = {"v", "vt", "vn",     "f",
+                                                 "o", "g",  "usemtl", "mtllib"};
   return std::find(std::begin(kPassed), std::end(kPassed), keyword) != std::end(kPassed);
 }
 

@@ -346,8 +346,8 @@ TEST_CASE("readObj: records RECODE does not use are ignored, whatever they hold"
       "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n";
   const TriangleMesh plain = readObj(dir.write("plain.obj", tetrahedron));
   const std::vector<std::string> ignored = {
-      "vw 0 1e30 0.5", "vw 0 -1 0.5", "t crease 8192/8192/8192", "l 1 2 9", "p 7",
-      "s 99999999999", "vp 0.5 0.5", "curv 0 1 1 2"};
+      "vw 0 1e30 0.5", "vw 0 -1 0.5", "t crease 8192/8192/8192", "l 1 2 9", "p 7", "s 99999999999",
+      "vp 0.5 0.5",    "curv 0 1 1 2"};
   for (const std::string& record : ignored) {
     INFO(record);
     const TriangleMesh mesh = readObj(dir.write("extra.obj", record + "\n" + tetrahedron));
