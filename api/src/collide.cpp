@@ -5,6 +5,7 @@
 
 #include "recode/api/collision.hpp"
 #include "recode/refine/adaptive.hpp"
+#include "recode/sim/leaf_block.hpp"
 
 namespace recode {
 
@@ -27,21 +28,6 @@ struct PairAnswer {
   core::FrameSpec frame;
   int level = 0;
   bool atLimit = false;
-};
-
-// A leaf's world mesh with its triangle hierarchy (built on the object's first use, then
-// kept by its tree), so that the pair tests draw only the triangles near their MOR, as
-// core::Simulation does; the results are those of the bare mesh, bit for bit.
-struct LeafBlock {
-  LeafBlock(const core::ObjectTree& tree, int leaf)
-      : mesh(tree.worldMesh(leaf)),
-        block(mesh, tree.triangleHierarchy(leaf),
-              tree.nodes()[static_cast<std::size_t>(leaf)].world) {}
-  LeafBlock(const LeafBlock&) = delete;
-  LeafBlock& operator=(const LeafBlock&) = delete;
-
-  core::TriangleMesh mesh;
-  core::PairBlock block;  // refers to mesh
 };
 
 // One block pair in the request's mode.
@@ -92,8 +78,8 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     pair.contact = request.contact;
     pair.normal = request.normal;
     raster::DepthStencilDevice& device = devices.device(pair.frame.width, pair.frame.height);
-    const LeafBlock blockA(a.tree(), lp.leafA);
-    const LeafBlock blockB(b.tree(), lp.leafB);
+    const core::LeafBlock blockA(a.tree(), lp.leafA);
+    const core::LeafBlock blockB(b.tree(), lp.leafB);
     PairAnswer answer = decidePair(device, blockA.block, blockB.block, pair, request.mode);
     core::PairResult& r = answer.pair;
     ++result.blockPairsDrawn;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -69,6 +71,17 @@ Eigen::Vector3d leastOverlapDirection(const Obb& a, const Obb& b) {
 
 }  // namespace
 
+namespace {
+
+// Every rule, ViewAxisRule::Scene first; parsing and the list of names both come from here.
+constexpr ViewAxisRule kAllViewAxisRules[] = {ViewAxisRule::Scene, ViewAxisRule::FewestMor,
+                                              ViewAxisRule::WidestOverlap, ViewAxisRule::Separating,
+                                              ViewAxisRule::ThinOverlap};
+// The name that stands for kAdaptiveViewAxisRule.
+constexpr std::string_view kAdaptiveRuleName = "adaptive";
+
+}  // namespace
+
 std::string_view toString(ViewAxisRule rule) {
   switch (rule) {
     case ViewAxisRule::Scene:
@@ -86,18 +99,27 @@ std::string_view toString(ViewAxisRule rule) {
 }
 
 std::optional<ViewAxisRule> parseViewAxisRule(std::string_view name) {
-  if (name == "adaptive")
+  if (name == kAdaptiveRuleName)
     return kAdaptiveViewAxisRule;
-  for (const ViewAxisRule rule :
-       {ViewAxisRule::Scene, ViewAxisRule::FewestMor, ViewAxisRule::WidestOverlap,
-        ViewAxisRule::Separating, ViewAxisRule::ThinOverlap})
+  for (const ViewAxisRule rule : kAllViewAxisRules)
     if (name == toString(rule))
       return rule;
   return std::nullopt;
 }
 
 std::string_view viewAxisRuleNames() {
-  return "scene, adaptive, fewest-mor, widest-overlap, separating, thin-overlap";
+  // "scene" first, then the alias "adaptive", then the other rules in declaration order.
+  static const std::string names = [] {
+    std::string list(toString(kAllViewAxisRules[0]));
+    list += ", ";
+    list += kAdaptiveRuleName;
+    for (std::size_t k = 1; k < std::size(kAllViewAxisRules); ++k) {
+      list += ", ";
+      list += toString(kAllViewAxisRules[k]);
+    }
+    return list;
+  }();
+  return names;
 }
 
 AxisChoiceInput axisChoiceInput(const TriangleMesh& a, const TriangleMesh& b, double pixelSize) {

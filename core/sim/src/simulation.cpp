@@ -2,13 +2,13 @@
 #include "recode/sim/simulation.hpp"
 
 #include "pair_tests.hpp"
+#include "recode/sim/leaf_block.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
 #include <map>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -39,32 +39,20 @@ std::vector<Aabb> updateRootBoxes(std::vector<ObjectTree>& objects) {
   return roots;
 }
 
-// The leaves drawn this frame, each made once: its world mesh, with the triangle hierarchy
-// of its local mesh (built once per leaf for the whole run) and its pose, so that a pair test
-// draws only the triangles near its MOR.
+// The leaves drawn this frame, each made once (LeafBlock: world mesh, triangle hierarchy, pose).
 class LeafBlocks {
  public:
   explicit LeafBlocks(const std::vector<ObjectTree>& objects) : objects_(objects) {}
 
   const PairBlock& of(int object, int leaf) {
-    auto [it, added] = blocks_.try_emplace({object, leaf});
-    if (added) {
-      const ObjectTree& tree = objects_[static_cast<std::size_t>(object)];
-      Leaf& l = it->second;
-      l.mesh = tree.worldMesh(leaf);
-      l.block.emplace(l.mesh, tree.triangleHierarchy(leaf),
-                      tree.nodes()[static_cast<std::size_t>(leaf)].world);
-    }
-    return *it->second.block;
+    const ObjectTree& tree = objects_[static_cast<std::size_t>(object)];
+    // A map node keeps its LeafBlock in place, as the block's reference to its mesh needs.
+    return blocks_.try_emplace({object, leaf}, tree, leaf).first->second.block;
   }
 
  private:
-  struct Leaf {
-    TriangleMesh mesh;
-    std::optional<PairBlock> block;  // refers to mesh, which a map node keeps in place
-  };
   const std::vector<ObjectTree>& objects_;
-  std::map<std::pair<int, int>, Leaf> blocks_;
+  std::map<std::pair<int, int>, LeafBlock> blocks_;
 };
 
 // Counts one pair test into the report; a contact keeps its result (the runner has cleared
