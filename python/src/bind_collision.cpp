@@ -3,6 +3,7 @@
 // whose base keeps the result alive, so reading a large case map or point list copies nothing.
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "recode/api/collision.hpp"
+#include "recode/refine/pair_mode.hpp"
 
 namespace recode::python {
 
@@ -85,6 +87,13 @@ AxisChoice axisFrom(const std::string& name) {
   throw py::value_error("axis: '" + name + "' is not a view axis (x, y, z or auto)");
 }
 
+core::PairMode modeFrom(const std::string& name) {
+  if (const auto mode = core::parsePairMode(name))
+    return *mode;
+  throw py::value_error("mode: '" + name +
+                        "' is not a pair mode (reference, adaptive or conservative)");
+}
+
 std::optional<double> pixelSizeFrom(const std::optional<double>& size) {
   if (size && !(std::isfinite(*size) && *size > 0.0))
     throw py::value_error("pixel_size: " + py::str(py::float_(*size)).cast<std::string>() +
@@ -103,7 +112,9 @@ std::string repr(const CollisionRequest& r) {
   return "CollisionRequest(pixel_size=" +
          (r.pixelSize ? py::str(py::float_(*r.pixelSize)).cast<std::string>() : "None") +
          ", resolution=" + std::to_string(r.resolution) + ", mor='" + morName(r.mor) + "', axis='" +
-         axisName(r.axis) + "', contact=" + (r.contact ? "True" : "False") + ")";
+         axisName(r.axis) + "', contact=" + (r.contact ? "True" : "False") +
+         ", normal=" + (r.normal ? "True" : "False") + ", mode='" +
+         std::string(core::toString(r.mode)) + "')";
 }
 
 // The case map of the result's one block pair in contact; None without contact.
@@ -155,18 +166,22 @@ void bindCollision(py::module_& m) {
 
   py::class_<CollisionRequest>(m, "CollisionRequest",
                                "What collide() measures and how finely (docs/api.md).")
-      .def(py::init([](std::optional<double> pixelSize, int resolution, const std::string& mor,
-                       const std::string& axis, bool contact) {
-             CollisionRequest r;
-             r.pixelSize = pixelSizeFrom(pixelSize);
-             r.resolution = resolutionFrom(resolution);
-             r.mor = morFrom(mor);
-             r.axis = axisFrom(axis);
-             r.contact = contact;
-             return r;
-           }),
-           py::kw_only(), py::arg("pixel_size") = py::none(), py::arg("resolution") = 256,
-           py::arg("mor") = "min", py::arg("axis") = "auto", py::arg("contact") = true)
+      .def(
+          py::init([](std::optional<double> pixelSize, int resolution, const std::string& mor,
+                      const std::string& axis, bool contact, bool normal, const std::string& mode) {
+            CollisionRequest r;
+            r.pixelSize = pixelSizeFrom(pixelSize);
+            r.resolution = resolutionFrom(resolution);
+            r.mor = morFrom(mor);
+            r.axis = axisFrom(axis);
+            r.contact = contact;
+            r.normal = normal;
+            r.mode = modeFrom(mode);
+            return r;
+          }),
+          py::kw_only(), py::arg("pixel_size") = py::none(), py::arg("resolution") = 256,
+          py::arg("mor") = "min", py::arg("axis") = "auto", py::arg("contact") = true,
+          py::arg("normal") = false, py::arg("mode") = "reference")
       .def_property(
           "pixel_size", [](const CollisionRequest& r) { return r.pixelSize; },
           [](CollisionRequest& r, std::optional<double> s) { r.pixelSize = pixelSizeFrom(s); },
@@ -185,6 +200,13 @@ void bindCollision(py::module_& m) {
           "'x', 'y', 'z' or 'auto' (the overlap box's thinnest side).")
       .def_readwrite("contact", &CollisionRequest::contact,
                      "Measure the contact region (points, box, depth).")
+      .def_readwrite("normal", &CollisionRequest::normal,
+                     "With contact: each block contact's contact.normal and "
+                     "contact.penetration_depth.")
+      .def_property(
+          "mode", [](const CollisionRequest& r) { return std::string(core::toString(r.mode)); },
+          [](CollisionRequest& r, const std::string& s) { r.mode = modeFrom(s); },
+          "'reference' (default, the paper's algorithm), 'adaptive' or 'conservative'.")
       .def("__repr__", &repr);
 
   py::class_<core::FrameSpec>(m, "Frame", "The frame a block pair was drawn in.")
@@ -216,7 +238,26 @@ void bindCollision(py::module_& m) {
       .def_readonly("area", &core::ContactRegion::area, "World units squared.")
       .def_readonly("max_depth", &core::ContactRegion::maxDepth,
                     "Longest overlap along the view axis, world units.")
-      .def_readonly("collapsed_pixels", &core::ContactRegion::collapsedPixels);
+      .def_readonly("collapsed_pixels", &core::ContactRegion::collapsedPixels)
+      .def_property_readonly(
+          "normal",
+          [](const core::ContactRegion& c) -> py::object {
+            if (!c.normal)
+              return py::none();
+            py::array_t<double> out(3);
+            std::copy(c.normal->normal.data(), c.normal->normal.data() + 3, out.mutable_data());
+            return out;
+          },
+          "Unit contact normal from block A towards block B, float64 (3,); None unless the "
+          "request asked for normals (a block contact's only, never the merged region's).")
+      .def_property_readonly(
+          "penetration_depth",
+          [](const core::ContactRegion& c) -> std::optional<double> {
+            if (!c.normal)
+              return std::nullopt;
+            return c.normal->depth;
+          },
+          "The overlap's width along normal, world units; None with normal.");
 
   py::class_<BlockContact>(m, "BlockContact", "One pair of blocks whose pixels interfere.")
       .def_readonly("block_a", &BlockContact::blockA)
@@ -242,6 +283,9 @@ void bindCollision(py::module_& m) {
           "contact",
           [](const BlockContact& c) -> const core::ContactRegion& { return c.pair.contact; },
           py::return_value_policy::reference_internal)
+      .def_readonly("refine_level", &BlockContact::refineLevel,
+                    "Adaptive mode: the refinement level the contact was seen at (0: the "
+                    "chosen frame).")
       .def_property_readonly(
           "timing_us", [](const BlockContact& c) { return c.pair.timing.totalUs; },
           "Wall time of the pair algorithm, microseconds.");
@@ -279,6 +323,9 @@ void bindCollision(py::module_& m) {
       .def_readonly("collision_us", &CollisionResult::collisionUs,
                     "The whole call, microseconds, device making left out.")
       .def_readonly("device_setup_us", &CollisionResult::deviceSetupUs)
+      .def_readonly("apart_at_limit", &CollisionResult::apartAtLimit,
+                    "Adaptive mode: block pairs a contact could not be ruled out for within the "
+                    "refinement limits (not contacts).")
       .def("__repr__", [](const CollisionResult& r) {
         return "<recode.CollisionResult collide=" + std::string(r.collide ? "True" : "False") +
                " interfering_pixels=" + std::to_string(r.interferingPixels) +
