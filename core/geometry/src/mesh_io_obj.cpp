@@ -1,6 +1,7 @@
-// The OBJ reader: tinyobjloader parses the file, after a line check of our own that gives
-// every malformed `v` or `f` line a message with its line and reads the positions with
-// correct rounding. docs/geometry.md describes what is read and lists the messages.
+// The OBJ reader: a line check of our own gives every malformed `v` or `f` line a message with
+// its line and reads the positions with correct rounding; tinyobjloader then parses the faces
+// and groups from a copy in which it sees no number but the faces' indices. docs/geometry.md
+// describes what is read and lists the messages.
 
 #include <tiny_obj_loader.h>
 
@@ -121,26 +122,48 @@ ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
   return summary;
 }
 
-// The records tinyobjloader is given: the ones RECODE reads (`v`, `f`), the ones a face refers
-// to or that name a group (`vt`, `vn`, `o`, `g`), and the material records it already handled
-// harmlessly. Every other record is ignored by RECODE, and some are unsafe in tinyobjloader: a
-// `vw` line converts a joint id to int unchecked (undefined for 1e30) and a `t` line allocates
-// up to 8192 values of each kind whatever its length.
-bool passedToTinyObj(std::string_view keyword) {
-  static constexpr std::string_view kPassed[] = {"v", "vt", "vn",     "f",
-                                                 "o", "g",  "usemtl", "mtllib"};
-  return std::find(std::begin(kPassed), std::end(kPassed), keyword) != std::end(kPassed);
+// What tinyobjloader is given of each record. It never parses a number of the file: its number
+// parser overflows a signed int on an exponent of ten digits (`0e2147483649`, undefined
+// behaviour, and finite to the line check), so every `v` line becomes `v 0 0 0` (the positions
+// come from the line check) and `vt` and `vn` lines, which RECODE does not use, are blanked
+// (a face's texture or normal index beyond them is only a warning there). `f`, `o` and `g`
+// are kept, and the material records it already handled harmlessly. Every other record is
+// ignored by RECODE, and some are unsafe in tinyobjloader: a `vw` line converts a joint id to
+// int unchecked (undefined for 1e30) and a `t` line allocates up to 8192 values of each kind
+// whatever its length; they are blanked.
+enum class TinyObjRecord { Kept, Placeholder, Blanked };
+
+TinyObjRecord tinyObjRecord(std::string_view keyword) {
+  if (keyword == "v")
+    return TinyObjRecord::Placeholder;
+  static constexpr std::string_view kKept[] = {"f", "o", "g", "usemtl", "mtllib"};
+  if (keyword.front() == '#' ||
+      std::find(std::begin(kKept), std::end(kKept), keyword) != std::end(kKept))
+    return TinyObjRecord::Kept;
+  return TinyObjRecord::Blanked;
 }
 
-// The text with every record that tinyobjloader is not given blanked to spaces, so the lines
-// keep their numbers and the file its size.
+// The text as tinyobjloader is given it (tinyObjRecord): lines rewritten in place and padded
+// with spaces, so that they keep their numbers and the file its size. A `v` line that passed
+// the line check holds at least 7 characters, as many as its placeholder.
 std::string textForTinyObj(std::string_view text) {
+  static constexpr std::string_view kVertexPlaceholder = "v 0 0 0";
   std::string kept(text);
   forEachLine(text, [&](std::string_view raw, std::size_t /*line*/) {
     const std::vector<std::string_view> tokens = tokenize(raw);
-    if (!tokens.empty() && tokens[0].front() != '#' && !passedToTinyObj(tokens[0])) {
-      const auto offset = static_cast<std::size_t>(raw.data() - text.data());
-      std::fill_n(kept.begin() + static_cast<std::ptrdiff_t>(offset), raw.size(), ' ');
+    if (tokens.empty())
+      return;
+    const auto at = kept.begin() + (raw.data() - text.data());
+    switch (tinyObjRecord(tokens[0])) {
+      case TinyObjRecord::Kept:
+        return;
+      case TinyObjRecord::Placeholder:
+        std::fill_n(std::copy(kVertexPlaceholder.begin(), kVertexPlaceholder.end(), at),
+                    raw.size() - kVertexPlaceholder.size(), ' ');
+        return;
+      case TinyObjRecord::Blanked:
+        std::fill_n(at, raw.size(), ' ');
+        return;
     }
   });
   return kept;
@@ -162,24 +185,14 @@ std::string textForTinyObj(std::string_view text) {
   fail(path, text);
 }
 
-// tinyobjloader's number parser is not correctly rounded (it can be 1 ulp off), so the
-// positions come from the line check; tinyobjloader's values must agree with them to
-// within rounding, which confirms that both counted the same vertices.
-void crossCheckVertices(const fs::path& path, const tinyobj::attrib_t& attrib,
-                        const std::vector<Eigen::Vector3d>& positions) {
+// tinyobjloader sees every `v` line as a placeholder (textForTinyObj): the positions come from
+// the line check, and the two must have counted the same vertices.
+void crossCheckVertexCount(const fs::path& path, const tinyobj::attrib_t& attrib,
+                           const std::vector<Eigen::Vector3d>& positions) {
   const std::size_t vertexCount = attrib.vertices.size() / 3;
   if (vertexCount != positions.size()) {
     fail(path, "internal error: tinyobjloader read " + std::to_string(vertexCount) +
                    " vertices where the line check counted " + std::to_string(positions.size()));
-  }
-  for (std::size_t i = 0; i < vertexCount; ++i) {
-    const Eigen::Vector3d theirs(attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
-                                 attrib.vertices[3 * i + 2]);
-    const Eigen::Vector3d& ours = positions[i];
-    if (!((theirs - ours).cwiseAbs().array() <= 1e-12 * ours.cwiseAbs().array() + 1e-300).all()) {
-      fail(path, "internal error: tinyobjloader read vertex " + std::to_string(i) + " as " +
-                     formatPoint(theirs) + " where the line check read " + formatPoint(ours));
-    }
   }
 }
 
@@ -234,7 +247,7 @@ ParsedObj loadObj(const fs::path& path, const std::string& text) {
   if (!ok || !errors.empty()) {
     failFromTinyObj(path, errors);
   }
-  crossCheckVertices(path, attrib, parsed.summary.positions);
+  crossCheckVertexCount(path, attrib, parsed.summary.positions);
   return parsed;
 }
 

@@ -354,6 +354,21 @@ TEST_CASE("readObj: records RECODE does not use are ignored, whatever they hold"
     CHECK(mesh.vertices == plain.vertices);
     CHECK(mesh.triangles == plain.triangles);
   }
+  // tinyobjloader's number parser overflows an int on a ten-digit exponent: it never sees the
+  // numbers of `v`, `vt` or `vn` lines (an extra `v` value is ignored; 0e2147483649 is 0).
+  for (const std::string record : {"vt 1e2147483649 0", "vn 0 0 1e2147483649"}) {
+    INFO(record);
+    const TriangleMesh mesh = readObj(dir.write("numbers.obj", tetrahedron + record + "\n"));
+    CHECK(mesh.triangles == plain.triangles);
+  }
+  const TriangleMesh extraValue =
+      readObj(dir.write("w.obj", "v 1 1 1 1e2147483649\n" + tetrahedron.substr(8)));
+  CHECK(extraValue.vertices == plain.vertices);
+  const TriangleMesh zero =
+      readObj(dir.write("zero.obj", "v 0e2147483649 1 1\n" + tetrahedron.substr(8)));
+  CHECK(zero.vertices[0] == Eigen::Vector3d(0, 1, 1));
+  CHECK(zero.vertices[1] == plain.vertices[1]);
+
   // Blanked, not removed: a later error keeps its line number.
   const std::string message =
       meshErrorMessage([&] { (void)readObj(dir.write("late.obj", "vw 0 -1 0.5\nv 0 0\n")); });
