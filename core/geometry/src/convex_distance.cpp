@@ -79,9 +79,14 @@ Closest closestOnSimplex(const std::vector<Eigen::Vector3d>& simplex) {
   return best;
 }
 
-}  // namespace
+// GJK's answer: the distance (an upper bound within rounding: the length of a point of
+// conv(A - B)) and that point, the direction from B towards A; zero when they intersect.
+struct Approach {
+  double distance = 0.0;
+  Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+};
 
-double convexHullDistance(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
   if (a.empty() || b.empty())
     throw std::invalid_argument("convexHullDistance: an empty point set");
   double scale = 0.0;
@@ -95,28 +100,51 @@ double convexHullDistance(std::span<const Eigen::Vector3d> a, std::span<const Ei
   // bring it nearer.
   Eigen::Vector3d v = a[0] - b[0];
   std::vector<Eigen::Vector3d> simplex{v};
+  const auto apart = [&] { return Approach{v.norm(), v}; };
   for (int iteration = 0; iteration < 200; ++iteration) {
     const double vv = v.norm();
     if (vv <= tiny)
-      return 0.0;
+      return {};
     const Eigen::Vector3d w = furthest(a, -v) - furthest(b, v);
     // No point of A - B lies nearer the origin along v than v itself (to rounding): done.
     if (vv * vv - v.dot(w) <= 1e-12 * vv * vv)
-      return vv;
+      return apart();
     if (std::find(simplex.begin(), simplex.end(), w) != simplex.end())
-      return vv;
+      return apart();
     simplex.push_back(w);
     const Closest c = closestOnSimplex(simplex);
     if (c.simplex.empty())
-      return vv;  // numerically stuck; v is the best found
+      return apart();  // numerically stuck; v is the best found
     if (c.simplex.size() == 4)
-      return 0.0;  // the origin lies inside the tetrahedron
+      return {};  // the origin lies inside the tetrahedron
     if (c.point.norm() >= vv)
-      return vv;  // no progress
+      return apart();  // no progress
     v = c.point;
     simplex = c.simplex;
   }
-  return v.norm();
+  return apart();
+}
+
+}  // namespace
+
+double convexHullDistance(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+  return closestApproach(a, b).distance;
+}
+
+double convexHullGap(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+  const Approach approach = closestApproach(a, b);
+  if (approach.distance == 0.0)
+    return 0.0;
+  // The empty slab between the point sets across GJK's direction: every point of A is at
+  // least lowA along it and every point of B at most highB.
+  const Eigen::Vector3d n = approach.direction / approach.distance;
+  double lowA = std::numeric_limits<double>::infinity();
+  double highB = -lowA;
+  for (const Eigen::Vector3d& p : a)
+    lowA = std::min(lowA, p.dot(n));
+  for (const Eigen::Vector3d& p : b)
+    highB = std::max(highB, p.dot(n));
+  return std::max(0.0, lowA - highB);
 }
 
 }  // namespace recode::core

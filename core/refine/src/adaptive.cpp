@@ -56,6 +56,14 @@ Aabb grown(Aabb box, const Eigen::Vector3d& by) {
 // ulps, so that grown and clipped geometry is never lost to double rounding.
 constexpr double kGrowthRoundingFloor = 1e-13;
 
+// A gap GJK certifies (convexHullGap) counts above this: 1e-12 of the blocks' largest
+// coordinate, a thousand times the rounding of the slab's ends.
+double gapTolerance(const Aabb& a, const Aabb& b) {
+  const double scale = std::max({a.min.cwiseAbs().maxCoeff(), a.max.cwiseAbs().maxCoeff(),
+                                 b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()});
+  return 1e-12 * scale;
+}
+
 }  // namespace
 
 Eigen::Vector3d conservativeGrowth(const FrameSpec& frame, const Aabb& a, const Aabb& b) {
@@ -138,30 +146,26 @@ struct AdaptivePairTester::Search {
     return ref.collide && ref.contact.maxDepth > limits.touchSteps * step;
   }
 
-  // The request's frame: the reference run first, as the reference mode draws it; a deep
-  // contact is the answer (refine() would find it after the conservative run, which sees
-  // every contact the reference run sees). Otherwise a finer grid can change the answer only
-  // for blocks that come within reach of its pixels: the conservative growth at the finest
-  // level bounds how far apart blocks can be and still be seen meeting there (grown blocks
-  // lie within |growth| of the blocks; 2.5 |growth| leaves a quarter for the rasterizer's
-  // rounding). Blocks farther apart than that by GJK are apart at every level, so none is
-  // drawn; the rest are refined.
+  // The request's frame: the reference run first, as the reference mode draws it. Then GJK's
+  // certified gap (convexHullGap): blocks with a gap above rounding are apart, exactly,
+  // whatever the pixels saw (a contact the reference run reports across such a gap is a touch
+  // within depth rounding; no finer frame could see them meet), so nothing more is drawn.
+  // Otherwise the blocks touch or intersect: a deep contact is the answer (refine() would find
+  // it after the conservative run, which sees every contact the reference run sees), and the
+  // rest are refined until a finer frame sees the contact.
   bool top(raster::DepthStencilDevice& device, const PairBlock& a, const PairBlock& b,
            const FrameSpec& frame) {
     noteFrame(frame, 0);
     ++out.runs;
     PairResult ref = collidePair(device, a, b, requestFor(frame));
     out.reference = ref;
+    if (convexHullGap(a.mesh().vertices, b.mesh().vertices) > gapTolerance(a.box(), b.box()))
+      return false;
     if (deep(ref) || (ref.collide && limits.maxLevel == 0)) {
       out.contact = std::move(ref);
       out.contactFrame = frame;
       return true;
     }
-    const Eigen::Vector3d finestGrowth =
-        conservativeGrowth(frame, a.box(), b.box()) /
-        std::pow(static_cast<double>(limits.factor), static_cast<double>(limits.maxLevel));
-    if (convexHullDistance(a.mesh().vertices, b.mesh().vertices) > 2.5 * finestGrowth.norm())
-      return false;
     return refine(device, a.mesh(), b.mesh(), std::nullopt, frame, 0, std::move(ref));
   }
 

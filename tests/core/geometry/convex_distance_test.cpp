@@ -52,18 +52,43 @@ TEST_CASE("convexHullDistance: random box pairs, turned together, keep their gap
     t.linear() = Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
     t.translation() = Eigen::Vector3d(place(rng), place(rng), place(rng));
     const double expected = boxGap(lo1, hi1, lo2, hi2);
-    const double d = convexHullDistance(boxPoints(lo1, hi1, t), boxPoints(lo2, hi2, t));
+    const auto a = boxPoints(lo1, hi1, t), b = boxPoints(lo2, hi2, t);
+    const double d = convexHullDistance(a, b);
+    const double gap = convexHullGap(a, b);
     INFO("trial " << trial);
     if (expected > 0.0) {
       REQUIRE(d == Approx(expected).margin(1e-9));
+      // The certified gap is a lower bound, and GJK's direction makes it tight.
+      REQUIRE(gap <= expected + 1e-12);
+      REQUIRE(gap == Approx(expected).margin(1e-9));
       ++apart;
     } else {
       REQUIRE(d == 0.0);
+      REQUIRE(gap == 0.0);
       ++overlapping;
     }
   }
   CHECK(apart > 1000);
   CHECK(overlapping > 100);
+}
+
+TEST_CASE("convexHullGap: a gap far below any pixel is certified; a touch is not", "[gjk]") {
+  // Two unit cubes face to face along x, 1e-7 apart, turned together: the gap survives.
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear() = Eigen::Quaterniond(0.9, 0.2, -0.3, 0.1).normalized().toRotationMatrix();
+  t.translation() = Eigen::Vector3d(0.4, -1.2, 2.5);
+  const Eigen::Vector3d lo(0, 0, 0), hi(1, 1, 1), shift(1.0 + 1e-7, 0.2, -0.1);
+  const auto a = boxPoints(lo, hi, t);
+  // A lower bound: GJK can stop on a face-to-face pair with its direction a few nanoradians
+  // off the face normal, which tilts the slab (here by about 3 %).
+  const double gap = convexHullGap(a, boxPoints(lo + shift, hi + shift, t));
+  CHECK(gap <= 1e-7 + 1e-13);
+  CHECK(gap > 0.9e-7);
+  // Touching exactly (before rounding) and overlapping by 1e-7: no gap above rounding.
+  const Eigen::Vector3d touch(1.0, 0.2, -0.1), overlap(1.0 - 1e-7, 0.2, -0.1);
+  CHECK(convexHullGap(a, boxPoints(lo + touch, hi + touch, t)) <= 1e-15);
+  CHECK(convexHullGap(a, boxPoints(lo + overlap, hi + overlap, t)) == 0.0);
+  CHECK_THROWS_AS(convexHullGap(a, std::vector<Eigen::Vector3d>{}), std::invalid_argument);
 }
 
 TEST_CASE("convexHullDistance: points, touching and overlapping blocks", "[gjk]") {

@@ -1,7 +1,7 @@
 // The adaptive and conservative modes on constructed pairs whose exact answer is known by
 // construction: a needle thinner than a pixel through a box (the reference misses it), boxes a
-// fraction of a pixel apart (the conservative mode reports them, the adaptive mode rules them
-// out, by their closest approach or in a finer frame), and a gap below any bound
+// fraction of a pixel apart or far closer (the conservative mode reports them, the adaptive mode
+// rules them out by GJK's certified gap), and faces touching where no pixel sees them
 // (apart_at_limit).
 
 #include <catch2/catch.hpp>
@@ -80,21 +80,18 @@ TEST_CASE("a needle between pixel centres: the reference misses it, the other mo
 
 TEST_CASE("blocks a third of a pixel apart across the view: conservative extra, adaptive apart") {
   const auto [a, b] = diagonalPair(0.125 / 3);
-  const Modes m = runModes(a, b);
-  CHECK_FALSE(m.reference);
-  CHECK(m.conservative);  // within a pixel: reported
-  CHECK(m.adaptive.verdict == core::PairVerdict::Apart);
-  // By the closest approach, in the request's frame: the gap, 0.042, is more than 2.5 times
-  // the growth of level 6 (0.09 / 4^6), so no frame down to the limit could see them meet.
-  CHECK(m.adaptive.deepestLevel == 0);
-  CHECK(m.adaptive.runs == 1);
-  // With one level allowed, 2.5 times that level's growth (0.056) exceeds the gap: a finer
-  // frame is drawn, and it rules the contact out.
-  core::RefineLimits oneLevel;
-  oneLevel.maxLevel = 1;
-  const Modes refined = runModes(a, b, oneLevel);
-  CHECK(refined.adaptive.verdict == core::PairVerdict::Apart);
-  CHECK(refined.adaptive.deepestLevel == 1);
+  for (const int maxLevel : {1, 6}) {
+    INFO("maxLevel " << maxLevel);
+    core::RefineLimits limits;
+    limits.maxLevel = maxLevel;
+    const Modes m = runModes(a, b, limits);
+    CHECK_FALSE(m.reference);
+    CHECK(m.conservative);  // within a pixel: reported
+    CHECK(m.adaptive.verdict == core::PairVerdict::Apart);
+    // By GJK's certified gap, 0.042, in the request's frame: nothing finer is drawn.
+    CHECK(m.adaptive.deepestLevel == 0);
+    CHECK(m.adaptive.runs == 1);
+  }
 }
 
 TEST_CASE("blocks two pixels apart: every mode says apart in the request's frame") {
@@ -108,9 +105,20 @@ TEST_CASE("blocks two pixels apart: every mode says apart in the request's frame
   CHECK(m.adaptive.runs == 1);
 }
 
-TEST_CASE("a gap below the finest level's pixel is apart_at_limit, with the region named") {
-  const double gap = 1e-6;  // the pixels of level 2, 0.125 / 16, are far wider
-  const auto [a, b] = diagonalPair(gap);
+TEST_CASE("a gap far below any pixel is apart in the request's frame, by GJK's certified gap") {
+  const auto [a, b] = diagonalPair(1e-6);  // the pixels of level 6, 0.125 / 4096, are wider
+  const Modes m = runModes(a, b);
+  CHECK_FALSE(m.reference);
+  CHECK(m.conservative);
+  CHECK(m.adaptive.verdict == core::PairVerdict::Apart);
+  CHECK(m.adaptive.deepestLevel == 0);
+  CHECK(m.adaptive.runs == 1);
+}
+
+TEST_CASE("faces touching across the view are apart_at_limit, with the region named") {
+  // Gap 0: the blocks touch on a face that stands along the view, which no pixel of any
+  // frame sees from its centre; no gap is certified, so the pair is refined to the limit.
+  const auto [a, b] = diagonalPair(0.0);
   core::RefineLimits limits;
   limits.maxLevel = 2;
   const Modes m = runModes(a, b, limits);
@@ -120,7 +128,7 @@ TEST_CASE("a gap below the finest level's pixel is apart_at_limit, with the regi
   CHECK(m.adaptive.deepestLevel == 2);
   CHECK(m.adaptive.runs <= limits.maxRuns);
   REQUIRE_FALSE(m.adaptive.unresolved.isEmpty());
-  // The gap's strip runs through the origin.
+  // The touching face runs through the origin.
   CHECK(m.adaptive.unresolved.min.x() <= 0.0);
   CHECK(m.adaptive.unresolved.max.x() >= 0.0);
   CHECK(m.adaptive.unresolved.min.y() <= 0.0);

@@ -11,10 +11,9 @@
 //   (or only a touch within depth rounding), the blocks are clipped to the small region the
 //   conservative contact spans and the pair is run again on frames with pixels `factor` times
 //   smaller, tile by tile, recursively, until the contact is seen, ruled out, or the limit is
-//   reached (apart_at_limit). In the request's frame the reference run comes first: a deep
-//   contact there is the answer, and blocks farther apart (by GJK) than 2.5 times the
-//   conservative growth of the finest level are apart without any refinement: no frame down
-//   to the limit can see them meet.
+//   reached (apart_at_limit). In the request's frame the reference run comes first; then
+//   blocks that GJK's certified gap (convexHullGap) proves apart are apart, whatever that run
+//   saw, and without any refinement; otherwise a deep contact there is the answer.
 
 #include <memory>
 #include <optional>
