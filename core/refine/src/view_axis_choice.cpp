@@ -69,10 +69,6 @@ Eigen::Vector3d leastOverlapDirection(const Obb& a, const Obb& b) {
   return best;
 }
 
-}  // namespace
-
-namespace {
-
 // Every rule, ViewAxisRule::Scene first; parsing and the list of names both come from here.
 constexpr ViewAxisRule kAllViewAxisRules[] = {ViewAxisRule::Scene, ViewAxisRule::FewestMor,
                                               ViewAxisRule::WidestOverlap, ViewAxisRule::Separating,
