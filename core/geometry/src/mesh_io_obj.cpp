@@ -28,10 +28,12 @@ namespace fs = std::filesystem;
 // What the line check learned: the positions of the `v` records (parsed with correct
 // rounding by std::from_chars) and the vertex count of every `f` record, in file order.
 // tinyobjloader keeps a face's count in an unsigned char, so a face of 256 or more vertices
-// would be misread from its counts alone; these are the true ones.
+// would be misread from its counts alone; these are the true ones. tinyObjText is the file as
+// tinyobjloader is given it (see tinyObjRecord).
 struct ObjLineSummary {
   std::vector<Eigen::Vector3d> positions;
   std::vector<std::size_t> faceSizes;
+  std::string tinyObjText;
 };
 
 // A `v` line: at least three coordinates, each finite; more values (w, a colour) are
@@ -83,45 +85,6 @@ long long checkObjFace(const fs::path& path, const std::vector<std::string_view>
   return largest;
 }
 
-// Checks every `v` and `f` line (tinyobjloader accepts malformed numbers silently, and
-// reports out-of-range indices without the line). Throws MeshError on the first problem.
-ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
-  ObjLineSummary summary;
-  struct ForwardReference {
-    std::size_t line;
-    long long index;  // 1-based, positive
-  };
-  std::vector<ForwardReference> largestPerFace;
-
-  forEachLine(text, [&](std::string_view raw, std::size_t line) {
-    const std::vector<std::string_view> tokens = tokenize(raw);
-    if (tokens.empty()) {
-      return;
-    }
-    if (tokens[0] == "v") {
-      summary.positions.push_back(checkObjVertex(path, tokens, line));
-    } else if (tokens[0] == "f") {
-      const long long largest = checkObjFace(path, tokens, line, summary.positions.size());
-      if (largest > 0) {
-        largestPerFace.push_back({line, largest});
-      }
-      summary.faceSizes.push_back(tokens.size() - 1);
-    }
-  });
-
-  const std::size_t vertexCount = summary.positions.size();
-  for (const ForwardReference& ref : largestPerFace) {
-    if (static_cast<unsigned long long>(ref.index) > vertexCount) {
-      failAt(path, ref.line, outOfRange(ref.index, vertexCount));
-    }
-  }
-  if (vertexCount > kMaxVertices) {
-    fail(path, "vertex count " + std::to_string(vertexCount) + " exceeds the limit of " +
-                   std::to_string(kMaxVertices));
-  }
-  return summary;
-}
-
 // What tinyobjloader is given of each record. It never parses a number of the file: its number
 // parser overflows a signed int on an exponent of ten digits (`0e2147483649`, undefined
 // behaviour, and finite to the line check), so every `v` line becomes `v 0 0 0` (the positions
@@ -143,30 +106,66 @@ TinyObjRecord tinyObjRecord(std::string_view keyword) {
   return TinyObjRecord::Blanked;
 }
 
-// The text as tinyobjloader is given it (tinyObjRecord): lines rewritten in place and padded
-// with spaces, so that they keep their numbers and the file its size. A `v` line that passed
-// the line check holds at least 7 characters, as many as its placeholder.
-std::string textForTinyObj(std::string_view text) {
+// Rewrites one line of tinyobjloader's copy in place (tinyObjRecord), padded with spaces so
+// that lines keep their numbers and the file its size. A `v` line that passed the line check
+// holds at least 7 characters, as many as its placeholder.
+void rewriteForTinyObj(std::string_view keyword, std::string::iterator at, std::size_t length) {
   static constexpr std::string_view kVertexPlaceholder = "v 0 0 0";
-  std::string kept(text);
-  forEachLine(text, [&](std::string_view raw, std::size_t /*line*/) {
-    const std::vector<std::string_view> tokens = tokenize(raw);
-    if (tokens.empty())
+  switch (tinyObjRecord(keyword)) {
+    case TinyObjRecord::Kept:
       return;
-    const auto at = kept.begin() + (raw.data() - text.data());
-    switch (tinyObjRecord(tokens[0])) {
-      case TinyObjRecord::Kept:
-        return;
-      case TinyObjRecord::Placeholder:
-        std::fill_n(std::copy(kVertexPlaceholder.begin(), kVertexPlaceholder.end(), at),
-                    raw.size() - kVertexPlaceholder.size(), ' ');
-        return;
-      case TinyObjRecord::Blanked:
-        std::fill_n(at, raw.size(), ' ');
-        return;
+    case TinyObjRecord::Placeholder:
+      std::fill_n(std::copy(kVertexPlaceholder.begin(), kVertexPlaceholder.end(), at),
+                  length - kVertexPlaceholder.size(), ' ');
+      return;
+    case TinyObjRecord::Blanked:
+      std::fill_n(at, length, ' ');
+      return;
+  }
+}
+
+// Checks every `v` and `f` line (tinyobjloader accepts malformed numbers silently, and
+// reports out-of-range indices without the line) and makes tinyobjloader's copy of the text in
+// the same pass. Throws MeshError on the first problem.
+ObjLineSummary checkObjLines(const fs::path& path, std::string_view text) {
+  ObjLineSummary summary;
+  summary.tinyObjText = std::string(text);
+  struct ForwardReference {
+    std::size_t line;
+    long long index;  // 1-based, positive
+  };
+  std::vector<ForwardReference> largestPerFace;
+
+  forEachLine(text, [&](std::string_view raw, std::size_t line) {
+    const std::vector<std::string_view> tokens = tokenize(raw);
+    if (tokens.empty()) {
+      return;
     }
+    if (tokens[0] == "v") {
+      summary.positions.push_back(checkObjVertex(path, tokens, line));
+    } else if (tokens[0] == "f") {
+      const long long largest = checkObjFace(path, tokens, line, summary.positions.size());
+      if (largest > 0) {
+        largestPerFace.push_back({line, largest});
+      }
+      summary.faceSizes.push_back(tokens.size() - 1);
+    }
+    // After the checks: a `v` line that passed them is long enough for its placeholder.
+    rewriteForTinyObj(tokens[0], summary.tinyObjText.begin() + (raw.data() - text.data()),
+                      raw.size());
   });
-  return kept;
+
+  const std::size_t vertexCount = summary.positions.size();
+  for (const ForwardReference& ref : largestPerFace) {
+    if (static_cast<unsigned long long>(ref.index) > vertexCount) {
+      failAt(path, ref.line, outOfRange(ref.index, vertexCount));
+    }
+  }
+  if (vertexCount > kMaxVertices) {
+    fail(path, "vertex count " + std::to_string(vertexCount) + " exceeds the limit of " +
+                   std::to_string(kMaxVertices));
+  }
+  return summary;
 }
 
 // Turns tinyobjloader's error text into our message form, using a "line N" it mentions.
@@ -185,7 +184,7 @@ std::string textForTinyObj(std::string_view text) {
   fail(path, text);
 }
 
-// tinyobjloader sees every `v` line as a placeholder (textForTinyObj): the positions come from
+// tinyobjloader sees every `v` line as a placeholder (tinyObjRecord): the positions come from
 // the line check, and the two must have counted the same vertices.
 void crossCheckVertexCount(const fs::path& path, const tinyobj::attrib_t& attrib,
                            const std::vector<Eigen::Vector3d>& positions) {
@@ -240,7 +239,7 @@ ParsedObj loadObj(const fs::path& path, const std::string& text) {
   std::vector<tinyobj::material_t> materials;
   std::string warnings;
   std::string errors;
-  std::istringstream stream(textForTinyObj(text));
+  std::istringstream stream(std::move(parsed.summary.tinyObjText));
   const bool ok = tinyobj::LoadObj(&attrib, &parsed.shapes, &materials, &warnings, &errors, &stream,
                                    /*readMatFn=*/nullptr, /*triangulate=*/false,
                                    /*default_vcols_fallback=*/false);
