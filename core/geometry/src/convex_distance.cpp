@@ -79,11 +79,17 @@ Closest closestOnSimplex(const std::vector<Eigen::Vector3d>& simplex) {
   return best;
 }
 
+// The rounding threshold of both answers, relative to the points' largest coordinate: a
+// thousand times the rounding of a dot product, far below any pixel.
+constexpr double kRelativeTolerance = 1e-12;
+
 // GJK's answer: the distance (an upper bound within rounding: the length of a point of
 // conv(A - B)) and that point, the direction from B towards A; zero when they intersect.
+// tiny is kRelativeTolerance of the points' largest coordinate.
 struct Approach {
   double distance = 0.0;
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+  double tiny = 0.0;
 };
 
 Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
@@ -94,20 +100,21 @@ Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eig
     scale = std::max(scale, p.cwiseAbs().maxCoeff());
   for (const Eigen::Vector3d& p : b)
     scale = std::max(scale, p.cwiseAbs().maxCoeff());
-  const double tiny = 1e-12 * std::max(scale, 1e-300);
+  const double tiny = kRelativeTolerance * std::max(scale, 1e-300);
 
   // v is always the point of conv(simplex) nearest the origin, so a new simplex can only
   // bring it nearer.
   Eigen::Vector3d v = a[0] - b[0];
   std::vector<Eigen::Vector3d> simplex{v};
-  const auto apart = [&] { return Approach{v.norm(), v}; };
+  const auto apart = [&] { return Approach{v.norm(), v, tiny}; };
+  const Approach touching{0.0, Eigen::Vector3d::Zero(), tiny};
   for (int iteration = 0; iteration < 200; ++iteration) {
     const double vv = v.norm();
     if (vv <= tiny)
-      return {};
+      return touching;
     const Eigen::Vector3d w = furthest(a, -v) - furthest(b, v);
     // No point of A - B lies nearer the origin along v than v itself (to rounding): done.
-    if (vv * vv - v.dot(w) <= 1e-12 * vv * vv)
+    if (vv * vv - v.dot(w) <= kRelativeTolerance * vv * vv)
       return apart();
     if (std::find(simplex.begin(), simplex.end(), w) != simplex.end())
       return apart();
@@ -116,7 +123,7 @@ Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eig
     if (c.simplex.empty())
       return apart();  // numerically stuck; v is the best found
     if (c.simplex.size() == 4)
-      return {};  // the origin lies inside the tetrahedron
+      return touching;  // the origin lies inside the tetrahedron
     if (c.point.norm() >= vv)
       return apart();  // no progress
     v = c.point;
@@ -144,7 +151,9 @@ double convexHullGap(std::span<const Eigen::Vector3d> a, std::span<const Eigen::
     lowA = std::min(lowA, p.dot(n));
   for (const Eigen::Vector3d& p : b)
     highB = std::max(highB, p.dot(n));
-  return std::max(0.0, lowA - highB);
+  // A slab no wider than the rounding of its ends is no proof.
+  const double width = lowA - highB;
+  return width > approach.tiny ? width : 0.0;
 }
 
 }  // namespace recode::core

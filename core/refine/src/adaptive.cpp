@@ -56,14 +56,6 @@ Aabb grown(Aabb box, const Eigen::Vector3d& by) {
 // ulps, so that grown and clipped geometry is never lost to double rounding.
 constexpr double kGrowthRoundingFloor = 1e-13;
 
-// A gap GJK certifies (convexHullGap) counts above this: 1e-12 of the blocks' largest
-// coordinate, a thousand times the rounding of the slab's ends.
-double gapTolerance(const Aabb& a, const Aabb& b) {
-  const double scale = std::max({a.min.cwiseAbs().maxCoeff(), a.max.cwiseAbs().maxCoeff(),
-                                 b.min.cwiseAbs().maxCoeff(), b.max.cwiseAbs().maxCoeff()});
-  return 1e-12 * scale;
-}
-
 }  // namespace
 
 Eigen::Vector3d conservativeGrowth(const FrameSpec& frame, const Aabb& a, const Aabb& b) {
@@ -159,7 +151,7 @@ struct AdaptivePairTester::Search {
     ++out.runs;
     PairResult ref = collidePair(device, a, b, requestFor(frame));
     out.reference = ref;
-    if (convexHullGap(a.mesh().vertices, b.mesh().vertices) > gapTolerance(a.box(), b.box()))
+    if (convexHullGap(a.mesh().vertices, b.mesh().vertices) > 0.0)
       return false;
     if (deep(ref) || (ref.collide && limits.maxLevel == 0)) {
       out.contact = std::move(ref);

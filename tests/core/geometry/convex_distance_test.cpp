@@ -84,9 +84,10 @@ TEST_CASE("convexHullGap: a gap far below any pixel is certified; a touch is not
   const double gap = convexHullGap(a, boxPoints(lo + shift, hi + shift, t));
   CHECK(gap <= 1e-7 + 1e-13);
   CHECK(gap > 0.9e-7);
-  // Touching exactly (before rounding) and overlapping by 1e-7: no gap above rounding.
+  // Touching exactly (before rounding) and overlapping by 1e-7: no gap above rounding, so no
+  // gap at all.
   const Eigen::Vector3d touch(1.0, 0.2, -0.1), overlap(1.0 - 1e-7, 0.2, -0.1);
-  CHECK(convexHullGap(a, boxPoints(lo + touch, hi + touch, t)) <= 1e-15);
+  CHECK(convexHullGap(a, boxPoints(lo + touch, hi + touch, t)) == 0.0);
   CHECK(convexHullGap(a, boxPoints(lo + overlap, hi + overlap, t)) == 0.0);
   CHECK_THROWS_AS(convexHullGap(a, std::vector<Eigen::Vector3d>{}), std::invalid_argument);
 }

@@ -17,11 +17,11 @@ namespace recode::core {
 
 // A lower bound of that distance that does not depend on GJK having converged: the width of
 // the empty slab between the two sets across GJK's closest direction (min over a of n.a minus
-// max over b of n.b), 0 when GJK finds them intersecting or the slab is empty. Each end is
-// rounded once per point, so a gap above about 1e-15 of the points' size is a true one: the
-// hulls are apart. Where GJK stops early (face-to-face pairs), its direction can be slightly
-// off and the bound a few per cent low, never high. Throws std::invalid_argument when either
-// set is empty.
+// max over b of n.b). It is 0 when GJK finds them intersecting, or when the slab is no wider
+// than 1e-12 of the points' largest coordinate (a thousand times the rounding of its ends), so
+// any positive answer proves the hulls apart. Where GJK stops early (face-to-face pairs), its
+// direction can be slightly off and the bound a few per cent low, never high. Throws
+// std::invalid_argument when either set is empty.
 [[nodiscard]] double convexHullGap(std::span<const Eigen::Vector3d> a,
                                    std::span<const Eigen::Vector3d> b);
 
