@@ -12,7 +12,8 @@ namespace {
 using Kind = AlgorithmSpec::Kind;
 
 // RECODE on every device (MIN MOR, as `recode run` defaults), its adaptive and conservative
-// modes on the CPU device, and the three peers.
+// modes and its adaptive view axis (`--view-axis adaptive`) on the CPU device, and the three
+// peers.
 std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec adaptive{"recode-adaptive", Kind::Recode, verify::RecodeDevice::Cpu,
                          core::MorMode::Min};
@@ -20,10 +21,14 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec conservative = adaptive;
   conservative.name = "recode-conservative";
   conservative.mode = core::PairMode::Conservative;
+  AlgorithmSpec viewAxis{"recode-view-axis", Kind::Recode, verify::RecodeDevice::Cpu,
+                         core::MorMode::Min};
+  viewAxis.viewAxisRule = core::ViewAxisRule::ThinOverlap;
   return {
       {"recode-cpu", Kind::Recode, verify::RecodeDevice::Cpu, core::MorMode::Min},
       adaptive,
       conservative,
+      viewAxis,
       {"recode-gl", Kind::Recode, verify::RecodeDevice::Gl, core::MorMode::Min},
       {"recode-gl-exact", Kind::Recode, verify::RecodeDevice::GlExact, core::MorMode::Min},
       {"recode-vulkan", Kind::Recode, verify::RecodeDevice::Vulkan, core::MorMode::Min},

@@ -9,6 +9,7 @@
 
 #include "recode/pair/frame.hpp"
 #include "recode/refine/pair_mode.hpp"
+#include "recode/refine/view_axis_choice.hpp"
 #include "recode/verify/recode_detector.hpp"
 
 namespace recode::app {
@@ -22,6 +23,8 @@ struct AlgorithmSpec {
   bool onScreen = false;  // Recode only: core::RunOptions::drawOnScreen (the paper's screen)
   // Recode only: core::RunOptions::pairMode (recode-adaptive, recode-conservative)
   core::PairMode mode = core::PairMode::Reference;
+  // Recode only: core::RunOptions::viewAxisRule (recode-view-axis)
+  core::ViewAxisRule viewAxisRule = core::ViewAxisRule::Scene;
 };
 
 struct Experiment {

@@ -25,6 +25,7 @@ std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
       options.drawOnScreen = spec.onScreen;
       options.threads = threads;
       options.pairMode = spec.mode;
+      options.viewAxisRule = spec.viewAxisRule;
       return std::make_unique<verify::RecodeDetector>(scene, options, spec.device, spec.name);
     }
     case AlgorithmSpec::Kind::FclGjk:

@@ -1,28 +1,40 @@
 cmake_minimum_required(VERSION 3.25)
-# Shows recode_check_bench can fail: copies the quick bench's output to OUT with one row's
-# `missed` raised by one (so found - extra + missed no longer equals truth) and, with
-# DROP=ON, without the recode-gl rows instead. Expects IN, OUT and optionally DROP.
+# Shows recode_check_bench can fail: copies the quick bench's output to OUT with one change,
+# chosen by KIND:
+# - miscounted: one bullet row's `missed` raised by one (found - extra + missed != truth);
+# - no-gl: without the recode-gl rows;
+# - view-axis: one recode-view-axis row's `pair_tests` raised by one (not recode-cpu's).
+# Expects IN, OUT and KIND.
 file(REMOVE_RECURSE ${OUT})
 file(COPY ${IN}/ DESTINATION ${OUT})
 file(STRINGS ${IN}/bench.csv lines)
+if(KIND STREQUAL "miscounted")
+  set(target "^comb,comb-rotate-aligned,.*,bullet,")
+  set(column 13)  # missed
+elseif(KIND STREQUAL "view-axis")
+  set(target "^comb,comb-rotate-aligned,.*,recode-view-axis,")
+  set(column 16)  # pair_tests
+elseif(NOT KIND STREQUAL "no-gl")
+  message(FATAL_ERROR "KIND must be miscounted, no-gl or view-axis, not '${KIND}'")
+endif()
 set(out "")
 set(done OFF)
 foreach(line IN LISTS lines)
-  if(DROP AND line MATCHES ",recode-gl,")
+  if(KIND STREQUAL "no-gl" AND line MATCHES ",recode-gl,")
     continue()
   endif()
-  if(NOT DROP AND NOT done AND line MATCHES "^comb,comb-rotate-aligned,.*,bullet,")
+  if(DEFINED target AND NOT done AND line MATCHES "${target}")
     string(REPLACE "," ";" fields "${line}")
-    list(GET fields 13 missed)
-    math(EXPR missed "${missed} + 1")
-    list(REMOVE_AT fields 13)
-    list(INSERT fields 13 ${missed})
+    list(GET fields ${column} value)
+    math(EXPR value "${value} + 1")
+    list(REMOVE_AT fields ${column})
+    list(INSERT fields ${column} ${value})
     list(JOIN fields "," line)
     set(done ON)
   endif()
   string(APPEND out "${line}\n")
 endforeach()
-if(NOT DROP AND NOT done)
-  message(FATAL_ERROR "no comb-rotate-aligned bullet row to corrupt in ${IN}/bench.csv")
+if(DEFINED target AND NOT done)
+  message(FATAL_ERROR "no row matching ${target} to corrupt in ${IN}/bench.csv")
 endif()
 file(WRITE ${OUT}/bench.csv "${out}")
