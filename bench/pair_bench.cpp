@@ -12,6 +12,7 @@
 #include "recode/geometry/triangle_bvh.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
+#include "recode/refine/block_growth.hpp"
 #include "recode/scene/builtin_scenes.hpp"
 
 namespace {
@@ -109,6 +110,21 @@ BENCHMARK(triangleHierarchyBuild)
     ->Arg(1024)
     ->ArgName("segments")
     ->Unit(benchmark::kMillisecond);
+
+// Growing one block by a box (three sweeps): what the conservative mode does to both blocks of
+// every pair test, and the adaptive mode to both whole blocks at every refined tile.
+void blockGrowth(benchmark::State& state) {
+  const int segments = static_cast<int>(state.range(0));
+  const core::TriangleMesh a = core::makeSphere(1.0, segments, segments / 2);
+  const Eigen::Vector3d half(0.01, 0.02, 0.005);
+  for (auto _ : state) {
+    const core::TriangleMesh grown = core::grownByBox(a, half);
+    benchmark::DoNotOptimize(grown.triangles.data());
+  }
+  state.counters["triangles"] = static_cast<double>(a.triangleCount());
+}
+
+BENCHMARK(blockGrowth)->Arg(32)->Arg(152)->ArgName("segments")->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
