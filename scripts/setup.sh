@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config clang-format
   libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libstb-dev
-  catch2 libbenchmark-dev libtbb-dev
+  catch2 libbenchmark-dev libtbb-dev libhwy-dev
   libembree-dev libcgal-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libvulkan-dev mesa-vulkan-drivers glslang-tools
   clang-14 libfuzzer-14-dev

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "recode/raster/block_coverage.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/invariants.hpp"
 
@@ -45,33 +46,25 @@ std::uint64_t clipMask(int bx, int by, const PixelRect& clip) {
 }
 
 // Per-pixel edge evaluation of the pixels of one block that lie inside `clip` (the rest would
-// be masked off by the caller anyway), stepping the exact integer edge values. A sub-pixel
-// triangle's clipped area is a pixel or two, so this visits that, not all 64.
+// be masked off by the caller anyway), from the exact integer edge values at the block's first
+// pixel. A sub-pixel triangle's clipped area is a pixel or two: the scalar loop visits just
+// those. A larger area goes to the SIMD test, a row of 8 pixels at a time; both give the same
+// bits (block_coverage.hpp).
 std::uint64_t coverageMask(const TriangleSetup& tri, int bx, int by, const PixelRect& clip) {
   const int c0 = std::max(clip.x0 - bx, 0), c1 = std::min(clip.x1 - bx, kBlockSize);
   const int r0 = std::max(clip.y0 - by, 0), r1 = std::min(clip.y1 - by, kBlockSize);
-  const std::int64_t x = pixelCentreFixed(bx + c0);
-  const std::int64_t y = pixelCentreFixed(by + r0);
-  std::int64_t rowStart[3], stepX[3], stepY[3];
+  const std::int64_t x = pixelCentreFixed(bx);
+  const std::int64_t y = pixelCentreFixed(by);
+  BlockEdges edges{};
   for (int k = 0; k < 3; ++k) {
-    rowStart[k] = tri.edges[k].at(x, y);
-    stepX[k] = tri.edges[k].a * kSubpixelOne;
-    stepY[k] = tri.edges[k].b * kSubpixelOne;
+    edges.origin[k] = tri.edges[k].at(x, y);
+    edges.stepX[k] = tri.edges[k].a * kSubpixelOne;
+    edges.stepY[k] = tri.edges[k].b * kSubpixelOne;
   }
-  std::uint64_t mask = 0;
-  for (int r = r0; r < r1; ++r) {
-    std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
-    for (int c = c0; c < c1; ++c) {
-      const bool inside = (e0 | e1 | e2) >= 0;  // all three non-negative
-      mask |= static_cast<std::uint64_t>(inside) << (r * kBlockSize + c);
-      e0 += stepX[0];
-      e1 += stepX[1];
-      e2 += stepX[2];
-    }
-    for (int k = 0; k < 3; ++k)
-      rowStart[k] += stepY[k];
-  }
-  return mask;
+  constexpr int kScalarArea = 4;  // pixels; measured in bench/raster_bench.cpp
+  if ((c1 - c0) * (r1 - r0) <= kScalarArea)
+    return blockCoverageScalar(edges, c0, c1, r0, r1);
+  return blockCoverageSimd(edges, c0, c1, r0, r1);
 }
 
 int alignDown(int v, int a) {
