@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "recode/raster/block_fragments.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/fragment_stage.hpp"
@@ -36,21 +37,19 @@ class FragmentWriter final : public TriangleSink {
     // The contract's z = (z0 + tx) + ty with tx depending only on the column and ty only on
     // the row: precomputing both per block gives the same roundings, so the same bits.
     const DepthPlane& p = *plane_;
-    double zx[kBlockSize], ty[kBlockSize];
+    BlockFragments block;
+    block.state = &state_;
+    block.ops = ops_;
     for (int k = 0; k < kBlockSize; ++k) {
-      zx[k] = p.z0 + p.dzdx * static_cast<double>(pixelCentreFixed(blockX + k) - p.x0);
-      ty[k] = p.dzdy * static_cast<double>(pixelCentreFixed(blockY + k) - p.y0);
+      block.zx[k] = p.z0 + p.dzdx * static_cast<double>(pixelCentreFixed(blockX + k) - p.x0);
+      block.ty[k] = p.dzdy * static_cast<double>(pixelCentreFixed(blockY + k) - p.y0);
     }
-    while (mask != 0) {
-      const int bit = __builtin_ctzll(mask);
-      mask &= mask - 1;
-      const int col = bit & (kBlockSize - 1), row = bit / kBlockSize;
-      const std::uint32_t z = quantizeDepth(zx[col] + ty[row]);
-      // Depth and stencil share the framebuffer's rectangle, so one index serves both.
-      const std::size_t i = depth_.index(blockX + col, blockY + row);
-      applyFragment(state_, *ops_, z, depth_.data[i], stencil_.data[i]);
-      ++fragments;
-    }
+    // Depth and stencil share the framebuffer's rectangle, so one index serves both.
+    const std::size_t origin = depth_.index(blockX, blockY);
+    block.depth = depth_.data.data() + origin;
+    block.stencil = stencil_.data.data() + origin;
+    block.stride = depth_.rect.width();
+    fragments += static_cast<std::uint64_t>(applyBlockFragments(block, mask));
   }
 
   std::uint64_t fragments = 0;
