@@ -83,11 +83,11 @@ void ApplyFullRow(const BlockFragments& b, int r) {
   const auto stencilRef = hn::Set(di, s.stencilRef & s.stencilValueMask);
   for (int j = 0; j < 8; j += lanes) {
     // quantizeDepth: 0 unless z > 0 (NaN too), kDepthMax from 1 on, else the scaled value
-    // rounded by adding and subtracting 1.5 * 2^52.
+    // rounded by adding and subtracting kRoundToIntegerBias.
     const auto z = hn::Add(hn::LoadU(dd, b.zx + j), hn::Set(dd, b.ty[r]));
-    constexpr double kRound = 6755399441055744.0;
+    const auto bias = hn::Set(dd, kRoundToIntegerBias);
     const auto scaled = hn::Mul(z, hn::Set(dd, static_cast<double>(kDepthMax)));
-    auto q = hn::Sub(hn::Add(scaled, hn::Set(dd, kRound)), hn::Set(dd, kRound));
+    auto q = hn::Sub(hn::Add(scaled, bias), bias);
     q = hn::IfThenElse(z >= hn::Set(dd, 1.0), hn::Set(dd, static_cast<double>(kDepthMax)), q);
     q = hn::IfThenElseZero(hn::Gt(z, hn::Zero(dd)), q);
     const auto incoming = hn::DemoteTo(di, q);  // an integer in [0, 2^24): exact

@@ -61,7 +61,9 @@ std::uint64_t coverageMask(const TriangleSetup& tri, int bx, int by, const Pixel
     edges.stepX[k] = tri.edges[k].a * kSubpixelOne;
     edges.stepY[k] = tri.edges[k].b * kSubpixelOne;
   }
-  constexpr int kScalarArea = 4;  // pixels; measured in bench/raster_bench.cpp
+  // Up to this many pixels the scalar loop; recode_raster_bench and whole runs timed 0, 4, 8
+  // and 64 here without a measurable difference.
+  constexpr int kScalarArea = 4;
   if ((c1 - c0) * (r1 - r0) <= kScalarArea)
     return blockCoverageScalar(edges, c0, c1, r0, r1);
   return blockCoverageSimd(edges, c0, c1, r0, r1);

@@ -25,6 +25,12 @@ namespace recode::raster {
   return static_cast<std::int64_t>(i) * kSubpixelOne + kSubpixelOne / 2;
 }
 
+// Adding and subtracting 1.5 * 2^52 rounds a double in [0, 2^51) to an integer with the
+// current rounding mode (round half to even by default), exactly like std::nearbyint but
+// without a libm call on x86-64 targets that lack SSE4.1 roundsd. quantizeDepth and its SIMD
+// twin (block_fragments.cpp) both round with it.
+inline constexpr double kRoundToIntegerBias = 6755399441055744.0;
+
 // Depth in [0, 1] (clamped; NaN is treated as 0) -> 24-bit unorm, round(z * (2^24 - 1)) with
 // round half to even, evaluated in double.
 [[nodiscard]] inline std::uint32_t quantizeDepth(double z) {
@@ -32,12 +38,8 @@ namespace recode::raster {
     return 0;
   if (z >= 1.0)
     return kDepthMax;
-  // Adding and subtracting 1.5 * 2^52 rounds a double in [0, 2^51) to an integer with the
-  // current rounding mode (round half to even by default), exactly like std::nearbyint but
-  // without a libm call on x86-64 targets that lack SSE4.1 roundsd.
-  constexpr double kRound = 6755399441055744.0;
   const double scaled = z * static_cast<double>(kDepthMax);
-  return static_cast<std::uint32_t>((scaled + kRound) - kRound);
+  return static_cast<std::uint32_t>((scaled + kRoundToIntegerBias) - kRoundToIntegerBias);
 }
 
 }  // namespace recode::raster
