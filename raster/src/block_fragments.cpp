@@ -21,7 +21,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // compare() (fragment_stage.hpp) on int32 lanes.
 template <class D, class V>
-hn::Mask<D> CompareLanes(D d, CompareFunc func, V incoming, V stored) {
+HWY_INLINE hn::Mask<D> CompareLanes(D d, CompareFunc func, V incoming, V stored) {
   switch (func) {
     case CompareFunc::Never:
       return hn::FirstN(d, 0);
@@ -45,7 +45,7 @@ hn::Mask<D> CompareLanes(D d, CompareFunc func, V incoming, V stored) {
 
 // applyStencilOp() on int32 lanes holding 0..255.
 template <class D, class V>
-V StencilOpLanes(D d, StencilOp op, V value, std::uint8_t ref) {
+HWY_INLINE V StencilOpLanes(D d, StencilOp op, V value, std::uint8_t ref) {
   const V one = hn::Set(d, 1), full = hn::Set(d, 0xFF);
   switch (op) {
     case StencilOp::Keep:
@@ -68,14 +68,28 @@ V StencilOpLanes(D d, StencilOp op, V value, std::uint8_t ref) {
   return value;
 }
 
-// Row r of the block, all 8 pixels covered.
-void ApplyFullRow(const BlockFragments& b, int r) {
-  const hn::CappedTag<double, 8> dd;
-  const hn::Rebind<std::int32_t, decltype(dd)> di;
-  const hn::Rebind<std::uint8_t, decltype(dd)> d8;
+// The state a fragment reads, copied out of the RenderState once per block: the buffer stores
+// go through a uint8_t pointer, which may alias anything, so fields read through the state
+// would be loaded again after every store.
+struct FragmentState {
+  CompareFunc stencilFunc;
+  CompareFunc depthFunc;
+  std::uint8_t stencilRef;
+  std::uint8_t stencilValueMask;
+  std::uint8_t stencilWriteMask;
+  bool depthWrite;
+  StencilOps ops;
+};
+
+// Row r of the block, all 8 pixels covered, `lanes` pixels per step: zx holds the row-invariant
+// part of each column's depth, ty the row's.
+template <class DD>
+HWY_INLINE void ApplyFullRow(DD dd, const FragmentState& s, const BlockFragments& b,
+                             const double* zx, double ty, int r) {
+  const hn::Rebind<std::int32_t, DD> di;
+  const hn::Rebind<std::uint8_t, DD> d8;
   const int lanes = static_cast<int>(hn::Lanes(dd));
-  const RenderState& s = *b.state;
-  const StencilOps& ops = *b.ops;
+  const StencilOps& ops = s.ops;
   auto* depthRow = reinterpret_cast<std::int32_t*>(b.depth + r * b.stride);
   std::uint8_t* stencilRow = b.stencil + r * b.stride;
   const auto valueMask = hn::Set(di, s.stencilValueMask);
@@ -84,7 +98,7 @@ void ApplyFullRow(const BlockFragments& b, int r) {
   for (int j = 0; j < 8; j += lanes) {
     // quantizeDepth: 0 unless z > 0 (NaN too), kDepthMax from 1 on, else the scaled value
     // rounded by adding and subtracting kRoundToIntegerBias.
-    const auto z = hn::Add(hn::LoadU(dd, b.zx + j), hn::Set(dd, b.ty[r]));
+    const auto z = hn::Add(hn::Load(dd, zx + j), hn::Set(dd, ty));
     const auto bias = hn::Set(dd, kRoundToIntegerBias);
     const auto scaled = hn::Mul(z, hn::Set(dd, static_cast<double>(kDepthMax)));
     auto q = hn::Sub(hn::Add(scaled, bias), bias);
@@ -96,14 +110,16 @@ void ApplyFullRow(const BlockFragments& b, int r) {
     const auto old = hn::PromoteTo(di, hn::LoadU(d8, stencilRow + j));
     const auto stencilPass = CompareLanes(di, s.stencilFunc, stencilRef, hn::And(old, valueMask));
     const auto depthPass = CompareLanes(di, s.depthFunc, incoming, stored);
-    const auto stencilFail = hn::Not(stencilPass);
-    const auto depthFail = hn::AndNot(depthPass, stencilPass);
-    const auto updated = hn::IfThenElse(
-        stencilFail, StencilOpLanes(di, ops.stencilFail, old, s.stencilRef),
-        hn::IfThenElse(depthFail, StencilOpLanes(di, ops.depthFail, old, s.stencilRef),
-                       StencilOpLanes(di, ops.depthPass, old, s.stencilRef)));
-    const auto written = hn::Or(hn::And(updated, writeMask), hn::AndNot(writeMask, old));
-    hn::StoreU(hn::DemoteTo(d8, written), d8, stencilRow + j);
+    if (s.stencilWriteMask != 0) {  // else no stencil bit can change
+      const auto stencilFail = hn::Not(stencilPass);
+      const auto depthFail = hn::AndNot(depthPass, stencilPass);
+      const auto updated = hn::IfThenElse(
+          stencilFail, StencilOpLanes(di, ops.stencilFail, old, s.stencilRef),
+          hn::IfThenElse(depthFail, StencilOpLanes(di, ops.depthFail, old, s.stencilRef),
+                         StencilOpLanes(di, ops.depthPass, old, s.stencilRef)));
+      const auto written = hn::Or(hn::And(updated, writeMask), hn::AndNot(writeMask, old));
+      hn::StoreU(hn::DemoteTo(d8, written), d8, stencilRow + j);
+    }
     if (s.depthWrite)
       hn::StoreU(hn::IfThenElse(hn::And(stencilPass, depthPass), incoming, stored), di,
                  depthRow + j);
@@ -111,13 +127,35 @@ void ApplyFullRow(const BlockFragments& b, int r) {
 }
 
 int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
+  const hn::CappedTag<double, 8> dd;
+  const int lanes = static_cast<int>(hn::Lanes(dd));
+  const DepthPlane& p = *b.plane;
+  const RenderState& state = *b.state;
+  const FragmentState s{state.stencilFunc,
+                        state.depthFunc,
+                        state.stencilRef,
+                        state.stencilValueMask,
+                        state.stencilWriteMask,
+                        state.depthWrite,
+                        *b.ops};
+  // zx[c] = z0 + dzdx (X_c - x0) for the block's columns, as DepthPlane::at makes it. X_c - x0
+  // is base + 256 c: integers far below 2^53, so the double sum is exact and equals the
+  // converted integer difference the one-pixel path multiplies.
+  alignas(64) double zx[8];
+  const auto base = hn::Set(dd, static_cast<double>(pixelCentreFixed(b.x) - p.x0));
+  const auto step = hn::Set(dd, static_cast<double>(kSubpixelOne));
+  for (int j = 0; j < 8; j += lanes) {
+    const auto offset = hn::Add(base, hn::Mul(hn::Iota(dd, static_cast<double>(j)), step));
+    hn::Store(hn::Add(hn::Set(dd, p.z0), hn::Mul(hn::Set(dd, p.dzdx), offset)), dd, zx + j);
+  }
   int applied = 0;
   while (mask != 0) {
     const int r = __builtin_ctzll(mask) / 8;
     const auto bits = static_cast<unsigned>((mask >> (8 * r)) & 0xFF);
     mask &= ~(std::uint64_t{0xFF} << (8 * r));
     if (bits == 0xFF) {
-      ApplyFullRow(b, r);
+      const double ty = p.dzdy * static_cast<double>(pixelCentreFixed(b.y + r) - p.y0);
+      ApplyFullRow(dd, s, b, zx, ty, r);
       applied += 8;
     } else {
       applied += applyRowFragments(b, r, bits);

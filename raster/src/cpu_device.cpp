@@ -34,16 +34,12 @@ class FragmentWriter final : public TriangleSink {
     RECODE_INVARIANT(depth_.contains(blockX, blockY),
                      "covered blocks start inside the framebuffer");
     RECODE_INVARIANT(mask != 0, "covered blocks have a non-empty coverage mask");
-    // The contract's z = (z0 + tx) + ty with tx depending only on the column and ty only on
-    // the row: precomputing both per block gives the same roundings, so the same bits.
-    const DepthPlane& p = *plane_;
     BlockFragments block;
     block.state = &state_;
     block.ops = ops_;
-    for (int k = 0; k < kBlockSize; ++k) {
-      block.zx[k] = p.z0 + p.dzdx * static_cast<double>(pixelCentreFixed(blockX + k) - p.x0);
-      block.ty[k] = p.dzdy * static_cast<double>(pixelCentreFixed(blockY + k) - p.y0);
-    }
+    block.plane = plane_;
+    block.x = blockX;
+    block.y = blockY;
     // Depth and stencil share the framebuffer's rectangle, so one index serves both.
     const std::size_t origin = depth_.index(blockX, blockY);
     block.depth = depth_.data.data() + origin;

@@ -1,8 +1,9 @@
 // The fragment stage over a block (block_fragments.hpp): the SIMD version against the
 // one-pixel-at-a-time version, byte for byte on both buffers, on every Highway target this
 // build runs here, over random states (every compare function and stencil op, random masks
-// and references), random stored values and depths around and beyond [0, 1] (NaN, infinities,
-// exact 0 and 1, the rounding midpoints), and coverage masks with full and partial rows. The
+// and references), random stored values, random depth planes anywhere in the guard band whose
+// depths lie around and beyond [0, 1] (NaN, infinities, exact 0 and 1, the rounding midpoints),
+// and coverage masks with full and partial rows. The
 // one-pixel version is applyFragment() itself, which the reference-model tests hold to the
 // contract.
 
@@ -44,6 +45,26 @@ double randomDepth(std::mt19937_64& rng) {
   }
 }
 
+// A plane's slope per sub-pixel step: flat (so the depths are exactly the special values above),
+// small enough to cross a few depth steps per pixel, steep enough to clamp, or not finite.
+double randomSlope(std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> kind(0, 9);
+  std::uniform_real_distribution<double> small(-1e-7, 1e-7), steep(-1e-2, 1e-2);
+  switch (kind(rng)) {
+    case 0:
+    case 1:
+    case 2:
+      return 0.0;
+    case 3:
+      return steep(rng);
+    case 4:
+      return kind(rng) < 5 ? std::numeric_limits<double>::infinity()
+                           : std::numeric_limits<double>::quiet_NaN();
+    default:
+      return small(rng);
+  }
+}
+
 StencilOp randomOp(std::mt19937_64& rng) {
   return static_cast<StencilOp>(std::uniform_int_distribution<int>(0, 7)(rng));
 }
@@ -58,6 +79,10 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
     std::mt19937_64 rng(1124);
     std::uniform_int_distribution<int> byte(0, 255), func(0, 7), coin(0, 1);
     std::uniform_int_distribution<std::uint32_t> storedDepth(0, kDepthMax);
+    // Vertex positions anywhere in the guard band, blocks anywhere in the largest framebuffer.
+    std::uniform_int_distribution<std::int64_t> position(-(std::int64_t{32768} << 8),
+                                                         std::int64_t{32768} << 8);
+    std::uniform_int_distribution<int> pixel(0, kMaxFramebufferSize / 8 - 1);
     long long fullRows = 0;
     for (int trial = 0; trial < 4000; ++trial) {
       RenderState state = initialRenderState(16, 16);
@@ -69,18 +94,24 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
       state.stencilWriteMask = static_cast<std::uint8_t>(coin(rng) ? 0xFF : byte(rng));
       const StencilOps ops{randomOp(rng), randomOp(rng), randomOp(rng)};
 
+      DepthPlane plane;
+      plane.x0 = position(rng);
+      plane.y0 = position(rng);
+      plane.z0 = randomDepth(rng);
+      plane.dzdx = randomSlope(rng);
+      plane.dzdy = randomSlope(rng);
       BlockFragments block;
       block.state = &state;
       block.ops = &ops;
-      for (int k = 0; k < 8; ++k) {
-        block.zx[k] = randomDepth(rng);
-        block.ty[k] = coin(rng) ? 0.0 : randomDepth(rng) - 0.5;
-      }
+      block.plane = &plane;
+      block.x = pixel(rng) * 8;
+      block.y = pixel(rng) * 8;
       std::vector<std::uint32_t> depth(8 * kStride);
       std::vector<std::uint8_t> stencil(8 * kStride);
       for (std::size_t i = 0; i < depth.size(); ++i) {
         // Some stored depths equal to the incoming one, so Equal and the ties are reached.
-        depth[i] = coin(rng) ? storedDepth(rng) : quantizeDepth(block.zx[i % kStride % 8]);
+        const int c = static_cast<int>(i % kStride % 8), r = static_cast<int>(i / kStride);
+        depth[i] = coin(rng) ? storedDepth(rng) : quantizeDepth(block.depthAt(c, r));
         stencil[i] = static_cast<std::uint8_t>(coin(rng) ? byte(rng) : state.stencilRef);
       }
       std::uint64_t mask = 0;

@@ -4,9 +4,9 @@
 // writes of fragment_stage.hpp. A block's pixels are distinct, so their fragments are
 // independent and may be applied in any order or all at once. Two implementations give the
 // same bytes: one pixel at a time, and a SIMD one (Google Highway, chosen at run time; optional)
-// that applies each fully covered row of 8 pixels in one to four vector steps and the other rows
-// one pixel at a time. Tests compare them on every target (forEachSimdTarget,
-// block_coverage.hpp).
+// that makes the columns' part of the depth once per block and applies each fully covered row
+// of 8 pixels in one to four vector steps, the other rows one pixel at a time. Tests compare
+// them on every target (forEachSimdTarget, block_coverage.hpp).
 
 #include <cstddef>
 #include <cstdint>
@@ -14,19 +14,24 @@
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/fragment_stage.hpp"
 #include "recode/raster/state.hpp"
+#include "recode/raster/triangle_setup.hpp"
 
 namespace recode::raster {
 
 struct BlockFragments {
   const RenderState* state = nullptr;
-  const StencilOps* ops = nullptr;  // the state's ops for the triangle's facing
-  // The contract's z = (z0 + tx) + ty split by pixel: zx[c] = z0 + dzdx (x_c - x0) for the
-  // block's column c, ty[r] = dzdy (y_r - y0) for its row r (the same roundings as per pixel).
-  double zx[8] = {};
-  double ty[8] = {};
+  const StencilOps* ops = nullptr;    // the state's ops for the triangle's facing
+  const DepthPlane* plane = nullptr;  // the triangle's depth plane
+  int x = 0;                          // window pixel of the block's pixel (0, 0)
+  int y = 0;
   std::uint32_t* depth = nullptr;   // the block's pixel (0, 0) in the depth buffer
   std::uint8_t* stencil = nullptr;  // and in the stencil buffer
   std::ptrdiff_t stride = 0;        // values from one row to the next, in both buffers
+
+  // The contract's z = (z0 + tx) + ty at pixel (c, r) of the block (DepthPlane::at).
+  [[nodiscard]] double depthAt(int c, int r) const {
+    return plane->at(pixelCentreFixed(x + c), pixelCentreFixed(y + r));
+  }
 };
 
 // Row r's fragments one pixel at a time, for the pixels in `bits` (bit c: column c).
@@ -37,7 +42,7 @@ inline int applyRowFragments(const BlockFragments& b, int r, unsigned bits) {
   while (bits != 0) {
     const int c = __builtin_ctz(bits);
     bits &= bits - 1;
-    applyFragment(*b.state, *b.ops, quantizeDepth(b.zx[c] + b.ty[r]), depth[c], stencil[c]);
+    applyFragment(*b.state, *b.ops, quantizeDepth(b.depthAt(c, r)), depth[c], stencil[c]);
     ++applied;
   }
   return applied;

@@ -10,9 +10,52 @@
 
 namespace recode::raster {
 
-// GL's compare and stencil-op tables.
-[[nodiscard]] bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored);
-[[nodiscard]] std::uint8_t applyStencilOp(StencilOp op, std::uint8_t value, std::uint8_t ref);
+// GL's compare and stencil-op tables. Inline: the one-pixel fragment path of every small
+// triangle runs them per pixel.
+[[nodiscard]] inline bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored) {
+  switch (func) {
+    case CompareFunc::Never:
+      return false;
+    case CompareFunc::Less:
+      return incoming < stored;
+    case CompareFunc::Equal:
+      return incoming == stored;
+    case CompareFunc::LEqual:
+      return incoming <= stored;
+    case CompareFunc::Greater:
+      return incoming > stored;
+    case CompareFunc::NotEqual:
+      return incoming != stored;
+    case CompareFunc::GEqual:
+      return incoming >= stored;
+    case CompareFunc::Always:
+      return true;
+  }
+  return false;
+}
+
+[[nodiscard]] inline std::uint8_t applyStencilOp(StencilOp op, std::uint8_t value,
+                                                 std::uint8_t ref) {
+  switch (op) {
+    case StencilOp::Keep:
+      return value;
+    case StencilOp::Zero:
+      return 0;
+    case StencilOp::Replace:
+      return ref;
+    case StencilOp::Incr:
+      return value == 0xFF ? value : static_cast<std::uint8_t>(value + 1);
+    case StencilOp::IncrWrap:
+      return static_cast<std::uint8_t>(value + 1);
+    case StencilOp::Decr:
+      return value == 0 ? value : static_cast<std::uint8_t>(value - 1);
+    case StencilOp::DecrWrap:
+      return static_cast<std::uint8_t>(value - 1);
+    case StencilOp::Invert:
+      return static_cast<std::uint8_t>(~value);
+  }
+  return value;
+}
 
 // The bits of `updated` under the write mask, the rest of `old`: how GL writes the stencil,
 // for fragments and clears alike.
