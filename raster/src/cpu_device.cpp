@@ -7,6 +7,7 @@
 
 #include "recode/raster/block_fragments.hpp"
 #include "recode/raster/device_checks.hpp"
+#include "recode/raster/draw_recording.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/fragment_stage.hpp"
 #include "recode/raster/invariants.hpp"
@@ -26,8 +27,13 @@ class FragmentWriter final : public TriangleSink {
 
   void beginTriangle(const TriangleSetup& triangle,
                      const std::array<FixedVertex, 3>& /*snapped*/) override {
-    plane_ = &triangle.depth;
-    ops_ = &state_.opsFor(triangle.frontFacing);
+    begin(triangle.depth, triangle.frontFacing);
+  }
+
+  // The same for a recorded triangle (a replay).
+  void begin(const DepthPlane& plane, bool frontFacing) {
+    plane_ = &plane;
+    ops_ = &state_.opsFor(frontFacing);
   }
 
   void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
@@ -56,6 +62,29 @@ class FragmentWriter final : public TriangleSink {
   PixelBuffer<std::uint8_t>& stencil_;
   const DepthPlane* plane_ = nullptr;
   const StencilOps* ops_ = nullptr;
+};
+
+// The fragment writer of a draw being recorded: each triangle and block goes to the recording
+// too, in the order the writer gets them.
+class RecordingWriter final : public TriangleSink {
+ public:
+  RecordingWriter(FragmentWriter& writer, DrawRecording& recording)
+      : writer_(writer), recording_(recording) {}
+
+  void beginTriangle(const TriangleSetup& triangle,
+                     const std::array<FixedVertex, 3>& snapped) override {
+    recording_.addTriangle(triangle);
+    writer_.beginTriangle(triangle, snapped);
+  }
+
+  void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
+    recording_.addBlock(blockX, blockY, mask);
+    writer_.coveredBlock(blockX, blockY, mask);
+  }
+
+ private:
+  FragmentWriter& writer_;
+  DrawRecording& recording_;
 };
 
 }  // namespace
@@ -113,15 +142,53 @@ void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,
 }
 
 void CpuDevice::drawMesh(const TriangleSource& source) {
+  const std::uint64_t key = source.contentKey();
+  for (const DrawRecording& recording : recordings_)
+    if (recording.serves(key, state_.scissor))
+      return replay(recording);
   // Triangles that cover no pixel centre in the scissor write nothing, so leaving them out
   // changes no bit; a source that cannot tell (or whose full draw would be refused) is drawn
   // whole, so its refusal is the full draw's.
   const std::optional<TriangleDraw> near = source.trianglesMeeting(state_.scissor);
-  if (!near) {
-    const TriangleDraw all = source.allTriangles();
-    return drawTriangles(all.vertices, all.indices);
+  const TriangleDraw draw = near ? *near : source.allTriangles();
+  // Only a draw that culls nothing holds every triangle a later draw may need.
+  if (key == 0 || state_.cull != CullMode::None)
+    return drawTriangles(draw.vertices, draw.indices);
+  checkDraw(draw.vertices, draw.indices);
+  DrawRecording& recording = recordings_[nextRecording_];
+  nextRecording_ = (nextRecording_ + 1) % recordings_.size();
+  recording.start(key, state_.scissor);
+  FragmentWriter writer(state_, depth_, stencil_);
+  RecordingWriter recorder(writer, recording);
+  raster::drawTriangles(state_, draw.vertices, draw.indices, recorder, &counters_);
+  counters_.fragments += writer.fragments;
+  recording.finish();
+}
+
+void CpuDevice::replay(const DrawRecording& recording) {
+  // The recorded blocks lie inside the recorded scissor; only those inside the current one are
+  // this draw's (the same pixels a fresh traversal of the smaller rectangle would visit).
+  const PixelRect& scissor = state_.scissor;
+  FragmentWriter writer(state_, depth_, stencil_);
+  const std::vector<DrawRecording::Triangle>& triangles = recording.triangles();
+  const std::vector<DrawRecording::Block>& blocks = recording.blocks();
+  counters_.trianglesReplayed += triangles.size();
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const DrawRecording::Triangle& triangle = triangles[t];
+    if (state_.culls(triangle.frontFacing)) {
+      ++counters_.trianglesCulled;
+      continue;
+    }
+    writer.begin(triangle.plane, triangle.frontFacing);
+    const std::size_t end = t + 1 < triangles.size() ? triangles[t + 1].firstBlock : blocks.size();
+    for (std::size_t k = triangle.firstBlock; k < end; ++k) {
+      const DrawRecording::Block& block = blocks[k];
+      const std::uint64_t mask = block.mask & blockMaskInside(block.x, block.y, scissor);
+      if (mask != 0)
+        writer.coveredBlock(block.x, block.y, mask);
+    }
   }
-  drawTriangles(near->vertices, near->indices);
+  counters_.fragments += writer.fragments;
 }
 
 std::vector<std::uint8_t> CpuDevice::readStencil(const PixelRect& rect) const {

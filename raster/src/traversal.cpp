@@ -32,19 +32,6 @@ RegionTest testRegion(const TriangleSetup& tri, int px, int py, int size) {
   return allInside ? RegionTest::Accept : RegionTest::Partial;
 }
 
-// Bits of the 8x8 block at (bx, by) whose pixels lie inside `clip`.
-std::uint64_t clipMask(int bx, int by, const PixelRect& clip) {
-  const int c0 = std::max(clip.x0 - bx, 0), c1 = std::min(clip.x1 - bx, kBlockSize);
-  const int r0 = std::max(clip.y0 - by, 0), r1 = std::min(clip.y1 - by, kBlockSize);
-  if (c0 >= c1 || r0 >= r1)
-    return 0;
-  const std::uint64_t rowBits = ((std::uint64_t{1} << (c1 - c0)) - 1) << c0;
-  std::uint64_t mask = 0;
-  for (int r = r0; r < r1; ++r)
-    mask |= rowBits << (r * kBlockSize);
-  return mask;
-}
-
 // Per-pixel edge evaluation of the pixels of one block that lie inside `clip` (the rest would
 // be masked off by the caller anyway), from the exact integer edge values at the block's first
 // pixel. A sub-pixel triangle's clipped area is a pixel or two: the scalar loop visits just
@@ -75,6 +62,18 @@ int alignDown(int v, int a) {
 
 }  // namespace
 
+std::uint64_t blockMaskInside(int x, int y, const PixelRect& rect) {
+  const int c0 = std::max(rect.x0 - x, 0), c1 = std::min(rect.x1 - x, kBlockSize);
+  const int r0 = std::max(rect.y0 - y, 0), r1 = std::min(rect.y1 - y, kBlockSize);
+  if (c0 >= c1 || r0 >= r1)
+    return 0;
+  const std::uint64_t rowBits = ((std::uint64_t{1} << (c1 - c0)) - 1) << c0;
+  std::uint64_t mask = 0;
+  for (int r = r0; r < r1; ++r)
+    mask |= rowBits << (r * kBlockSize);
+  return mask;
+}
+
 void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink& sink,
                       TraversalStats* stats) {
   RECODE_INVARIANT(clip.x0 >= 0 && clip.y0 >= 0 && clip.x1 <= kMaxFramebufferSize &&
@@ -101,7 +100,7 @@ void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink
       const int bx1 = std::min(tx + kTileSize, area.x1);
       for (int by = by0; by < by1; by += kBlockSize) {
         for (int bx = bx0; bx < bx1; bx += kBlockSize) {
-          const std::uint64_t inClip = clipMask(bx, by, area);
+          const std::uint64_t inClip = blockMaskInside(bx, by, area);
           if (inClip == 0)
             continue;
           std::uint64_t mask;

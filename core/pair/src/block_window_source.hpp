@@ -33,6 +33,9 @@ class BlockWindowSource final : public raster::TriangleSource {
   [[nodiscard]] raster::TriangleDraw allTriangles() const override;
   [[nodiscard]] std::optional<raster::TriangleDraw> trianglesMeeting(
       const raster::PixelRect& rect) const override;
+  // The block and the view are fixed for the source's life, so its draws are too: a device may
+  // replay the first for the next (raster::DrawRecording).
+  [[nodiscard]] std::uint64_t contentKey() const override { return key_; }
 
  private:
   // Queries the hierarchy for `rect`: the base list every smaller rectangle is filtered from.
@@ -42,6 +45,7 @@ class BlockWindowSource final : public raster::TriangleSource {
 
   const PairBlock& block_;
   const OrthoView& view_;
+  const std::uint64_t key_ = raster::newTriangleSourceKey();
   bool culls_ = false;
   std::array<raster::WindowVertex, 2> corners_{};
   // The whole block, made on first use.

@@ -3,11 +3,14 @@
 // memory and a RenderState, drawn by the raster pipeline (pipeline.hpp). Single-threaded and
 // deterministic.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "recode/raster/device.hpp"
+#include "recode/raster/draw_recording.hpp"
 #include "recode/raster/pipeline.hpp"
 #include "recode/raster/pixel_buffer.hpp"
 #include "recode/raster/state.hpp"
@@ -34,7 +37,11 @@ class CpuDevice final : public DepthStencilDevice {
   void setCullMode(CullMode mode) override { state_.cull = mode; }
   void drawTriangles(std::span<const WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override;
-  // Draws source.trianglesMeeting(scissor) when the source offers it, else the whole block.
+  // Draws source.trianglesMeeting(scissor) when the source offers it, else the whole block. A
+  // source with a content key is recorded when its draw culls nothing, and a later draw of it
+  // under a scissor inside the recorded one replays the recording (draw_recording.hpp): the
+  // same fragments in the same order, without snapping, setup or traversal. The last two
+  // sources drawn are kept (a pair test's two blocks).
   void drawMesh(const TriangleSource& source) override;
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const PixelRect& rect) const override;
   [[nodiscard]] std::vector<std::uint32_t> readDepth(const PixelRect& rect) const override;
@@ -45,18 +52,26 @@ class CpuDevice final : public DepthStencilDevice {
   [[nodiscard]] const RenderState& state() const { return state_; }
   [[nodiscard]] const PixelRect& scissor() const { return state_.scissor; }
 
-  // Counters since construction (or the last reset): useful for benchmarks and teaching.
+  // Counters since construction (or the last reset): useful for benchmarks and teaching. The
+  // pipeline's count the triangles that were snapped and set up; a replayed draw adds its
+  // recorded triangles to trianglesReplayed instead, and those its cull mode discards to
+  // trianglesCulled.
   struct Counters : PipelineCounters {
     std::uint64_t fragments = 0;
+    std::uint64_t trianglesReplayed = 0;
   };
   [[nodiscard]] const Counters& counters() const { return counters_; }
   void resetCounters() { counters_ = {}; }
 
  private:
+  void replay(const DrawRecording& recording);
+
   PixelBuffer<std::uint32_t> depth_;  // the whole framebuffer; its rectangle gives the size
   PixelBuffer<std::uint8_t> stencil_;
   RenderState state_;
   Counters counters_;
+  std::array<DrawRecording, 2> recordings_;
+  std::size_t nextRecording_ = 0;  // the one the next recorded draw overwrites
 };
 
 }  // namespace recode::raster

@@ -32,6 +32,9 @@ struct TraversalStats {
   std::uint64_t blocksPartial = 0;
 };
 
+// Bits of the 8x8 block whose bottom-left pixel is (x, y) that lie inside `rect`.
+[[nodiscard]] std::uint64_t blockMaskInside(int x, int y, const PixelRect& rect);
+
 // Visits every pixel of `clip` whose centre the triangle covers under the fill rule, once.
 void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink& sink,
                       TraversalStats* stats = nullptr);

@@ -39,6 +39,16 @@ class TriangleSource {
     (void)rect;
     return std::nullopt;
   }
+
+  // Optional: a number that names this source's triangles for as long as it lives, unique in
+  // the process (newTriangleSourceKey). A source that returns one promises that every draw it
+  // gives, whole or met, has the same triangles with the same window coordinates each time it is
+  // asked, so a device may keep what one draw of it rasterized for the next (CpuDevice does:
+  // raster/draw_recording.hpp). 0, the default, promises nothing.
+  [[nodiscard]] virtual std::uint64_t contentKey() const { return 0; }
 };
+
+// A key no other call in this process returns (never 0), for TriangleSource::contentKey.
+[[nodiscard]] std::uint64_t newTriangleSourceKey();
 
 }  // namespace recode::raster

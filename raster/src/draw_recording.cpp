@@ -1,0 +1,51 @@
+// A draw's rasterized triangles and blocks, kept for replays (draw_recording.hpp).
+#include "recode/raster/draw_recording.hpp"
+
+#include <algorithm>
+
+namespace recode::raster {
+
+void DrawRecording::start(std::uint64_t key, const PixelRect& scissor) {
+  clear();
+  key_ = key;
+  scissor_ = scissor;
+}
+
+void DrawRecording::addTriangle(const TriangleSetup& triangle) {
+  if (overflowed_)
+    return;
+  triangles_.push_back(
+      {triangle.depth, triangle.frontFacing, static_cast<std::uint32_t>(blocks_.size())});
+}
+
+void DrawRecording::addBlock(int x, int y, std::uint64_t mask) {
+  if (overflowed_)
+    return;
+  if (blocks_.size() >= kMaxBlocks) {
+    overflowed_ = true;
+    return;
+  }
+  blocks_.push_back({x, y, mask});
+}
+
+void DrawRecording::finish() {
+  complete_ = !overflowed_;
+}
+
+void DrawRecording::clear() {
+  key_ = 0;
+  complete_ = false;
+  overflowed_ = false;
+  triangles_.clear();
+  blocks_.clear();
+}
+
+bool DrawRecording::serves(std::uint64_t key, const PixelRect& scissor) const {
+  if (key == 0 || key != key_ || !complete_)
+    return false;
+  // An empty scissor draws nothing whatever was recorded.
+  return scissor.empty() || (scissor.x0 >= scissor_.x0 && scissor.y0 >= scissor_.y0 &&
+                             scissor.x1 <= scissor_.x1 && scissor.y1 <= scissor_.y1);
+}
+
+}  // namespace recode::raster
