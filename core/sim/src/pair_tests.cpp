@@ -164,4 +164,25 @@ std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
   return outcomes;
 }
 
+void PairTestRunner::forEach(std::size_t n, const std::function<void(std::size_t)>& body) {
+  if (!impl_->arena) {
+    for (std::size_t i = 0; i < n; ++i)
+      body(i);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(n);
+  impl_->arena->execute([&] {
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+      try {
+        body(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    });
+  });
+  for (const std::exception_ptr& error : errors)
+    if (error)
+      std::rethrow_exception(error);
+}
+
 }  // namespace recode::core

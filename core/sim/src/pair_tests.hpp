@@ -6,6 +6,7 @@
 // same bytes as a sequential run's.
 
 #include <exception>
+#include <functional>
 #include <map>
 #include <memory>
 #include <utility>
@@ -63,6 +64,10 @@ class PairTestRunner {
   // lane stops at its first error, and the caller takes the first error in task order (a test
   // a lane skipped comes after an error).
   [[nodiscard]] std::vector<PairOutcome> run(const std::vector<PairTask>& tasks, std::size_t count);
+
+  // Runs body(i) for i in [0, n) on the runner's threads (in order on the sequential path),
+  // then rethrows what the lowest i threw, if any: the error a sequential loop would meet first.
+  void forEach(std::size_t n, const std::function<void(std::size_t)>& body);
 
   static constexpr long long kTestsPerExtraDevice = 32;
 

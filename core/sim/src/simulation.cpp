@@ -9,6 +9,7 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -39,20 +40,37 @@ std::vector<Aabb> updateRootBoxes(std::vector<ObjectTree>& objects) {
   return roots;
 }
 
-// The leaves drawn this frame, each made once (LeafBlock: world mesh, triangle hierarchy, pose).
+// The leaves drawn this frame, each made once (LeafBlock: world mesh, triangle hierarchy, pose):
+// first listed as the pair tests need them, then all made at once, on the runner's threads
+// (making a leaf transforms its whole mesh and, the first time, builds its hierarchy).
 class LeafBlocks {
  public:
   explicit LeafBlocks(const std::vector<ObjectTree>& objects) : objects_(objects) {}
 
-  const PairBlock& of(int object, int leaf) {
-    const ObjectTree& tree = objects_[static_cast<std::size_t>(object)];
-    // A map node keeps its LeafBlock in place, as the block's reference to its mesh needs.
-    return blocks_.try_emplace({object, leaf}, tree, leaf).first->second.block;
+  // The slot of a leaf a pair test needs.
+  std::size_t need(int object, int leaf) {
+    const auto [entry, added] = slots_.try_emplace({object, leaf}, keys_.size());
+    if (added)
+      keys_.emplace_back(object, leaf);
+    return entry->second;
   }
+
+  // Makes every leaf listed; rethrows the first error in listing order.
+  void make(PairTestRunner& runner) {
+    blocks_.resize(keys_.size());
+    runner.forEach(keys_.size(), [this](std::size_t i) {
+      const auto [object, leaf] = keys_[i];
+      blocks_[i] = std::make_unique<LeafBlock>(objects_[static_cast<std::size_t>(object)], leaf);
+    });
+  }
+
+  [[nodiscard]] const PairBlock* at(std::size_t slot) const { return &blocks_[slot]->block; }
 
  private:
   const std::vector<ObjectTree>& objects_;
-  std::map<std::pair<int, int>, LeafBlock> blocks_;
+  std::map<std::pair<int, int>, std::size_t> slots_;
+  std::vector<std::pair<int, int>> keys_;           // per slot
+  std::vector<std::unique_ptr<LeafBlock>> blocks_;  // per slot, made by make()
 };
 
 // Counts one pair test into the report; a contact keeps its result (the runner has cleared
@@ -195,6 +213,7 @@ FrameReport Simulation::runFrame(int frame) {
   // the descent's leaf pairs), and read back in that order whatever threads ran them.
   LeafBlocks blocks(objects_);
   std::vector<PairTask> tasks;
+  std::vector<std::pair<std::size_t, std::size_t>> taskBlocks;  // the slots of each task's two
   std::vector<LeafPair> leafPairs;
   for (const auto& [ia, ib] : candidates) {
     const ObjectTree& a = objects_[static_cast<std::size_t>(ia)];
@@ -207,7 +226,8 @@ FrameReport Simulation::runFrame(int frame) {
       throw std::invalid_argument(
           tooManyPairTests(frame, tasks.size() + leafPairs.size(), options_.maxPairTestsPerFrame));
     for (const LeafPair& lp : leafPairs) {
-      PairTask task{ia, ib, lp, &blocks.of(ia, lp.leafA), &blocks.of(ib, lp.leafB), {}, true};
+      taskBlocks.emplace_back(blocks.need(ia, lp.leafA), blocks.need(ib, lp.leafB));
+      PairTask task{ia, ib, lp, nullptr, nullptr, {}, true};
       try {
         task.request.frame = leafPairFrame(a.nodes()[static_cast<std::size_t>(lp.leafA)],
                                            b.nodes()[static_cast<std::size_t>(lp.leafB)]);
@@ -219,6 +239,12 @@ FrameReport Simulation::runFrame(int frame) {
       task.keepContactPoints = options_.keepContactPoints;
       tasks.push_back(task);
     }
+  }
+
+  blocks.make(*pairTests_);
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    tasks[i].blockA = blocks.at(taskBlocks[i].first);
+    tasks[i].blockB = blocks.at(taskBlocks[i].second);
   }
 
   const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(tasks);
