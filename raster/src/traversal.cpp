@@ -63,15 +63,18 @@ int alignDown(int v, int a) {
 }  // namespace
 
 std::uint64_t blockMaskInside(int x, int y, const PixelRect& rect) {
+  if (x >= rect.x0 && y >= rect.y0 && x + kBlockSize <= rect.x1 && y + kBlockSize <= rect.y1)
+    return ~std::uint64_t{0};  // the common case: the whole block
   const int c0 = std::max(rect.x0 - x, 0), c1 = std::min(rect.x1 - x, kBlockSize);
   const int r0 = std::max(rect.y0 - y, 0), r1 = std::min(rect.y1 - y, kBlockSize);
   if (c0 >= c1 || r0 >= r1)
     return 0;
   const std::uint64_t rowBits = ((std::uint64_t{1} << (c1 - c0)) - 1) << c0;
-  std::uint64_t mask = 0;
-  for (int r = r0; r < r1; ++r)
-    mask |= rowBits << (r * kBlockSize);
-  return mask;
+  // Bit 0 of each row in [r0, r1); times rowBits (below 256) copies rowBits into those rows.
+  const int rows = r1 - r0;
+  const std::uint64_t span = rows == kBlockSize ? ~std::uint64_t{0}
+                                                : ((std::uint64_t{1} << (8 * rows)) - 1) << (8 * r0);
+  return rowBits * (span & 0x0101010101010101ULL);
 }
 
 void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink& sink,

@@ -113,3 +113,35 @@ TEST_CASE("traversal rejects and accepts whole tiles and blocks", "[traversal]")
   CHECK(t.blocksPartial == 64);  // the 8x8 blocks on the diagonal
   CHECK(dev.counters().fragments == 512u * 511u / 2u);
 }
+
+TEST_CASE("a block's mask inside a rectangle is its pixels inside it, pixel by pixel",
+          "[raster][traversal]") {
+  // Every rectangle with corners from -2 to 21 (empty, inverted and partial ones included)
+  // against the blocks at 0, 8 and 16 on both axes: the shortcut for a whole block and the
+  // row-copying product against a direct test of each pixel.
+  const auto direct = [](int x, int y, const PixelRect& rect) {
+    std::uint64_t mask = 0;
+    for (int r = 0; r < 8; ++r)
+      for (int c = 0; c < 8; ++c)
+        if (x + c >= rect.x0 && x + c < rect.x1 && y + r >= rect.y0 && y + r < rect.y1)
+          mask |= std::uint64_t{1} << (r * 8 + c);
+    return mask;
+  };
+  long long compared = 0, whole = 0;
+  for (int x0 = -2; x0 < 20; ++x0)
+    for (int x1 = x0 - 1; x1 < 22; ++x1)
+      for (int y0 = -2; y0 < 20; ++y0)
+        for (int y1 = y0 - 1; y1 < 22; ++y1)
+          for (int bx = 0; bx <= 16; bx += 8)
+            for (int by = 0; by <= 16; by += 8) {
+              const PixelRect rect{x0, y0, x1, y1};
+              const std::uint64_t expected = direct(bx, by, rect);
+              if (blockMaskInside(bx, by, rect) != expected)
+                FAIL("block (" << bx << ", " << by << ") in [" << x0 << ", " << x1 << ") x ["
+                               << y0 << ", " << y1 << ")");
+              ++compared;
+              whole += expected == ~std::uint64_t{0};
+            }
+  CHECK(compared == 915849);
+  CHECK(whole > 0);
+}
