@@ -1,7 +1,6 @@
 #include "recode/geometry/triangle_bvh.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -11,40 +10,52 @@ namespace {
 
 constexpr std::uint32_t kLeafTriangles = 4;
 
-struct Builder {
-  const std::vector<Aabb>& boxes;
-  const std::vector<Eigen::Vector3d>& centres;
-  std::vector<std::uint32_t>& order;
+// A triangle as the builder sorts it: its box centre next to its index, so that the median
+// splits move and compare contiguous records rather than chase indices.
+struct Item {
+  Eigen::Vector3d centre;
+  std::uint32_t triangle = 0;
+};
 
-  // Builds the node over order[first, first + count) at the end of `nodes`, depth first.
+struct Builder {
+  const std::vector<Aabb>& boxes;  // per triangle
+  std::vector<Item>& items;
+
+  // Builds the node over items[first, first + count) at the end of `nodes`, depth first. A
+  // leaf's box is its triangles' boxes, an inner node's its two children's: the same union.
   template <class Node>
   void build(std::vector<Node>& nodes, std::uint32_t first, std::uint32_t count, int depth) {
     const std::size_t self = nodes.size();
     nodes.push_back({});
-    Aabb box, around;
-    for (std::uint32_t k = first; k < first + count; ++k) {
-      box.extend(boxes[order[k]]);
-      around.extend(centres[order[k]]);
-    }
-    nodes[self].box = box;
     // Depth is bounded (the traversal's stack is 64 deep): median splits halve the count, so
     // 40 levels hold far more triangles than an index can name.
     if (count <= kLeafTriangles || depth >= 40) {
+      Aabb box;
+      for (std::uint32_t k = first; k < first + count; ++k)
+        box.extend(boxes[items[k].triangle]);
+      nodes[self].box = box;
       nodes[self].first = first;
       nodes[self].count = count;
       return;
     }
+    Aabb around;
+    for (std::uint32_t k = first; k < first + count; ++k)
+      around.extend(items[k].centre);
     int axis = 0;
     around.extent().maxCoeff(&axis);
     const std::uint32_t half = count / 2;
-    std::nth_element(order.begin() + first, order.begin() + first + half,
-                     order.begin() + first + count, [&](std::uint32_t a, std::uint32_t b) {
-                       const double ca = centres[a][axis], cb = centres[b][axis];
-                       return ca < cb || (ca == cb && a < b);
+    std::nth_element(items.begin() + first, items.begin() + first + half,
+                     items.begin() + first + count, [axis](const Item& a, const Item& b) {
+                       const double ca = a.centre[axis], cb = b.centre[axis];
+                       return ca < cb || (ca == cb && a.triangle < b.triangle);
                      });
     build(nodes, first, half, depth + 1);
-    nodes[self].first = static_cast<std::uint32_t>(nodes.size());
+    const auto second = static_cast<std::uint32_t>(nodes.size());
     build(nodes, first + half, count - half, depth + 1);
+    Aabb box = nodes[self + 1].box;
+    box.extend(nodes[second].box);
+    nodes[self].box = box;
+    nodes[self].first = second;
   }
 };
 
@@ -53,7 +64,7 @@ struct Builder {
 TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
   const std::size_t n = mesh.triangles.size();
   std::vector<Aabb> boxes(n);
-  std::vector<Eigen::Vector3d> centres(n);
+  std::vector<Item> items(n);
   for (std::size_t t = 0; t < n; ++t) {
     for (VertexIndex i : mesh.triangles[t]) {
       if (i >= mesh.vertices.size())
@@ -62,14 +73,15 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
                                 std::to_string(mesh.vertices.size()) + " vertices)");
       boxes[t].extend(mesh.vertices[i]);
     }
-    centres[t] = boxes[t].center();
+    items[t] = {boxes[t].center(), static_cast<std::uint32_t>(t)};
   }
   order_.resize(n);
-  std::iota(order_.begin(), order_.end(), std::uint32_t{0});
   if (n == 0)
     return;
   nodes_.reserve(2 * (n / kLeafTriangles + 1));
-  Builder{boxes, centres, order_}.build(nodes_, 0, static_cast<std::uint32_t>(n), 0);
+  Builder{boxes, items}.build(nodes_, 0, static_cast<std::uint32_t>(n), 0);
+  for (std::size_t k = 0; k < n; ++k)
+    order_[k] = items[k].triangle;
 }
 
 void TriangleBvh::sortAppended(std::vector<std::uint32_t>& out, std::size_t from) const {
