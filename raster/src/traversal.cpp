@@ -72,8 +72,8 @@ std::uint64_t blockMaskInside(int x, int y, const PixelRect& rect) {
   const std::uint64_t rowBits = ((std::uint64_t{1} << (c1 - c0)) - 1) << c0;
   // Bit 0 of each row in [r0, r1); times rowBits (below 256) copies rowBits into those rows.
   const int rows = r1 - r0;
-  const std::uint64_t span = rows == kBlockSize ? ~std::uint64_t{0}
-                                                : ((std::uint64_t{1} << (8 * rows)) - 1) << (8 * r0);
+  const std::uint64_t span =
+      rows == kBlockSize ? ~std::uint64_t{0} : ((std::uint64_t{1} << (8 * rows)) - 1) << (8 * r0);
   return rowBits * (span & 0x0101010101010101ULL);
 }
 
