@@ -137,8 +137,8 @@ TEST_CASE("a block's mask inside a rectangle is its pixels inside it, pixel by p
               const PixelRect rect{x0, y0, x1, y1};
               const std::uint64_t expected = direct(bx, by, rect);
               if (blockMaskInside(bx, by, rect) != expected)
-                FAIL("block (" << bx << ", " << by << ") in [" << x0 << ", " << x1 << ") x ["
-                               << y0 << ", " << y1 << ")");
+                FAIL("block (" << bx << ", " << by << ") in [" << x0 << ", " << x1 << ") x [" << y0
+                               << ", " << y1 << ")");
               ++compared;
               whole += expected == ~std::uint64_t{0};
             }
