@@ -149,6 +149,7 @@ HierarchyPair hierarchyPair(const std::string& scenePath, int frame, const std::
   options.threads = 1;
   core::Simulation sim(scene, options);
   (void)sim.runFrame(frame);  // poses every node at the frame, as recode run does
+  sim.updateAllBounds();      // and the boxes of blocks near no other, which it leaves
   const std::vector<ObjectTree>& objects = sim.objects();
   const Block a = findBlock(objects, pairSpec.substr(0, colon), pairSpec);
   const Block b = findBlock(objects, pairSpec.substr(colon + 1), pairSpec);

@@ -125,6 +125,28 @@ void ObjectTree::setFrame(int frame, const Eigen::Isometry3d& base) {
 }
 
 void ObjectTree::updateBounds() {
+  updateObbs();
+  updateAabbs();
+}
+
+void ObjectTree::updateObbs() {
+  for (std::size_t i = nodes_.size(); i-- > 0;) {
+    HierarchyNode& node = nodes_[i];
+    if (node.isLeaf() || node.rigid) {
+      node.worldObb = node.localObb.transformed(node.world);
+      continue;
+    }
+    Aabb around;
+    for (int c : node.children)
+      around.extend(nodes_[static_cast<std::size_t>(c)].worldObb.aabb());
+    Obb axisBox;
+    axisBox.center = around.center();
+    axisBox.halfExtents = 0.5 * around.extent();
+    node.worldObb = withSlack(axisBox);
+  }
+}
+
+void ObjectTree::updateAabbs() {
   for (std::size_t i = nodes_.size(); i-- > 0;) {
     HierarchyNode& node = nodes_[i];
     if (node.isLeaf()) {
@@ -139,25 +161,23 @@ void ObjectTree::updateBounds() {
         boundsAt_[i] = node.world;
         boundsValid_[i] = true;
       }
-      node.worldObb = node.localObb.transformed(node.world);
       continue;
     }
     Aabb box;
     for (int c : node.children)
       box.extend(nodes_[static_cast<std::size_t>(c)].worldAabb);
     node.worldAabb = box;
-    if (node.rigid) {
-      node.worldObb = node.localObb.transformed(node.world);
-    } else {
-      Aabb around;
-      for (int c : node.children)
-        around.extend(nodes_[static_cast<std::size_t>(c)].worldObb.aabb());
-      Obb axisBox;
-      axisBox.center = around.center();
-      axisBox.halfExtents = 0.5 * around.extent();
-      node.worldObb = withSlack(axisBox);
-    }
   }
+}
+
+Aabb ObjectTree::boxAroundObb() const {
+  // The root's OBB holds every vertex up to the rounding of the fits and the transforms, which
+  // is far below a relative 1e-9 of the box's world coordinates.
+  Aabb box = root().worldObb.aabb();
+  const double margin = 1e-9 * (box.center().cwiseAbs().maxCoeff() + 0.5 * box.extent().maxCoeff());
+  box.min.array() -= margin;
+  box.max.array() += margin;
+  return box;
 }
 
 TriangleMesh ObjectTree::worldMesh(int node) const {

@@ -29,15 +29,32 @@ int roundUpToGranule(int n) {
   return std::min(rounded, raster::kMaxFramebufferSize);
 }
 
-// Every object's boxes brought up to its pose; returns the roots' boxes for the broad phase.
-std::vector<Aabb> updateRootBoxes(std::vector<ObjectTree>& objects) {
-  std::vector<Aabb> roots;
-  roots.reserve(objects.size());
+// The object pairs whose root AABBs overlap, in increasing order, as the sort and sweep over
+// those AABBs would list them, without making the AABB of an object that is near no other: the
+// sweep runs on the boxes around the objects' OBBs (which hold the AABBs), and only the objects
+// of a pair it finds get their AABBs (every vertex transformed), by which its pairs are then
+// filtered. Every object's OBBs are brought up to its pose; the AABBs of the others are left
+// stale (nothing reads them this frame).
+std::vector<std::pair<int, int>> overlappingObjects(std::vector<ObjectTree>& objects,
+                                                    SweepAndPrune& broadPhase) {
+  std::vector<Aabb> around;
+  around.reserve(objects.size());
   for (ObjectTree& object : objects) {
-    object.updateBounds();
-    roots.push_back(object.root().worldAabb);
+    object.updateObbs();
+    around.push_back(object.boxAroundObb());
   }
-  return roots;
+  std::vector<std::pair<int, int>> pairs = broadPhase.update(around);
+  std::vector<bool> needed(objects.size(), false);
+  for (const auto& [a, b] : pairs)
+    needed[static_cast<std::size_t>(a)] = needed[static_cast<std::size_t>(b)] = true;
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    if (needed[i])
+      objects[i].updateAabbs();
+  std::erase_if(pairs, [&objects](const std::pair<int, int>& p) {
+    return !aabbsOverlap(objects[static_cast<std::size_t>(p.first)].root().worldAabb,
+                         objects[static_cast<std::size_t>(p.second)].root().worldAabb);
+  });
+  return pairs;
 }
 
 // The leaves drawn this frame, each made once (LeafBlock: world mesh, triangle hierarchy, pose):
@@ -164,6 +181,11 @@ int Simulation::threads() const {
   return pairTests_->concurrency();
 }
 
+void Simulation::updateAllBounds() {
+  for (ObjectTree& object : objects_)
+    object.updateAabbs();
+}
+
 std::size_t Simulation::triangleCount() const {
   std::size_t n = 0;
   for (const ObjectTree& object : objects_)
@@ -206,7 +228,7 @@ FrameReport Simulation::runFrame(int frame) {
     object.setFrame(frame);
   const Clock::time_point posed = Clock::now();
 
-  const std::vector<std::pair<int, int>> candidates = broadPhase_.update(updateRootBoxes(objects_));
+  const std::vector<std::pair<int, int>> candidates = overlappingObjects(objects_, broadPhase_);
   report.objectPairs = static_cast<long long>(candidates.size());
 
   // The pair tests are listed first, in the order of the sequential loop (candidates, then

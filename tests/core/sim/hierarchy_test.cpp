@@ -196,6 +196,36 @@ TEST_CASE("hierarchy: every node's boxes contain its children's, frame after fra
   }
 }
 
+TEST_CASE("hierarchy: the box around the root's OBB holds the root's AABB, near and far away",
+          "[hierarchy]") {
+  // What a frame's broad phase relies on to leave out the AABBs of objects near no other: the
+  // sweep over these boxes finds every pair the sweep over the AABBs finds. Far from the origin
+  // the vertices' rounding is large against a small block's own size.
+  std::mt19937_64 rng(11);
+  long long checked = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    SceneObject object = randomNode(rng, 3, trial % 2 == 1, "t");
+    if (trial % 4 >= 2)
+      object.position = randomVector(rng, -1e7, 1e7);
+    ObjectTree tree(object);
+    for (int frame = 0; frame < 30; frame += 3) {
+      tree.pose(frame);
+      const Aabb around = tree.boxAroundObb();
+      INFO("trial " << trial << ", frame " << frame);
+      REQUIRE(inside(tree.root().worldAabb, around));
+      // updateObbs alone gives the same OBBs as updateBounds.
+      const std::vector<HierarchyNode> posed = tree.nodes();
+      tree.updateObbs();
+      for (std::size_t i = 0; i < posed.size(); ++i) {
+        REQUIRE(tree.nodes()[i].worldObb.center == posed[i].worldObb.center);
+        REQUIRE(tree.nodes()[i].worldObb.halfExtents == posed[i].worldObb.halfExtents);
+      }
+      ++checked;
+    }
+  }
+  CHECK(checked == 400);
+}
+
 TEST_CASE("hierarchy: rigid subtrees keep their fitted box, jointed ones do not", "[hierarchy]") {
   SceneObject arm;
   arm.name = "arm";

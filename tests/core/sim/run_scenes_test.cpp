@@ -148,6 +148,36 @@ TEST_CASE("simulation: no interfering pair is lost by the broad phase and descen
   CHECK(found > 0);
 }
 
+TEST_CASE("simulation: a frame's object pairs are the sweep's over every root AABB", "[run]") {
+  // runFrame sweeps boxes around the OBBs and makes the AABBs only of the objects in a pair it
+  // finds; the pairs it keeps must be exactly those of the root AABBs of every object, posed
+  // apart here, and updateAllBounds must then give every object the AABB a full pose gives.
+  const Scene scene = builtinExperimentScene("random-cones", 16);
+  RunOptions options;
+  options.threads = 1;
+  Simulation sim(scene, options);
+  std::vector<ObjectTree> posed(scene.objects.begin(), scene.objects.end());
+  long long pairs = 0;
+  for (int frame = 0; frame < 100; frame += 7) {
+    const FrameReport report = sim.runFrame(frame);
+    long long expected = 0;
+    for (ObjectTree& tree : posed)
+      tree.pose(frame);
+    for (std::size_t a = 0; a < posed.size(); ++a)
+      for (std::size_t b = a + 1; b < posed.size(); ++b)
+        expected += aabbsOverlap(posed[a].root().worldAabb, posed[b].root().worldAabb) ? 1 : 0;
+    INFO("frame " << frame);
+    REQUIRE(report.objectPairs == expected);
+    pairs += expected;
+    sim.updateAllBounds();
+    for (std::size_t i = 0; i < posed.size(); ++i) {
+      REQUIRE(sim.objects()[i].root().worldAabb.min == posed[i].root().worldAabb.min);
+      REQUIRE(sim.objects()[i].root().worldAabb.max == posed[i].root().worldAabb.max);
+    }
+  }
+  CHECK(pairs > 20);  // the frames have pairs to find
+}
+
 TEST_CASE("simulation: the run's pixel size and the frames of pairs", "[run]") {
   Aabb bounds;
   bounds.extend(Eigen::Vector3d(-1, -2, 0));

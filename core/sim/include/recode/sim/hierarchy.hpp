@@ -1,8 +1,8 @@
 #pragma once
 // An object as a tree of nodes with rigid transforms (docs/scenes.md, docs/cli.md "recode run"):
-// leaves are convex blocks, every node carries a world AABB (recomputed per frame) and an
-// OBB. Pairs of objects descend their trees while both kinds of box overlap; the leaf pairs
-// that remain go to the pair algorithm.
+// leaves are convex blocks, every node carries a world AABB (recomputed per frame, when the
+// object comes near another: Simulation) and an OBB. Pairs of objects descend their trees while
+// both kinds of box overlap; the leaf pairs that remain go to the pair algorithm.
 //
 // Boxes nest: a node's AABB is the union of its children's, and a node's OBB contains its
 // children's OBBs (it is fitted to their corners, not to the vertices). So a leaf pair whose
@@ -66,8 +66,16 @@ class ObjectTree {
   // how the collision API (recode/api) places an object at the pose its user sets.
   void setFrame(int frame, const Eigen::Isometry3d& base);
   // Every node's world AABB and OBB for the current transforms (leaves recompute their
-  // AABB from their vertices only when their transform changed).
+  // AABB from their vertices only when their transform changed): updateObbs, then updateAabbs.
   void updateBounds();
+  // Every node's world OBB alone: no vertex is touched.
+  void updateObbs();
+  // Every node's world AABB alone.
+  void updateAabbs();
+  // After updateObbs: an axis-aligned box that holds every vertex of the object, from the
+  // root's OBB (its AABB grown by a relative margin for rounding), so that it contains the
+  // root's AABB as updateAabbs makes it. Cheaper than that AABB, and larger.
+  [[nodiscard]] Aabb boxAroundObb() const;
   // Both steps.
   void pose(int frame) {
     setFrame(frame);

@@ -122,7 +122,12 @@ class Simulation {
   // made, e.g. more than 16384 pixels for a pair at this pixel size.
   [[nodiscard]] FrameReport runFrame(int frame);
 
+  // The objects, posed at the last frame run. runFrame brings every node's OBB up to the pose
+  // but makes the AABBs only of the objects whose boxes come near another's (the rest keep
+  // those of an earlier frame); updateAllBounds() makes every AABB, for a tool that inspects
+  // any two blocks.
   [[nodiscard]] const std::vector<ObjectTree>& objects() const { return objects_; }
+  void updateAllBounds();
   [[nodiscard]] double pixelSize() const { return pixelSize_; }
   [[nodiscard]] ViewAxis axis() const { return axis_; }
   [[nodiscard]] ViewAxisRule viewAxisRule() const { return options_.viewAxisRule; }
