@@ -62,17 +62,7 @@ Mesh randomMesh(std::mt19937_64& rng, int w, int h) {
   return m;
 }
 
-PixelRect randomRect(std::mt19937_64& rng, int w, int h) {
-  std::uniform_int_distribution<int> px(0, w), py(0, h);
-  int x0 = px(rng), x1 = px(rng), y0 = py(rng), y1 = py(rng);
-  if (x0 > x1)
-    std::swap(x0, x1);
-  if (y0 > y1)
-    std::swap(y0, y1);
-  return {x0, y0, x1, y1};
-}
-
-// A rectangle inside `outer` (so a recording made under `outer` serves it).
+// A random rectangle inside `outer` (possibly empty).
 PixelRect rectInside(std::mt19937_64& rng, const PixelRect& outer) {
   if (outer.empty())
     return outer;
@@ -83,6 +73,11 @@ PixelRect rectInside(std::mt19937_64& rng, const PixelRect& outer) {
   if (y0 > y1)
     std::swap(y0, y1);
   return {x0, y0, x1, y1};
+}
+
+// Anywhere in the w x h framebuffer.
+PixelRect randomRect(std::mt19937_64& rng, int w, int h) {
+  return rectInside(rng, {0, 0, w, h});
 }
 
 // The same random state on both devices.
@@ -143,7 +138,8 @@ TEST_CASE("replayed draws write what fresh draws write", "[raster][replay]") {
         }
         continue;
       }
-      // Mostly a rectangle inside the last one (what a replay serves), sometimes any.
+      // Mostly a rectangle inside the last one (what a replay serves, when the last one was
+      // recorded), sometimes any.
       scissor = a < 8 ? rectInside(rng, scissor) : randomRect(rng, w, h);
       if (a == 9)
         scissor = {0, 0, w, h};
