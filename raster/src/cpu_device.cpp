@@ -133,11 +133,21 @@ void CpuDevice::setStencilOps(Face face, const StencilOps& ops) {
 
 void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,
                               std::span<const std::uint32_t> indices) {
+  rasterize(vertices, indices, nullptr);
+}
+
+void CpuDevice::rasterize(std::span<const WindowVertex> vertices,
+                          std::span<const std::uint32_t> indices, DrawRecording* recording) {
   // The draw is validated as a whole before any pixel changes, so an error leaves the
   // buffers untouched.
   checkDraw(vertices, indices);
   FragmentWriter writer(state_, depth_, stencil_);
-  raster::drawTriangles(state_, vertices, indices, writer, &counters_);
+  if (recording) {
+    RecordingWriter recorder(writer, *recording);
+    raster::drawTriangles(state_, vertices, indices, recorder, &counters_);
+  } else {
+    raster::drawTriangles(state_, vertices, indices, writer, &counters_);
+  }
   counters_.fragments += writer.fragments;
 }
 
@@ -153,15 +163,12 @@ void CpuDevice::drawMesh(const TriangleSource& source) {
   const TriangleDraw draw = near ? *near : source.allTriangles();
   // Only a draw that culls nothing holds every triangle a later draw may need.
   if (key == 0 || state_.cull != CullMode::None)
-    return drawTriangles(draw.vertices, draw.indices);
-  checkDraw(draw.vertices, draw.indices);
+    return rasterize(draw.vertices, draw.indices, nullptr);
   DrawRecording& recording = recordings_[nextRecording_];
   nextRecording_ = (nextRecording_ + 1) % recordings_.size();
+  // A draw that is refused leaves the recording unfinished, so it serves nothing.
   recording.start(key, state_.scissor);
-  FragmentWriter writer(state_, depth_, stencil_);
-  RecordingWriter recorder(writer, recording);
-  raster::drawTriangles(state_, draw.vertices, draw.indices, recorder, &counters_);
-  counters_.fragments += writer.fragments;
+  rasterize(draw.vertices, draw.indices, &recording);
   recording.finish();
 }
 

@@ -1,8 +1,6 @@
 // A draw's rasterized triangles and blocks, kept for replays (draw_recording.hpp).
 #include "recode/raster/draw_recording.hpp"
 
-#include <algorithm>
-
 namespace recode::raster {
 
 void DrawRecording::start(std::uint64_t key, const PixelRect& scissor) {
@@ -44,8 +42,7 @@ bool DrawRecording::serves(std::uint64_t key, const PixelRect& scissor) const {
   if (key == 0 || key != key_ || !complete_)
     return false;
   // An empty scissor draws nothing whatever was recorded.
-  return scissor.empty() || (scissor.x0 >= scissor_.x0 && scissor.y0 >= scissor_.y0 &&
-                             scissor.x1 <= scissor_.x1 && scissor.y1 <= scissor_.y1);
+  return scissor.empty() || scissor_.intersect(scissor) == scissor;
 }
 
 }  // namespace recode::raster

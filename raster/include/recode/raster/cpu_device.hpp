@@ -64,6 +64,10 @@ class CpuDevice final : public DepthStencilDevice {
   void resetCounters() { counters_ = {}; }
 
  private:
+  // Validates a draw, then runs the pipeline over it into the buffers, and into `recording`
+  // when there is one.
+  void rasterize(std::span<const WindowVertex> vertices, std::span<const std::uint32_t> indices,
+                 DrawRecording* recording);
   void replay(const DrawRecording& recording);
 
   PixelBuffer<std::uint32_t> depth_;  // the whole framebuffer; its rectangle gives the size

@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "recode/raster/state.hpp"
-#include "recode/raster/traversal.hpp"
 #include "recode/raster/triangle_setup.hpp"
 
 namespace recode::raster {
@@ -46,7 +45,7 @@ class DrawRecording {
   void addBlock(int x, int y, std::uint64_t mask);
   // Ends the recording: it serves draws from now on, unless it outgrew kMaxBlocks.
   void finish();
-  // Forgets the recording (an abandoned draw).
+  // Forgets the recording, keeping its memory.
   void clear();
 
   // Whether this recording can stand for a draw of source `key` under `scissor`.
