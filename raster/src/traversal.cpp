@@ -14,7 +14,7 @@ enum class RegionTest { Reject, Accept, Partial };
 
 // Classifies the size x size pixel square at (px, py) against the three edges from the
 // values of each edge function at the square's extreme pixel centres.
-RegionTest testRegion(const TriangleSetup& tri, int px, int py, int size) {
+RegionTest testRegion(const TriangleCoverage& tri, int px, int py, int size) {
   const std::int64_t x = pixelCentreFixed(px);
   const std::int64_t y = pixelCentreFixed(py);
   const std::int64_t span = static_cast<std::int64_t>(size - 1) * kSubpixelOne;
@@ -37,7 +37,7 @@ RegionTest testRegion(const TriangleSetup& tri, int px, int py, int size) {
 // pixel. A sub-pixel triangle's clipped area is a pixel or two: the scalar loop visits just
 // those. A larger area goes to the SIMD test, a row of 8 pixels at a time; both give the same
 // bits (block_coverage.hpp).
-std::uint64_t coverageMask(const TriangleSetup& tri, int bx, int by, const PixelRect& clip) {
+std::uint64_t coverageMask(const TriangleCoverage& tri, int bx, int by, const PixelRect& clip) {
   const int c0 = std::max(clip.x0 - bx, 0), c1 = std::min(clip.x1 - bx, kBlockSize);
   const int r0 = std::max(clip.y0 - by, 0), r1 = std::min(clip.y1 - by, kBlockSize);
   const std::int64_t x = pixelCentreFixed(bx);
@@ -77,7 +77,7 @@ std::uint64_t blockMaskInside(int x, int y, const PixelRect& rect) {
   return rowBits * (span & 0x0101010101010101ULL);
 }
 
-void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink& sink,
+void traverseTriangle(const TriangleCoverage& tri, const PixelRect& clip, BlockSink& sink,
                       TraversalStats* stats) {
   RECODE_INVARIANT(clip.x0 >= 0 && clip.y0 >= 0 && clip.x1 <= kMaxFramebufferSize &&
                        clip.y1 <= kMaxFramebufferSize,
@@ -87,6 +87,17 @@ void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink
     return;
   TraversalStats local;
   TraversalStats& st = stats ? *stats : local;
+
+  // Pixels inside one 8x8 block, as for most small triangles: their coverage straight away.
+  // The tile and block tests could only reject or accept what the per-pixel test decides.
+  const int firstX = alignDown(area.x0, kBlockSize), firstY = alignDown(area.y0, kBlockSize);
+  if (area.x1 <= firstX + kBlockSize && area.y1 <= firstY + kBlockSize) {
+    ++st.blocksPartial;
+    const std::uint64_t mask = coverageMask(tri, firstX, firstY, area);
+    if (mask != 0)
+      sink.coveredBlock(firstX, firstY, mask);
+    return;
+  }
 
   for (int ty = alignDown(area.y0, kTileSize); ty < area.y1; ty += kTileSize) {
     for (int tx = alignDown(area.x0, kTileSize); tx < area.x1; tx += kTileSize) {

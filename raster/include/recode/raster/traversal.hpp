@@ -36,7 +36,7 @@ struct TraversalStats {
 [[nodiscard]] std::uint64_t blockMaskInside(int x, int y, const PixelRect& rect);
 
 // Visits every pixel of `clip` whose centre the triangle covers under the fill rule, once.
-void traverseTriangle(const TriangleSetup& tri, const PixelRect& clip, BlockSink& sink,
+void traverseTriangle(const TriangleCoverage& tri, const PixelRect& clip, BlockSink& sink,
                       TraversalStats* stats = nullptr);
 
 }  // namespace recode::raster

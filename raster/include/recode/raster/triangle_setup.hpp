@@ -38,10 +38,14 @@ struct DepthPlane {
   }
 };
 
-struct TriangleSetup {
+// What decides which pixel centres a triangle covers.
+struct TriangleCoverage {
   std::array<EdgeFunction, 3> edges;
   bool frontFacing = true;  // counter-clockwise in GL window coordinates (y up)
   PixelRect bounds;         // pixels whose centres can be covered (half-open), unclipped
+};
+
+struct TriangleSetup : TriangleCoverage {
   DepthPlane depth;
 };
 
@@ -53,6 +57,13 @@ struct FixedVertex {
 };
 
 [[nodiscard]] FixedVertex snapVertex(const WindowVertex& v);
+
+// The coverage half of setupTriangle, the same edges, facing and bounds without the depth
+// plane's two divisions: for a caller that asks only which centres a triangle covers. Returns
+// nullopt for a zero-area triangle.
+[[nodiscard]] std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0,
+                                                            const FixedVertex& v1,
+                                                            const FixedVertex& v2);
 
 // Returns nullopt for a zero-area triangle (it draws nothing).
 [[nodiscard]] std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0,
