@@ -1,6 +1,7 @@
 #include "recode/geometry/triangle_bvh.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
@@ -85,7 +86,26 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
 }
 
 void TriangleBvh::sortAppended(std::vector<std::uint32_t>& out, std::size_t from) const {
-  std::sort(out.begin() + static_cast<std::ptrdiff_t>(from), out.end());
+  std::vector<std::uint64_t> bits;
+  sortDistinctIds(std::span(out).subspan(from), order_.size(), bits);
+}
+
+void sortDistinctIds(std::span<std::uint32_t> ids, std::size_t idCount,
+                     std::vector<std::uint64_t>& bits) {
+  const std::size_t words = (idCount + 63) / 64;
+  // A word costs about what one id costs the sort: log2 of the count in comparisons, which is
+  // over 16 only past 65,536 ids.
+  if (ids.size() * 16 < words) {
+    std::sort(ids.begin(), ids.end());
+    return;
+  }
+  bits.assign(words, 0);
+  for (const std::uint32_t id : ids)
+    bits[id / 64] |= std::uint64_t{1} << (id % 64);
+  std::size_t k = 0;
+  for (std::size_t w = 0; w < words; ++w)
+    for (std::uint64_t b = bits[w]; b != 0; b &= b - 1)
+      ids[k++] = static_cast<std::uint32_t>(64 * w + static_cast<std::size_t>(std::countr_zero(b)));
 }
 
 }  // namespace recode::core

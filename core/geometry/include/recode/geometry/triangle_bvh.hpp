@@ -5,6 +5,7 @@
 // how a box maps into its space (a pose, a view).
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "recode/geometry/mesh.hpp"
@@ -41,6 +42,13 @@ class TriangleBvh {
   std::vector<Node> nodes_;           // depth first: an inner node's first child is next
   std::vector<std::uint32_t> order_;  // triangle ids, grouped by leaf
 };
+
+// Sorts distinct ids below idCount into increasing order, in place: with a bit per id when
+// they are dense enough that one pass over the bits beats a comparison sort (a query's
+// triangles usually are), else with std::sort. `bits` is scratch, kept by the caller so that
+// repeated sorts allocate nothing.
+void sortDistinctIds(std::span<std::uint32_t> ids, std::size_t idCount,
+                     std::vector<std::uint64_t>& bits);
 
 template <class BoxTest, class Take>
 void TriangleBvh::visit(const BoxTest& meets, const Take& take) const {
