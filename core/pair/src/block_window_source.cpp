@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "recode/geometry/triangle_bvh.hpp"
 #include "recode/raster/device.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/triangle_setup.hpp"
@@ -59,21 +60,38 @@ struct WindowMap {
 // rounding of the world vertices (each made as linear * p + translation), mapped to the window
 // by the view's own formula. That formula is monotonic, so a vertex inside the box maps inside
 // the mapped range; a triangle covering a centre has that centre inside its vertices' box.
-bool boxCanCover(const Aabb& local, const Eigen::Isometry3d& pose, bool identity,
-                 const WindowMap& map, const PixelRect& rect) {
-  Eigen::Vector3d lo = local.min, hi = local.max;
-  if (!identity) {
-    Eigen::Vector3d centre = local.center(), half = 0.5 * local.extent();
-    const Eigen::Matrix3d linear = pose.linear();
-    centre = linear * centre + pose.translation();
-    half = linear.cwiseAbs() * half;
-    half += Eigen::Vector3d::Constant(1e-9 * (centre.cwiseAbs().maxCoeff() + half.maxCoeff()));
-    lo = centre - half;
-    hi = centre + half;
+class PosedBoxTest {
+ public:
+  PosedBoxTest(const Eigen::Isometry3d& pose, const WindowMap& map, const PixelRect& rect)
+      : identity_(pose.matrix().isIdentity(0.0)),
+        linear_(pose.linear()),
+        absLinear_(linear_.cwiseAbs()),
+        translation_(pose.translation()),
+        map_(map),
+        rect_(rect) {}
+
+  bool operator()(const Aabb& local) const {
+    Eigen::Vector3d lo = local.min, hi = local.max;
+    if (!identity_) {
+      const Eigen::Vector3d centre = linear_ * local.center() + translation_;
+      Eigen::Vector3d half = absLinear_ * (0.5 * local.extent());
+      half += Eigen::Vector3d::Constant(1e-9 * (centre.cwiseAbs().maxCoeff() + half.maxCoeff()));
+      lo = centre - half;
+      hi = centre + half;
+    }
+    return holdsCentre(map_.nearX(lo[map_.u]), map_.nearX(hi[map_.u]), rect_.x0, rect_.x1) &&
+           holdsCentre(map_.nearY(lo[map_.v]), map_.nearY(hi[map_.v]), rect_.y0, rect_.y1);
   }
-  return holdsCentre(map.nearX(lo[map.u]), map.nearX(hi[map.u]), rect.x0, rect.x1) &&
-         holdsCentre(map.nearY(lo[map.v]), map.nearY(hi[map.v]), rect.y0, rect.y1);
-}
+
+ private:
+  // Copies, made once per query: the node loop stores survivors, and through a reference the
+  // compiler would have to load the pose again for every node.
+  bool identity_;
+  Eigen::Matrix3d linear_, absLinear_;
+  Eigen::Vector3d translation_;
+  WindowMap map_;
+  PixelRect rect_;
+};
 
 // Whether the closed box of three window vertices holds the centre of a pixel of `rect`: the
 // only triangles that can cover one. The coordinates are multiples of 1/256, so the
@@ -97,8 +115,8 @@ bool boxHoldsPixelCentre(const WindowVertex& a, const WindowVertex& b, const Win
 bool coversPixelCentre(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                        const PixelRect& rect) {
   constexpr std::int64_t kMaxTested = 16;
-  const std::optional<raster::TriangleSetup> tri =
-      raster::setupTriangle(raster::snapVertex(a), raster::snapVertex(b), raster::snapVertex(c));
+  const std::optional<raster::TriangleCoverage> tri =
+      raster::setupCoverage(raster::snapVertex(a), raster::snapVertex(b), raster::snapVertex(c));
   if (!tri)
     return false;
   const PixelRect area = tri->bounds.intersect(rect);
@@ -116,23 +134,49 @@ bool coversPixelCentre(const WindowVertex& a, const WindowVertex& b, const Windo
   return false;
 }
 
-// coversPixelCentre on window x and y made as toWindow makes them (the depth plays no part).
-bool worldTriangleCovers(const WindowMap& map, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                         const Eigen::Vector3d& c, const PixelRect& rect) {
-  // First the unsnapped box, with holdsCentre's margin for the snapping: most candidates of a
-  // hierarchy leaf end here, before any rounding call.
+// Whether a triangle's unsnapped image-plane box can hold a pixel centre of `rect`, with
+// holdsCentre's margin for the snapping: most candidates of a hierarchy leaf end here, before
+// any vertex is mapped.
+bool worldBoxCanCover(const WindowMap& map, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                      const Eigen::Vector3d& c, const PixelRect& rect) {
   const auto [xlo, xhi] = std::minmax({a[map.u], b[map.u], c[map.u]});
   if (!holdsCentre(map.nearX(xlo), map.nearX(xhi), rect.x0, rect.x1))
     return false;
   const auto [ylo, yhi] = std::minmax({a[map.v], b[map.v], c[map.v]});
-  if (!holdsCentre(map.nearY(ylo), map.nearY(yhi), rect.y0, rect.y1))
-    return false;
-  const auto window = [&map](const Eigen::Vector3d& p) {
-    return WindowVertex{raster::snapToSubpixel(map.x(p)), raster::snapToSubpixel(map.y(p)), 0.0f};
-  };
-  const WindowVertex wa = window(a), wb = window(b), wc = window(c);
-  return boxHoldsPixelCentre(wa, wb, wc, rect) && coversPixelCentre(wa, wb, wc, rect);
+  return holdsCentre(map.nearY(ylo), map.nearY(yhi), rect.y0, rect.y1);
 }
+
+// A mesh's window vertices, each made at most once per hierarchy query: a vertex is shared by
+// about six triangles, and a query meets most of them. Entries carry the number of the query
+// that made them, so starting a query clears nothing and costs nothing per vertex of the
+// mesh. One per thread (queries on a thread never overlap); it keeps the capacity of the
+// largest mesh it has served, 16 bytes a vertex.
+class WindowVertexCache {
+ public:
+  void startQuery(std::size_t vertexCount) {
+    if (stamps_.size() < vertexCount) {
+      stamps_.resize(vertexCount, 0);
+      windows_.resize(vertexCount);
+    }
+    if (++query_ == 0) {  // the numbers wrapped: forget every entry once
+      std::fill(stamps_.begin(), stamps_.end(), 0);
+      query_ = 1;
+    }
+  }
+  [[nodiscard]] const WindowVertex& get(const OrthoView& view, const TriangleMesh& mesh,
+                                        VertexIndex i) {
+    if (stamps_[i] != query_) {
+      windows_[i] = view.toWindow(mesh.vertices[i]);
+      stamps_[i] = query_;
+    }
+    return windows_[i];
+  }
+
+ private:
+  std::uint32_t query_ = 0;
+  std::vector<std::uint32_t> stamps_;
+  std::vector<WindowVertex> windows_;
+};
 
 bool insideRange(const OrthoView& view, const Eigen::Vector3d& p, WindowVertex& out) {
   try {
@@ -193,29 +237,39 @@ std::optional<raster::TriangleDraw> BlockWindowSource::trianglesMeeting(
 
 void BlockWindowSource::gather(const PixelRect& rect) const {
   baseRect_ = rect;
-  survivors_.clear();
   base_.clear();
   if (rect.empty())
     return;
-  const Eigen::Isometry3d& pose = block_.localToWorld();
-  const bool identity = pose.matrix().isIdentity(0.0);
   const WindowMap map(view_);
+  const PosedBoxTest boxCanCover(block_.localToWorld(), map, rect);
   const TriangleMesh& mesh = block_.mesh();
-  // Only x and y decide; the depth is made for the few that pass. Sorting those restores the
-  // block's order.
+  thread_local WindowVertexCache threadWindows;
+  thread_local std::vector<std::uint32_t> threadSurvivors;
+  thread_local std::vector<std::uint64_t> threadBits;
+  // Plain references: a lambda naming a thread_local itself would look it up at every use.
+  WindowVertexCache& windows = threadWindows;
+  std::vector<std::uint32_t>& survivors = threadSurvivors;
+  windows.startQuery(mesh.vertices.size());
+  survivors.clear();
+  // Only x and y decide; the survivors are listed in the block's order afterwards.
   block_.hierarchy()->visit(
-      [&](const Aabb& box) { return boxCanCover(box, pose, identity, map, rect); },
+      boxCanCover,
       [&](std::uint32_t t) {
         const Triangle& tri = mesh.triangles[t];
-        if (worldTriangleCovers(map, mesh.vertices[tri[0]], mesh.vertices[tri[1]],
-                                mesh.vertices[tri[2]], rect))
-          survivors_.push_back(t);
+        if (!worldBoxCanCover(map, mesh.vertices[tri[0]], mesh.vertices[tri[1]],
+                              mesh.vertices[tri[2]], rect))
+          return;
+        const WindowVertex& a = windows.get(view_, mesh, tri[0]);
+        const WindowVertex& b = windows.get(view_, mesh, tri[1]);
+        const WindowVertex& c = windows.get(view_, mesh, tri[2]);
+        if (boxHoldsPixelCentre(a, b, c, rect) && coversPixelCentre(a, b, c, rect))
+          survivors.push_back(t);
       });
-  std::sort(survivors_.begin(), survivors_.end());
-  base_.reserve(3 * survivors_.size());
-  for (const std::uint32_t t : survivors_)
+  sortDistinctIds(survivors, mesh.triangles.size(), threadBits);
+  base_.reserve(3 * survivors.size());
+  for (const std::uint32_t t : survivors)
     for (const VertexIndex i : mesh.triangles[t])
-      base_.push_back(view_.toWindow(mesh.vertices[i]));
+      base_.push_back(windows.get(view_, mesh, i));
 }
 
 void BlockWindowSource::narrow(const PixelRect& rect) const {

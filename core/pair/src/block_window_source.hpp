@@ -56,7 +56,6 @@ class BlockWindowSource final : public raster::TriangleSource {
   // each, in the block's order. A rectangle inside it (the contact rectangle) is served from
   // this list: a triangle that can cover a centre of the smaller one is in it.
   mutable std::optional<raster::PixelRect> baseRect_;
-  mutable std::vector<std::uint32_t> survivors_;
   mutable std::vector<raster::WindowVertex> base_;
   // The last draw handed out and its rectangle (the passes ask for one rectangle several
   // times); near_ is base_ itself when the rectangles are the same.
