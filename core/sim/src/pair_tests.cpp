@@ -2,6 +2,7 @@
 #include "pair_tests.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <optional>
 #include <utility>
@@ -59,10 +60,18 @@ std::pair<int, int> sizeOf(const PairTask& task) {
   return {task.request.frame.width, task.request.frame.height};
 }
 
-// The tests of one device, in task order.
+// The tests of one frame size, in task order, taken one at a time by that size's lanes. After
+// an error no lane takes another, so every test not run comes after it in task order.
+struct SizeQueue {
+  std::vector<std::size_t> tasks;
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stopped{false};
+};
+
+// One device and the queue it takes its tests from.
 struct Lane {
   raster::DepthStencilDevice* device = nullptr;
-  std::vector<std::size_t> tasks;
+  SizeQueue* queue = nullptr;
 };
 
 }  // namespace
@@ -139,25 +148,27 @@ std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
     }
     return outcomes;
   }
-  // Deal each size's tests in turn to its devices' lanes.
+  // Each size's tests form a queue that its devices' lanes take from, in task order, as each
+  // finishes its last: the tests of a frame differ in cost by orders of magnitude, and a lane
+  // never waits while a test it could run is left. Which device runs a test changes no result.
+  std::map<std::pair<int, int>, SizeQueue> queues;
+  for (std::size_t i = 0; i < count; ++i)
+    queues[sizeOf(tasks[i])].tasks.push_back(i);
   std::vector<Lane> lanes;
-  std::map<std::pair<int, int>, std::pair<std::size_t, int>> dealt;  // first lane, tests dealt
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::pair<int, int> size = sizeOf(tasks[i]);
-    auto [entry, added] = dealt.try_emplace(size, lanes.size(), 0);
-    const int devices = lanes_.at(size);
-    if (added)
-      for (int d = 0; d < devices; ++d)
-        lanes.push_back({&pool.at(size.first, size.second, d), {}});
-    auto& [first, n] = entry->second;
-    lanes[first + static_cast<std::size_t>(n++ % devices)].tasks.push_back(i);
-  }
+  for (auto& [size, queue] : queues)
+    for (int d = 0; d < lanes_.at(size); ++d)
+      lanes.push_back({&pool.at(size.first, size.second, d), &queue});
   impl_->arena->execute([&] {
     tbb::parallel_for(std::size_t{0}, lanes.size(), [&](std::size_t l) {
-      for (std::size_t i : lanes[l].tasks) {
+      SizeQueue& queue = *lanes[l].queue;
+      while (!queue.stopped.load()) {
+        const std::size_t k = queue.next.fetch_add(1);
+        if (k >= queue.tasks.size())
+          break;
+        const std::size_t i = queue.tasks[k];
         runOne(*lanes[l].device, tasks[i], outcomes[i], mode_);
         if (outcomes[i].error)
-          break;
+          queue.stopped.store(true);
       }
     });
   });

@@ -59,10 +59,10 @@ class PairTestRunner {
   [[nodiscard]] DeviceSetup reserveDevices(const std::vector<PairTask>& tasks);
 
   // Runs tasks [0, count): outcome i is task i's. Sequentially it stops at the first error, as
-  // the tasks after it would not have run. In parallel the tests of one size are dealt in turn
-  // to that size's devices, one lane per device, run in task order; lanes run in parallel, a
-  // lane stops at its first error, and the caller takes the first error in task order (a test
-  // a lane skipped comes after an error).
+  // the tasks after it would not have run. In parallel each of a size's devices is a lane that
+  // takes that size's next test, in task order, whenever it is free; after an error the size's
+  // lanes take no more, and the caller takes the first error in task order (a test left
+  // unrun comes after an error).
   [[nodiscard]] std::vector<PairOutcome> run(const std::vector<PairTask>& tasks, std::size_t count);
 
   // Runs body(i) for i in [0, n) on the runner's threads (in order on the sequential path),
