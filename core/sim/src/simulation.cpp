@@ -34,9 +34,11 @@ int roundUpToGranule(int n) {
 // sweep runs on the boxes around the objects' OBBs (which hold the AABBs), and only the objects
 // of a pair it finds get their AABBs (every vertex transformed), by which its pairs are then
 // filtered. Every object's OBBs are brought up to its pose; the AABBs of the others are left
-// stale (nothing reads them this frame).
+// stale (nothing reads them this frame). The AABBs are made on the runner's threads: each
+// object's own, and with large meshes they are the frame's largest serial step.
 std::vector<std::pair<int, int>> overlappingObjects(std::vector<ObjectTree>& objects,
-                                                    SweepAndPrune& broadPhase) {
+                                                    SweepAndPrune& broadPhase,
+                                                    PairTestRunner& runner) {
   std::vector<Aabb> around;
   around.reserve(objects.size());
   for (ObjectTree& object : objects) {
@@ -47,9 +49,11 @@ std::vector<std::pair<int, int>> overlappingObjects(std::vector<ObjectTree>& obj
   std::vector<bool> needed(objects.size(), false);
   for (const auto& [a, b] : pairs)
     needed[static_cast<std::size_t>(a)] = needed[static_cast<std::size_t>(b)] = true;
+  std::vector<std::size_t> inPairs;
   for (std::size_t i = 0; i < objects.size(); ++i)
     if (needed[i])
-      objects[i].updateAabbs();
+      inPairs.push_back(i);
+  runner.forEach(inPairs.size(), [&](std::size_t k) { objects[inPairs[k]].updateAabbs(); });
   std::erase_if(pairs, [&objects](const std::pair<int, int>& p) {
     return !aabbsOverlap(objects[static_cast<std::size_t>(p.first)].root().worldAabb,
                          objects[static_cast<std::size_t>(p.second)].root().worldAabb);
@@ -228,7 +232,8 @@ FrameReport Simulation::runFrame(int frame) {
     object.setFrame(frame);
   const Clock::time_point posed = Clock::now();
 
-  const std::vector<std::pair<int, int>> candidates = overlappingObjects(objects_, broadPhase_);
+  const std::vector<std::pair<int, int>> candidates =
+      overlappingObjects(objects_, broadPhase_, *pairTests_);
   report.objectPairs = static_cast<long long>(candidates.size());
 
   // The pair tests are listed first, in the order of the sequential loop (candidates, then
