@@ -252,19 +252,17 @@ void BlockWindowSource::gather(const PixelRect& rect) const {
   windows.startQuery(mesh.vertices.size());
   survivors.clear();
   // Only x and y decide; the survivors are listed in the block's order afterwards.
-  block_.hierarchy()->visit(
-      boxCanCover,
-      [&](std::uint32_t t) {
-        const Triangle& tri = mesh.triangles[t];
-        if (!worldBoxCanCover(map, mesh.vertices[tri[0]], mesh.vertices[tri[1]],
-                              mesh.vertices[tri[2]], rect))
-          return;
-        const WindowVertex& a = windows.get(view_, mesh, tri[0]);
-        const WindowVertex& b = windows.get(view_, mesh, tri[1]);
-        const WindowVertex& c = windows.get(view_, mesh, tri[2]);
-        if (boxHoldsPixelCentre(a, b, c, rect) && coversPixelCentre(a, b, c, rect))
-          survivors.push_back(t);
-      });
+  block_.hierarchy()->visit(boxCanCover, [&](std::uint32_t t) {
+    const Triangle& tri = mesh.triangles[t];
+    if (!worldBoxCanCover(map, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
+                          rect))
+      return;
+    const WindowVertex& a = windows.get(view_, mesh, tri[0]);
+    const WindowVertex& b = windows.get(view_, mesh, tri[1]);
+    const WindowVertex& c = windows.get(view_, mesh, tri[2]);
+    if (boxHoldsPixelCentre(a, b, c, rect) && coversPixelCentre(a, b, c, rect))
+      survivors.push_back(t);
+  });
   sortDistinctIds(survivors, mesh.triangles.size(), threadBits);
   base_.reserve(3 * survivors.size());
   for (const std::uint32_t t : survivors)
