@@ -25,10 +25,24 @@ namespace hn = hwy::HWY_NAMESPACE;
 std::uint64_t BlockCoverageRows(const BlockEdges& edges, int c0, int c1, int r0, int r1) {
   const hn::CappedTag<std::int64_t, 8> d;
   const auto lanes = static_cast<int>(hn::Lanes(d));
+  // offsets[k][c] = c * stepX[k], written a vector at a time from the bits of c (selects and
+  // adds: not every target has a 64-bit multiply). Vector stores, as the loop's loads are:
+  // scalar stores read back as a vector could not be forwarded.
   alignas(64) std::int64_t offsets[3][8];
-  for (int k = 0; k < 3; ++k)
-    for (int c = 0; c < 8; ++c)
-      offsets[k][c] = c * edges.stepX[k];
+  const auto zero = hn::Zero(d);
+  for (int j = 0; j < 8; j += lanes) {
+    const auto column = hn::Iota(d, j);
+    const auto has1 = hn::Ne(hn::And(column, hn::Set(d, 1)), zero);
+    const auto has2 = hn::Ne(hn::And(column, hn::Set(d, 2)), zero);
+    const auto has4 = hn::Ne(hn::And(column, hn::Set(d, 4)), zero);
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t step = edges.stepX[k];
+      const auto offset = hn::Add(hn::Add(hn::IfThenElseZero(has1, hn::Set(d, step)),
+                                          hn::IfThenElseZero(has2, hn::Set(d, 2 * step))),
+                                  hn::IfThenElseZero(has4, hn::Set(d, 4 * step)));
+      hn::Store(offset, d, offsets[k] + j);
+    }
+  }
   std::int64_t row[3];
   for (int k = 0; k < 3; ++k)
     row[k] = edges.origin[k] + r0 * edges.stepY[k];
