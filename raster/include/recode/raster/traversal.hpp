@@ -24,6 +24,8 @@ class BlockSink {
   virtual void coveredBlock(int blockX, int blockY, std::uint64_t mask) = 0;
 };
 
+// What the traversal did, for tests and profiling. A triangle whose pixels in the clip lie in
+// one block counts one partial block and no tile.
 struct TraversalStats {
   std::uint64_t tilesRejected = 0;
   std::uint64_t tilesAccepted = 0;
