@@ -31,17 +31,19 @@ EdgeFunction makeEdge(const FixedVertex& a, const FixedVertex& b) {
   return e;
 }
 
+// Twice the signed area of the snapped triangle, exact: positive when counter-clockwise.
+std::int64_t twiceArea(const FixedVertex& v0, const FixedVertex& v1, const FixedVertex& v2) {
+  return (v1.x - v0.x) * (v2.y - v0.y) - (v2.x - v0.x) * (v1.y - v0.y);
+}
+
 }  // namespace
 
 FixedVertex snapVertex(const WindowVertex& v) {
   return {snapToFixed(v.x), snapToFixed(v.y), v.z};
 }
 
-namespace {
-
-// The checked range of the vertices and twice the signed area, exact; setupCoverage and
-// setupTriangle both start here.
-std::int64_t checkedArea2(const FixedVertex& v0, const FixedVertex& v1, const FixedVertex& v2) {
+std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0, const FixedVertex& v1,
+                                              const FixedVertex& v2) {
   // The device refuses vertices beyond kMaxWindowCoordinate, which keeps every product of the
   // edge functions below 2^49 (docs/rasterization.md, section 3).
   constexpr std::int64_t kMaxFixed = static_cast<std::int64_t>(kMaxWindowCoordinate) * kSubpixelOne;
@@ -50,12 +52,11 @@ std::int64_t checkedArea2(const FixedVertex& v0, const FixedVertex& v1, const Fi
         v->x >= -kMaxFixed && v->x <= kMaxFixed && v->y >= -kMaxFixed && v->y <= kMaxFixed,
         "snapped vertices lie within the fixed-point range |X|, |Y| <= 2^23");
   }
-  return (v1.x - v0.x) * (v2.y - v0.y) - (v2.x - v0.x) * (v1.y - v0.y);
-}
+  const std::int64_t area2 = twiceArea(v0, v1, v2);
+  if (area2 == 0)
+    return std::nullopt;
 
-// The coverage of a triangle of non-zero twice-area `area2`.
-void fillCoverage(const FixedVertex& v0, const FixedVertex& v1, const FixedVertex& v2,
-                  std::int64_t area2, TriangleCoverage& t) {
+  TriangleCoverage t;
   t.frontFacing = area2 > 0;
   // Coverage uses the counter-clockwise order; the depth plane uses the submitted order.
   const FixedVertex& p1 = t.frontFacing ? v1 : v2;
@@ -70,27 +71,15 @@ void fillCoverage(const FixedVertex& v0, const FixedVertex& v1, const FixedVerte
   t.bounds.x1 = static_cast<int>(floorDiv(maxX - half, kSubpixelOne) + 1);
   t.bounds.y0 = static_cast<int>(-floorDiv(-(minY - half), kSubpixelOne));
   t.bounds.y1 = static_cast<int>(floorDiv(maxY - half, kSubpixelOne) + 1);
-}
-
-}  // namespace
-
-std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0, const FixedVertex& v1,
-                                              const FixedVertex& v2) {
-  const std::int64_t area2 = checkedArea2(v0, v1, v2);
-  if (area2 == 0)
-    return std::nullopt;
-  TriangleCoverage t;
-  fillCoverage(v0, v1, v2, area2, t);
   return t;
 }
 
 std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0, const FixedVertex& v1,
                                            const FixedVertex& v2) {
-  const std::int64_t area2 = checkedArea2(v0, v1, v2);  // twice the signed area, exact
-  if (area2 == 0)
+  const std::optional<TriangleCoverage> coverage = setupCoverage(v0, v1, v2);
+  if (!coverage)
     return std::nullopt;
-  TriangleSetup t;
-  fillCoverage(v0, v1, v2, area2, t);
+  TriangleSetup t{*coverage, {}};
 
   // Depth plane through the three snapped vertices, in the submitted order:
   // dz/dX = (dz1 e2y - dz2 e1y) / area2, dz/dY = (dz2 e1x - dz1 e2x) / area2.
@@ -99,7 +88,7 @@ std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0, const FixedVer
   const double z0 = static_cast<double>(v0.z);
   const double dz1 = static_cast<double>(v1.z) - z0;
   const double dz2 = static_cast<double>(v2.z) - z0;
-  const double a2 = static_cast<double>(area2);
+  const double a2 = static_cast<double>(twiceArea(v0, v1, v2));
   t.depth.x0 = v0.x;
   t.depth.y0 = v0.y;
   t.depth.z0 = z0;
