@@ -81,50 +81,111 @@ struct FragmentState {
   StencilOps ops;
 };
 
+// quantizeDepth on lanes: 0 unless z > 0 (NaN too), kDepthMax from 1 on, else the scaled value
+// rounded by adding and subtracting kRoundToIntegerBias. The result is an integer in [0, 2^24),
+// so the conversion is exact.
+template <class DD, class DI>
+HWY_INLINE hn::Vec<DI> QuantizeLanes(DD dd, DI di, hn::Vec<DD> z) {
+  const auto bias = hn::Set(dd, kRoundToIntegerBias);
+  const auto depthMax = hn::Set(dd, static_cast<double>(kDepthMax));
+  auto q = hn::Sub(hn::Add(hn::Mul(z, depthMax), bias), bias);
+  // From z >= 1 on the product is at least kDepthMax, below 1 at most kDepthMax (rounding is
+  // monotonic), so the clamp is a Min; a NaN's lane is zeroed next whatever Min gave it.
+  q = hn::Min(q, depthMax);
+  q = hn::IfThenElseZero(hn::Gt(z, hn::Zero(dd)), q);
+  return hn::DemoteTo(di, q);
+}
+
+// What the tests and ops leave in a vector of covered pixels.
+template <class DI>
+struct LanesAfter {
+  hn::Vec<DI> stencil;
+  hn::Vec<DI> depth;
+};
+
+// applyFragment() on int32 lanes: the incoming and stored depths and the old stencils.
+template <class DI>
+HWY_INLINE LanesAfter<DI> FragmentLanes(DI di, const FragmentState& s, hn::Vec<DI> incoming,
+                                        hn::Vec<DI> stored, hn::Vec<DI> old) {
+  const StencilOps& ops = s.ops;
+  const auto valueMask = hn::Set(di, s.stencilValueMask);
+  const auto writeMask = hn::Set(di, s.stencilWriteMask);
+  const auto stencilRef = hn::Set(di, s.stencilRef & s.stencilValueMask);
+  const auto stencilPass = CompareLanes(di, s.stencilFunc, stencilRef, hn::And(old, valueMask));
+  const auto depthPass = CompareLanes(di, s.depthFunc, incoming, stored);
+  LanesAfter<DI> after{old, stored};
+  if (s.stencilWriteMask != 0) {  // else no stencil bit can change
+    const auto stencilFail = hn::Not(stencilPass);
+    const auto depthFail = hn::AndNot(depthPass, stencilPass);
+    const auto updated = hn::IfThenElse(
+        stencilFail, StencilOpLanes(di, ops.stencilFail, old, s.stencilRef),
+        hn::IfThenElse(depthFail, StencilOpLanes(di, ops.depthFail, old, s.stencilRef),
+                       StencilOpLanes(di, ops.depthPass, old, s.stencilRef)));
+    after.stencil = hn::Or(hn::And(updated, writeMask), hn::AndNot(writeMask, old));
+  }
+  if (s.depthWrite)
+    after.depth = hn::IfThenElse(hn::And(stencilPass, depthPass), incoming, stored);
+  return after;
+}
+
 // Row r of the block, all 8 pixels covered, `lanes` pixels per step: zx holds the row-invariant
 // part of each column's depth, ty the row's.
 template <class DD>
 HWY_INLINE void ApplyFullRow(DD dd, const FragmentState& s, const BlockFragments& b,
                              const double* zx, double ty, int r) {
   const hn::Rebind<std::int32_t, DD> di;
+  const hn::Rebind<std::uint32_t, DD> du;
   const hn::Rebind<std::uint8_t, DD> d8;
   const int lanes = static_cast<int>(hn::Lanes(dd));
-  const StencilOps& ops = s.ops;
   auto* depthRow = reinterpret_cast<std::int32_t*>(b.depth + r * b.stride);
   std::uint8_t* stencilRow = b.stencil + r * b.stride;
-  const auto valueMask = hn::Set(di, s.stencilValueMask);
-  const auto writeMask = hn::Set(di, s.stencilWriteMask);
-  const auto stencilRef = hn::Set(di, s.stencilRef & s.stencilValueMask);
   for (int j = 0; j < 8; j += lanes) {
-    // quantizeDepth: 0 unless z > 0 (NaN too), kDepthMax from 1 on, else the scaled value
-    // rounded by adding and subtracting kRoundToIntegerBias.
-    const auto z = hn::Add(hn::Load(dd, zx + j), hn::Set(dd, ty));
-    const auto bias = hn::Set(dd, kRoundToIntegerBias);
-    const auto scaled = hn::Mul(z, hn::Set(dd, static_cast<double>(kDepthMax)));
-    auto q = hn::Sub(hn::Add(scaled, bias), bias);
-    q = hn::IfThenElse(z >= hn::Set(dd, 1.0), hn::Set(dd, static_cast<double>(kDepthMax)), q);
-    q = hn::IfThenElseZero(hn::Gt(z, hn::Zero(dd)), q);
-    const auto incoming = hn::DemoteTo(di, q);  // an integer in [0, 2^24): exact
-
-    const auto stored = hn::LoadU(di, depthRow + j);
-    const auto old = hn::PromoteTo(di, hn::LoadU(d8, stencilRow + j));
-    const auto stencilPass = CompareLanes(di, s.stencilFunc, stencilRef, hn::And(old, valueMask));
-    const auto depthPass = CompareLanes(di, s.depthFunc, incoming, stored);
-    if (s.stencilWriteMask != 0) {  // else no stencil bit can change
-      const auto stencilFail = hn::Not(stencilPass);
-      const auto depthFail = hn::AndNot(depthPass, stencilPass);
-      const auto updated = hn::IfThenElse(
-          stencilFail, StencilOpLanes(di, ops.stencilFail, old, s.stencilRef),
-          hn::IfThenElse(depthFail, StencilOpLanes(di, ops.depthFail, old, s.stencilRef),
-                         StencilOpLanes(di, ops.depthPass, old, s.stencilRef)));
-      const auto written = hn::Or(hn::And(updated, writeMask), hn::AndNot(writeMask, old));
-      hn::StoreU(hn::DemoteTo(d8, written), d8, stencilRow + j);
-    }
+    const auto incoming = QuantizeLanes(dd, di, hn::Add(hn::Load(dd, zx + j), hn::Set(dd, ty)));
+    const auto after = FragmentLanes(di, s, incoming, hn::LoadU(di, depthRow + j),
+                                     hn::PromoteTo(di, hn::LoadU(d8, stencilRow + j)));
+    if (s.stencilWriteMask != 0)
+      hn::StoreU(hn::TruncateTo(d8, hn::BitCast(du, after.stencil)), d8, stencilRow + j);
     if (s.depthWrite)
-      hn::StoreU(hn::IfThenElse(hn::And(stencilPass, depthPass), incoming, stored), di,
-                 depthRow + j);
+      hn::StoreU(after.depth, di, depthRow + j);
   }
 }
+
+#if HWY_TARGET != HWY_SCALAR  // one-lane vectors have no halves
+// Rows r and r + 1, both full, in vectors twice as wide for the integer work: the depths are
+// doubles, so a double vector holds half as many pixels as an int32 one of the same width.
+template <class DD>
+HWY_INLINE void ApplyFullRowPair(DD dd, const FragmentState& s, const BlockFragments& b,
+                                 const double* zx, double ty0, double ty1, int r) {
+  const hn::Rebind<std::int32_t, DD> di;
+  const hn::Twice<decltype(di)> d2i;
+  const hn::Rebind<std::uint32_t, decltype(d2i)> d2u;
+  const hn::Rebind<std::uint8_t, DD> d8;
+  const hn::Rebind<std::uint8_t, decltype(d2i)> d28;
+  const int lanes = static_cast<int>(hn::Lanes(dd));
+  auto* depth0 = reinterpret_cast<std::int32_t*>(b.depth + r * b.stride);
+  auto* depth1 = depth0 + b.stride;
+  std::uint8_t* stencil0 = b.stencil + r * b.stride;
+  std::uint8_t* stencil1 = stencil0 + b.stride;
+  for (int j = 0; j < 8; j += lanes) {
+    const auto zc = hn::Load(dd, zx + j);
+    const auto incoming = hn::Combine(d2i, QuantizeLanes(dd, di, hn::Add(zc, hn::Set(dd, ty1))),
+                                      QuantizeLanes(dd, di, hn::Add(zc, hn::Set(dd, ty0))));
+    const auto stored = hn::Combine(d2i, hn::LoadU(di, depth1 + j), hn::LoadU(di, depth0 + j));
+    const auto old = hn::PromoteTo(
+        d2i, hn::Combine(d28, hn::LoadU(d8, stencil1 + j), hn::LoadU(d8, stencil0 + j)));
+    const auto after = FragmentLanes(d2i, s, incoming, stored, old);
+    if (s.stencilWriteMask != 0) {
+      const auto bytes = hn::TruncateTo(d28, hn::BitCast(d2u, after.stencil));
+      hn::StoreU(hn::LowerHalf(d8, bytes), d8, stencil0 + j);
+      hn::StoreU(hn::UpperHalf(d8, bytes), d8, stencil1 + j);
+    }
+    if (s.depthWrite) {
+      hn::StoreU(hn::LowerHalf(di, after.depth), di, depth0 + j);
+      hn::StoreU(hn::UpperHalf(di, after.depth), di, depth1 + j);
+    }
+  }
+}
+#endif
 
 int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
   const hn::CappedTag<double, 8> dd;
@@ -153,9 +214,19 @@ int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
     const int r = __builtin_ctzll(mask) / 8;
     const auto bits = static_cast<unsigned>((mask >> (8 * r)) & 0xFF);
     mask &= ~(std::uint64_t{0xFF} << (8 * r));
+    const auto rowY = [&](int row) {
+      return p.dzdy * static_cast<double>(pixelCentreFixed(b.y + row) - p.y0);
+    };
+#if HWY_TARGET != HWY_SCALAR
+    if (bits == 0xFF && r < 7 && ((mask >> (8 * r + 8)) & 0xFF) == 0xFF) {
+      ApplyFullRowPair(dd, s, b, zx, rowY(r), rowY(r + 1), r);
+      mask &= ~(std::uint64_t{0xFF} << (8 * r + 8));
+      applied += 16;
+      continue;
+    }
+#endif
     if (bits == 0xFF) {
-      const double ty = p.dzdy * static_cast<double>(pixelCentreFixed(b.y + r) - p.y0);
-      ApplyFullRow(dd, s, b, zx, ty, r);
+      ApplyFullRow(dd, s, b, zx, rowY(r), r);
       applied += 8;
     } else {
       applied += applyRowFragments(b, r, bits);

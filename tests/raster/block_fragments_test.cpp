@@ -3,7 +3,7 @@
 // build runs here, over random states (every compare function and stencil op, random masks
 // and references), random stored values, random depth planes anywhere in the guard band whose
 // depths lie around and beyond [0, 1] (NaN, infinities, exact 0 and 1, the rounding midpoints),
-// and coverage masks with full and partial rows. The
+// and coverage masks with partial rows, full rows and pairs of full rows. The
 // one-pixel version is applyFragment() itself, which the reference-model tests hold to the
 // contract.
 
@@ -83,7 +83,7 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
     std::uniform_int_distribution<std::int64_t> position(-(std::int64_t{32768} << 8),
                                                          std::int64_t{32768} << 8);
     std::uniform_int_distribution<int> pixel(0, kMaxFramebufferSize / 8 - 1);
-    long long fullRows = 0;
+    long long fullRows = 0, fullRowPairs = 0;
     for (int trial = 0; trial < 4000; ++trial) {
       RenderState state = initialRenderState(16, 16);
       state.depthFunc = static_cast<CompareFunc>(func(rng));
@@ -119,6 +119,7 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
         const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
         const std::uint64_t bits = kind == 0 ? 0 : kind == 1 ? 0xFF : byte(rng);
         fullRows += bits == 0xFF;
+        fullRowPairs += r > 0 && bits == 0xFF && ((mask >> (8 * r - 8)) & 0xFF) == 0xFF;
         mask |= bits << (8 * r);
       }
 
@@ -137,7 +138,9 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
       REQUIRE(depthSimd == depth);
       REQUIRE(stencilSimd == stencil);
     }
-    CHECK(fullRows > 4000);  // the SIMD rows were exercised, not only the scalar fallback
+    // The SIMD rows were exercised, single and in pairs, not only the scalar fallback.
+    CHECK(fullRows > 4000);
+    CHECK(fullRowPairs > 1000);
   });
   CHECK(!targets.empty());
 }
