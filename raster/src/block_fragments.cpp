@@ -68,6 +68,10 @@ HWY_INLINE V StencilOpLanes(D d, StencilOp op, V value, std::uint8_t ref) {
   return value;
 }
 
+// Rows with fewer covered pixels than this go pixel by pixel: a vector step costs about as
+// much as two pixels one at a time.
+constexpr int kMinVectorRowPixels = 3;
+
 // The state a fragment reads, copied out of the RenderState once per block: the buffer stores
 // go through a uint8_t pointer, which may alias anything, so fields read through the state
 // would be loaded again after every store.
@@ -128,11 +132,29 @@ HWY_INLINE LanesAfter<DI> FragmentLanes(DI di, const FragmentState& s, hn::Vec<D
   return after;
 }
 
-// Row r of the block, all 8 pixels covered, `lanes` pixels per step: zx holds the row-invariant
-// part of each column's depth, ty the row's.
-template <class DD>
-HWY_INLINE void ApplyFullRow(DD dd, const FragmentState& s, const BlockFragments& b,
-                             const double* zx, double ty, int r) {
+// The lanes of a row's pixels j, j + 1, ... that `bits` (bit c: column c) covers.
+template <class DI>
+HWY_INLINE hn::Mask<DI> CoveredLanes(DI di, unsigned bits, int j) {
+  const auto column = hn::Add(hn::Iota(di, 0), hn::Set(di, j));
+  return hn::Ne(
+      hn::And(hn::Shr(hn::Set(di, static_cast<std::int32_t>(bits)), column), hn::Set(di, 1)),
+      hn::Zero(di));
+}
+
+// A partial row's lanes keep what they held where no pixel is covered.
+template <class DI>
+HWY_INLINE void KeepUncovered(hn::Mask<DI> covered, hn::Vec<DI> old, hn::Vec<DI> stored,
+                              LanesAfter<DI>& after) {
+  after.stencil = hn::IfThenElse(covered, after.stencil, old);
+  after.depth = hn::IfThenElse(covered, after.depth, stored);
+}
+
+// Row r of the block, the pixels of `bits` covered (all 8 when kFull), `lanes` pixels per step:
+// zx holds the row-invariant part of each column's depth, ty the row's. A lane of an uncovered
+// pixel is computed and then written back unchanged.
+template <bool kFull, class DD>
+HWY_INLINE void ApplyRow(DD dd, const FragmentState& s, const BlockFragments& b, const double* zx,
+                         double ty, int r, unsigned bits) {
   const hn::Rebind<std::int32_t, DD> di;
   const hn::Rebind<std::uint32_t, DD> du;
   const hn::Rebind<std::uint8_t, DD> d8;
@@ -141,8 +163,11 @@ HWY_INLINE void ApplyFullRow(DD dd, const FragmentState& s, const BlockFragments
   std::uint8_t* stencilRow = b.stencil + r * b.stride;
   for (int j = 0; j < 8; j += lanes) {
     const auto incoming = QuantizeLanes(dd, di, hn::Add(hn::Load(dd, zx + j), hn::Set(dd, ty)));
-    const auto after = FragmentLanes(di, s, incoming, hn::LoadU(di, depthRow + j),
-                                     hn::PromoteTo(di, hn::LoadU(d8, stencilRow + j)));
+    const auto stored = hn::LoadU(di, depthRow + j);
+    const auto old = hn::PromoteTo(di, hn::LoadU(d8, stencilRow + j));
+    auto after = FragmentLanes(di, s, incoming, stored, old);
+    if constexpr (!kFull)
+      KeepUncovered(CoveredLanes(di, bits, j), old, stored, after);
     if (s.stencilWriteMask != 0)
       hn::StoreU(hn::TruncateTo(d8, hn::BitCast(du, after.stencil)), d8, stencilRow + j);
     if (s.depthWrite)
@@ -151,11 +176,13 @@ HWY_INLINE void ApplyFullRow(DD dd, const FragmentState& s, const BlockFragments
 }
 
 #if HWY_TARGET != HWY_SCALAR  // one-lane vectors have no halves
-// Rows r and r + 1, both full, in vectors twice as wide for the integer work: the depths are
-// doubles, so a double vector holds half as many pixels as an int32 one of the same width.
-template <class DD>
-HWY_INLINE void ApplyFullRowPair(DD dd, const FragmentState& s, const BlockFragments& b,
-                                 const double* zx, double ty0, double ty1, int r) {
+// Rows r and r + 1 (bits0 and bits1 covered; all 16 pixels when kFull) in vectors twice as
+// wide for the integer work: the depths are doubles, so a double vector holds half as many
+// pixels as an int32 one of the same width.
+template <bool kFull, class DD>
+HWY_INLINE void ApplyRowPair(DD dd, const FragmentState& s, const BlockFragments& b,
+                             const double* zx, double ty0, double ty1, int r, unsigned bits0,
+                             unsigned bits1) {
   const hn::Rebind<std::int32_t, DD> di;
   const hn::Twice<decltype(di)> d2i;
   const hn::Rebind<std::uint32_t, decltype(d2i)> d2u;
@@ -173,7 +200,15 @@ HWY_INLINE void ApplyFullRowPair(DD dd, const FragmentState& s, const BlockFragm
     const auto stored = hn::Combine(d2i, hn::LoadU(di, depth1 + j), hn::LoadU(di, depth0 + j));
     const auto old = hn::PromoteTo(
         d2i, hn::Combine(d28, hn::LoadU(d8, stencil1 + j), hn::LoadU(d8, stencil0 + j)));
-    const auto after = FragmentLanes(d2i, s, incoming, stored, old);
+    auto after = FragmentLanes(d2i, s, incoming, stored, old);
+    if constexpr (!kFull) {
+      // Lane k of the low half is column j + k of row r, of the high half of row r + 1.
+      const auto bits = hn::Combine(d2i, hn::Set(di, static_cast<std::int32_t>(bits1)),
+                                    hn::Set(di, static_cast<std::int32_t>(bits0)));
+      const auto column = hn::Combine(d2i, hn::Iota(di, j), hn::Iota(di, j));
+      const auto covered = hn::Ne(hn::And(hn::Shr(bits, column), hn::Set(d2i, 1)), hn::Zero(d2i));
+      KeepUncovered(covered, old, stored, after);
+    }
     if (s.stencilWriteMask != 0) {
       const auto bytes = hn::TruncateTo(d28, hn::BitCast(d2u, after.stencil));
       hn::StoreU(hn::LowerHalf(d8, bytes), d8, stencil0 + j);
@@ -209,30 +244,36 @@ int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
     const auto offset = hn::Add(base, hn::Mul(hn::Iota(dd, static_cast<double>(j)), step));
     hn::Store(hn::Add(hn::Set(dd, p.z0), hn::Mul(hn::Set(dd, p.dzdx), offset)), dd, zx + j);
   }
-  int applied = 0;
-  while (mask != 0) {
-    const int r = __builtin_ctzll(mask) / 8;
-    const auto bits = static_cast<unsigned>((mask >> (8 * r)) & 0xFF);
-    mask &= ~(std::uint64_t{0xFF} << (8 * r));
-    const auto rowY = [&](int row) {
-      return p.dzdy * static_cast<double>(pixelCentreFixed(b.y + row) - p.y0);
-    };
+  const auto rowY = [&](int row) {
+    return p.dzdy * static_cast<double>(pixelCentreFixed(b.y + row) - p.y0);
+  };
+  const auto rowBits = [&](int row) { return static_cast<unsigned>((mask >> (8 * row)) & 0xFF); };
+  const std::uint64_t perRow = detail::pixelsPerRow(mask);
+  const auto rowPixels = [&](int row) { return static_cast<int>((perRow >> (8 * row)) & 0xFF); };
+  for (int r = 0; r < 8; ++r) {
+    const unsigned bits = rowBits(r);
+    if (rowPixels(r) < kMinVectorRowPixels) {
+      if (bits != 0)
+        applyRowFragments(b, r, bits);
+      continue;
+    }
 #if HWY_TARGET != HWY_SCALAR
-    if (bits == 0xFF && r < 7 && ((mask >> (8 * r + 8)) & 0xFF) == 0xFF) {
-      ApplyFullRowPair(dd, s, b, zx, rowY(r), rowY(r + 1), r);
-      mask &= ~(std::uint64_t{0xFF} << (8 * r + 8));
-      applied += 16;
+    const unsigned next = r < 7 ? rowBits(r + 1) : 0;
+    if (r < 7 && rowPixels(r + 1) >= kMinVectorRowPixels) {
+      if ((bits & next) == 0xFF)
+        ApplyRowPair<true>(dd, s, b, zx, rowY(r), rowY(r + 1), r, bits, next);
+      else
+        ApplyRowPair<false>(dd, s, b, zx, rowY(r), rowY(r + 1), r, bits, next);
+      ++r;
       continue;
     }
 #endif
-    if (bits == 0xFF) {
-      ApplyFullRow(dd, s, b, zx, rowY(r), r);
-      applied += 8;
-    } else {
-      applied += applyRowFragments(b, r, bits);
-    }
+    if (bits == 0xFF)
+      ApplyRow<true>(dd, s, b, zx, rowY(r), r, bits);
+    else
+      ApplyRow<false>(dd, s, b, zx, rowY(r), r, bits);
   }
-  return applied;
+  return detail::pixelsInBlock(perRow);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -3,7 +3,8 @@
 // build runs here, over random states (every compare function and stencil op, random masks
 // and references), random stored values, random depth planes anywhere in the guard band whose
 // depths lie around and beyond [0, 1] (NaN, infinities, exact 0 and 1, the rounding midpoints),
-// and coverage masks with partial rows, full rows and pairs of full rows. The
+// and coverage masks with partial rows, full rows and pairs of rows (the vectors take the rows
+// of at least a few pixels, masked where partial). The
 // one-pixel version is applyFragment() itself, which the reference-model tests hold to the
 // contract.
 
@@ -83,7 +84,7 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
     std::uniform_int_distribution<std::int64_t> position(-(std::int64_t{32768} << 8),
                                                          std::int64_t{32768} << 8);
     std::uniform_int_distribution<int> pixel(0, kMaxFramebufferSize / 8 - 1);
-    long long fullRows = 0, fullRowPairs = 0;
+    long long fullRows = 0, fullRowPairs = 0, denseBlocksWithPartialRows = 0;
     for (int trial = 0; trial < 4000; ++trial) {
       RenderState state = initialRenderState(16, 16);
       state.depthFunc = static_cast<CompareFunc>(func(rng));
@@ -122,6 +123,14 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
         fullRowPairs += r > 0 && bits == 0xFF && ((mask >> (8 * r - 8)) & 0xFF) == 0xFF;
         mask |= bits << (8 * r);
       }
+      // A block dense enough for the vectors whose partial rows go through them masked.
+      bool partialRow = false;
+      for (int r = 0; r < 8; ++r) {
+        const int pixels = __builtin_popcountll((mask >> (8 * r)) & 0xFF);
+        partialRow = partialRow || (pixels >= 3 && pixels < 8);
+      }
+      denseBlocksWithPartialRows +=
+          partialRow && __builtin_popcountll(mask) >= detail::kMinSimdBlockPixels;
 
       std::vector<std::uint32_t> depthSimd = depth;
       std::vector<std::uint8_t> stencilSimd = stencil;
@@ -141,6 +150,7 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
     // The SIMD rows were exercised, single and in pairs, not only the scalar fallback.
     CHECK(fullRows > 4000);
     CHECK(fullRowPairs > 1000);
+    CHECK(denseBlocksWithPartialRows > 1000);
   });
   CHECK(!targets.empty());
 }

@@ -61,23 +61,31 @@ inline int applyBlockFragmentsScalar(const BlockFragments& block, std::uint64_t 
 }
 
 namespace detail {
-// The SIMD version for a block with at least one full row (block_fragments.cpp).
+// The SIMD version (block_fragments.cpp): rows with a few covered pixels or more in vectors,
+// two rows at a time where both are, the sparser rows one pixel at a time.
 int applyBlockFragmentsSimd(const BlockFragments& block, std::uint64_t mask);
 
-// Whether some row of the mask is fully covered: after the three steps, bit 0 of each byte is
-// the AND of that byte's 8 bits.
-inline bool hasFullRow(std::uint64_t mask) {
-  mask &= mask >> 1;
-  mask &= mask >> 2;
-  mask &= mask >> 4;
-  return (mask & 0x0101010101010101ULL) != 0;
+// Byte r of the result is the number of bits set in byte r (row r) of the mask. Bit arithmetic,
+// since the baseline x86-64 has no popcount instruction and the builtin would be a call.
+inline std::uint64_t pixelsPerRow(std::uint64_t mask) {
+  mask = mask - ((mask >> 1) & 0x5555555555555555ULL);
+  mask = (mask & 0x3333333333333333ULL) + ((mask >> 2) & 0x3333333333333333ULL);
+  return (mask + (mask >> 4)) & 0x0F0F0F0F0F0F0F0FULL;
 }
+
+// The sum of the bytes of pixelsPerRow: the covered pixels of the block.
+inline int pixelsInBlock(std::uint64_t perRow) {
+  return static_cast<int>((perRow * 0x0101010101010101ULL) >> 56);
+}
+
+// Blocks with fewer covered pixels than this (a small triangle's, or a thin sliver of a large
+// one) stay inline and pixel by pixel, without the run-time dispatch.
+inline constexpr int kMinSimdBlockPixels = 16;
 }  // namespace detail
 
-// The same, with each full row in SIMD. A sparse block (a small triangle's) has no row for the
-// vectors and stays inline, without the run-time dispatch.
+// The same, the denser blocks in SIMD.
 inline int applyBlockFragments(const BlockFragments& block, std::uint64_t mask) {
-  if (!detail::hasFullRow(mask))
+  if (detail::pixelsInBlock(detail::pixelsPerRow(mask)) < detail::kMinSimdBlockPixels)
     return applyBlockFragmentsScalar(block, mask);
   return detail::applyBlockFragmentsSimd(block, mask);
 }
