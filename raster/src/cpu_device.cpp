@@ -112,12 +112,16 @@ void CpuDevice::clearDepth(double depth) {
 
 void CpuDevice::clearStencil(std::uint8_t value) {
   // GL applies the stencil write mask to clears as well.
+  const std::uint8_t writeMask = state_.stencilWriteMask;
+  if (writeMask == 0xFF)
+    return stencil_.fill(state_.scissor, value);
   const PixelRect& r = state_.scissor;
+  if (r.empty())
+    return;
   for (int y = r.y0; y < r.y1; ++y) {
-    for (int x = r.x0; x < r.x1; ++x) {
-      std::uint8_t& s = stencil_.at(x, y);
-      s = writeThroughMask(s, value, state_.stencilWriteMask);
-    }
+    std::uint8_t* row = &stencil_.at(r.x0, y);
+    for (int i = 0; i < r.width(); ++i)
+      row[i] = writeThroughMask(row[i], value, writeMask);
   }
 }
 
