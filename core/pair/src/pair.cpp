@@ -171,13 +171,19 @@ PixelRect classifyStencil(const raster::PixelBuffer<std::uint8_t>& stencil, Pair
   const std::array<std::uint8_t, 256>& table = caseTable();
   r.caseMap = raster::PixelBuffer<std::uint8_t>(stencil.rect, std::uint8_t{0});
   const PixelRect& m = stencil.rect;
+  // Local pointers and counts: a byte store may alias anything, so counts and pointers reached
+  // through r would be reloaded after every pixel. Four sets of counts, one per pixel of each
+  // group of four, keep a run of one case from waiting on its own increments.
+  const std::uint8_t* in = stencil.data.data();
+  std::uint8_t* out = r.caseMap.data.data();
+  std::array<std::array<long long, kCaseCount>, 4> counts{};
   int cx0 = m.x1, cy0 = m.y1, cx1 = m.x0, cy1 = m.y0;
   std::size_t i = 0;  // both buffers share the rectangle, so one running index serves both
   for (int y = m.y0; y < m.y1; ++y) {
     for (int x = m.x0; x < m.x1; ++x, ++i) {
-      const std::uint8_t c = table[stencil.data[i]];
-      r.caseMap.data[i] = c;
-      ++r.caseCounts[c];
+      const std::uint8_t c = table[in[i]];
+      out[i] = c;
+      ++counts[i & 3][c];
       if (isInterfering(c)) {
         cx0 = std::min(cx0, x);
         cy0 = std::min(cy0, y);
@@ -186,6 +192,8 @@ PixelRect classifyStencil(const raster::PixelBuffer<std::uint8_t>& stencil, Pair
       }
     }
   }
+  for (std::size_t c = 0; c < kCaseCount; ++c)
+    r.caseCounts[c] += counts[0][c] + counts[1][c] + counts[2][c] + counts[3][c];
   for (int c = 3; c <= 6; ++c)
     r.interferingPixels += r.caseCounts[static_cast<std::size_t>(c)];
   return r.interferingPixels > 0 ? PixelRect{cx0, cy0, cx1, cy1} : PixelRect{};
@@ -200,30 +208,43 @@ void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
   const double worldPerStep = (r.depthMax - r.depthMin) * depthScale;
   r.contact.points.reserve(static_cast<std::size_t>(r.interferingPixels));
   const PixelRect& rect = nearDepth.rect;
+  // The box, depth and count are kept in locals while the loop runs: the points' stores could
+  // alias them through r and would force them through memory at every pixel.
+  Aabb box = r.contact.box;
+  double maxDepth = r.contact.maxDepth;
+  long long collapsed = r.contact.collapsedPixels;
   for (int y = rect.y0; y < rect.y1; ++y) {
-    for (int x = rect.x0; x < rect.x1; ++x) {
-      if (!isInterfering(r.caseMap.at(x, y)))
+    const std::uint8_t* cases = &r.caseMap.at(rect.x0, y);
+    const std::uint32_t* nearRow = &nearDepth.at(rect.x0, y);
+    const std::uint32_t* farRow = &farDepth.at(rect.x0, y);
+    const double v = view.planeV(y + 0.5);
+    for (int i = 0; i < rect.width(); ++i) {
+      if (!isInterfering(cases[i]))
         continue;
-      std::uint32_t lo = nearDepth.at(x, y), hi = farDepth.at(x, y);
+      std::uint32_t lo = nearRow[i], hi = farRow[i];
       // The near end can only pass the far end by rounding (the intervals touch within a
       // step at this pixel): the overlap is then taken as the single depth between them.
       if (lo > hi) {
-        ++r.contact.collapsedPixels;
+        ++collapsed;
         lo = hi = lo / 2 + hi / 2 + (lo & hi & 1u);
       }
-      const double cxw = x + 0.5, cyw = y + 0.5;
-      const Eigen::Vector3d pn = view.toWorld(cxw, cyw, lo * depthScale);
-      const Eigen::Vector3d pf = view.toWorld(cxw, cyw, hi * depthScale);
-      r.contact.box.extend(pn);
-      r.contact.box.extend(pf);
+      // toWorld at the pixel centre for both ends, sharing their u and v.
+      const double u = view.planeU(rect.x0 + i + 0.5);
+      const Eigen::Vector3d pn = view.fromPlane({u, v, view.planeD(lo * depthScale)});
+      const Eigen::Vector3d pf = view.fromPlane({u, v, view.planeD(hi * depthScale)});
+      box.extend(pn);
+      box.extend(pf);
       r.contact.points.push_back(0.5 * (pn + pf));
       if (ends) {
         ends->push_back(pn);
         ends->push_back(pf);
       }
-      r.contact.maxDepth = std::max(r.contact.maxDepth, (hi - lo) * worldPerStep);
+      maxDepth = std::max(maxDepth, (hi - lo) * worldPerStep);
     }
   }
+  r.contact.box = box;
+  r.contact.maxDepth = maxDepth;
+  r.contact.collapsedPixels = collapsed;
 }
 
 // Runs the algorithm's steps on the device, timing each and showing it to the observer.

@@ -51,18 +51,6 @@ Eigen::Vector3d OrthoView::toPlane(const Eigen::Vector3d& p) const {
   return {p.x(), p.y(), p.z()};
 }
 
-Eigen::Vector3d OrthoView::fromPlane(const Eigen::Vector3d& q) const {
-  switch (axis_) {
-    case ViewAxis::X:
-      return {q.z(), q.x(), q.y()};
-    case ViewAxis::Y:
-      return {q.y(), q.z(), q.x()};
-    case ViewAxis::Z:
-      break;
-  }
-  return {q.x(), q.y(), q.z()};
-}
-
 raster::WindowVertex OrthoView::toWindow(const Eigen::Vector3d& world) const {
   const Eigen::Vector3d q = toPlane(world);
   const double x = (q.x() - window_.umin) / (window_.umax - window_.umin) * width_;
@@ -94,10 +82,7 @@ std::vector<raster::WindowVertex> OrthoView::toWindow(const TriangleMesh& mesh) 
 }
 
 Eigen::Vector3d OrthoView::toWorld(double windowX, double windowY, double depth) const {
-  const double u = window_.umin + windowX / width_ * (window_.umax - window_.umin);
-  const double v = window_.vmin + windowY / height_ * (window_.vmax - window_.vmin);
-  const double d = depthMax_ - depth * (depthMax_ - depthMin_);
-  return fromPlane({u, v, d});
+  return fromPlane({planeU(windowX), planeV(windowY), planeD(depth)});
 }
 
 std::vector<std::uint32_t> triangleIndices(const TriangleMesh& mesh) {

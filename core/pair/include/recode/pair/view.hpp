@@ -32,7 +32,19 @@ class OrthoView {
 
   // (u, v, d): the image-plane coordinates and the coordinate along the axis.
   [[nodiscard]] Eigen::Vector3d toPlane(const Eigen::Vector3d& world) const;
-  [[nodiscard]] Eigen::Vector3d fromPlane(const Eigen::Vector3d& uvd) const;
+  // Inline: the contact measurement calls it twice per pixel, and an out-of-line call loads
+  // the point it was just given through memory, which costs a failed store forwarding.
+  [[nodiscard]] Eigen::Vector3d fromPlane(const Eigen::Vector3d& q) const {
+    switch (axis_) {
+      case ViewAxis::X:
+        return {q.z(), q.x(), q.y()};
+      case ViewAxis::Y:
+        return {q.y(), q.z(), q.x()};
+      case ViewAxis::Z:
+        break;
+    }
+    return {q.x(), q.y(), q.z()};
+  }
 
   // World point -> window vertex, x and y snapped to 1/256 pixel, z in [0, 1]. Throws
   // std::invalid_argument for a point beyond the device's coordinate range or outside the
@@ -40,8 +52,19 @@ class OrthoView {
   [[nodiscard]] raster::WindowVertex toWindow(const Eigen::Vector3d& world) const;
   [[nodiscard]] std::vector<raster::WindowVertex> toWindow(const TriangleMesh& mesh) const;
 
-  // Window position (pixels) and normalised depth -> world point.
+  // Window position (pixels) and normalised depth -> world point: fromPlane of the three below.
   [[nodiscard]] Eigen::Vector3d toWorld(double windowX, double windowY, double depth) const;
+  // toWorld's image-plane u of a window x, v of a window y, and d of a normalised depth, each
+  // alone, for callers that share one across many points (a row's v, a pixel's u).
+  [[nodiscard]] double planeU(double windowX) const {
+    return window_.umin + windowX / width_ * (window_.umax - window_.umin);
+  }
+  [[nodiscard]] double planeV(double windowY) const {
+    return window_.vmin + windowY / height_ * (window_.vmax - window_.vmin);
+  }
+  [[nodiscard]] double planeD(double depth) const {
+    return depthMax_ - depth * (depthMax_ - depthMin_);
+  }
 
   // World size of one pixel along u and v.
   [[nodiscard]] double pixelWidth() const { return (window_.umax - window_.umin) / width_; }
