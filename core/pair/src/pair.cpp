@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -172,28 +173,49 @@ PixelRect classifyStencil(const raster::PixelBuffer<std::uint8_t>& stencil, Pair
   r.caseMap = raster::PixelBuffer<std::uint8_t>(stencil.rect, std::uint8_t{0});
   const PixelRect& m = stencil.rect;
   // Local pointers and counts: a byte store may alias anything, so counts and pointers reached
-  // through r would be reloaded after every pixel. Four sets of counts, one per pixel of each
-  // group of four, keep a run of one case from waiting on its own increments.
+  // through r would be reloaded after every pixel.
   const std::uint8_t* in = stencil.data.data();
   std::uint8_t* out = r.caseMap.data.data();
-  std::array<std::array<long long, kCaseCount>, 4> counts{};
+  std::array<long long, kCaseCount> counts{};
   int cx0 = m.x1, cy0 = m.y1, cx1 = m.x0, cy1 = m.y0;
+  const auto interferesAt = [&](int x0, int x1, int y) {
+    cx0 = std::min(cx0, x0);
+    cy0 = std::min(cy0, y);
+    cx1 = std::max(cx1, x1);
+    cy1 = std::max(cy1, y + 1);
+  };
+  const auto decode = [&](int x, int y, std::size_t at) {
+    const std::uint8_t c = table[in[at]];
+    out[at] = c;
+    ++counts[c];
+    if (isInterfering(c))
+      interferesAt(x, x + 1, y);
+  };
+  constexpr int kRun = 8;
   std::size_t i = 0;  // both buffers share the rectangle, so one running index serves both
   for (int y = m.y0; y < m.y1; ++y) {
-    for (int x = m.x0; x < m.x1; ++x, ++i) {
-      const std::uint8_t c = table[in[i]];
-      out[i] = c;
-      ++counts[i & 3][c];
-      if (isInterfering(c)) {
-        cx0 = std::min(cx0, x);
-        cy0 = std::min(cy0, y);
-        cx1 = std::max(cx1, x + 1);
-        cy1 = std::max(cy1, y + 1);
+    int x = m.x0;
+    // Most of a MOR lies in wide regions of one case (neither block, one block alone): a run of
+    // eight equal stencils is decoded once.
+    for (; x + kRun <= m.x1; x += kRun, i += kRun) {
+      std::uint64_t word;
+      std::memcpy(&word, in + i, kRun);
+      if (word != in[i] * 0x0101010101010101ULL) {
+        for (int k = 0; k < kRun; ++k)
+          decode(x + k, y, i + static_cast<std::size_t>(k));
+        continue;
       }
+      const std::uint8_t c = table[in[i]];
+      std::memset(out + i, c, kRun);
+      counts[c] += kRun;
+      if (isInterfering(c))
+        interferesAt(x, x + kRun, y);
     }
+    for (; x < m.x1; ++x, ++i)
+      decode(x, y, i);
   }
   for (std::size_t c = 0; c < kCaseCount; ++c)
-    r.caseCounts[c] += counts[0][c] + counts[1][c] + counts[2][c] + counts[3][c];
+    r.caseCounts[c] += counts[c];
   for (int c = 3; c <= 6; ++c)
     r.interferingPixels += r.caseCounts[static_cast<std::size_t>(c)];
   return r.interferingPixels > 0 ? PixelRect{cx0, cy0, cx1, cy1} : PixelRect{};
