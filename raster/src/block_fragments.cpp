@@ -250,16 +250,21 @@ int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
   const auto rowBits = [&](int row) { return static_cast<unsigned>((mask >> (8 * row)) & 0xFF); };
   const std::uint64_t perRow = detail::pixelsPerRow(mask);
   const auto rowPixels = [&](int row) { return static_cast<int>((perRow >> (8 * row)) & 0xFF); };
+  // A full row, or a partial one with enough pixels in a block whose columns all lie inside the
+  // buffers (a full row's do: its pixels are covered).
+  const auto vectorRow = [&](int row) {
+    return rowBits(row) == 0xFF || (b.wholeColumns && rowPixels(row) >= kMinVectorRowPixels);
+  };
   for (int r = 0; r < 8; ++r) {
     const unsigned bits = rowBits(r);
-    if (rowPixels(r) < kMinVectorRowPixels) {
+    if (!vectorRow(r)) {
       if (bits != 0)
         applyRowFragments(b, r, bits);
       continue;
     }
 #if HWY_TARGET != HWY_SCALAR
-    const unsigned next = r < 7 ? rowBits(r + 1) : 0;
-    if (r < 7 && rowPixels(r + 1) >= kMinVectorRowPixels) {
+    if (r < 7 && vectorRow(r + 1)) {
+      const unsigned next = rowBits(r + 1);
       if ((bits & next) == 0xFF)
         ApplyRowPair<true>(dd, s, b, zx, rowY(r), rowY(r + 1), r, bits, next);
       else

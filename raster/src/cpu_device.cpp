@@ -51,6 +51,7 @@ class FragmentWriter final : public TriangleSink {
     block.depth = depth_.data.data() + origin;
     block.stencil = stencil_.data.data() + origin;
     block.stride = depth_.rect.width();
+    block.wholeColumns = blockX + 8 <= depth_.rect.x1;
     fragments += static_cast<std::uint64_t>(applyBlockFragments(block, mask));
   }
 

@@ -8,8 +8,11 @@
 // one-pixel version is applyFragment() itself, which the reference-model tests hold to the
 // contract.
 
+#include <sys/mman.h>
+#include <unistd.h>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -135,6 +138,7 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
       std::vector<std::uint32_t> depthSimd = depth;
       std::vector<std::uint8_t> stencilSimd = stencil;
       block.stride = kStride;
+      block.wholeColumns = true;  // the rows are 11 wide
       block.depth = depth.data();
       block.stencil = stencil.data();
       const int appliedScalar = applyBlockFragmentsScalar(block, mask);
@@ -151,6 +155,79 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
     CHECK(fullRows > 4000);
     CHECK(fullRowPairs > 1000);
     CHECK(denseBlocksWithPartialRows > 1000);
+  });
+  CHECK(!targets.empty());
+}
+
+namespace {
+
+// `bytes` bytes that end where an inaccessible page begins: a read or write past them faults.
+class BufferBeforeGuardPage {
+ public:
+  explicit BufferBeforeGuardPage(std::size_t bytes)
+      : page_(static_cast<std::size_t>(sysconf(_SC_PAGESIZE))) {
+    base_ = mmap(nullptr, 2 * page_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    REQUIRE(base_ != MAP_FAILED);
+    REQUIRE(mprotect(static_cast<char*>(base_) + page_, page_, PROT_NONE) == 0);
+    data_ = static_cast<char*>(base_) + page_ - bytes;
+  }
+  ~BufferBeforeGuardPage() { munmap(base_, 2 * page_); }
+  BufferBeforeGuardPage(const BufferBeforeGuardPage&) = delete;
+  BufferBeforeGuardPage& operator=(const BufferBeforeGuardPage&) = delete;
+  template <class T>
+  T* as() const {
+    return reinterpret_cast<T*>(data_);
+  }
+
+ private:
+  std::size_t page_;
+  void* base_ = nullptr;
+  char* data_ = nullptr;
+};
+
+}  // namespace
+
+TEST_CASE("block fragments: a block at the right edge of a buffer touches only the buffer",
+          "[raster][simd]") {
+  // A buffer 5 pixels wide and 8 rows high ending at a guard page, and a block at its left edge
+  // whose 3 last columns lie beyond each row: on the last row, beyond the buffer. Partial rows
+  // of 5 pixels are dense enough for the vectors, which must not take them here (a vector
+  // would read all 8 columns and fault).
+  constexpr int kWidth = 5;
+  std::vector<std::string> targets;
+  forEachSimdTarget([&](const char* name) {
+    targets.emplace_back(name);
+    RenderState state = initialRenderState(kWidth, 8);
+    state.depthFunc = CompareFunc::LEqual;
+    state.stencilFunc = CompareFunc::Always;
+    const StencilOps ops{StencilOp::Keep, StencilOp::Keep, StencilOp::IncrWrap};
+    DepthPlane plane;
+    plane.z0 = 0.25;
+    plane.dzdx = 1e-4;
+    plane.dzdy = 2e-4;
+    BufferBeforeGuardPage depthSimd(8 * kWidth * sizeof(std::uint32_t));
+    BufferBeforeGuardPage stencilSimd(8 * kWidth);
+    std::vector<std::uint32_t> depth(8 * kWidth, kDepthMax);
+    std::vector<std::uint8_t> stencil(8 * kWidth, 0);
+    std::copy(depth.begin(), depth.end(), depthSimd.as<std::uint32_t>());
+    std::copy(stencil.begin(), stencil.end(), stencilSimd.as<std::uint8_t>());
+    BlockFragments block;
+    block.state = &state;
+    block.ops = &ops;
+    block.plane = &plane;
+    block.stride = kWidth;
+    block.wholeColumns = false;
+    const std::uint64_t mask = 0x1F1F1F1F1F1F1F1FULL;  // columns 0-4 of every row
+    block.depth = depth.data();
+    block.stencil = stencil.data();
+    applyBlockFragmentsScalar(block, mask);
+    block.depth = depthSimd.as<std::uint32_t>();
+    block.stencil = stencilSimd.as<std::uint8_t>();
+    INFO("target " << name);
+    CHECK(applyBlockFragments(block, mask) == 40);
+    CHECK(std::equal(depth.begin(), depth.end(), depthSimd.as<std::uint32_t>()));
+    CHECK(std::equal(stencil.begin(), stencil.end(), stencilSimd.as<std::uint8_t>()));
+    CHECK(stencil[0] == 1);  // the fragments were applied
   });
   CHECK(!targets.empty());
 }

@@ -27,6 +27,11 @@ struct BlockFragments {
   std::uint32_t* depth = nullptr;   // the block's pixel (0, 0) in the depth buffer
   std::uint8_t* stencil = nullptr;  // and in the stencil buffer
   std::ptrdiff_t stride = 0;        // values from one row to the next, in both buffers
+  // Whether all 8 columns of the block lie inside the buffers' rows. Only then may a partial
+  // row go through the vectors, which read every column and write the uncovered ones back
+  // unchanged; at the right edge of a buffer whose width is not a multiple of 8 they would
+  // reach past the row (past the buffer, on its last row).
+  bool wholeColumns = false;
 
   // The contract's z = (z0 + tx) + ty at pixel (c, r) of the block (DepthPlane::at).
   [[nodiscard]] double depthAt(int c, int r) const {
