@@ -235,6 +235,10 @@ void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
   Aabb box = r.contact.box;
   double maxDepth = r.contact.maxDepth;
   long long collapsed = r.contact.collapsedPixels;
+  // Each column's u once (toWorld's u at the pixel centre), not once per pixel.
+  std::vector<double> columnU(static_cast<std::size_t>(rect.width()));
+  for (int i = 0; i < rect.width(); ++i)
+    columnU[static_cast<std::size_t>(i)] = view.planeU(rect.x0 + i + 0.5);
   for (int y = rect.y0; y < rect.y1; ++y) {
     const std::uint8_t* cases = &r.caseMap.at(rect.x0, y);
     const std::uint32_t* nearRow = &nearDepth.at(rect.x0, y);
@@ -251,7 +255,7 @@ void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
         lo = hi = lo / 2 + hi / 2 + (lo & hi & 1u);
       }
       // toWorld at the pixel centre for both ends, sharing their u and v.
-      const double u = view.planeU(rect.x0 + i + 0.5);
+      const double u = columnU[static_cast<std::size_t>(i)];
       const Eigen::Vector3d pn = view.fromPlane({u, v, view.planeD(lo * depthScale)});
       const Eigen::Vector3d pf = view.fromPlane({u, v, view.planeD(hi * depthScale)});
       box.extend(pn);
