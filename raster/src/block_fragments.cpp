@@ -132,13 +132,10 @@ HWY_INLINE LanesAfter<DI> FragmentLanes(DI di, const FragmentState& s, hn::Vec<D
   return after;
 }
 
-// The lanes of a row's pixels j, j + 1, ... that `bits` (bit c: column c) covers.
+// The lanes whose pixel is covered: bit `column` of the lane's row `bits` (bit c: column c).
 template <class DI>
-HWY_INLINE hn::Mask<DI> CoveredLanes(DI di, unsigned bits, int j) {
-  const auto column = hn::Add(hn::Iota(di, 0), hn::Set(di, j));
-  return hn::Ne(
-      hn::And(hn::Shr(hn::Set(di, static_cast<std::int32_t>(bits)), column), hn::Set(di, 1)),
-      hn::Zero(di));
+HWY_INLINE hn::Mask<DI> CoveredLanes(DI di, hn::Vec<DI> bits, hn::Vec<DI> column) {
+  return hn::Ne(hn::And(hn::Shr(bits, column), hn::Set(di, 1)), hn::Zero(di));
 }
 
 // A partial row's lanes keep what they held where no pixel is covered.
@@ -167,7 +164,8 @@ HWY_INLINE void ApplyRow(DD dd, const FragmentState& s, const BlockFragments& b,
     const auto old = hn::PromoteTo(di, hn::LoadU(d8, stencilRow + j));
     auto after = FragmentLanes(di, s, incoming, stored, old);
     if constexpr (!kFull)
-      KeepUncovered(CoveredLanes(di, bits, j), old, stored, after);
+      KeepUncovered(CoveredLanes(di, hn::Set(di, static_cast<std::int32_t>(bits)), hn::Iota(di, j)),
+                    old, stored, after);
     if (s.stencilWriteMask != 0)
       hn::StoreU(hn::TruncateTo(d8, hn::BitCast(du, after.stencil)), d8, stencilRow + j);
     if (s.depthWrite)
@@ -206,8 +204,7 @@ HWY_INLINE void ApplyRowPair(DD dd, const FragmentState& s, const BlockFragments
       const auto bits = hn::Combine(d2i, hn::Set(di, static_cast<std::int32_t>(bits1)),
                                     hn::Set(di, static_cast<std::int32_t>(bits0)));
       const auto column = hn::Combine(d2i, hn::Iota(di, j), hn::Iota(di, j));
-      const auto covered = hn::Ne(hn::And(hn::Shr(bits, column), hn::Set(d2i, 1)), hn::Zero(d2i));
-      KeepUncovered(covered, old, stored, after);
+      KeepUncovered(CoveredLanes(d2i, bits, column), old, stored, after);
     }
     if (s.stencilWriteMask != 0) {
       const auto bytes = hn::TruncateTo(d28, hn::BitCast(d2u, after.stencil));
