@@ -61,6 +61,20 @@ std::vector<std::pair<int, int>> overlappingObjects(std::vector<ObjectTree>& obj
   return pairs;
 }
 
+// Builds every leaf's triangle hierarchy on the runner's threads, so that no frame pays for
+// one: a block that first meets another mid-run would otherwise build its hierarchy inside
+// that frame's collision time, a spike in the frames where blocks come into contact (as a
+// BVH model is built when it is made, not at its first query).
+void buildTriangleHierarchies(const std::vector<ObjectTree>& objects, PairTestRunner& runner) {
+  std::vector<std::pair<std::size_t, int>> leaves;
+  for (std::size_t o = 0; o < objects.size(); ++o)
+    for (const int leaf : objects[o].leaves())
+      leaves.emplace_back(o, leaf);
+  runner.forEach(leaves.size(), [&](std::size_t k) {
+    (void)objects[leaves[k].first].triangleHierarchy(leaves[k].second);
+  });
+}
+
 // The leaves drawn this frame, each made once (LeafBlock: world mesh, triangle hierarchy, pose):
 // first listed as the pair tests need them, then all made at once, on the runner's threads
 // (making a leaf transforms its whole mesh and, the first time, builds its hierarchy).
@@ -164,6 +178,7 @@ Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::m
     objects_.emplace_back(object);
     bounds.extend(objects_.back().root().worldAabb);
   }
+  buildTriangleHierarchies(objects_, *pairTests_);
   pixelSize_ = runPixelSize(scene.view, bounds, options_.overrides);
   if (options_.drawOnScreen)
     screen_ = resolveFrame(scene.view, bounds, options_.overrides);
