@@ -101,6 +101,10 @@ CollisionGeometry::CollisionGeometry(std::vector<BlockPart> parts, core::ObjectT
   blockOfNode_.assign(tree_.nodes().size(), -1);
   for (std::size_t i = 0; i < tree_.leaves().size(); ++i)
     blockOfNode_[static_cast<std::size_t>(tree_.leaves()[i])] = static_cast<int>(i);
+  // Each block's triangle hierarchy is built now, with the geometry, rather than inside the
+  // first collide() that draws the block; the objects made from this geometry share them.
+  for (const int leaf : tree_.leaves())
+    (void)tree_.triangleHierarchy(leaf);
 }
 
 int CollisionGeometry::blockOfNode(int node) const {
