@@ -98,6 +98,35 @@ CpuDevice::CpuDevice(int width, int height) {
   state_ = initialRenderState(width, height);
 }
 
+void CpuDevice::reshape(int width, int height) {
+  checkFramebufferSize(width, height);
+  const PixelRect framebuffer{0, 0, width, height};
+  const auto area = static_cast<std::size_t>(framebuffer.area());
+  depth_.rect = framebuffer;
+  depth_.data.assign(area, kDepthMax);
+  stencil_.rect = framebuffer;
+  stencil_.data.assign(area, std::uint8_t{0});
+  state_ = initialRenderState(width, height);
+  counters_ = {};
+  for (DrawRecording& recording : recordings_)
+    recording.clear();
+  nextRecording_ = 0;
+}
+
+std::size_t bestDeviceToReshape(std::span<const CpuDevice* const> devices, int width,
+                                int height) {
+  const auto needed = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  const auto better = [needed](const CpuDevice* a, const CpuDevice* b) {
+    const std::size_t ca = a->pixelCapacity(), cb = b->pixelCapacity();
+    const bool aFits = ca >= needed, bFits = cb >= needed;
+    if (aFits != bFits)
+      return aFits;
+    return aFits ? ca < cb : ca > cb;
+  };
+  return static_cast<std::size_t>(std::min_element(devices.begin(), devices.end(), better) -
+                                  devices.begin());
+}
+
 void CpuDevice::setScissor(const PixelRect& rect) {
   state_.setScissor(rect, width(), height());
 }

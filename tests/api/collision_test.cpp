@@ -1,6 +1,10 @@
 // Blocks, shapes, objects and the frame rule of the collision API.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
 #include "recode/api/collision.hpp"
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/validate.hpp"
@@ -130,6 +134,21 @@ TEST_CASE("a device factory is the seam, and a wrong device is refused") {
   CHECK_THROWS_AS(collide(a, b, request, mine, wrong), std::invalid_argument);
   DevicePool none([](int, int) { return std::unique_ptr<raster::DepthStencilDevice>(); });
   CHECK_THROWS_AS(collide(a, b, request, mine, none), std::logic_error);
+}
+
+TEST_CASE("past 16 sizes the pool reshapes the CpuDevices it dropped") {
+  DevicePool pool;
+  std::vector<const raster::DepthStencilDevice*> first;
+  for (int k = 1; k <= 16; ++k)
+    first.push_back(&pool.device(8 * k, 8));
+  CHECK(pool.size() == 16);
+  // The 17th size starts the pool again: the device is one of those 16, reshaped.
+  const raster::DepthStencilDevice& next = pool.device(20, 20);
+  CHECK(pool.size() == 1);
+  CHECK(std::find(first.begin(), first.end(), &next) != first.end());
+  CHECK(next.width() == 20);
+  CHECK(next.height() == 20);
+  CHECK(next.readStencil({0, 0, 20, 20}) == std::vector<std::uint8_t>(400, 0));
 }
 
 TEST_CASE("the request's mode: a needle thinner than a pixel is missed, refined or grown into") {

@@ -19,8 +19,9 @@ class DevicePool {
   // An empty factory makes raster::CpuDevice.
   explicit DevicePool(DeviceFactory factory) : factory_(std::move(factory)) {}
 
-  // Drops the devices of sizes not in `keep` once more than kKeptSizes sizes are held, so a
-  // run whose pairs keep changing size stays bounded.
+  // Starts a frame whose tests have the sizes in `keep`. Drops the devices of other sizes once
+  // more than kKeptSizes sizes are held, so a run whose pairs keep changing size stays
+  // bounded; without a factory those CpuDevices are set aside (up to kKeptSizes) for reuse.
   void trim(const std::vector<std::pair<int, int>>& keep);
 
   // Devices of this size held now, and pair tests they ran since they were made.
@@ -29,6 +30,10 @@ class DevicePool {
   void addUses(int width, int height, long long tests);
 
   // Makes devices of this size until `count` exist; returns the microseconds spent making.
+  // Without a factory a device is a CpuDevice set aside or held for a size this frame has no
+  // test of, reshaped (the one with the least memory that holds the size, else the largest),
+  // and only when there is none a new one: a frame's pairs change size as their blocks move,
+  // and making a device maps its buffers' pages anew, which costs far more than clearing them.
   double reserve(int width, int height, int count);
 
   // Device `index` (below reserve's count) of this size.
@@ -42,8 +47,13 @@ class DevicePool {
     long long uses = 0;
   };
 
+  // A CpuDevice of this size from spare_ or an idle size's devices, or a new one.
+  std::unique_ptr<raster::DepthStencilDevice> reuseOrMakeCpuDevice(int width, int height);
+
   DeviceFactory factory_;
   std::map<std::pair<int, int>, Devices> bySize_;
+  std::vector<std::pair<int, int>> frameSizes_;                     // the last trim's `keep`
+  std::vector<std::unique_ptr<raster::DepthStencilDevice>> spare_;  // CpuDevices of dropped sizes
 };
 
 }  // namespace recode::core

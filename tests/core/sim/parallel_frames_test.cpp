@@ -8,8 +8,10 @@
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "recode/raster/cpu_device.hpp"
 #include "recode/scene/experiment_scenes.hpp"
 #include "recode/sim/simulation.hpp"
 
@@ -65,10 +67,12 @@ std::string describe(const FrameReport& r) {
 }
 
 // Every step-th frame of the scene's own frames.
-std::vector<std::string> runScene(const Scene& scene, int threads, int step) {
+std::vector<std::string> runScene(const Scene& scene, int threads, int step,
+                                  DeviceFactory factory = {}) {
   const int frames = scene.frames.value_or(kDefaultRunFrames);
   RunOptions options;
   options.threads = threads;
+  options.deviceFactory = std::move(factory);
   Simulation sim(scene, options);
   std::vector<std::string> reports;
   for (int k = 0; k < frames; k += step)
@@ -128,4 +132,24 @@ TEST_CASE("the thread count resolves as documented", "[run][threads]") {
   options.threads = -1;
   CHECK_THROWS_AS(Simulation(builtinExperimentScene("comb-translate-aligned"), options),
                   std::invalid_argument);
+}
+
+// Without a factory the run reshapes the devices of sizes a frame does not use for the sizes it
+// does (its pairs' frames change size as the blocks move); a factory of new CpuDevices makes
+// every device afresh. Both must report the same.
+TEST_CASE("a run on reshaped devices reports what a run on new devices does", "[run][threads]") {
+  const DeviceFactory fresh = [](int w, int h) -> std::unique_ptr<raster::DepthStencilDevice> {
+    return std::make_unique<raster::CpuDevice>(w, h);
+  };
+  for (const char* name : {"comb-translate-aligned", "random-cones"}) {
+    const Scene scene = builtinExperimentScene(name);
+    for (int threads : {1, 2}) {
+      INFO(name << " on " << threads << " threads");
+      const std::vector<std::string> reshaped = runScene(scene, threads, 1);
+      const std::vector<std::string> made = runScene(scene, threads, 1, fresh);
+      REQUIRE(reshaped.size() == made.size());
+      for (std::size_t i = 0; i < made.size(); ++i)
+        REQUIRE(reshaped[i] == made[i]);
+    }
+  }
 }

@@ -8,13 +8,18 @@
 #include <map>
 #include <memory>
 #include <utility>
+#include <vector>
 
+#include "recode/raster/cpu_device.hpp"
 #include "recode/raster/device.hpp"
 #include "recode/sim/simulation.hpp"
 
 namespace recode {
 
 // Devices by frame size, made on first use by a factory (the seam for a device of your own).
+// Past 16 sizes the pool starts again; without a factory it keeps the CpuDevices it drops and
+// reshapes them for the sizes that follow (raster::CpuDevice::reshape), instead of making new
+// ones, whose buffers' pages the system would map anew.
 class DevicePool {
  public:
   // `factory` makes a device of a given size; empty: raster::CpuDevice.
@@ -31,8 +36,12 @@ class DevicePool {
   [[nodiscard]] std::size_t size() const { return devices_.size(); }
 
  private:
+  // Without a factory: the spare CpuDevice best reshaped to this size, else a new one.
+  std::unique_ptr<raster::DepthStencilDevice> reuseOrMakeCpuDevice(int width, int height);
+
   core::DeviceFactory factory_;
   std::map<std::pair<int, int>, std::unique_ptr<raster::DepthStencilDevice>> devices_;
+  std::vector<std::unique_ptr<raster::CpuDevice>> spare_;  // dropped, to reshape
   double setupUs_ = 0.0;
 };
 

@@ -3,6 +3,7 @@
 // memory and a RenderState, drawn by the raster pipeline (pipeline.hpp). Single-threaded and
 // deterministic.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +23,17 @@ class CpuDevice final : public DepthStencilDevice {
   // Throws std::invalid_argument unless 1 <= width, height <= kMaxFramebufferSize. Depth
   // starts at 1.0 (2^24 - 1) and stencil at 0, as after GL's default clears.
   CpuDevice(int width, int height);
+
+  // Makes this device what CpuDevice(width, height) makes (buffers, state, counters, no
+  // recorded draws), keeping the buffers' memory when it is large enough: a pool serving
+  // frames of changing sizes then allocates, and the system maps fresh pages, only for a
+  // frame larger than any before. Throws as the constructor does, leaving the device as it was.
+  void reshape(int width, int height);
+
+  // Pixels the buffers hold without allocating: the largest size reshape keeps memory for.
+  [[nodiscard]] std::size_t pixelCapacity() const {
+    return std::min(depth_.data.capacity(), stencil_.data.capacity());
+  }
 
   [[nodiscard]] int width() const override { return depth_.rect.width(); }
   [[nodiscard]] int height() const override { return depth_.rect.height(); }
@@ -77,5 +89,11 @@ class CpuDevice final : public DepthStencilDevice {
   std::array<DrawRecording, 2> recordings_;
   std::size_t nextRecording_ = 0;  // the one the next recorded draw overwrites
 };
+
+// Of `devices` (none null), the position of the one to reshape to width x height: the one with
+// the least memory that holds that size, else the one with the most (it grows the least);
+// devices.size() when there are none.
+[[nodiscard]] std::size_t bestDeviceToReshape(std::span<const CpuDevice* const> devices, int width,
+                                              int height);
 
 }  // namespace recode::raster
