@@ -46,7 +46,7 @@ raster::DepthStencilDevice& DevicePool::device(int width, int height) {
 }
 
 std::unique_ptr<raster::DepthStencilDevice> DevicePool::reuseOrMakeCpuDevice(int width,
-                                                                              int height) {
+                                                                             int height) {
   std::vector<const raster::CpuDevice*> spares;
   for (const auto& device : spare_)
     spares.push_back(device.get());

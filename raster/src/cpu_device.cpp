@@ -113,8 +113,7 @@ void CpuDevice::reshape(int width, int height) {
   nextRecording_ = 0;
 }
 
-std::size_t bestDeviceToReshape(std::span<const CpuDevice* const> devices, int width,
-                                int height) {
+std::size_t bestDeviceToReshape(std::span<const CpuDevice* const> devices, int width, int height) {
   const auto needed = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   const auto better = [needed](const CpuDevice* a, const CpuDevice* b) {
     const std::size_t ca = a->pixelCapacity(), cb = b->pixelCapacity();

@@ -57,7 +57,7 @@ double DevicePool::reserve(int width, int height, int count) {
 }
 
 std::unique_ptr<raster::DepthStencilDevice> DevicePool::reuseOrMakeCpuDevice(int width,
-                                                                              int height) {
+                                                                             int height) {
   // Every device no test of this frame runs on: those set aside, and those of idle sizes (not
   // this one, even if the frame did not list it: reserve counts on its devices staying).
   std::vector<std::unique_ptr<raster::DepthStencilDevice>*> idle;

@@ -59,8 +59,7 @@ TEST_CASE("a new frame size reshapes an idle CpuDevice, never a busy one", "[poo
   CHECK(&made != idle);
 }
 
-TEST_CASE("the idle device reshaped is the one that holds the size with least memory",
-          "[pool]") {
+TEST_CASE("the idle device reshaped is the one that holds the size with least memory", "[pool]") {
   DevicePool pool({});
   pool.trim({{100, 100}, {10, 10}, {30, 20}});
   for (const auto& [w, h] : {std::pair{100, 100}, std::pair{10, 10}, std::pair{30, 20}})
