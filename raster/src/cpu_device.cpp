@@ -102,6 +102,10 @@ void CpuDevice::reshape(int width, int height) {
   checkFramebufferSize(width, height);
   const PixelRect framebuffer{0, 0, width, height};
   const auto area = static_cast<std::size_t>(framebuffer.area());
+  // Only the reserves can throw (out of memory), and they change no pixel: the device is then
+  // still what it was.
+  depth_.data.reserve(area);
+  stencil_.data.reserve(area);
   depth_.rect = framebuffer;
   depth_.data.assign(area, kDepthMax);
   stencil_.rect = framebuffer;

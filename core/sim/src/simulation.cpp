@@ -77,7 +77,7 @@ void buildTriangleHierarchies(const std::vector<ObjectTree>& objects, PairTestRu
 
 // The leaves drawn this frame, each made once (LeafBlock: world mesh, triangle hierarchy, pose):
 // first listed as the pair tests need them, then all made at once, on the runner's threads
-// (making a leaf transforms its whole mesh and, the first time, builds its hierarchy).
+// (making a leaf transforms its whole mesh; its hierarchy was built with the simulation).
 class LeafBlocks {
  public:
   explicit LeafBlocks(const std::vector<ObjectTree>& objects) : objects_(objects) {}
