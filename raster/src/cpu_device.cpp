@@ -90,12 +90,9 @@ class RecordingWriter final : public TriangleSink {
 
 }  // namespace
 
+// What a new device is lives in reshape alone, so that a reshaped device cannot drift from it.
 CpuDevice::CpuDevice(int width, int height) {
-  checkFramebufferSize(width, height);
-  const PixelRect framebuffer{0, 0, width, height};
-  depth_ = PixelBuffer<std::uint32_t>(framebuffer, kDepthMax);
-  stencil_ = PixelBuffer<std::uint8_t>(framebuffer, std::uint8_t{0});
-  state_ = initialRenderState(width, height);
+  reshape(width, height);
 }
 
 void CpuDevice::reshape(int width, int height) {
