@@ -16,6 +16,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/refine/adaptive.hpp"
+#include "recode/refine/proven_apart.hpp"
 #include "view_axis_option.hpp"
 
 namespace recode::app {
@@ -43,12 +44,22 @@ nlohmann::ordered_json boxJson(const core::Aabb& box) {
   return {{box.min.x(), box.min.y(), box.min.z()}, {box.max.x(), box.max.y(), box.max.z()}};
 }
 
-// The --mode object: what the adaptive or conservative mode decided, beside the reference
-// run's report (which stays as it was).
+// The --mode object: what the adaptive, conservative or skip-apart mode decided, beside the
+// reference run's report (which stays as it was).
 nlohmann::ordered_json modeJson(core::PairMode mode, raster::CpuDevice& device,
-                                const PairSetup& setup, const core::PairRequest& request) {
+                                const PairSetup& setup, const core::PairRequest& request,
+                                const core::PairBlock& a, const core::PairBlock& b,
+                                const core::PairResult& reference) {
   nlohmann::ordered_json j;
   j["name"] = core::toString(mode);
+  if (mode == core::PairMode::SkipApart) {
+    // Proven apart: nothing drawn. Otherwise the skip-apart mode's answer is the reference run's.
+    const bool apart = core::provenApart(a, b, request.frame);
+    j["verdict"] = apart || !reference.collide ? "apart" : "collide";
+    j["proven_apart"] = apart;
+    j["interfering_pixels"] = apart ? 0 : reference.interferingPixels;
+    return j;
+  }
   if (mode == core::PairMode::Conservative) {
     const core::ConservativeResult r = core::collideConservative(device, setup.a, setup.b, request);
     j["verdict"] = r.pair.collide ? "collide" : "apart";
@@ -79,7 +90,8 @@ nlohmann::ordered_json modeJson(core::PairMode mode, raster::CpuDevice& device,
 
 void printMode(std::ostream& out, const nlohmann::ordered_json& j) {
   out << "mode " << j["name"].get<std::string>() << ": " << j["verdict"].get<std::string>();
-  for (const char* key : {"runs", "deepest_level", "finest_pixel", "interfering_pixels"})
+  for (const char* key :
+       {"runs", "deepest_level", "finest_pixel", "interfering_pixels", "proven_apart"})
     if (j.contains(key))
       out << ", " << key << " " << j[key].dump();
   out << '\n';
@@ -138,7 +150,7 @@ int runPairCommand(const PairOptions& o) {
   const core::PairMode mode = *core::parsePairMode(o.mode);
   std::optional<nlohmann::ordered_json> modeReport;
   if (mode != core::PairMode::Reference)
-    modeReport = modeJson(mode, device, setup, request);
+    modeReport = modeJson(mode, device, setup, request, a, b, result);
   if (o.json) {
     nlohmann::ordered_json j = pairResultToJson(setup, request, result);
     if (modeReport)
@@ -201,12 +213,15 @@ void addPairCommand(CLI::App& app, int& exitCode) {
                   "(X,Y from the bottom-left, from 0)")
       ->needs(json);
   cmd->add_flag("!--no-picture", o->picture, "leave the character picture out of the report");
-  cmd->add_option("--mode", o->mode,
-                  "also decide the pair in another mode (docs/algorithm.md, \"Beyond the "
-                  "paper\"): adaptive (refined on finer frames where a finer grid could change "
-                  "the answer: collide, apart or apart_at_limit) or conservative (blocks grown "
-                  "by a pixel: never misses); the reference report stays as it is")
-      ->check(CLI::IsMember({"reference", "adaptive", "conservative"}))
+  cmd->add_option(
+         "--mode", o->mode,
+         "also decide the pair in another mode (docs/algorithm.md, \"Beyond the "
+         "paper\"): adaptive (refined on finer frames where a finer grid could change "
+         "the answer: collide, apart or apart_at_limit) or conservative (blocks grown "
+         "by a pixel: never misses) or skip-apart (the reference, unless the blocks' hulls "
+         "are proven apart: then nothing is drawn); the reference report stays as it "
+         "is")
+      ->check(CLI::IsMember({"reference", "adaptive", "conservative", "skip-apart"}))
       ->capture_default_str();
   addViewAxisOption(*cmd, o->viewAxis);
   cmd->callback([o, &exitCode]() { exitCode = runPairCommand(*o); });

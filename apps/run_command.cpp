@@ -102,7 +102,7 @@ core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulat
     const core::FrameReport report = sim.runFrame(k);
     stats.add(report);
     if (csv)
-      csv->write(csvRow(report));
+      csv->write(csvRow(report, sim.pairMode()));
     if (json) {
       nlohmann::ordered_json frame = frameToJson(sim, report);
       if (o.noTiming)
@@ -156,7 +156,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   std::optional<AtomicFile> csv;
   if (!o.csv.empty()) {
     csv.emplace(o.csv, "--csv " + o.csv);
-    csv->write(csvHeader());
+    csv->write(csvHeader(options.pairMode));
   }
   // The JSON object is printed frame by frame (the bytes of dumping it whole): a run's memory
   // follows its largest frame, not its length. A run that fails midway has printed a prefix and
@@ -181,12 +181,12 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   }
   if (json) {
     nlohmann::ordered_json tail;
-    tail["stats"] = statisticsToJson(result);
+    tail["stats"] = statisticsToJson(result, options.pairMode);
     if (o.noTiming)
       removeTimingFields(tail);
     json->finish(tail);
   } else {
-    printStatistics(std::cout, result);
+    printStatistics(std::cout, result, options.pairMode);
   }
   if (csv)
     csv->commit();
@@ -252,9 +252,10 @@ void addRunCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--mode", o->mode,
                   "how each block pair is decided (docs/algorithm.md, \"Beyond the paper\"): "
                   "reference (the paper's algorithm), adaptive (refined on finer frames where "
-                  "a finer grid could change the answer) or conservative (blocks grown by a "
-                  "pixel: never misses, may report blocks a pixel apart)")
-      ->check(CLI::IsMember({"reference", "adaptive", "conservative"}))
+                  "a finer grid could change the answer), conservative (blocks grown by a "
+                  "pixel: never misses, may report blocks a pixel apart) or skip-apart (the "
+                  "reference's contacts; pairs whose hulls are proven apart are not drawn)")
+      ->check(CLI::IsMember({"reference", "adaptive", "conservative", "skip-apart"}))
       ->capture_default_str();
   cmd->callback([o, &exitCode]() { exitCode = runRunCommand(*o); });
 }

@@ -56,6 +56,8 @@ ordered_json frameToJson(const core::Simulation& sim, const core::FrameReport& f
   j["object_pairs"] = frame.objectPairs;
   j["box_tests"] = frame.boxTests;
   j["pair_tests"] = frame.pairTests;
+  if (sim.pairMode() == core::PairMode::SkipApart)
+    j["pair_tests_skipped"] = frame.pairTestsSkipped;
   j["stencil_pixels_read"] = frame.stencilPixelsRead;
   j["depth_pixels_read"] = frame.depthPixelsRead;
   j["frame_us"] = frame.frameUs;
@@ -63,7 +65,7 @@ ordered_json frameToJson(const core::Simulation& sim, const core::FrameReport& f
   return j;
 }
 
-ordered_json statisticsToJson(const core::RunStatistics& s) {
+ordered_json statisticsToJson(const core::RunStatistics& s, core::PairMode mode) {
   ordered_json j;
   j["NTR"] = s.triangles;
   j["TNF"] = s.frames;
@@ -76,6 +78,8 @@ ordered_json statisticsToJson(const core::RunStatistics& s) {
   j["object_pairs"] = s.objectPairs;
   j["box_tests"] = s.boxTests;
   j["pair_tests"] = s.pairTests;
+  if (mode == core::PairMode::SkipApart)
+    j["pair_tests_skipped"] = s.pairTestsSkipped;
   j["stencil_pixels_read"] = s.stencilPixelsRead;
   j["depth_pixels_read"] = s.depthPixelsRead;
   j["contacts"] = s.contacts;
@@ -143,7 +147,7 @@ void printFrame(std::ostream& out, const core::Simulation& sim, const core::Fram
   }
 }
 
-void printStatistics(std::ostream& out, const core::RunStatistics& s) {
+void printStatistics(std::ostream& out, const core::RunStatistics& s, core::PairMode mode) {
   const auto oldFlags = out.flags();
   const auto oldPrecision = out.precision();
   out << "statistics (the paper's Table 2; nothing is displayed, so a frame is posing the "
@@ -156,7 +160,11 @@ void printStatistics(std::ostream& out, const core::RunStatistics& s) {
   out.flags(oldFlags);
   out.precision(oldPrecision);
   out << "  object pairs " << s.objectPairs << ", box tests " << s.boxTests << ", pair tests "
-      << s.pairTests << ", stencil pixels read " << s.stencilPixelsRead << ", depth pixels read "
+      << s.pairTests
+      << (mode == core::PairMode::SkipApart
+              ? " (" + std::to_string(s.pairTestsSkipped) + " proven apart, not drawn)"
+              : std::string())
+      << ", stencil pixels read " << s.stencilPixelsRead << ", depth pixels read "
       << s.depthPixelsRead << "\n"
       << "  contacts " << s.contacts << " in " << s.framesWithContact << " frame"
       << (s.framesWithContact == 1 ? "" : "s");
@@ -165,16 +173,19 @@ void printStatistics(std::ostream& out, const core::RunStatistics& s) {
   out << "\n";
 }
 
-std::string csvHeader() {
-  return "frame,frame_us,collision_us,object_pairs,box_tests,pair_tests,stencil_pixels_read,"
-         "depth_pixels_read,contacts\n";
+std::string csvHeader(core::PairMode mode) {
+  return std::string("frame,frame_us,collision_us,object_pairs,box_tests,pair_tests,") +
+         (mode == core::PairMode::SkipApart ? "pair_tests_skipped," : "") +
+         "stencil_pixels_read,depth_pixels_read,contacts\n";
 }
 
-std::string csvRow(const core::FrameReport& f) {
+std::string csvRow(const core::FrameReport& f, core::PairMode mode) {
   std::ostringstream row;
   row << f.frame << ',' << f.frameUs << ',' << f.collisionUs << ',' << f.objectPairs << ','
-      << f.boxTests << ',' << f.pairTests << ',' << f.stencilPixelsRead << ',' << f.depthPixelsRead
-      << ',' << f.contacts.size() << '\n';
+      << f.boxTests << ',' << f.pairTests << ',';
+  if (mode == core::PairMode::SkipApart)
+    row << f.pairTestsSkipped << ',';
+  row << f.stencilPixelsRead << ',' << f.depthPixelsRead << ',' << f.contacts.size() << '\n';
   return row.str();
 }
 

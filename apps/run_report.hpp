@@ -25,7 +25,10 @@ struct RunDescription {
 [[nodiscard]] nlohmann::ordered_json frameToJson(const core::Simulation& sim,
                                                  const core::FrameReport& frame);
 // The "stats" object.
-[[nodiscard]] nlohmann::ordered_json statisticsToJson(const core::RunStatistics& s);
+// The "stats" object; "pair_tests_skipped" only in the skip-apart mode (here and in every report
+// below), so the other modes' reports are as they always were.
+[[nodiscard]] nlohmann::ordered_json statisticsToJson(const core::RunStatistics& s,
+                                                      core::PairMode mode);
 // The top-level keys besides "frames" and "stats".
 [[nodiscard]] nlohmann::ordered_json runToJson(const RunDescription& run,
                                                const core::Simulation& sim);
@@ -33,9 +36,9 @@ struct RunDescription {
 void printRunHeader(std::ostream& out, const RunDescription& run, const core::Simulation& sim);
 // The frame's contacts, one line each; nothing for a frame without contact.
 void printFrame(std::ostream& out, const core::Simulation& sim, const core::FrameReport& frame);
-void printStatistics(std::ostream& out, const core::RunStatistics& s);
+void printStatistics(std::ostream& out, const core::RunStatistics& s, core::PairMode mode);
 
-[[nodiscard]] std::string csvHeader();
-[[nodiscard]] std::string csvRow(const core::FrameReport& frame);
+[[nodiscard]] std::string csvHeader(core::PairMode mode);
+[[nodiscard]] std::string csvRow(const core::FrameReport& frame, core::PairMode mode);
 
 }  // namespace recode::app

@@ -5,6 +5,7 @@
 
 #include "recode/api/collision.hpp"
 #include "recode/refine/adaptive.hpp"
+#include "recode/refine/proven_apart.hpp"
 #include "recode/sim/leaf_block.hpp"
 
 namespace recode {
@@ -38,6 +39,7 @@ PairAnswer decidePair(raster::DepthStencilDevice& device, const core::PairBlock&
   out.frame = pair.frame;
   switch (mode) {
     case core::PairMode::Reference:
+    case core::PairMode::SkipApart:  // collide() has ruled the pair in
       out.pair = core::collidePair(device, a, b, pair);
       return out;
     case core::PairMode::Conservative:
@@ -77,9 +79,14 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     pair.mor = request.mor;
     pair.contact = request.contact;
     pair.normal = request.normal;
-    raster::DepthStencilDevice& device = devices.device(pair.frame.width, pair.frame.height);
     const core::LeafBlock blockA(a.tree(), lp.leafA);
     const core::LeafBlock blockB(b.tree(), lp.leafB);
+    if (request.mode == core::PairMode::SkipApart &&
+        core::provenApart(blockA.block, blockB.block, pair.frame)) {
+      ++result.blockPairsSkipped;
+      continue;
+    }
+    raster::DepthStencilDevice& device = devices.device(pair.frame.width, pair.frame.height);
     PairAnswer answer = decidePair(device, blockA.block, blockB.block, pair, request.mode);
     core::PairResult& r = answer.pair;
     ++result.blockPairsDrawn;

@@ -91,7 +91,7 @@ core::PairMode modeFrom(const std::string& name) {
   if (const auto mode = core::parsePairMode(name))
     return *mode;
   throw py::value_error("mode: '" + name +
-                        "' is not a pair mode (reference, adaptive or conservative)");
+                        "' is not a pair mode (reference, adaptive, conservative or skip-apart)");
 }
 
 std::optional<double> pixelSizeFrom(const std::optional<double>& size) {
@@ -206,7 +206,8 @@ void bindCollision(py::module_& m) {
       .def_property(
           "mode", [](const CollisionRequest& r) { return std::string(core::toString(r.mode)); },
           [](CollisionRequest& r, const std::string& s) { r.mode = modeFrom(s); },
-          "'reference' (default, the paper's algorithm), 'adaptive' or 'conservative'.")
+          "'reference' (default, the paper's algorithm), 'adaptive', 'conservative' or "
+          "'skip-apart' (the reference's answer; block pairs proven apart are not drawn).")
       .def("__repr__", &repr);
 
   py::class_<core::FrameSpec>(m, "Frame", "The frame a block pair was drawn in.")
@@ -320,6 +321,8 @@ void bindCollision(py::module_& m) {
                              "contact; ValueError with several: see contacts).")
       .def_readonly("box_tests", &CollisionResult::boxTests)
       .def_readonly("block_pairs_drawn", &CollisionResult::blockPairsDrawn)
+      .def_readonly("block_pairs_skipped", &CollisionResult::blockPairsSkipped,
+                    "Skip-apart mode: block pairs proven apart, not drawn.")
       .def_readonly("collision_us", &CollisionResult::collisionUs,
                     "The whole call, microseconds, device making left out.")
       .def_readonly("device_setup_us", &CollisionResult::deviceSetupUs)

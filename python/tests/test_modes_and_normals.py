@@ -60,14 +60,36 @@ def test_a_sliver_thinner_than_a_pixel_is_seen_by_the_adaptive_and_conservative_
 def test_the_modes_agree_on_clear_cases():
     for offset, expected in (([0.5, 0.5, 0.5], True), ([1.5, 0.0, 0.0], False)):
         a, b = unit_cubes(offset)
-        for mode in ("reference", "adaptive", "conservative"):
+        for mode in ("reference", "adaptive", "conservative", "skip-apart"):
             request = recode.CollisionRequest(pixel_size=0.05, mode=mode)
             assert recode.collide(a, b, request).collide == expected, (offset, mode)
 
 
+def test_the_skip_apart_mode_draws_no_pair_it_proves_apart():
+    # Two balls of radius 0.5 (hulls of 400 points), centres 1.2 apart along (1, 1, 1): their
+    # boxes overlap, the balls stay 0.2 apart. Proven apart: nothing drawn, where the reference
+    # draws the pair. Overlapping cubes are drawn, with the reference's contact.
+    k = np.arange(400) + 0.5
+    polar, azimuth = np.arccos(1 - 2 * k / 400), np.pi * (1 + 5 ** 0.5) * k
+    points = 0.5 * np.stack([np.cos(azimuth) * np.sin(polar), np.sin(azimuth) * np.sin(polar),
+                             np.cos(polar)], axis=1)
+    ball = recode.ConvexBlock.from_hull(points)
+    a = recode.CollisionObject(ball)
+    b = recode.CollisionObject(ball, translation=np.full(3, 1.2 / 3 ** 0.5))
+    apart = recode.collide(a, b, recode.CollisionRequest(pixel_size=0.05, mode="skip-apart"))
+    assert (apart.block_pairs_skipped, apart.block_pairs_drawn) == (1, 0)
+    assert not apart.collide
+    assert recode.collide(a, b, recode.CollisionRequest(pixel_size=0.05)).block_pairs_drawn == 1
+    a, b = unit_cubes([0.9, 0.2, 0.1])
+    skip = recode.collide(a, b, recode.CollisionRequest(pixel_size=0.05, mode="skip-apart"))
+    reference = recode.collide(a, b, recode.CollisionRequest(pixel_size=0.05))
+    assert (skip.block_pairs_skipped, skip.block_pairs_drawn) == (0, 1)
+    assert skip.interfering_pixels == reference.interfering_pixels > 0
+
+
 def test_an_unknown_mode_is_refused_with_the_choices():
     with pytest.raises(ValueError, match="mode: 'fast' is not a pair mode "
-                                         r"\(reference, adaptive or conservative\)"):
+                                         r"\(reference, adaptive, conservative or skip-apart\)"):
         recode.CollisionRequest(mode="fast")
     request = recode.CollisionRequest()
     with pytest.raises(ValueError, match="mode: 'Adaptive'"):

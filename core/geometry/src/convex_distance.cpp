@@ -92,19 +92,16 @@ struct Approach {
   double tiny = 0.0;
 };
 
-Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
-  if (a.empty() || b.empty())
-    throw std::invalid_argument("convexHullDistance: an empty point set");
-  double scale = 0.0;
-  for (const Eigen::Vector3d& p : a)
-    scale = std::max(scale, p.cwiseAbs().maxCoeff());
-  for (const Eigen::Vector3d& p : b)
-    scale = std::max(scale, p.cwiseAbs().maxCoeff());
+// GJK on conv(A) - conv(B), each given by its support function (the point furthest along a
+// direction), from `start`, a point of A - B; `scale` sets the rounding threshold.
+template <typename SupportA, typename SupportB>
+Approach closestApproach(const SupportA& furthestA, const SupportB& furthestB,
+                         const Eigen::Vector3d& start, double scale) {
   const double tiny = kRelativeTolerance * std::max(scale, 1e-300);
 
   // v is always the point of conv(simplex) nearest the origin, so a new simplex can only
   // bring it nearer.
-  Eigen::Vector3d v = a[0] - b[0];
+  Eigen::Vector3d v = start;
   std::vector<Eigen::Vector3d> simplex{v};
   const auto apart = [&] { return Approach{v.norm(), v, tiny}; };
   const Approach touching{0.0, Eigen::Vector3d::Zero(), tiny};
@@ -112,7 +109,7 @@ Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eig
     const double vv = v.norm();
     if (vv <= tiny)
       return touching;
-    const Eigen::Vector3d w = furthest(a, -v) - furthest(b, v);
+    const Eigen::Vector3d w = furthestA(-v) - furthestB(v);
     // No point of A - B lies nearer the origin along v than v itself (to rounding): done.
     if (vv * vv - v.dot(w) <= kRelativeTolerance * vv * vv)
       return apart();
@@ -132,6 +129,37 @@ Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eig
   return apart();
 }
 
+double largestCoordinate(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+  if (a.empty() || b.empty())
+    throw std::invalid_argument("convexHullDistance: an empty point set");
+  double scale = 0.0;
+  for (const Eigen::Vector3d& p : a)
+    scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  for (const Eigen::Vector3d& p : b)
+    scale = std::max(scale, p.cwiseAbs().maxCoeff());
+  return scale;
+}
+
+Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+  const double scale = largestCoordinate(a, b);
+  return closestApproach([a](const Eigen::Vector3d& d) { return furthest(a, d); },
+                         [b](const Eigen::Vector3d& d) { return furthest(b, d); }, a[0] - b[0],
+                         scale);
+}
+
+// The width of the empty slab across unit direction n between conv(a) grown by the box
+// [-margin, margin] (lower side) and conv(b) (upper side), each end checked against every point.
+double slabWidth(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
+                 const Eigen::Vector3d& n, const Eigen::Vector3d& margin) {
+  double lowA = std::numeric_limits<double>::infinity();
+  double highB = -lowA;
+  for (const Eigen::Vector3d& p : a)
+    lowA = std::min(lowA, p.dot(n));
+  for (const Eigen::Vector3d& p : b)
+    highB = std::max(highB, p.dot(n));
+  return lowA - margin.dot(n.cwiseAbs()) - highB;
+}
+
 }  // namespace
 
 double convexHullDistance(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
@@ -145,15 +173,30 @@ double convexHullGap(std::span<const Eigen::Vector3d> a, std::span<const Eigen::
   // The empty slab between the point sets across GJK's direction: every point of A is at
   // least lowA along it and every point of B at most highB.
   const Eigen::Vector3d n = approach.direction / approach.distance;
-  double lowA = std::numeric_limits<double>::infinity();
-  double highB = -lowA;
-  for (const Eigen::Vector3d& p : a)
-    lowA = std::min(lowA, p.dot(n));
-  for (const Eigen::Vector3d& p : b)
-    highB = std::max(highB, p.dot(n));
+  const double width = slabWidth(a, b, n, Eigen::Vector3d::Zero());
   // A slab no wider than the rounding of its ends is no proof.
-  const double width = lowA - highB;
   return width > approach.tiny ? width : 0.0;
+}
+
+bool hullsApartBeyond(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
+                      const Eigen::Vector3d& margin) {
+  if (!(margin.array() >= 0.0).all() || !margin.allFinite())
+    throw std::invalid_argument("hullsApartBeyond: the margin must be finite and non-negative");
+  const double scale = largestCoordinate(a, b) + margin.maxCoeff();
+  // conv(a) grown by the box: its support is a's plus the box corner the direction points to.
+  const auto furthestGrownA = [a, &margin](const Eigen::Vector3d& d) {
+    const Eigen::Vector3d corner(d.x() >= 0.0 ? margin.x() : -margin.x(),
+                                 d.y() >= 0.0 ? margin.y() : -margin.y(),
+                                 d.z() >= 0.0 ? margin.z() : -margin.z());
+    return Eigen::Vector3d(furthest(a, d) + corner);
+  };
+  const Approach approach = closestApproach(
+      furthestGrownA, [b](const Eigen::Vector3d& d) { return furthest(b, d); },
+      Eigen::Vector3d(a[0] + margin - b[0]), scale);
+  if (approach.distance == 0.0)
+    return false;
+  const Eigen::Vector3d n = approach.direction / approach.distance;
+  return slabWidth(a, b, n, margin) > approach.tiny;
 }
 
 }  // namespace recode::core

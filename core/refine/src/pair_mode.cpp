@@ -10,12 +10,15 @@ std::string_view toString(PairMode mode) {
       return "adaptive";
     case PairMode::Conservative:
       return "conservative";
+    case PairMode::SkipApart:
+      return "skip-apart";
   }
   return "?";
 }
 
 std::optional<PairMode> parsePairMode(std::string_view name) {
-  for (const PairMode mode : {PairMode::Reference, PairMode::Adaptive, PairMode::Conservative})
+  for (const PairMode mode :
+       {PairMode::Reference, PairMode::Adaptive, PairMode::Conservative, PairMode::SkipApart})
     if (name == toString(mode))
       return mode;
   return std::nullopt;

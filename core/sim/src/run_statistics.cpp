@@ -27,6 +27,7 @@ void RunStatisticsAccumulator::add(const FrameReport& frame) {
   counts_.objectPairs += frame.objectPairs;
   counts_.boxTests += frame.boxTests;
   counts_.pairTests += frame.pairTests;
+  counts_.pairTestsSkipped += frame.pairTestsSkipped;
   counts_.stencilPixelsRead += frame.stencilPixelsRead;
   counts_.depthPixelsRead += frame.depthPixelsRead;
   counts_.contacts += static_cast<long long>(frame.contacts.size());

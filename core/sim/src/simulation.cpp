@@ -110,8 +110,10 @@ class LeafBlocks {
 
 // Counts one pair test into the report; a contact keeps its result (the runner has cleared
 // its case map).
-void addPairTest(FrameReport& report, const PairTask& task, PairResult result) {
+void addPairTest(FrameReport& report, const PairTask& task, PairOutcome outcome) {
+  PairResult& result = outcome.result;
   ++report.pairTests;
+  report.pairTestsSkipped += outcome.skipped ? 1 : 0;
   report.stencilPixelsRead += result.stencilPixelsRead;
   report.depthPixelsRead += result.depthPixelsRead;
   if (result.collide)
@@ -300,7 +302,7 @@ FrameReport Simulation::runFrame(int frame) {
         rethrowNamingPair(objects_, frame, tasks[i]);
       }
     }
-    addPairTest(report, tasks[i], std::move(outcomes[i].result));
+    addPairTest(report, tasks[i], std::move(outcomes[i]));
   }
   if (setup.error) {
     try {

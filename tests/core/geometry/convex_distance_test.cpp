@@ -112,3 +112,29 @@ TEST_CASE("convexHullDistance: points, touching and overlapping blocks", "[gjk]"
   CHECK_THROWS_AS(convexHullDistance(std::vector<Eigen::Vector3d>{}, cube.vertices),
                   std::invalid_argument);
 }
+
+TEST_CASE("hullsApartBeyond: apart by more than the margin's reach along the gap, and no less",
+          "[gjk]") {
+  const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+  const std::vector<Eigen::Vector3d> a = boxPoints({0, 0, 0}, {1, 1, 1}, identity);
+  const Eigen::Vector3d margin(0.01, 0.02, 0.03);
+  // B above A along z by g: the grown A reaches margin.z towards it, whatever x and y give.
+  for (const double g : {0.0299, 0.0301}) {
+    const std::vector<Eigen::Vector3d> b = boxPoints({0.2, 0.3, 1 + g}, {0.8, 0.9, 2}, identity);
+    INFO("gap " << g);
+    CHECK(hullsApartBeyond(a, b, margin) == (g > margin.z()));
+    CHECK(hullsApartBeyond(b, a, margin) == (g > margin.z()));  // the margin grows b now
+  }
+  // B off A's edge along the diagonal (1, 1, 0). Across the diagonal the gap, sqrt(2) g, is
+  // less than the box's reach, (margin.x + margin.y) / sqrt(2), for g under 0.015; along x the
+  // gap is g against margin.x. The slab must be sought between the grown hull and B (GJK's
+  // closest direction turns to x), not across the bare hulls' closest direction.
+  for (const double g : {0.0099, 0.0101}) {
+    const std::vector<Eigen::Vector3d> b = boxPoints({1 + g, 1 + g, 0}, {2, 2, 1}, identity);
+    INFO("diagonal gap " << g);
+    CHECK(hullsApartBeyond(a, b, margin) == (g > margin.x()));
+  }
+  CHECK_FALSE(hullsApartBeyond(a, a, Eigen::Vector3d::Zero()));
+  CHECK_THROWS_AS(hullsApartBeyond(a, a, Eigen::Vector3d(-1, 0, 0)), std::invalid_argument);
+  CHECK_THROWS_AS(hullsApartBeyond({}, a, margin), std::invalid_argument);
+}

@@ -110,6 +110,7 @@ struct CollisionResult {
   std::vector<BlockContact> contacts;  // the block pairs in contact, by (blockA, blockB)
   long long boxTests = 0;              // node pairs whose boxes the descent tested
   long long blockPairsDrawn = 0;       // block pairs given to collidePair
+  long long blockPairsSkipped = 0;     // skip-apart mode: block pairs proven apart, not drawn
   double collisionUs = 0.0;            // the whole call, device making left out
   double deviceSetupUs = 0.0;          // making devices for sizes not seen before
   // Adaptive mode: block pairs left apart_at_limit (a contact could not be ruled out within the

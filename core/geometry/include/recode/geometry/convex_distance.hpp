@@ -25,4 +25,16 @@ namespace recode::core {
 [[nodiscard]] double convexHullGap(std::span<const Eigen::Vector3d> a,
                                    std::span<const Eigen::Vector3d> b);
 
+// Whether conv(a) grown by the box [-margin, margin] (per axis) and conv(b) are proven apart:
+// GJK's closest direction n between the two, and an empty slab across n checked against every
+// point, min over a of n.a - margin.|n| - max over b of n.b, wider than the rounding of its
+// ends (as convexHullGap). true proves that no point of conv(a) and point of conv(b) differ by
+// a vector of the box; false proves nothing (they may meet, or GJK's direction fell short).
+// A fast way to rule a pair out before drawing it (docs/algorithm.md, "the skip-apart mode").
+// Throws std::invalid_argument when either set is empty or the margin is negative or not
+// finite.
+[[nodiscard]] bool hullsApartBeyond(std::span<const Eigen::Vector3d> a,
+                                    std::span<const Eigen::Vector3d> b,
+                                    const Eigen::Vector3d& margin);
+
 }  // namespace recode::core

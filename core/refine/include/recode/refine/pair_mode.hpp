@@ -2,16 +2,19 @@
 // How a pair is decided (docs/algorithm.md, "Beyond the paper"): the paper's algorithm in the
 // given frame (reference), refined on finer frames where a finer grid could change the answer
 // (adaptive), or on blocks grown by one pixel and a few depth steps so that no contact is ever
-// missed (conservative).
+// missed (conservative); or the reference with pairs proven apart left undrawn (skip-apart).
 
 #include <optional>
 #include <string_view>
 
 namespace recode::core {
 
-enum class PairMode { Reference, Adaptive, Conservative };
+// SkipApart: the reference, except that a pair provenApart (proven_apart.hpp) in its frame is
+// not drawn; verdicts and contact regions are the reference's, what is drawn and read is less.
+enum class PairMode { Reference, Adaptive, Conservative, SkipApart };
 
-[[nodiscard]] std::string_view toString(PairMode mode);  // "reference", "adaptive", "conservative"
+[[nodiscard]] std::string_view toString(
+    PairMode mode);  // "reference", "adaptive", "conservative", "skip-apart"
 [[nodiscard]] std::optional<PairMode> parsePairMode(std::string_view name);  // nullopt if unknown
 
 // The adaptive mode's answer: collide, apart, or apart at the refinement limit (a contact

@@ -22,9 +22,10 @@ struct RunStatistics {
   int frames = 0;                                                            // TNF
   double totalFrameS = 0.0, meanFrameMs = 0.0, sdFrameMs = 0.0;              // TTF ATF DTF
   double totalCollisionS = 0.0, meanCollisionMs = 0.0, sdCollisionMs = 0.0;  // TTC ATC DTC
-  long long objectPairs = 0;  // object pairs from the broad phase, summed over frames
-  long long boxTests = 0;     // node-pair box tests in the descent
-  long long pairTests = 0;    // leaf pairs given to the pair algorithm
+  long long objectPairs = 0;       // object pairs from the broad phase, summed over frames
+  long long boxTests = 0;          // node-pair box tests in the descent
+  long long pairTests = 0;         // leaf pairs given to the pair algorithm
+  long long pairTestsSkipped = 0;  // of those, pairs the skip-apart mode proved apart undrawn
   long long stencilPixelsRead = 0;
   long long depthPixelsRead = 0;
   long long contacts = 0;      // interfering leaf pairs, summed over frames

@@ -73,7 +73,9 @@ struct RunOptions {
   // How each leaf pair is decided (docs/algorithm.md, "Beyond the paper"): the reference
   // algorithm in the pair's frame, adaptive refinement (a contact is one the refinement saw;
   // the result is the run that saw it) or the conservative mode (the result is that of the
-  // grown blocks). Reports of the reference mode are unchanged.
+  // grown blocks), or the skip-apart mode (the reference, except that a pair proven apart in its
+  // frame is not drawn: the same contacts, fewer pixels read). Reports of the reference mode
+  // are unchanged.
   PairMode pairMode = PairMode::Reference;
   // The axis each leaf pair is drawn along (docs/algorithm.md, "Beyond the paper"): the
   // scene's (the default: reports unchanged), or the one a rule chooses for the pair from its
@@ -96,6 +98,7 @@ struct FrameReport {
   long long objectPairs = 0;          // object pairs whose root AABBs overlap (broad phase)
   long long boxTests = 0;             // node pairs whose boxes were tested in the descent
   long long pairTests = 0;            // leaf pairs given to the pair algorithm
+  long long pairTestsSkipped = 0;     // of those, pairs the skip-apart mode proved apart undrawn
   long long stencilPixelsRead = 0;
   long long depthPixelsRead = 0;
   // Wall-clock times: with several threads collisionUs is the elapsed time of the parallel
@@ -131,6 +134,7 @@ class Simulation {
   [[nodiscard]] double pixelSize() const { return pixelSize_; }
   [[nodiscard]] ViewAxis axis() const { return axis_; }
   [[nodiscard]] ViewAxisRule viewAxisRule() const { return options_.viewAxisRule; }
+  [[nodiscard]] PairMode pairMode() const { return options_.pairMode; }
   [[nodiscard]] std::size_t triangleCount() const;  // NTR: triangles of all leaves
   // How many pair tests may run at once (RunOptions::threads resolved; 1 with a factory).
   [[nodiscard]] int threads() const;

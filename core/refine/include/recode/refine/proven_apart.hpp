@@ -1,0 +1,39 @@
+#pragma once
+// Ruling a pair out before it is drawn (the skip-apart mode, docs/algorithm.md section 11): every
+// fragment the device makes of a block drawn in a frame lies within a small box of the block's
+// convex hull (the snapping across the view, the rounding and quantisation of depth along it),
+// so blocks whose hulls are apart by more than both boxes together cannot share a depth at any
+// pixel centre, and collidePair in that frame would report no interfering pixel.
+
+#include <Eigen/Core>
+
+#include "recode/geometry/mesh.hpp"
+#include "recode/pair/frame.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/pair/pair_block.hpp"
+#include "recode/pair/view.hpp"
+
+namespace recode::core {
+
+// Half-sides, in world units along the world axes x, y, z, of a box around a block's convex
+// hull that holds every fragment (pixel centre, quantised depth) the device can make of the
+// block drawn through `view`; `box` is the block's world box. Across the view: the snapping to
+// 1/256 pixel (at most 1/512) doubled. Along it: the float rounding of a vertex's depth and the
+// quantisation (half a 24-bit step each), plus a bound of the double rounding of the depth
+// plane, which grows with the square of the block's extent in pixels (a sliver triangle's
+// slopes are as steep as 2^8 times that extent), each doubled.
+[[nodiscard]] Eigen::Vector3d fragmentSlack(const OrthoView& view, const Aabb& box);
+
+// Whether collidePair(a, b) in `frame` is proven to find no interfering pixel: both blocks
+// drawable and inside the view's coordinate range (else the reference's refusal must be
+// seen), and their vertex hulls apart by more than the sum of their fragment slacks
+// (hullsApartBeyond). false proves nothing.
+[[nodiscard]] bool provenApart(const PairBlock& a, const PairBlock& b, const FrameSpec& frame);
+
+// What the skip-apart mode reports for a pair provenApart: no interference and no contact, as the
+// reference would report, but nothing drawn or read (boxesOverlap false, the MOR empty, no case
+// map), and the pair's depth range, as collidePair sets it.
+[[nodiscard]] PairResult skippedResult(const PairBlock& a, const PairBlock& b,
+                                       const FrameSpec& frame);
+
+}  // namespace recode::core
