@@ -11,9 +11,9 @@ namespace {
 
 using Kind = AlgorithmSpec::Kind;
 
-// RECODE on every device (MIN MOR, as `recode run` defaults), its adaptive and conservative
-// modes and its adaptive view axis (`--view-axis adaptive`) on the CPU device, and the three
-// peers.
+// RECODE on every device (MIN MOR, as `recode run` defaults), its adaptive, conservative and
+// skip-apart modes and its adaptive view axis (`--view-axis adaptive`) on the CPU device, and
+// the three peers.
 std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec adaptive{"recode-adaptive", Kind::Recode, verify::RecodeDevice::Cpu,
                          core::MorMode::Min};
@@ -21,6 +21,9 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec conservative = adaptive;
   conservative.name = "recode-conservative";
   conservative.mode = core::PairMode::Conservative;
+  AlgorithmSpec skipApart = adaptive;
+  skipApart.name = "recode-skip-apart";
+  skipApart.mode = core::PairMode::SkipApart;
   AlgorithmSpec viewAxis{"recode-view-axis", Kind::Recode, verify::RecodeDevice::Cpu,
                          core::MorMode::Min};
   viewAxis.viewAxisRule = core::ViewAxisRule::ThinOverlap;
@@ -28,6 +31,7 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
       {"recode-cpu", Kind::Recode, verify::RecodeDevice::Cpu, core::MorMode::Min},
       adaptive,
       conservative,
+      skipApart,
       viewAxis,
       {"recode-gl", Kind::Recode, verify::RecodeDevice::Gl, core::MorMode::Min},
       {"recode-gl-exact", Kind::Recode, verify::RecodeDevice::GlExact, core::MorMode::Min},

@@ -21,7 +21,8 @@ struct AlgorithmSpec {
   verify::RecodeDevice device = verify::RecodeDevice::Cpu;  // Recode only
   core::MorMode mor = core::MorMode::Min;                   // Recode only
   bool onScreen = false;  // Recode only: core::RunOptions::drawOnScreen (the paper's screen)
-  // Recode only: core::RunOptions::pairMode (recode-adaptive, recode-conservative)
+  // Recode only: core::RunOptions::pairMode (recode-adaptive, recode-conservative,
+  // recode-skip-apart)
   core::PairMode mode = core::PairMode::Reference;
   // Recode only: core::RunOptions::viewAxisRule (recode-view-axis)
   core::ViewAxisRule viewAxisRule = core::ViewAxisRule::Scene;
