@@ -12,7 +12,6 @@
 #include <oneapi/tbb/task_arena.h>
 
 #include "recode/refine/adaptive.hpp"
-#include "recode/refine/proven_apart.hpp"
 
 #include "device_pool.hpp"
 
@@ -25,7 +24,7 @@ namespace {
 PairResult testPair(raster::DepthStencilDevice& device, const PairTask& task, PairMode mode) {
   switch (mode) {
     case PairMode::Reference:
-    case PairMode::SkipApart:  // runOne has ruled its pair in
+    case PairMode::SkipApart:  // the simulation has left out the pairs proven apart
       break;
     case PairMode::Conservative:
       return collideConservative(device, task.blockA->mesh(), task.blockB->mesh(), task.request)
@@ -46,12 +45,6 @@ PairResult testPair(raster::DepthStencilDevice& device, const PairTask& task, Pa
 void runOne(raster::DepthStencilDevice& device, const PairTask& task, PairOutcome& outcome,
             PairMode mode) {
   try {
-    if (mode == PairMode::SkipApart &&
-        provenApart(*task.blockA, *task.blockB, task.request.frame)) {
-      outcome.skipped = true;
-      outcome.result = skippedResult(*task.blockA, *task.blockB, task.request.frame);
-      return;
-    }
     outcome.result = testPair(device, task, mode);
     // The report keeps no case map; dropping it here bounds the memory the slots hold.
     outcome.result.caseMap = {};

@@ -30,7 +30,7 @@ struct PairTask {
 // A task's answer: its result (the case map cleared), or what it threw.
 struct PairOutcome {
   PairResult result;
-  bool skipped = false;  // the skip-apart mode proved the pair apart and drew nothing
+  bool skipped = false;  // the skip-apart mode proved the pair apart: nothing was drawn
   std::exception_ptr error;
 };
 

@@ -2,6 +2,7 @@
 #include "recode/sim/simulation.hpp"
 
 #include "pair_tests.hpp"
+#include "recode/refine/proven_apart.hpp"
 #include "recode/sim/leaf_block.hpp"
 
 #include <algorithm>
@@ -291,24 +292,52 @@ FrameReport Simulation::runFrame(int frame) {
     tasks[i].blockB = blocks.at(taskBlocks[i].second);
   }
 
-  const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(tasks);
+  // The skip-apart mode proves pairs apart first, so that no device is made or cleared for a
+  // pair that will not be drawn; the rest are drawn as in the reference mode.
+  std::vector<char> skipped(tasks.size(), 0);
+  std::vector<PairTask> drawnTasks;
+  if (options_.pairMode == PairMode::SkipApart) {
+    pairTests_->forEach(tasks.size(), [&](std::size_t i) {
+      skipped[i] = provenApart(*tasks[i].blockA, *tasks[i].blockB, tasks[i].request.frame);
+    });
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+      if (!skipped[i])
+        drawnTasks.push_back(tasks[i]);
+  }
+  const std::vector<PairTask>& drawn =
+      options_.pairMode == PairMode::SkipApart ? drawnTasks : tasks;
+
+  const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(drawn);
   report.deviceSetupUs = setup.us;
-  std::vector<PairOutcome> outcomes = pairTests_->run(tasks, setup.usable);
-  for (std::size_t i = 0; i < outcomes.size(); ++i) {
-    if (outcomes[i].error) {
+  std::vector<PairOutcome> outcomes = pairTests_->run(drawn, setup.usable);
+  // Read back in task order: a skipped pair's outcome is made here, a drawn one is the next of
+  // `outcomes`; the tests a device error left unrun come after the last outcome.
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    if (skipped[i]) {
+      PairOutcome outcome;
+      outcome.result = skippedResult(*tasks[i].blockA, *tasks[i].blockB, tasks[i].request.frame);
+      outcome.skipped = true;
+      addPairTest(report, tasks[i], std::move(outcome));
+      continue;
+    }
+    if (next == outcomes.size())
+      break;
+    PairOutcome& outcome = outcomes[next++];
+    if (outcome.error) {
       try {
-        std::rethrow_exception(outcomes[i].error);
+        std::rethrow_exception(outcome.error);
       } catch (...) {
         rethrowNamingPair(objects_, frame, tasks[i]);
       }
     }
-    addPairTest(report, tasks[i], std::move(outcomes[i]));
+    addPairTest(report, tasks[i], std::move(outcome));
   }
   if (setup.error) {
     try {
       std::rethrow_exception(setup.error);
     } catch (...) {
-      rethrowNamingPair(objects_, frame, tasks[setup.usable]);
+      rethrowNamingPair(objects_, frame, drawn[setup.usable]);
     }
   }
   const Clock::time_point done = Clock::now();

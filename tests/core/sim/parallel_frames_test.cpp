@@ -40,8 +40,9 @@ void put(std::ostringstream& out, const raster::PixelRect& r) {
 std::string describe(const FrameReport& r) {
   std::ostringstream out;
   out << "frame " << r.frame << " objectPairs " << r.objectPairs << " boxTests " << r.boxTests
-      << " pairTests " << r.pairTests << " stencil " << r.stencilPixelsRead << " depth "
-      << r.depthPixelsRead << " contacts " << r.contacts.size() << '\n';
+      << " pairTests " << r.pairTests << " skipped " << r.pairTestsSkipped << " stencil "
+      << r.stencilPixelsRead << " depth " << r.depthPixelsRead << " contacts " << r.contacts.size()
+      << '\n';
   for (const LeafContact& c : r.contacts) {
     const PairResult& p = c.result;
     out << c.objectA << ' ' << c.objectB << ' ' << c.leafA << ' ' << c.leafB << " | " << p.collide
@@ -68,10 +69,11 @@ std::string describe(const FrameReport& r) {
 
 // Every step-th frame of the scene's own frames.
 std::vector<std::string> runScene(const Scene& scene, int threads, int step,
-                                  DeviceFactory factory = {}) {
+                                  DeviceFactory factory = {}, PairMode mode = PairMode::Reference) {
   const int frames = scene.frames.value_or(kDefaultRunFrames);
   RunOptions options;
   options.threads = threads;
+  options.pairMode = mode;
   options.deviceFactory = std::move(factory);
   Simulation sim(scene, options);
   std::vector<std::string> reports;
@@ -152,4 +154,42 @@ TEST_CASE("a run on reshaped devices reports what a run on new devices does", "[
         REQUIRE(reshaped[i] == made[i]);
     }
   }
+}
+
+// The skip-apart mode proves its pairs apart on the runner's threads before any is drawn: the
+// report must still be the same bytes on any count, and a pair it skips gets no device.
+TEST_CASE(
+    "the skip-apart mode reports the same on 1, 2 and 4 threads, and makes no device for "
+    "a pair it skips",
+    "[run][threads]") {
+  long long skipped = 0;
+  for (const char* name : {"random-cones", "hand-grasp", "comb-rotate-aligned"}) {
+    const Scene scene = builtinExperimentScene(name);
+    const std::vector<std::string> sequential = runScene(scene, 1, 2, {}, PairMode::SkipApart);
+    for (const std::string& r : sequential)
+      skipped += r.find(" skipped 0 ") == std::string::npos;
+    for (int threads : {2, 4}) {
+      INFO(name << " on " << threads << " threads");
+      const std::vector<std::string> parallel =
+          runScene(scene, threads, 2, {}, PairMode::SkipApart);
+      REQUIRE(parallel == sequential);
+    }
+  }
+  CHECK(skipped > 10);  // frames with skipped pairs
+
+  // Every pair test of the offset rotation is apart, and proven so.
+  int made = 0;
+  const DeviceFactory counting = [&made](int w,
+                                         int h) -> std::unique_ptr<raster::DepthStencilDevice> {
+    ++made;
+    return std::make_unique<raster::CpuDevice>(w, h);
+  };
+  const Scene offset = builtinExperimentScene("comb-rotate-offset");
+  const std::vector<std::string> reference = runScene(offset, 1, 4, counting);
+  const int madeByReference = made;
+  made = 0;
+  const std::vector<std::string> skipping = runScene(offset, 1, 4, counting, PairMode::SkipApart);
+  CHECK(madeByReference > 0);
+  CHECK(made == 0);
+  REQUIRE(skipping.size() == reference.size());
 }
