@@ -138,3 +138,27 @@ TEST_CASE("hullsApartBeyond: apart by more than the margin's reach along the gap
   CHECK_THROWS_AS(hullsApartBeyond(a, a, Eigen::Vector3d(-1, 0, 0)), std::invalid_argument);
   CHECK_THROWS_AS(hullsApartBeyond({}, a, margin), std::invalid_argument);
 }
+
+TEST_CASE("hullsApartBeyond: large sets, proven from a sample's direction or from all points",
+          "[gjk]") {
+  // Two tessellated balls, their poles facing along z: the gap between the pole vertices is the
+  // hulls' gap. Well apart, GJK's direction from a sample of 64 points a side proves it; a hair
+  // past the margin, only the direction from all points does (the slab along a sample's direction,
+  // a little off the poles' line, is narrower than the gap by more than the hair).
+  const TriangleMesh ball = makeSphere(1.0, 96, 48);
+  REQUIRE(ball.vertices.size() > 2000);
+  double top = -1e300, bottom = 1e300;
+  for (const Eigen::Vector3d& p : ball.vertices) {
+    top = std::max(top, p.z());
+    bottom = std::min(bottom, p.z());
+  }
+  const Eigen::Vector3d margin(0.01, 0.01, 0.01);
+  for (const double factor : {3.0, 1.001, 0.999}) {
+    const double gap = factor * margin.z();
+    std::vector<Eigen::Vector3d> b = ball.vertices;
+    for (Eigen::Vector3d& p : b)
+      p.z() += top - bottom + gap;
+    INFO("gap " << factor << " margins");
+    CHECK(hullsApartBeyond(ball.vertices, b, margin) == (factor > 1.0));
+  }
+}
