@@ -3,7 +3,8 @@ cmake_minimum_required(VERSION 3.25)
 # chosen by KIND:
 # - miscounted: one bullet row's `missed` raised by one (found - extra + missed != truth);
 # - no-gl: without the recode-gl rows;
-# - view-axis: one recode-view-axis row's `pair_tests` raised by one (not recode-cpu's).
+# - view-axis: one recode-view-axis row's `pair_tests` raised by one (not recode-cpu's);
+# - skip-apart: one recode-skip-apart row's `contacts` raised by one (not recode-cpu's).
 # Expects IN, OUT and KIND.
 file(REMOVE_RECURSE ${OUT})
 file(COPY ${IN}/ DESTINATION ${OUT})
@@ -14,8 +15,11 @@ if(KIND STREQUAL "miscounted")
 elseif(KIND STREQUAL "view-axis")
   set(target "^comb,comb-rotate-aligned,.*,recode-view-axis,")
   set(column 16)  # pair_tests
+elseif(KIND STREQUAL "skip-apart")
+  set(target "^comb,comb-rotate-offset,.*,recode-skip-apart,")
+  set(column 10)  # contacts
 elseif(NOT KIND STREQUAL "no-gl")
-  message(FATAL_ERROR "KIND must be miscounted, no-gl or view-axis, not '${KIND}'")
+  message(FATAL_ERROR "KIND must be miscounted, no-gl, view-axis or skip-apart, not '${KIND}'")
 endif()
 set(out "")
 set(done OFF)
