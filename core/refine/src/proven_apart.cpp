@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "recode/geometry/convex_distance.hpp"
@@ -51,10 +52,15 @@ bool provenApart(const PairBlock& a, const PairBlock& b, const FrameSpec& frame)
   if (!a.drawable() || !b.drawable() || a.mesh().vertices.empty() || b.mesh().vertices.empty())
     return false;
   const auto [depthMin, depthMax] = pairDepthRange(frame.axis, a.box(), b.box());
-  const OrthoView view(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
-  if (!mappable(view, a.box()) || !mappable(view, b.box()))
+  std::optional<OrthoView> view;
+  try {
+    view.emplace(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
+  } catch (const std::invalid_argument&) {
+    return false;  // a frame or depth range the view refuses: collidePair refuses it as before
+  }
+  if (!mappable(*view, a.box()) || !mappable(*view, b.box()))
     return false;
-  const Eigen::Vector3d margin = fragmentSlack(view, a.box()) + fragmentSlack(view, b.box());
+  const Eigen::Vector3d margin = fragmentSlack(*view, a.box()) + fragmentSlack(*view, b.box());
   return hullsApartBeyond(a.mesh().vertices, b.mesh().vertices, margin);
 }
 

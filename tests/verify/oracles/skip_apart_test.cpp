@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "recode/geometry/generators.hpp"
@@ -152,4 +153,26 @@ TEST_CASE(
   CHECK(tally.violated == 0);
   CHECK(tally.collide > 0);
   CHECK(provenAtThreeSlacks == approaches);
+}
+
+TEST_CASE(
+    "skip-apart: a pair the reference refuses is not proven apart, so it is refused as "
+    "before") {
+  // Two flat squares in the plane z = 0, drawn along z: the pair's depth range is empty, which
+  // the view refuses. provenApart must say false (not throw), leaving collidePair's error.
+  core::TriangleMesh square;
+  square.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const core::TriangleMesh other = moved(square, {3.0, 0.0, 0.0});
+  const core::PairBlock a(square), b(other);
+  core::PairRequest request;
+  request.frame.axis = core::ViewAxis::Z;
+  request.frame.window = {-1.0, -1.0, 5.0, 2.0};
+  request.frame.width = 60;
+  request.frame.height = 30;
+  bool proven = true;
+  CHECK_NOTHROW(proven = core::provenApart(a, b, request.frame));
+  CHECK_FALSE(proven);
+  raster::CpuDevice device(60, 30);
+  CHECK_THROWS_AS(core::collidePair(device, a, b, request), std::invalid_argument);
 }

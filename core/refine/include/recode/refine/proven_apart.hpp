@@ -25,9 +25,10 @@ namespace recode::core {
 [[nodiscard]] Eigen::Vector3d fragmentSlack(const OrthoView& view, const Aabb& box);
 
 // Whether collidePair(a, b) in `frame` is proven to find no interfering pixel: both blocks
-// drawable and inside the view's coordinate range (else the reference's refusal must be
-// seen), and their vertex hulls apart by more than the sum of their fragment slacks
-// (hullsApartBeyond). false proves nothing.
+// drawable, the frame and the pair's depth range a view accepts, every vertex inside its
+// coordinate range (else false, so that the reference's refusal is seen as before), and their
+// vertex hulls apart by more than the sum of their fragment slacks (hullsApartBeyond). false
+// proves nothing. Never throws for such a refusal.
 [[nodiscard]] bool provenApart(const PairBlock& a, const PairBlock& b, const FrameSpec& frame);
 
 // What the skip-apart mode reports for a pair provenApart: no interference and no contact, as the
