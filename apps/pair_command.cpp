@@ -221,7 +221,7 @@ void addPairCommand(CLI::App& app, int& exitCode) {
          "by a pixel: never misses) or skip-apart (the reference, unless the blocks' hulls "
          "are proven apart: then nothing is drawn); the reference report stays as it "
          "is")
-      ->check(CLI::IsMember({"reference", "adaptive", "conservative", "skip-apart"}))
+      ->check(CLI::IsMember(core::pairModeNames()))
       ->capture_default_str();
   addViewAxisOption(*cmd, o->viewAxis);
   cmd->callback([o, &exitCode]() { exitCode = runPairCommand(*o); });

@@ -255,7 +255,7 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                   "a finer grid could change the answer), conservative (blocks grown by a "
                   "pixel: never misses, may report blocks a pixel apart) or skip-apart (the "
                   "reference's contacts; pairs whose hulls are proven apart are not drawn)")
-      ->check(CLI::IsMember({"reference", "adaptive", "conservative", "skip-apart"}))
+      ->check(CLI::IsMember(core::pairModeNames()))
       ->capture_default_str();
   cmd->callback([o, &exitCode]() { exitCode = runRunCommand(*o); });
 }

@@ -16,12 +16,25 @@ std::string_view toString(PairMode mode) {
   return "?";
 }
 
+namespace {
+
+constexpr PairMode kPairModes[] = {PairMode::Reference, PairMode::Adaptive, PairMode::Conservative,
+                                   PairMode::SkipApart};
+
+}  // namespace
+
 std::optional<PairMode> parsePairMode(std::string_view name) {
-  for (const PairMode mode :
-       {PairMode::Reference, PairMode::Adaptive, PairMode::Conservative, PairMode::SkipApart})
+  for (const PairMode mode : kPairModes)
     if (name == toString(mode))
       return mode;
   return std::nullopt;
+}
+
+std::vector<std::string> pairModeNames() {
+  std::vector<std::string> names;
+  for (const PairMode mode : kPairModes)
+    names.emplace_back(toString(mode));
+  return names;
 }
 
 std::string_view toString(PairVerdict verdict) {

@@ -5,7 +5,9 @@
 // missed (conservative); or the reference with pairs proven apart left undrawn (skip-apart).
 
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace recode::core {
 
@@ -16,6 +18,8 @@ enum class PairMode { Reference, Adaptive, Conservative, SkipApart };
 [[nodiscard]] std::string_view toString(
     PairMode mode);  // "reference", "adaptive", "conservative", "skip-apart"
 [[nodiscard]] std::optional<PairMode> parsePairMode(std::string_view name);  // nullopt if unknown
+// Every mode's name, in the enum's order: the choices a command line or binding offers.
+[[nodiscard]] std::vector<std::string> pairModeNames();
 
 // The adaptive mode's answer: collide, apart, or apart at the refinement limit (a contact
 // could not be ruled out above the bound).
