@@ -30,7 +30,6 @@ struct PairTask {
 // A task's answer: its result (the case map cleared), or what it threw.
 struct PairOutcome {
   PairResult result;
-  bool skipped = false;  // the skip-apart mode proved the pair apart: nothing was drawn
   std::exception_ptr error;
 };
 

@@ -109,12 +109,11 @@ class LeafBlocks {
   std::vector<std::unique_ptr<LeafBlock>> blocks_;  // per slot, made by make()
 };
 
-// Counts one pair test into the report; a contact keeps its result (the runner has cleared
-// its case map).
-void addPairTest(FrameReport& report, const PairTask& task, PairOutcome outcome) {
-  PairResult& result = outcome.result;
+// Counts one pair test into the report, `skipped` when the skip-apart mode proved it apart
+// and drew nothing; a contact keeps its result (the runner has cleared its case map).
+void addPairTest(FrameReport& report, const PairTask& task, PairResult result, bool skipped) {
   ++report.pairTests;
-  report.pairTestsSkipped += outcome.skipped ? 1 : 0;
+  report.pairTestsSkipped += skipped ? 1 : 0;
   report.stencilPixelsRead += result.stencilPixelsRead;
   report.depthPixelsRead += result.depthPixelsRead;
   if (result.collide)
@@ -315,10 +314,8 @@ FrameReport Simulation::runFrame(int frame) {
   std::size_t next = 0;
   for (std::size_t i = 0; i < tasks.size(); ++i) {
     if (skipped[i]) {
-      PairOutcome outcome;
-      outcome.result = skippedResult(*tasks[i].blockA, *tasks[i].blockB, tasks[i].request.frame);
-      outcome.skipped = true;
-      addPairTest(report, tasks[i], std::move(outcome));
+      addPairTest(report, tasks[i],
+                  skippedResult(*tasks[i].blockA, *tasks[i].blockB, tasks[i].request.frame), true);
       continue;
     }
     if (next == outcomes.size())
@@ -331,7 +328,7 @@ FrameReport Simulation::runFrame(int frame) {
         rethrowNamingPair(objects_, frame, tasks[i]);
       }
     }
-    addPairTest(report, tasks[i], std::move(outcome));
+    addPairTest(report, tasks[i], std::move(outcome.result), false);
   }
   if (setup.error) {
     try {
