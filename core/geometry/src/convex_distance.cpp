@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace recode::core {
@@ -131,9 +132,11 @@ Approach closestApproach(const SupportA& furthestA, const SupportB& furthestB,
   return apart();
 }
 
-double largestCoordinate(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+// `caller` names the public function in the error for an empty set.
+double largestCoordinate(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
+                         const char* caller) {
   if (a.empty() || b.empty())
-    throw std::invalid_argument("convexHullDistance: an empty point set");
+    throw std::invalid_argument(std::string(caller) + ": an empty point set");
   double scale = 0.0;
   for (const Eigen::Vector3d& p : a)
     scale = std::max(scale, p.cwiseAbs().maxCoeff());
@@ -143,7 +146,7 @@ double largestCoordinate(std::span<const Eigen::Vector3d> a, std::span<const Eig
 }
 
 Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
-  const double scale = largestCoordinate(a, b);
+  const double scale = largestCoordinate(a, b, "convexHullDistance");
   return closestApproach([a](const Eigen::Vector3d& d) { return furthest(a, d); },
                          [b](const Eigen::Vector3d& d) { return furthest(b, d); }, a[0] - b[0],
                          scale);
@@ -208,7 +211,7 @@ bool hullsApartBeyond(std::span<const Eigen::Vector3d> a, std::span<const Eigen:
                       const Eigen::Vector3d& margin) {
   if (!(margin.array() >= 0.0).all() || !margin.allFinite())
     throw std::invalid_argument("hullsApartBeyond: the margin must be finite and non-negative");
-  const double scale = largestCoordinate(a, b) + margin.maxCoeff();
+  const double scale = largestCoordinate(a, b, "hullsApartBeyond") + margin.maxCoeff();
   // GJK's direction from a sample of each set is most often good enough, at a fraction of the
   // reads; whichever direction is used, the proof is the slab checked on every point.
   const std::size_t strideA = std::max<std::size_t>(1, a.size() / kSampledPoints);
