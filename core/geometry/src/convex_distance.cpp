@@ -152,34 +152,93 @@ Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eig
                          scale);
 }
 
+// A point set as GJK and the slab read it: its world points as they are.
+class WorldSet {
+ public:
+  explicit WorldSet(std::span<const Eigen::Vector3d> points) : points_(points) {}
+  [[nodiscard]] std::size_t size() const { return points_.size(); }
+  [[nodiscard]] Eigen::Vector3d first() const { return points_[0]; }
+  [[nodiscard]] Eigen::Vector3d furthest(const Eigen::Vector3d& d, std::size_t stride) const {
+    return core::furthest(points_, d, stride);
+  }
+  // The least and the greatest n.p over every point.
+  [[nodiscard]] double lowest(const Eigen::Vector3d& n) const {
+    double low = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& p : points_)
+      low = std::min(low, p.dot(n));
+    return low;
+  }
+  [[nodiscard]] double highest(const Eigen::Vector3d& n) const { return -lowest(-n); }
+  [[nodiscard]] double largestCoordinate() const {
+    double scale = 0.0;
+    for (const Eigen::Vector3d& p : points_)
+      scale = std::max(scale, p.cwiseAbs().maxCoeff());
+    return scale;
+  }
+
+ private:
+  std::span<const Eigen::Vector3d> points_;
+};
+
+// The same for a set read in its own coordinates: a support is made as its world point is
+// (linear * p + translation); a slab end is (L^T n).p + n.t, within about 1e-15 of the
+// world points' size of the world value.
+class PosedSet {
+ public:
+  explicit PosedSet(const PosedPoints& points)
+      : local_(points.local),
+        linear_(points.pose.linear()),
+        transposed_(linear_.transpose()),
+        translation_(points.pose.translation()) {}
+  [[nodiscard]] std::size_t size() const { return local_.size(); }
+  [[nodiscard]] Eigen::Vector3d first() const { return world(local_[0]); }
+  [[nodiscard]] Eigen::Vector3d furthest(const Eigen::Vector3d& d, std::size_t stride) const {
+    return world(core::furthest(local_, Eigen::Vector3d(transposed_ * d), stride));
+  }
+  [[nodiscard]] double lowest(const Eigen::Vector3d& n) const {
+    return WorldSet(local_).lowest(transposed_ * n) + translation_.dot(n);
+  }
+  [[nodiscard]] double highest(const Eigen::Vector3d& n) const {
+    return WorldSet(local_).highest(transposed_ * n) + translation_.dot(n);
+  }
+  // A bound of every world coordinate: |L p + t| <= ||L||_inf |p|_inf + |t|_inf per axis.
+  [[nodiscard]] double largestCoordinate() const {
+    const double rows = linear_.cwiseAbs().rowwise().sum().maxCoeff();
+    return rows * WorldSet(local_).largestCoordinate() + translation_.cwiseAbs().maxCoeff();
+  }
+
+ private:
+  [[nodiscard]] Eigen::Vector3d world(const Eigen::Vector3d& p) const {
+    return linear_ * p + translation_;
+  }
+  std::span<const Eigen::Vector3d> local_;
+  Eigen::Matrix3d linear_, transposed_;
+  Eigen::Vector3d translation_;
+};
+
 // The width of the empty slab across unit direction n between conv(a) grown by the box
 // [-margin, margin] (lower side) and conv(b) (upper side), each end checked against every point.
-double slabWidth(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
-                 const Eigen::Vector3d& n, const Eigen::Vector3d& margin) {
-  double lowA = std::numeric_limits<double>::infinity();
-  double highB = -lowA;
-  for (const Eigen::Vector3d& p : a)
-    lowA = std::min(lowA, p.dot(n));
-  for (const Eigen::Vector3d& p : b)
-    highB = std::max(highB, p.dot(n));
-  return lowA - margin.dot(n.cwiseAbs()) - highB;
+template <typename SetA, typename SetB>
+double slabWidth(const SetA& a, const SetB& b, const Eigen::Vector3d& n,
+                 const Eigen::Vector3d& margin) {
+  return a.lowest(n) - margin.dot(n.cwiseAbs()) - b.highest(n);
 }
 
 // GJK between conv(a) grown by the box and conv(b), each point set read every `stride`-th
 // point; then the slab across its direction, checked against every point.
-bool slabBeyondFound(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
-                     const Eigen::Vector3d& margin, double scale, std::size_t strideA,
-                     std::size_t strideB) {
+template <typename SetA, typename SetB>
+bool slabBeyondFound(const SetA& a, const SetB& b, const Eigen::Vector3d& margin, double scale,
+                     std::size_t strideA, std::size_t strideB) {
   // conv(a) grown by the box: its support is a's plus the box corner the direction points to.
-  const auto furthestGrownA = [a, &margin, strideA](const Eigen::Vector3d& d) {
+  const auto furthestGrownA = [&a, &margin, strideA](const Eigen::Vector3d& d) {
     const Eigen::Vector3d corner(d.x() >= 0.0 ? margin.x() : -margin.x(),
                                  d.y() >= 0.0 ? margin.y() : -margin.y(),
                                  d.z() >= 0.0 ? margin.z() : -margin.z());
-    return Eigen::Vector3d(furthest(a, d, strideA) + corner);
+    return Eigen::Vector3d(a.furthest(d, strideA) + corner);
   };
   const Approach approach = closestApproach(
-      furthestGrownA, [b, strideB](const Eigen::Vector3d& d) { return furthest(b, d, strideB); },
-      Eigen::Vector3d(a[0] + margin - b[0]), scale);
+      furthestGrownA, [&b, strideB](const Eigen::Vector3d& d) { return b.furthest(d, strideB); },
+      Eigen::Vector3d(a.first() + margin - b.first()), scale);
   if (approach.distance == 0.0)
     return false;
   const Eigen::Vector3d n = approach.direction / approach.distance;
@@ -202,16 +261,23 @@ double convexHullGap(std::span<const Eigen::Vector3d> a, std::span<const Eigen::
   // The empty slab between the point sets across GJK's direction: every point of A is at
   // least lowA along it and every point of B at most highB.
   const Eigen::Vector3d n = approach.direction / approach.distance;
-  const double width = slabWidth(a, b, n, Eigen::Vector3d::Zero());
+  const double width = slabWidth(WorldSet(a), WorldSet(b), n, Eigen::Vector3d::Zero());
   // A slab no wider than the rounding of its ends is no proof.
   return width > approach.tiny ? width : 0.0;
 }
 
-bool hullsApartBeyond(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
-                      const Eigen::Vector3d& margin) {
+namespace {
+
+void checkMargin(const Eigen::Vector3d& margin) {
   if (!(margin.array() >= 0.0).all() || !margin.allFinite())
     throw std::invalid_argument("hullsApartBeyond: the margin must be finite and non-negative");
-  const double scale = largestCoordinate(a, b, "hullsApartBeyond") + margin.maxCoeff();
+}
+
+template <typename SetA, typename SetB>
+bool apartBeyond(const SetA& a, const SetB& b, const Eigen::Vector3d& margin) {
+  if (a.size() == 0 || b.size() == 0)
+    throw std::invalid_argument("hullsApartBeyond: an empty point set");
+  const double scale = std::max(a.largestCoordinate(), b.largestCoordinate()) + margin.maxCoeff();
   // GJK's direction from a sample of each set is most often good enough, at a fraction of the
   // reads; whichever direction is used, the proof is the slab checked on every point.
   const std::size_t strideA = std::max<std::size_t>(1, a.size() / kSampledPoints);
@@ -219,6 +285,19 @@ bool hullsApartBeyond(std::span<const Eigen::Vector3d> a, std::span<const Eigen:
   if ((strideA > 1 || strideB > 1) && slabBeyondFound(a, b, margin, scale, strideA, strideB))
     return true;
   return slabBeyondFound(a, b, margin, scale, 1, 1);
+}
+
+}  // namespace
+
+bool hullsApartBeyond(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
+                      const Eigen::Vector3d& margin) {
+  checkMargin(margin);
+  return apartBeyond(WorldSet(a), WorldSet(b), margin);
+}
+
+bool hullsApartBeyond(const PosedPoints& a, const PosedPoints& b, const Eigen::Vector3d& margin) {
+  checkMargin(margin);
+  return apartBeyond(PosedSet(a), PosedSet(b), margin);
 }
 
 }  // namespace recode::core

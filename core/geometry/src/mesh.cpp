@@ -16,19 +16,40 @@ Aabb boundingBox(const TriangleMesh& mesh) {
 
 namespace {
 
-TriangleMesh transformedImpl(const TriangleMesh& mesh, const Eigen::Matrix3d& linear,
-                             const Eigen::Vector3d& translation) {
-  TriangleMesh out;
-  out.vertices.reserve(mesh.vertices.size());
-  for (const Eigen::Vector3d& p : mesh.vertices) {
-    out.vertices.emplace_back(linear * p + translation);
+// Whether the triangles of `out` are those of `mesh`, with the last two indices of each swapped
+// when `mirrored`.
+bool sameTriangles(const TriangleMesh& mesh, bool mirrored, const TriangleMesh& out) {
+  if (out.triangles.size() != mesh.triangles.size())
+    return false;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& a = mesh.triangles[t];
+    const Triangle& b = out.triangles[t];
+    if (a[0] != b[0] || a[1] != b[mirrored ? 2 : 1] || a[2] != b[mirrored ? 1 : 2])
+      return false;
   }
+  return true;
+}
+
+void transformIntoImpl(const TriangleMesh& mesh, const Eigen::Matrix3d& linear,
+                       const Eigen::Vector3d& translation, TriangleMesh& out) {
+  out.vertices.resize(mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    out.vertices[i] = linear * mesh.vertices[i] + translation;
+  const bool mirrored = linear.determinant() < 0.0;
+  if (sameTriangles(mesh, mirrored, out))
+    return;
   out.triangles = mesh.triangles;
-  if (linear.determinant() < 0.0) {
+  if (mirrored) {
     for (Triangle& t : out.triangles) {
       std::swap(t[1], t[2]);
     }
   }
+}
+
+TriangleMesh transformedImpl(const TriangleMesh& mesh, const Eigen::Matrix3d& linear,
+                             const Eigen::Vector3d& translation) {
+  TriangleMesh out;
+  transformIntoImpl(mesh, linear, translation, out);
   return out;
 }
 
@@ -40,6 +61,11 @@ TriangleMesh transformed(const TriangleMesh& mesh, const Eigen::Isometry3d& tran
 
 TriangleMesh transformed(const TriangleMesh& mesh, const Eigen::Affine3d& transform) {
   return transformedImpl(mesh, transform.linear(), transform.translation());
+}
+
+void transformInto(const TriangleMesh& mesh, const Eigen::Isometry3d& transform,
+                   TriangleMesh& out) {
+  transformIntoImpl(mesh, transform.linear(), transform.translation(), out);
 }
 
 double signedVolume(const TriangleMesh& mesh) {

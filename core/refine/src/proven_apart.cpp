@@ -48,28 +48,69 @@ Eigen::Vector3d fragmentSlack(const OrthoView& view, const Aabb& box) {
   return view.fromPlane(plane).cwiseAbs();
 }
 
-bool provenApart(const PairBlock& a, const PairBlock& b, const FrameSpec& frame) {
-  if (!a.drawable() || !b.drawable() || a.mesh().vertices.empty() || b.mesh().vertices.empty())
-    return false;
-  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, a.box(), b.box());
+namespace {
+
+// Whether both blocks' fragments can be bounded in `frame`'s view: a view the frame and the
+// pair's depth range make, and every vertex inside its range. Then the sum of the two blocks'
+// fragment slacks in it.
+std::optional<Eigen::Vector3d> pairSlack(const Aabb& a, const Aabb& b, const FrameSpec& frame) {
+  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, a, b);
   std::optional<OrthoView> view;
   try {
     view.emplace(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
   } catch (const std::invalid_argument&) {
-    return false;  // a frame or depth range the view refuses: collidePair refuses it as before
+    return std::nullopt;  // a frame or depth range the view refuses: collidePair refuses it
   }
-  if (!mappable(*view, a.box()) || !mappable(*view, b.box()))
-    return false;
-  const Eigen::Vector3d margin = fragmentSlack(*view, a.box()) + fragmentSlack(*view, b.box());
-  return hullsApartBeyond(a.mesh().vertices, b.mesh().vertices, margin);
+  if (!mappable(*view, a) || !mappable(*view, b))
+    return std::nullopt;
+  return fragmentSlack(*view, a) + fragmentSlack(*view, b);
 }
 
-PairResult skippedResult(const PairBlock& a, const PairBlock& b, const FrameSpec& frame) {
+bool drawableLocally(const PosedBlock& block) {
+  const TriangleMesh& mesh = block.local;
+  if (mesh.triangles.empty() || mesh.vertices.empty() || !block.pose.matrix().allFinite())
+    return false;
+  double largest = 0.0;
+  for (const Eigen::Vector3d& p : mesh.vertices) {
+    if (!p.allFinite())
+      return false;
+    largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  }
+  const std::size_t n = mesh.vertices.size();
+  for (const Triangle& t : mesh.triangles)
+    if (t[0] >= n || t[1] >= n || t[2] >= n)
+      return false;
+  const double rows = block.pose.linear().cwiseAbs().rowwise().sum().maxCoeff();
+  return rows * largest + block.pose.translation().cwiseAbs().maxCoeff() < 1e300;
+}
+
+}  // namespace
+
+bool provenApart(const PairBlock& a, const PairBlock& b, const FrameSpec& frame) {
+  if (!a.drawable() || !b.drawable() || a.mesh().vertices.empty() || b.mesh().vertices.empty())
+    return false;
+  const std::optional<Eigen::Vector3d> margin = pairSlack(a.box(), b.box(), frame);
+  return margin && hullsApartBeyond(a.mesh().vertices, b.mesh().vertices, *margin);
+}
+
+bool provenApart(const PosedBlock& a, const PosedBlock& b, const FrameSpec& frame) {
+  if (!drawableLocally(a) || !drawableLocally(b))
+    return false;
+  const std::optional<Eigen::Vector3d> margin = pairSlack(a.worldBox, b.worldBox, frame);
+  return margin && hullsApartBeyond(PosedPoints{a.local.vertices, a.pose},
+                                    PosedPoints{b.local.vertices, b.pose}, *margin);
+}
+
+PairResult skippedResult(const Aabb& a, const Aabb& b, const FrameSpec& frame) {
   PairResult r;
-  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, a.box(), b.box());
+  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, a, b);
   r.depthMin = depthMin;
   r.depthMax = depthMax;
   return r;
+}
+
+PairResult skippedResult(const PairBlock& a, const PairBlock& b, const FrameSpec& frame) {
+  return skippedResult(a.box(), b.box(), frame);
 }
 
 }  // namespace recode::core

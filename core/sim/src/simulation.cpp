@@ -1,9 +1,9 @@
 // One frame of a scene: pose, boxes, sort and sweep, tree descent, pair algorithm per leaf pair.
 #include "recode/sim/simulation.hpp"
 
+#include "frame_leaf_blocks.hpp"
 #include "pair_tests.hpp"
 #include "recode/refine/proven_apart.hpp"
-#include "recode/sim/leaf_block.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -76,38 +76,15 @@ void buildTriangleHierarchies(const std::vector<ObjectTree>& objects, PairTestRu
   });
 }
 
-// The leaves drawn this frame, each made once (LeafBlock: world mesh, triangle hierarchy, pose):
-// first listed as the pair tests need them, then all made at once, on the runner's threads
-// (making a leaf transforms its whole mesh; its hierarchy was built with the simulation).
-class LeafBlocks {
- public:
-  explicit LeafBlocks(const std::vector<ObjectTree>& objects) : objects_(objects) {}
+const HierarchyNode& nodeOf(const std::vector<ObjectTree>& objects, int object, int index) {
+  return objects[static_cast<std::size_t>(object)].nodes()[static_cast<std::size_t>(index)];
+}
 
-  // The slot of a leaf a pair test needs.
-  std::size_t need(int object, int leaf) {
-    const auto [entry, added] = slots_.try_emplace({object, leaf}, keys_.size());
-    if (added)
-      keys_.emplace_back(object, leaf);
-    return entry->second;
-  }
-
-  // Makes every leaf listed; rethrows the first error in listing order.
-  void make(PairTestRunner& runner) {
-    blocks_.resize(keys_.size());
-    runner.forEach(keys_.size(), [this](std::size_t i) {
-      const auto [object, leaf] = keys_[i];
-      blocks_[i] = std::make_unique<LeafBlock>(objects_[static_cast<std::size_t>(object)], leaf);
-    });
-  }
-
-  [[nodiscard]] const PairBlock* at(std::size_t slot) const { return &blocks_[slot]->block; }
-
- private:
-  const std::vector<ObjectTree>& objects_;
-  std::map<std::pair<int, int>, std::size_t> slots_;
-  std::vector<std::pair<int, int>> keys_;           // per slot
-  std::vector<std::unique_ptr<LeafBlock>> blocks_;  // per slot, made by make()
-};
+// A leaf as the skip-apart test reads it: its own mesh, its world pose and its world box.
+PosedBlock posedLeaf(const std::vector<ObjectTree>& objects, int object, int leaf) {
+  const HierarchyNode& n = nodeOf(objects, object, leaf);
+  return {n.localMesh, n.world, n.worldAabb};
+}
 
 // Counts one pair test into the report, `skipped` when the skip-apart mode proved it apart
 // and drew nothing; a contact keeps its result (the runner has cleared its case map).
@@ -173,6 +150,7 @@ Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::m
     throw std::invalid_argument("the run's limit of pair tests per frame " +
                                 std::to_string(options_.maxPairTestsPerFrame) + " is not positive");
   pairTests_ = std::make_unique<PairTestRunner>(options_);
+  leafBlocks_ = std::make_unique<FrameLeafBlocks>();
   axis_ = scene.view.axis;
   objects_.reserve(scene.objects.size());
   Aabb bounds;
@@ -255,9 +233,7 @@ FrameReport Simulation::runFrame(int frame) {
 
   // The pair tests are listed first, in the order of the sequential loop (candidates, then
   // the descent's leaf pairs), and read back in that order whatever threads ran them.
-  LeafBlocks blocks(objects_);
   std::vector<PairTask> tasks;
-  std::vector<std::pair<std::size_t, std::size_t>> taskBlocks;  // the slots of each task's two
   std::vector<LeafPair> leafPairs;
   for (const auto& [ia, ib] : candidates) {
     const ObjectTree& a = objects_[static_cast<std::size_t>(ia)];
@@ -270,7 +246,6 @@ FrameReport Simulation::runFrame(int frame) {
       throw std::invalid_argument(
           tooManyPairTests(frame, tasks.size() + leafPairs.size(), options_.maxPairTestsPerFrame));
     for (const LeafPair& lp : leafPairs) {
-      taskBlocks.emplace_back(blocks.need(ia, lp.leafA), blocks.need(ib, lp.leafB));
       PairTask task{ia, ib, lp, nullptr, nullptr, {}, true};
       try {
         task.request.frame = leafPairFrame(a.nodes()[static_cast<std::size_t>(lp.leafA)],
@@ -285,26 +260,34 @@ FrameReport Simulation::runFrame(int frame) {
     }
   }
 
-  blocks.make(*pairTests_);
-  for (std::size_t i = 0; i < tasks.size(); ++i) {
-    tasks[i].blockA = blocks.at(taskBlocks[i].first);
-    tasks[i].blockB = blocks.at(taskBlocks[i].second);
-  }
-
-  // The skip-apart mode proves pairs apart first, so that no device is made or cleared for a
-  // pair that will not be drawn; the rest are drawn as in the reference mode.
+  // The skip-apart mode proves pairs apart first, from each leaf's own mesh and pose, so that
+  // no world mesh is made and no device made or cleared for a pair that will not be drawn; the
+  // rest are drawn as in the reference mode.
   std::vector<char> skipped(tasks.size(), 0);
-  std::vector<PairTask> drawnTasks;
-  if (options_.pairMode == PairMode::SkipApart) {
+  if (options_.pairMode == PairMode::SkipApart)
     pairTests_->forEach(tasks.size(), [&](std::size_t i) {
-      skipped[i] = provenApart(*tasks[i].blockA, *tasks[i].blockB, tasks[i].request.frame);
+      skipped[i] = provenApart(posedLeaf(objects_, tasks[i].objectA, tasks[i].leaves.leafA),
+                               posedLeaf(objects_, tasks[i].objectB, tasks[i].leaves.leafB),
+                               tasks[i].request.frame);
     });
-    for (std::size_t i = 0; i < tasks.size(); ++i)
-      if (!skipped[i])
-        drawnTasks.push_back(tasks[i]);
+  std::vector<PairTask> drawn;
+  for (std::size_t i = 0; i < tasks.size(); ++i)
+    if (!skipped[i])
+      drawn.push_back(tasks[i]);
+
+  // The drawn leaves' world blocks, each made once (or kept from the last frame).
+  FrameLeafBlocks& blocks = *leafBlocks_;
+  blocks.start();
+  std::vector<std::pair<std::size_t, std::size_t>> slots;  // each drawn task's two blocks
+  slots.reserve(drawn.size());
+  for (const PairTask& task : drawn)
+    slots.emplace_back(blocks.need(task.objectA, task.leaves.leafA),
+                       blocks.need(task.objectB, task.leaves.leafB));
+  blocks.make(objects_, *pairTests_);
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    drawn[i].blockA = blocks.at(slots[i].first);
+    drawn[i].blockB = blocks.at(slots[i].second);
   }
-  const std::vector<PairTask>& drawn =
-      options_.pairMode == PairMode::SkipApart ? drawnTasks : tasks;
 
   const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(drawn);
   report.deviceSetupUs = setup.us;
@@ -315,7 +298,10 @@ FrameReport Simulation::runFrame(int frame) {
   for (std::size_t i = 0; i < tasks.size(); ++i) {
     if (skipped[i]) {
       addPairTest(report, tasks[i],
-                  skippedResult(*tasks[i].blockA, *tasks[i].blockB, tasks[i].request.frame), true);
+                  skippedResult(nodeOf(objects_, tasks[i].objectA, tasks[i].leaves.leafA).worldAabb,
+                                nodeOf(objects_, tasks[i].objectB, tasks[i].leaves.leafB).worldAabb,
+                                tasks[i].request.frame),
+                  true);
       continue;
     }
     if (next == outcomes.size())

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -161,4 +162,76 @@ TEST_CASE("hullsApartBeyond: large sets, proven from a sample's direction or fro
     INFO("gap " << factor << " margins");
     CHECK(hullsApartBeyond(ball.vertices, b, margin) == (factor > 1.0));
   }
+}
+
+TEST_CASE("hullsApartBeyond of posed sets: the thresholds of the world sets, read locally",
+          "[gjk]") {
+  // The diagonal case above, each box given in its own coordinates under a pose that turns it a
+  // quarter about z (an exact matrix) and moves it: the world points are the boxes above.
+  Eigen::Isometry3d quarter = Eigen::Isometry3d::Identity();
+  quarter.linear() << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+  const Eigen::Vector3d margin(0.01, 0.02, 0.03);
+  const auto posed = [&](const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+    Eigen::Isometry3d pose = quarter;
+    pose.translation() = Eigen::Vector3d(5.0, -3.0, 2.0);
+    // Local points whose images under `pose` are the box [lo, hi].
+    std::vector<Eigen::Vector3d> local = boxPoints(lo, hi, identity);
+    for (Eigen::Vector3d& p : local)
+      p = quarter.linear().transpose() * (p - pose.translation());
+    return std::make_pair(local, pose);
+  };
+  const auto [a, poseA] = posed({0, 0, 0}, {1, 1, 1});
+  for (const double g : {0.0099, 0.0101}) {
+    const auto [b, poseB] = posed({1 + g, 1 + g, 0}, {2, 2, 1});
+    INFO("diagonal gap " << g);
+    CHECK(hullsApartBeyond(PosedPoints{a, poseA}, PosedPoints{b, poseB}, margin) ==
+          (g > margin.x()));
+  }
+  for (const double g : {0.0299, 0.0301}) {
+    const auto [b, poseB] = posed({0.2, 0.3, 1 + g}, {0.8, 0.9, 2});
+    INFO("gap " << g);
+    CHECK(hullsApartBeyond(PosedPoints{a, poseA}, PosedPoints{b, poseB}, margin) ==
+          (g > margin.z()));
+  }
+  CHECK_THROWS_AS(hullsApartBeyond(PosedPoints{{}, poseA}, PosedPoints{a, poseA}, margin),
+                  std::invalid_argument);
+}
+
+TEST_CASE("hullsApartBeyond of posed sets agrees with the world sets on turned balls", "[gjk]") {
+  // Two tessellated balls under random turns, far from the origin, a gap between their centres'
+  // spheres from well clear to overlapping: the answer from local points and poses must be the
+  // answer from the world points (core::transformed's arithmetic), and true only where the
+  // balls' hulls (inside spheres of radius 1) can be apart by more than the margin's reach.
+  const TriangleMesh ball = makeSphere(1.0, 48, 24);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> angle(-3.14159, 3.14159), unit(-1.0, 1.0);
+  const Eigen::Vector3d margin(0.004, 0.006, 0.005);
+  int proven = 0, cases = 0;
+  for (int k = 0; k < 60; ++k) {
+    const auto randomPose = [&](const Eigen::Vector3d& at) {
+      Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+      pose.rotate(Eigen::AngleAxisd(angle(rng),
+                                    Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized()));
+      pose.pretranslate(at);
+      return pose;
+    };
+    const Eigen::Vector3d centre(1e4 + unit(rng), -2e4 + unit(rng), 3e3);
+    const Eigen::Vector3d direction = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)).normalized();
+    const double gap = std::vector<double>{0.5, 0.05, 0.02, 0.0, -0.1}[k % 5];
+    const Eigen::Isometry3d poseA = randomPose(centre);
+    const Eigen::Isometry3d poseB = randomPose(centre + (2.0 + gap) * direction);
+    const TriangleMesh worldA = transformed(ball, poseA), worldB = transformed(ball, poseB);
+    const bool local = hullsApartBeyond(PosedPoints{ball.vertices, poseA},
+                                        PosedPoints{ball.vertices, poseB}, margin);
+    INFO("case " << k << ", gap " << gap);
+    CHECK(local == hullsApartBeyond(worldA.vertices, worldB.vertices, margin));
+    if (gap < 0.0)
+      CHECK_FALSE(local);  // a hull's faces sag at most 1 - cos(pi / 24) < 0.01 inside its sphere
+    if (gap >= 0.5)
+      CHECK(local);
+    proven += local ? 1 : 0;
+    ++cases;
+  }
+  CHECK(proven >= cases / 5);
 }

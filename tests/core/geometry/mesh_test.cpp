@@ -1,10 +1,12 @@
-// TriangleMesh helpers: bounding box, transformed copies, signed volume.
+// TriangleMesh helpers: bounding box, transformed copies (and transformInto), signed volume.
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/mesh.hpp"
@@ -121,4 +123,39 @@ TEST_CASE("Aabb::extend by a box unites them, and an empty box adds nothing") {
   recode::core::Aabb empty;
   empty.extend(recode::core::Aabb{});
   CHECK(empty.isEmpty());
+}
+
+namespace {
+
+bool sameBits(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(Eigen::Vector3d)) == 0);
+}
+
+}  // namespace
+
+TEST_CASE("transformInto writes transformed()'s mesh bit for bit into storage it reuses",
+          "[mesh]") {
+  const TriangleMesh cone = makeCone(1.0, 2.0, 16);
+  Eigen::Isometry3d turned = Eigen::Isometry3d::Identity();
+  turned.rotate(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, -0.5).normalized()));
+  turned.pretranslate(Eigen::Vector3d(3.0, -1.0, 0.25));
+  Eigen::Isometry3d mirror = turned;
+  mirror.linear() = turned.linear() * Eigen::Vector3d(1.0, -1.0, 1.0).asDiagonal();
+  REQUIRE(mirror.linear().determinant() < 0.0);
+
+  // Into a mesh that holds something else (another size), then the same storage pose after pose,
+  // a reflection (the winding swapped) and back (swapped back).
+  TriangleMesh out = makeSphere(1.0, 12, 6);
+  for (const Eigen::Isometry3d& pose :
+       {turned, mirror, Eigen::Isometry3d(turned.inverse()), mirror, turned}) {
+    const TriangleMesh expected = transformed(cone, pose);
+    const Eigen::Vector3d* storage = out.vertices.data();
+    const std::size_t capacity = out.vertices.capacity();
+    transformInto(cone, pose, out);
+    CHECK(sameBits(out.vertices, expected.vertices));
+    CHECK(out.triangles == expected.triangles);
+    if (capacity >= cone.vertexCount())
+      CHECK(out.vertices.data() == storage);  // no allocation once it fits
+  }
 }

@@ -6,6 +6,7 @@
 #include <span>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace recode::core {
 
@@ -35,6 +36,21 @@ namespace recode::core {
 // finite.
 [[nodiscard]] bool hullsApartBeyond(std::span<const Eigen::Vector3d> a,
                                     std::span<const Eigen::Vector3d> b,
+                                    const Eigen::Vector3d& margin);
+
+// A point set in its own coordinates and the map to the world: its world points are
+// pose.linear() * p + pose.translation(), as core::transformed makes a mesh's vertices.
+struct PosedPoints {
+  std::span<const Eigen::Vector3d> local;
+  Eigen::Isometry3d pose;
+};
+
+// hullsApartBeyond of the two sets' world points, without making them: GJK reads a point only
+// when it is a support (made exactly as the world point), and the slab's ends are taken in each
+// set's own coordinates, n.(L p + t) as (L^T n).p + n.t, whose rounding differs from the world
+// points' by about 1e-15 of their size, far inside the 1e-12 the slab must clear. So true proves
+// the world points' hulls apart as above. The same errors as above.
+[[nodiscard]] bool hullsApartBeyond(const PosedPoints& a, const PosedPoints& b,
                                     const Eigen::Vector3d& margin);
 
 }  // namespace recode::core

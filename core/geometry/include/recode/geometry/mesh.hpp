@@ -73,6 +73,11 @@ struct TriangleMesh {
                                        const Eigen::Isometry3d& transform);
 // The same for an affine map, which may also scale or shear.
 [[nodiscard]] TriangleMesh transformed(const TriangleMesh& mesh, const Eigen::Affine3d& transform);
+// transformed(mesh, transform) written into `out`, reusing its storage: the same vertices bit
+// for bit (the same arithmetic), and the triangles copied only when `out` does not already hold
+// them as transformed() would give them. For a caller that maps one mesh frame after frame.
+// `out` must not be `mesh`.
+void transformInto(const TriangleMesh& mesh, const Eigen::Isometry3d& transform, TriangleMesh& out);
 
 // Signed volume enclosed by the triangles (divergence theorem: the sum over triangles of
 // det(a - o, b - o, c - o) / 6, with o the bounding-box centre for accuracy). Positive for

@@ -6,6 +6,7 @@
 // pixel centre, and collidePair in that frame would report no interfering pixel.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "recode/geometry/mesh.hpp"
 #include "recode/pair/frame.hpp"
@@ -31,10 +32,27 @@ namespace recode::core {
 // proves nothing. Never throws for such a refusal.
 [[nodiscard]] bool provenApart(const PairBlock& a, const PairBlock& b, const FrameSpec& frame);
 
+// A block as the skip-apart test can read it before its world mesh is made: the mesh in its own
+// coordinates, the pose that maps it to the world (its world mesh is transformed(local, pose))
+// and that world mesh's box, bit for bit (ObjectTree::updateAabbs makes it so).
+struct PosedBlock {
+  const TriangleMesh& local;
+  const Eigen::Isometry3d& pose;
+  const Aabb& worldBox;
+};
+
+// provenApart of the world blocks these make, with the same answer's meaning: the posed
+// hullsApartBeyond proves their world vertices' hulls apart. A block is drawable here when its
+// own mesh is (finite, indices in range, a triangle) and its pose cannot overflow a world
+// coordinate (|L|_inf |p|_inf + |t|_inf below 1e300), so that every world vertex is finite.
+[[nodiscard]] bool provenApart(const PosedBlock& a, const PosedBlock& b, const FrameSpec& frame);
+
 // What the skip-apart mode reports for a pair provenApart: no interference and no contact, as the
 // reference would report, but nothing drawn or read (boxesOverlap false, the MOR empty, no case
 // map), and the pair's depth range, as collidePair sets it.
 [[nodiscard]] PairResult skippedResult(const PairBlock& a, const PairBlock& b,
                                        const FrameSpec& frame);
+// The same from the two world boxes.
+[[nodiscard]] PairResult skippedResult(const Aabb& a, const Aabb& b, const FrameSpec& frame);
 
 }  // namespace recode::core

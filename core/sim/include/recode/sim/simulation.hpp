@@ -28,7 +28,8 @@
 
 namespace recode::core {
 
-class PairTestRunner;  // core/sim/src/pair_tests.hpp
+class PairTestRunner;   // core/sim/src/pair_tests.hpp
+class FrameLeafBlocks;  // core/sim/src/frame_leaf_blocks.hpp
 
 inline constexpr int kPairFrameGranule = 32;
 inline constexpr int kDefaultRunFrames = 100;  // when neither the scene nor the caller says
@@ -152,7 +153,8 @@ class Simulation {
   double pixelSize_ = 0.0;
   std::optional<FrameSpec> screen_;  // with drawOnScreen
   SweepAndPrune broadPhase_;
-  std::unique_ptr<PairTestRunner> pairTests_;  // its devices and threads
+  std::unique_ptr<PairTestRunner> pairTests_;    // its devices and threads
+  std::unique_ptr<FrameLeafBlocks> leafBlocks_;  // the drawn leaves, kept from frame to frame
 };
 
 // How many pair tests a simulation with these options runs at once: RunOptions::threads with
