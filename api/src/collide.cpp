@@ -79,13 +79,16 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     pair.mor = request.mor;
     pair.contact = request.contact;
     pair.normal = request.normal;
-    const core::LeafBlock blockA(a.tree(), lp.leafA);
-    const core::LeafBlock blockB(b.tree(), lp.leafB);
+    // Proven apart from the leaves' own meshes and poses: no world mesh is made for a skipped
+    // pair.
     if (request.mode == core::PairMode::SkipApart &&
-        core::provenApart(blockA.block, blockB.block, pair.frame)) {
+        core::provenApart(core::PosedBlock{na.localMesh, na.world, na.worldAabb},
+                          core::PosedBlock{nb.localMesh, nb.world, nb.worldAabb}, pair.frame)) {
       ++result.blockPairsSkipped;
       continue;
     }
+    const core::LeafBlock blockA(a.tree(), lp.leafA);
+    const core::LeafBlock blockB(b.tree(), lp.leafB);
     raster::DepthStencilDevice& device = devices.device(pair.frame.width, pair.frame.height);
     PairAnswer answer = decidePair(device, blockA.block, blockB.block, pair, request.mode);
     core::PairResult& r = answer.pair;
