@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -82,6 +83,64 @@ Closest closestOnSimplex(const std::vector<Eigen::Vector3d>& simplex) {
   return best;
 }
 
+// The same point by the same subsets and tests, in fixed-size storage: no allocation per subset
+// or solve, for the skip-apart test, which runs GJK for every pair of a frame. The rounding of
+// its solves may differ from the one above in the last places, which changes no proof (the slab
+// checked on every point carries it); closestOnSimplex above stays as it is because the hand
+// scene's poses are made with convexHullDistance.
+template <int K>
+bool affineWeights(const std::array<const Eigen::Vector3d*, 4>& subset, double* weights) {
+  Eigen::Matrix<double, 3, K> e;
+  for (int i = 1; i <= K; ++i)
+    e.col(i - 1) = *subset[static_cast<std::size_t>(i)] - *subset[0];
+  const Eigen::Matrix<double, K, K> g = e.transpose() * e;
+  const Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu(g);
+  if (lu.rank() < K)
+    return false;
+  const Eigen::Matrix<double, K, 1> t = lu.solve(-e.transpose() * *subset[0]);
+  weights[0] = 1.0 - t.sum();
+  for (int i = 0; i < K; ++i)
+    weights[i + 1] = t(i);
+  return true;
+}
+
+Closest closestOnSimplexFixed(const std::vector<Eigen::Vector3d>& simplex) {
+  const int n = static_cast<int>(simplex.size());
+  Closest best;
+  int bestMask = 0, bestSize = 0;
+  double bestNorm = std::numeric_limits<double>::infinity();
+  for (int mask = 1; mask < (1 << n); ++mask) {
+    std::array<const Eigen::Vector3d*, 4> subset{};
+    int m = 0;
+    for (int i = 0; i < n; ++i)
+      if (mask & (1 << i))
+        subset[static_cast<std::size_t>(m++)] = &simplex[static_cast<std::size_t>(i)];
+    double weights[4] = {1.0, 0.0, 0.0, 0.0};
+    const bool solved = m == 1   ? true
+                        : m == 2 ? affineWeights<1>(subset, weights)
+                        : m == 3 ? affineWeights<2>(subset, weights)
+                                 : affineWeights<3>(subset, weights);
+    if (!solved)
+      continue;  // a degenerate face: its points are covered by smaller subsets
+    if (std::any_of(weights, weights + m, [](double w) { return w < -1e-12; }))
+      continue;
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (int i = 0; i < m; ++i)
+      p += weights[i] * *subset[static_cast<std::size_t>(i)];
+    const double norm = p.norm();
+    if (norm < bestNorm * (1.0 - 1e-14) || (norm <= bestNorm && m < bestSize)) {
+      bestNorm = norm;
+      best.point = p;
+      bestMask = mask;
+      bestSize = m;
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    if (bestMask & (1 << i))
+      best.simplex.push_back(simplex[static_cast<std::size_t>(i)]);
+  return best;
+}
+
 // The rounding threshold of both answers, relative to the points' largest coordinate: a
 // thousand times the rounding of a dot product, far below any pixel.
 constexpr double kRelativeTolerance = 1e-12;
@@ -98,8 +157,9 @@ struct Approach {
 // GJK on conv(A) - conv(B), each given by its support function (the point furthest along a
 // direction), from `start`, a point of A - B; `scale` sets the rounding threshold.
 template <typename SupportA, typename SupportB>
-Approach closestApproach(const SupportA& furthestA, const SupportB& furthestB,
-                         const Eigen::Vector3d& start, double scale) {
+Approach closestApproach(
+    const SupportA& furthestA, const SupportB& furthestB, const Eigen::Vector3d& start,
+    double scale, Closest (*closestOn)(const std::vector<Eigen::Vector3d>&) = closestOnSimplex) {
   const double tiny = kRelativeTolerance * std::max(scale, 1e-300);
 
   // v is always the point of conv(simplex) nearest the origin, so a new simplex can only
@@ -119,7 +179,7 @@ Approach closestApproach(const SupportA& furthestA, const SupportB& furthestB,
     if (std::find(simplex.begin(), simplex.end(), w) != simplex.end())
       return apart();
     simplex.push_back(w);
-    const Closest c = closestOnSimplex(simplex);
+    const Closest c = closestOn(simplex);
     if (c.simplex.empty())
       return apart();  // numerically stuck; v is the best found
     if (c.simplex.size() == 4)
@@ -238,7 +298,7 @@ bool slabBeyondFound(const SetA& a, const SetB& b, const Eigen::Vector3d& margin
   };
   const Approach approach = closestApproach(
       furthestGrownA, [&b, strideB](const Eigen::Vector3d& d) { return b.furthest(d, strideB); },
-      Eigen::Vector3d(a.first() + margin - b.first()), scale);
+      Eigen::Vector3d(a.first() + margin - b.first()), scale, closestOnSimplexFixed);
   if (approach.distance == 0.0)
     return false;
   const Eigen::Vector3d n = approach.direction / approach.distance;
