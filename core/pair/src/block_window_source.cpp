@@ -251,6 +251,19 @@ void BlockWindowSource::gather(const PixelRect& rect) const {
   std::vector<std::uint32_t>& survivors = threadSurvivors;
   windows.startQuery(mesh.vertices.size());
   survivors.clear();
+  // When the rectangle holds most of the block, nearly every node and triangle passes the box
+  // tests, so they cost more than they leave out: every triangle is then tested directly, in
+  // the block's order. The same list either way, as the box tests are conservative.
+  if (mostlyInside(rect)) {
+    for (const Triangle& tri : mesh.triangles) {
+      const WindowVertex& a = windows.get(view_, mesh, tri[0]);
+      const WindowVertex& b = windows.get(view_, mesh, tri[1]);
+      const WindowVertex& c = windows.get(view_, mesh, tri[2]);
+      if (boxHoldsPixelCentre(a, b, c, rect) && coversPixelCentre(a, b, c, rect))
+        base_.insert(base_.end(), {a, b, c});
+    }
+    return;
+  }
   // Only x and y decide; the survivors are listed in the block's order afterwards.
   block_.hierarchy()->visit(boxCanCover, [&](std::uint32_t t) {
     const Triangle& tri = mesh.triangles[t];
@@ -268,6 +281,15 @@ void BlockWindowSource::gather(const PixelRect& rect) const {
   for (const std::uint32_t t : survivors)
     for (const VertexIndex i : mesh.triangles[t])
       base_.push_back(windows.get(view_, mesh, i));
+}
+
+bool BlockWindowSource::mostlyInside(const PixelRect& rect) const {
+  const double x0 = corners_[0].x, y0 = corners_[0].y, x1 = corners_[1].x, y1 = corners_[1].y;
+  const double ix = std::min<double>(x1, rect.x1) - std::max<double>(x0, rect.x0);
+  const double iy = std::min<double>(y1, rect.y1) - std::max<double>(y0, rect.y0);
+  if (ix <= 0.0 || iy <= 0.0)
+    return false;
+  return ix * iy >= 0.5 * (x1 - x0) * (y1 - y0);
 }
 
 void BlockWindowSource::narrow(const PixelRect& rect) const {

@@ -42,6 +42,8 @@ class BlockWindowSource final : public raster::TriangleSource {
   void gather(const raster::PixelRect& rect) const;
   // The base triangles whose box holds a pixel centre of `rect` (inside the base rectangle).
   void narrow(const raster::PixelRect& rect) const;
+  // Whether at least half the block's window box (x and y) lies inside `rect`.
+  [[nodiscard]] bool mostlyInside(const raster::PixelRect& rect) const;
 
   const PairBlock& block_;
   const OrthoView& view_;
