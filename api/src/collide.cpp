@@ -82,8 +82,9 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
     // Proven apart from the leaves' own meshes and poses: no world mesh is made for a skipped
     // pair.
     if (request.mode == core::PairMode::SkipApart &&
-        core::provenApart(core::PosedBlock{na.localMesh, na.world, na.worldAabb},
-                          core::PosedBlock{nb.localMesh, nb.world, nb.worldAabb}, pair.frame)) {
+        core::provenApart(core::PosedBlock{na.localMesh, na.world, na.worldAabb, na.localExtent},
+                          core::PosedBlock{nb.localMesh, nb.world, nb.worldAabb, nb.localExtent},
+                          pair.frame)) {
       ++result.blockPairsSkipped;
       continue;
     }

@@ -1,5 +1,7 @@
 #include "recode/geometry/mesh.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -12,6 +14,23 @@ Aabb boundingBox(const TriangleMesh& mesh) {
     box.extend(p);
   }
   return box;
+}
+
+double drawableExtent(const TriangleMesh& mesh) {
+  constexpr double kNotDrawable = std::numeric_limits<double>::infinity();
+  if (mesh.triangles.empty())
+    return kNotDrawable;
+  double largest = 0.0;
+  for (const Eigen::Vector3d& p : mesh.vertices) {
+    if (!p.allFinite())
+      return kNotDrawable;
+    largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  }
+  const std::size_t n = mesh.vertices.size();
+  for (const Triangle& t : mesh.triangles)
+    if (t[0] >= n || t[1] >= n || t[2] >= n)
+      return kNotDrawable;
+  return largest;
 }
 
 namespace {

@@ -67,21 +67,10 @@ std::optional<Eigen::Vector3d> pairSlack(const Aabb& a, const Aabb& b, const Fra
 }
 
 bool drawableLocally(const PosedBlock& block) {
-  const TriangleMesh& mesh = block.local;
-  if (mesh.triangles.empty() || mesh.vertices.empty() || !block.pose.matrix().allFinite())
+  if (!std::isfinite(block.localExtent) || !block.pose.matrix().allFinite())
     return false;
-  double largest = 0.0;
-  for (const Eigen::Vector3d& p : mesh.vertices) {
-    if (!p.allFinite())
-      return false;
-    largest = std::max(largest, p.cwiseAbs().maxCoeff());
-  }
-  const std::size_t n = mesh.vertices.size();
-  for (const Triangle& t : mesh.triangles)
-    if (t[0] >= n || t[1] >= n || t[2] >= n)
-      return false;
   const double rows = block.pose.linear().cwiseAbs().rowwise().sum().maxCoeff();
-  return rows * largest + block.pose.translation().cwiseAbs().maxCoeff() < 1e300;
+  return rows * block.localExtent + block.pose.translation().cwiseAbs().maxCoeff() < 1e300;
 }
 
 }  // namespace

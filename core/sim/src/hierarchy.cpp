@@ -62,6 +62,7 @@ int ObjectTree::add(const SceneObject& object, int parent, const std::string& pa
     node.path = parent < 0 ? object.name : parentPath + "/" + object.name;
     node.placement = object;  // the Placement part of the scene object
     node.localMesh = object.localMesh;
+    node.localExtent = drawableExtent(node.localMesh);
   }
   const std::string path = nodes_.back().path;
   if (object.isLeaf()) {

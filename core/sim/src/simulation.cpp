@@ -83,7 +83,7 @@ const HierarchyNode& nodeOf(const std::vector<ObjectTree>& objects, int object, 
 // A leaf as the skip-apart test reads it: its own mesh, its world pose and its world box.
 PosedBlock posedLeaf(const std::vector<ObjectTree>& objects, int object, int leaf) {
   const HierarchyNode& n = nodeOf(objects, object, leaf);
-  return {n.localMesh, n.world, n.worldAabb};
+  return {n.localMesh, n.world, n.worldAabb, n.localExtent};
 }
 
 // Counts one pair test into the report, `skipped` when the skip-apart mode proved it apart

@@ -159,3 +159,18 @@ TEST_CASE("transformInto writes transformed()'s mesh bit for bit into storage it
       CHECK(out.vertices.data() == storage);  // no allocation once it fits
   }
 }
+
+TEST_CASE("drawableExtent: the largest coordinate of a drawable mesh, infinity for any other",
+          "[mesh]") {
+  TriangleMesh box = makeBox(1.0, 2.0, 3.0);  // half-sides: x in [-1, 1], z in [-3, 3]
+  CHECK(drawableExtent(box) == 3.0);
+  TriangleMesh notFinite = box;
+  notFinite.vertices[5].y() = std::nan("");
+  CHECK(std::isinf(drawableExtent(notFinite)));
+  TriangleMesh badIndex = box;
+  badIndex.triangles[2][0] = static_cast<VertexIndex>(box.vertexCount());
+  CHECK(std::isinf(drawableExtent(badIndex)));
+  TriangleMesh noTriangles = box;
+  noTriangles.triangles.clear();
+  CHECK(std::isinf(drawableExtent(noTriangles)));
+}

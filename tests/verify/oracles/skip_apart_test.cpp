@@ -65,8 +65,9 @@ void checkPosed(const core::TriangleMesh& a, const core::TriangleMesh& b,
   request.contact = false;
   raster::CpuDevice device(frame.width, frame.height);
   const bool collide = core::collidePair(device, blockA, blockB, request).collide;
-  const bool proven = core::provenApart(core::PosedBlock{localA, poseA, blockA.box()},
-                                        core::PosedBlock{localB, poseB, blockB.box()}, frame);
+  const bool proven = core::provenApart(
+      core::PosedBlock{localA, poseA, blockA.box(), core::drawableExtent(localA)},
+      core::PosedBlock{localB, poseB, blockB.box(), core::drawableExtent(localB)}, frame);
   ++tally.pairs;
   tally.proven += proven ? 1 : 0;
   tally.collide += collide ? 1 : 0;
@@ -237,4 +238,28 @@ TEST_CASE(
   CHECK_FALSE(proven);
   raster::CpuDevice device(60, 30);
   CHECK_THROWS_AS(core::collidePair(device, a, b, request), std::invalid_argument);
+}
+
+TEST_CASE("skip-apart from local meshes: a block that cannot be drawn is never proven apart") {
+  // Two boxes far apart: proven apart, unless a vertex is not finite (the reference refuses the
+  // block) or the pose could overflow a world coordinate. (GJK's squared lengths overflow on so
+  // far a pose as well, and it then proves nothing; the bound on the pose makes the refusal not
+  // depend on that.)
+  const core::TriangleMesh box = core::makeBox(0.5, 0.5, 0.5);
+  const core::TriangleMesh far = moved(box, {4.0, 0.0, 1.0});
+  const core::FrameSpec frame = frameOver(box, far, core::ViewAxis::Z, 128);
+  const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+  const core::Aabb boxA = core::boundingBox(box), boxB = core::boundingBox(far);
+  const double extentA = core::drawableExtent(box), extentB = core::drawableExtent(far);
+  CHECK(core::provenApart(core::PosedBlock{box, identity, boxA, extentA},
+                          core::PosedBlock{far, identity, boxB, extentB}, frame));
+  core::TriangleMesh broken = box;
+  broken.vertices[3].x() = std::nan("");
+  CHECK_FALSE(
+      core::provenApart(core::PosedBlock{broken, identity, boxA, core::drawableExtent(broken)},
+                        core::PosedBlock{far, identity, boxB, extentB}, frame));
+  Eigen::Isometry3d huge = identity;
+  huge.translation() = Eigen::Vector3d(1e301, 0.0, 0.0);
+  CHECK_FALSE(core::provenApart(core::PosedBlock{box, huge, boxA, extentA},
+                                core::PosedBlock{far, identity, boxB, extentB}, frame));
 }

@@ -62,6 +62,10 @@ struct TriangleMesh {
   [[nodiscard]] std::size_t triangleCount() const { return triangles.size(); }
 };
 
+// The largest absolute coordinate of a mesh that can be drawn: every vertex finite, every
+// index below vertexCount() and at least one triangle; infinity for any other mesh.
+[[nodiscard]] double drawableExtent(const TriangleMesh& mesh);
+
 // Box of all vertices (referenced by a triangle or not). Empty for a mesh without
 // vertices. Non-finite coordinates propagate into the box as the min/max operations give.
 [[nodiscard]] Aabb boundingBox(const TriangleMesh& mesh);

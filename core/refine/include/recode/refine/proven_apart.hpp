@@ -33,18 +33,20 @@ namespace recode::core {
 [[nodiscard]] bool provenApart(const PairBlock& a, const PairBlock& b, const FrameSpec& frame);
 
 // A block as the skip-apart test can read it before its world mesh is made: the mesh in its own
-// coordinates, the pose that maps it to the world (its world mesh is transformed(local, pose))
-// and that world mesh's box, bit for bit (ObjectTree::updateAabbs makes it so).
+// coordinates, the pose that maps it to the world (its world mesh is transformed(local, pose)),
+// that world mesh's box, bit for bit (ObjectTree::updateAabbs makes it so), and
+// drawableExtent(local), made once per mesh rather than per pair.
 struct PosedBlock {
   const TriangleMesh& local;
   const Eigen::Isometry3d& pose;
   const Aabb& worldBox;
+  double localExtent;
 };
 
 // provenApart of the world blocks these make, with the same answer's meaning: the posed
 // hullsApartBeyond proves their world vertices' hulls apart. A block is drawable here when its
-// own mesh is (finite, indices in range, a triangle) and its pose cannot overflow a world
-// coordinate (|L|_inf |p|_inf + |t|_inf below 1e300), so that every world vertex is finite.
+// own mesh is (a finite localExtent) and its pose cannot overflow a world coordinate
+// (|L|_inf localExtent + |t|_inf below 1e300), so that every world vertex is finite.
 [[nodiscard]] bool provenApart(const PosedBlock& a, const PosedBlock& b, const FrameSpec& frame);
 
 // What the skip-apart mode reports for a pair provenApart: no interference and no contact, as the

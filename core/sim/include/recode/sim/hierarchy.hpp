@@ -35,10 +35,11 @@ struct HierarchyNode {
   std::string path;  // names from the root joined by '/': "left hand/index/distal"
   int parent = -1;   // index in ObjectTree::nodes(), -1 for the root
   std::vector<int> children;
-  Placement placement;     // rest pose and motion relative to the parent
-  TriangleMesh localMesh;  // leaves: the block in the node's own coordinates; empty otherwise
-  bool rigid = true;       // nothing below this node moves relative to it
-  Obb localObb;            // in the node's coordinates (rigid nodes)
+  Placement placement;       // rest pose and motion relative to the parent
+  TriangleMesh localMesh;    // leaves: the block in the node's own coordinates; empty otherwise
+  double localExtent = 0.0;  // leaves: drawableExtent(localMesh), made once
+  bool rigid = true;         // nothing below this node moves relative to it
+  Obb localObb;              // in the node's coordinates (rigid nodes)
 
   // At the current frame:
   Eigen::Isometry3d world = Eigen::Isometry3d::Identity();  // local -> world
