@@ -28,23 +28,32 @@ struct Tally {
   int violated = 0;  // both: must stay 0
 };
 
-// Decides one pair both ways and counts it.
-void check(const core::TriangleMesh& a, const core::TriangleMesh& b, const core::FrameSpec& frame,
-           Tally& tally) {
-  const core::PairBlock blockA = core::PairBlock::withHierarchy(a);
-  const core::PairBlock blockB = core::PairBlock::withHierarchy(b);
+// Whether the reference finds interference between the two blocks in `frame`.
+bool referenceCollides(const core::PairBlock& a, const core::PairBlock& b,
+                       const core::FrameSpec& frame) {
   core::PairRequest request;
   request.frame = frame;
   request.contact = false;
   raster::CpuDevice device(frame.width, frame.height);
-  const bool collide = core::collidePair(device, blockA, blockB, request).collide;
-  const bool proven = core::provenApart(blockA, blockB, frame);
+  return core::collidePair(device, a, b, request).collide;
+}
+
+// Counts one pair decided both ways; proven apart and colliding is a failure.
+void count(bool proven, bool collide, Tally& tally) {
   ++tally.pairs;
   tally.proven += proven ? 1 : 0;
   tally.collide += collide ? 1 : 0;
   tally.violated += proven && collide ? 1 : 0;
   if (proven && collide)
     FAIL_CHECK("proven apart, yet the reference reports interference");
+}
+
+// Decides one pair both ways and counts it.
+void check(const core::TriangleMesh& a, const core::TriangleMesh& b, const core::FrameSpec& frame,
+           Tally& tally) {
+  const core::PairBlock blockA = core::PairBlock::withHierarchy(a);
+  const core::PairBlock blockB = core::PairBlock::withHierarchy(b);
+  count(core::provenApart(blockA, blockB, frame), referenceCollides(blockA, blockB, frame), tally);
 }
 
 // The same from each block's own mesh and pose, as a simulation proves its pairs: each block is
@@ -60,20 +69,10 @@ void checkPosed(const core::TriangleMesh& a, const core::TriangleMesh& b,
   const core::TriangleMesh worldB = core::transformed(localB, poseB);
   const core::PairBlock blockA = core::PairBlock::withHierarchy(worldA);
   const core::PairBlock blockB = core::PairBlock::withHierarchy(worldB);
-  core::PairRequest request;
-  request.frame = frame;
-  request.contact = false;
-  raster::CpuDevice device(frame.width, frame.height);
-  const bool collide = core::collidePair(device, blockA, blockB, request).collide;
   const bool proven = core::provenApart(
       core::PosedBlock{localA, poseA, blockA.box(), core::drawableExtent(localA)},
       core::PosedBlock{localB, poseB, blockB.box(), core::drawableExtent(localB)}, frame);
-  ++tally.pairs;
-  tally.proven += proven ? 1 : 0;
-  tally.collide += collide ? 1 : 0;
-  tally.violated += proven && collide ? 1 : 0;
-  if (proven && collide)
-    FAIL_CHECK("proven apart from the posed blocks, yet the reference reports interference");
+  count(proven, referenceCollides(blockA, blockB, frame), tally);
 }
 
 core::FrameSpec frameOver(const core::TriangleMesh& a, const core::TriangleMesh& b,
