@@ -12,7 +12,6 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <string>
 #include <vector>
 
 namespace recode::core {
@@ -192,26 +191,6 @@ Approach closestApproach(
   return apart();
 }
 
-// `caller` names the public function in the error for an empty set.
-double largestCoordinate(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
-                         const char* caller) {
-  if (a.empty() || b.empty())
-    throw std::invalid_argument(std::string(caller) + ": an empty point set");
-  double scale = 0.0;
-  for (const Eigen::Vector3d& p : a)
-    scale = std::max(scale, p.cwiseAbs().maxCoeff());
-  for (const Eigen::Vector3d& p : b)
-    scale = std::max(scale, p.cwiseAbs().maxCoeff());
-  return scale;
-}
-
-Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
-  const double scale = largestCoordinate(a, b, "convexHullDistance");
-  return closestApproach([a](const Eigen::Vector3d& d) { return furthest(a, d); },
-                         [b](const Eigen::Vector3d& d) { return furthest(b, d); }, a[0] - b[0],
-                         scale);
-}
-
 // A point set as GJK and the slab read it: its world points as they are.
 class WorldSet {
  public:
@@ -239,6 +218,15 @@ class WorldSet {
  private:
   std::span<const Eigen::Vector3d> points_;
 };
+
+Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
+  if (a.empty() || b.empty())
+    throw std::invalid_argument("convexHullDistance: an empty point set");
+  const double scale = std::max(WorldSet(a).largestCoordinate(), WorldSet(b).largestCoordinate());
+  return closestApproach([a](const Eigen::Vector3d& d) { return furthest(a, d); },
+                         [b](const Eigen::Vector3d& d) { return furthest(b, d); }, a[0] - b[0],
+                         scale);
+}
 
 // The same for a set read in its own coordinates: a support is made as its world point is
 // (linear * p + translation); a slab end is (L^T n).p + n.t, within about 1e-15 of the

@@ -9,14 +9,7 @@ namespace recode::core {
 namespace {
 
 bool allDrawable(const TriangleMesh& mesh) {
-  for (const Eigen::Vector3d& p : mesh.vertices)
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      return false;
-  const std::size_t n = mesh.vertices.size();
-  for (const Triangle& t : mesh.triangles)
-    if (t[0] >= n || t[1] >= n || t[2] >= n)
-      return false;
-  return !mesh.triangles.empty();
+  return std::isfinite(drawableExtent(mesh));
 }
 
 }  // namespace
