@@ -85,6 +85,24 @@ struct FragmentState {
   StencilOps ops;
 };
 
+// The compare functions and stencil ops a kernel applies, read from the state: the general
+// kernel, for any state.
+struct StateFuncs {
+  static CompareFunc stencilFunc(const FragmentState& s) { return s.stencilFunc; }
+  static CompareFunc depthFunc(const FragmentState& s) { return s.depthFunc; }
+  static const StencilOps& ops(const FragmentState& s) { return s.ops; }
+};
+
+// Those of detail::kCompiledFragmentFuncs[K], known when the kernel is compiled: the switches
+// of CompareLanes and StencilOpLanes fold to the one case.
+template <int K>
+struct CompiledFuncs {
+  static constexpr detail::FragmentFuncs kFuncs = detail::kCompiledFragmentFuncs[K];
+  static constexpr CompareFunc stencilFunc(const FragmentState&) { return kFuncs.stencilFunc; }
+  static constexpr CompareFunc depthFunc(const FragmentState&) { return kFuncs.depthFunc; }
+  static constexpr const StencilOps& ops(const FragmentState&) { return kFuncs.ops; }
+};
+
 // quantizeDepth on lanes: 0 unless z > 0 (NaN too), kDepthMax from 1 on, else the scaled value
 // rounded by adding and subtracting kRoundToIntegerBias. The result is an integer in [0, 2^24),
 // so the conversion is exact.
@@ -108,15 +126,16 @@ struct LanesAfter {
 };
 
 // applyFragment() on int32 lanes: the incoming and stored depths and the old stencils.
-template <class DI>
+template <class Funcs, class DI>
 HWY_INLINE LanesAfter<DI> FragmentLanes(DI di, const FragmentState& s, hn::Vec<DI> incoming,
                                         hn::Vec<DI> stored, hn::Vec<DI> old) {
-  const StencilOps& ops = s.ops;
+  const StencilOps& ops = Funcs::ops(s);
   const auto valueMask = hn::Set(di, s.stencilValueMask);
   const auto writeMask = hn::Set(di, s.stencilWriteMask);
   const auto stencilRef = hn::Set(di, s.stencilRef & s.stencilValueMask);
-  const auto stencilPass = CompareLanes(di, s.stencilFunc, stencilRef, hn::And(old, valueMask));
-  const auto depthPass = CompareLanes(di, s.depthFunc, incoming, stored);
+  const auto stencilPass =
+      CompareLanes(di, Funcs::stencilFunc(s), stencilRef, hn::And(old, valueMask));
+  const auto depthPass = CompareLanes(di, Funcs::depthFunc(s), incoming, stored);
   LanesAfter<DI> after{old, stored};
   if (s.stencilWriteMask != 0) {  // else no stencil bit can change
     const auto stencilFail = hn::Not(stencilPass);
@@ -149,7 +168,7 @@ HWY_INLINE void KeepUncovered(hn::Mask<DI> covered, hn::Vec<DI> old, hn::Vec<DI>
 // Row r of the block, the pixels of `bits` covered (all 8 when kFull), `lanes` pixels per step:
 // zx holds the row-invariant part of each column's depth, ty the row's. A lane of an uncovered
 // pixel is computed and then written back unchanged.
-template <bool kFull, class DD>
+template <bool kFull, class Funcs, class DD>
 HWY_INLINE void ApplyRow(DD dd, const FragmentState& s, const BlockFragments& b, const double* zx,
                          double ty, int r, unsigned bits) {
   const hn::Rebind<std::int32_t, DD> di;
@@ -162,7 +181,7 @@ HWY_INLINE void ApplyRow(DD dd, const FragmentState& s, const BlockFragments& b,
     const auto incoming = QuantizeLanes(dd, di, hn::Add(hn::Load(dd, zx + j), hn::Set(dd, ty)));
     const auto stored = hn::LoadU(di, depthRow + j);
     const auto old = hn::PromoteTo(di, hn::LoadU(d8, stencilRow + j));
-    auto after = FragmentLanes(di, s, incoming, stored, old);
+    auto after = FragmentLanes<Funcs>(di, s, incoming, stored, old);
     if constexpr (!kFull)
       KeepUncovered(CoveredLanes(di, hn::Set(di, static_cast<std::int32_t>(bits)), hn::Iota(di, j)),
                     old, stored, after);
@@ -177,7 +196,7 @@ HWY_INLINE void ApplyRow(DD dd, const FragmentState& s, const BlockFragments& b,
 // Rows r and r + 1 (bits0 and bits1 covered; all 16 pixels when kFull) in vectors twice as
 // wide for the integer work: the depths are doubles, so a double vector holds half as many
 // pixels as an int32 one of the same width.
-template <bool kFull, class DD>
+template <bool kFull, class Funcs, class DD>
 HWY_INLINE void ApplyRowPair(DD dd, const FragmentState& s, const BlockFragments& b,
                              const double* zx, double ty0, double ty1, int r, unsigned bits0,
                              unsigned bits1) {
@@ -198,7 +217,7 @@ HWY_INLINE void ApplyRowPair(DD dd, const FragmentState& s, const BlockFragments
     const auto stored = hn::Combine(d2i, hn::LoadU(di, depth1 + j), hn::LoadU(di, depth0 + j));
     const auto old = hn::PromoteTo(
         d2i, hn::Combine(d28, hn::LoadU(d8, stencil1 + j), hn::LoadU(d8, stencil0 + j)));
-    auto after = FragmentLanes(d2i, s, incoming, stored, old);
+    auto after = FragmentLanes<Funcs>(d2i, s, incoming, stored, old);
     if constexpr (!kFull) {
       // Lane k of the low half is column j + k of row r, of the high half of row r + 1.
       const auto bits = hn::Combine(d2i, hn::Set(di, static_cast<std::int32_t>(bits1)),
@@ -219,18 +238,12 @@ HWY_INLINE void ApplyRowPair(DD dd, const FragmentState& s, const BlockFragments
 }
 #endif
 
-int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
+template <class Funcs>
+HWY_NOINLINE int ApplyBlockWith(const BlockFragments& b, const FragmentState& s,
+                                std::uint64_t mask) {
   const hn::CappedTag<double, 8> dd;
   const int lanes = static_cast<int>(hn::Lanes(dd));
   const DepthPlane& p = *b.plane;
-  const RenderState& state = *b.state;
-  const FragmentState s{state.stencilFunc,
-                        state.depthFunc,
-                        state.stencilRef,
-                        state.stencilValueMask,
-                        state.stencilWriteMask,
-                        state.depthWrite,
-                        *b.ops};
   // zx[c] = z0 + dzdx (X_c - x0) for the block's columns, as DepthPlane::at makes it. X_c - x0
   // is base + 256 c: integers far below 2^53, so the double sum is exact and equals the
   // converted integer difference the one-pixel path multiplies.
@@ -263,19 +276,45 @@ int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
     if (r < 7 && vectorRow(r + 1)) {
       const unsigned next = rowBits(r + 1);
       if ((bits & next) == 0xFF)
-        ApplyRowPair<true>(dd, s, b, zx, rowY(r), rowY(r + 1), r, bits, next);
+        ApplyRowPair<true, Funcs>(dd, s, b, zx, rowY(r), rowY(r + 1), r, bits, next);
       else
-        ApplyRowPair<false>(dd, s, b, zx, rowY(r), rowY(r + 1), r, bits, next);
+        ApplyRowPair<false, Funcs>(dd, s, b, zx, rowY(r), rowY(r + 1), r, bits, next);
       ++r;
       continue;
     }
 #endif
     if (bits == 0xFF)
-      ApplyRow<true>(dd, s, b, zx, rowY(r), r, bits);
+      ApplyRow<true, Funcs>(dd, s, b, zx, rowY(r), r, bits);
     else
-      ApplyRow<false>(dd, s, b, zx, rowY(r), r, bits);
+      ApplyRow<false, Funcs>(dd, s, b, zx, rowY(r), r, bits);
   }
   return detail::pixelsInBlock(perRow);
+}
+
+int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
+  const RenderState& state = *b.state;
+  const FragmentState s{state.stencilFunc,
+                        state.depthFunc,
+                        state.stencilRef,
+                        state.stencilValueMask,
+                        state.stencilWriteMask,
+                        state.depthWrite,
+                        *b.ops};
+  static_assert(detail::kCompiledFragmentKernels == 5, "one case per compiled kernel");
+  switch (detail::compiledFragmentKernel(state, s.ops)) {
+    case 0:
+      return ApplyBlockWith<CompiledFuncs<0>>(b, s, mask);
+    case 1:
+      return ApplyBlockWith<CompiledFuncs<1>>(b, s, mask);
+    case 2:
+      return ApplyBlockWith<CompiledFuncs<2>>(b, s, mask);
+    case 3:
+      return ApplyBlockWith<CompiledFuncs<3>>(b, s, mask);
+    case 4:
+      return ApplyBlockWith<CompiledFuncs<4>>(b, s, mask);
+    default:
+      return ApplyBlockWith<StateFuncs>(b, s, mask);
+  }
 }
 
 }  // namespace HWY_NAMESPACE

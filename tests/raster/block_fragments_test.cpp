@@ -88,15 +88,28 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
                                                          std::int64_t{32768} << 8);
     std::uniform_int_distribution<int> pixel(0, kMaxFramebufferSize / 8 - 1);
     long long fullRows = 0, fullRowPairs = 0, denseBlocksWithPartialRows = 0;
-    for (int trial = 0; trial < 4000; ++trial) {
+    std::vector<int> compiledKernelTrials(detail::kCompiledFragmentKernels);
+    std::uniform_int_distribution<int> compiledOrNot(-detail::kCompiledFragmentKernels,
+                                                     detail::kCompiledFragmentKernels - 1);
+    for (int trial = 0; trial < 6000; ++trial) {
       RenderState state = initialRenderState(16, 16);
       state.depthFunc = static_cast<CompareFunc>(func(rng));
       state.stencilFunc = static_cast<CompareFunc>(func(rng));
+      StencilOps ops{randomOp(rng), randomOp(rng), randomOp(rng)};
+      // Half the trials take the functions and ops of a kernel compiled for them.
+      if (const int k = compiledOrNot(rng); k >= 0) {
+        const detail::FragmentFuncs& funcs = detail::kCompiledFragmentFuncs[k];
+        state.stencilFunc = funcs.stencilFunc;
+        state.depthFunc = funcs.depthFunc;
+        ops = funcs.ops;
+      }
+      const int kernel = detail::compiledFragmentKernel(state, ops);
+      if (kernel >= 0)
+        ++compiledKernelTrials[static_cast<std::size_t>(kernel)];
       state.depthWrite = coin(rng) == 1;
       state.stencilRef = static_cast<std::uint8_t>(byte(rng));
       state.stencilValueMask = static_cast<std::uint8_t>(coin(rng) ? 0xFF : byte(rng));
       state.stencilWriteMask = static_cast<std::uint8_t>(coin(rng) ? 0xFF : byte(rng));
-      const StencilOps ops{randomOp(rng), randomOp(rng), randomOp(rng)};
 
       DepthPlane plane;
       plane.x0 = position(rng);
@@ -155,6 +168,9 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
     CHECK(fullRows > 4000);
     CHECK(fullRowPairs > 1000);
     CHECK(denseBlocksWithPartialRows > 1000);
+    // Each compiled kernel, not only the general one.
+    for (const int trials : compiledKernelTrials)
+      CHECK(trials > 400);
   });
   CHECK(!targets.empty());
 }

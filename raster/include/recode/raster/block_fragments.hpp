@@ -83,6 +83,44 @@ inline int pixelsInBlock(std::uint64_t perRow) {
   return static_cast<int>((perRow * 0x0101010101010101ULL) >> 56);
 }
 
+// The compare functions and stencil ops of one fragment kernel.
+struct FragmentFuncs {
+  CompareFunc stencilFunc;
+  CompareFunc depthFunc;
+  StencilOps ops;
+};
+
+// The SIMD version has a kernel compiled for each of these, the states of RECODE's passes
+// (core/pair/src/pair_passes.hpp: RenderSetZ, RenderTestZ, loading Amin, the Amin test, the
+// two ends of the overlap interval), so that the compare and stencil-op tables fold away
+// instead of being looked up per vector step. Any other state takes the general kernel, which
+// reads them from the state; every kernel gives the one-pixel version's bytes. The references
+// and masks stay run-time values in all of them.
+inline constexpr FragmentFuncs kCompiledFragmentFuncs[] = {
+    {CompareFunc::Always,
+     CompareFunc::GEqual,
+     {StencilOp::Keep, StencilOp::Keep, StencilOp::Replace}},
+    {CompareFunc::LEqual, CompareFunc::LEqual, {StencilOp::Keep, StencilOp::Keep, StencilOp::Incr}},
+    {CompareFunc::Always, CompareFunc::LEqual, {StencilOp::Keep, StencilOp::Keep, StencilOp::Keep}},
+    {CompareFunc::LEqual,
+     CompareFunc::GEqual,
+     {StencilOp::Invert, StencilOp::Keep, StencilOp::Invert}},
+    {CompareFunc::Always, CompareFunc::GEqual, {StencilOp::Keep, StencilOp::Keep, StencilOp::Keep}},
+};
+inline constexpr int kCompiledFragmentKernels =
+    static_cast<int>(sizeof(kCompiledFragmentFuncs) / sizeof(kCompiledFragmentFuncs[0]));
+
+// The index in kCompiledFragmentFuncs of the kernel for this state and these ops, -1 for the
+// general kernel.
+inline int compiledFragmentKernel(const RenderState& state, const StencilOps& ops) {
+  for (int k = 0; k < kCompiledFragmentKernels; ++k) {
+    const FragmentFuncs& f = kCompiledFragmentFuncs[k];
+    if (f.stencilFunc == state.stencilFunc && f.depthFunc == state.depthFunc && f.ops == ops)
+      return k;
+  }
+  return -1;
+}
+
 // Blocks with fewer covered pixels than this (a small triangle's, or a thin sliver of a large
 // one) stay inline and pixel by pixel, without the run-time dispatch.
 inline constexpr int kMinSimdBlockPixels = 16;
