@@ -1,6 +1,7 @@
 #include "recode/raster/traversal.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "recode/raster/block_coverage.hpp"
 #include "recode/raster/fixed_point.hpp"
@@ -30,6 +31,41 @@ RegionTest testRegion(const TriangleCoverage& tri, int px, int py, int size) {
       allInside = false;
   }
   return allInside ? RegionTest::Accept : RegionTest::Partial;
+}
+
+std::int64_t floorDiv(std::int64_t n, std::int64_t d) {  // d > 0
+  return n >= 0 ? n / d : -((-n + d - 1) / d);
+}
+
+// The blocks of one row of blocks (bottom pixel row py) that testRegion would not reject: x
+// positions bx with lo <= bx <= hi. Edge k's largest value over the block at bx is
+// a (pixelCentreFixed(bx) + max(span, 0)) + b (pixelCentreFixed(py) + max(span, 0)) + c up to
+// the sign of each term, linear in bx with slope 256 a, so each edge keeps a half-line of bx
+// and the three meet in an interval: the same integers testRegion compares with 0, solved for
+// bx exactly. A long sliver's bounding box holds hundreds of blocks of which a few dozen are
+// not rejected; only those are visited.
+struct BlockSpan {
+  std::int64_t lo, hi;
+};
+BlockSpan unrejectedBlocks(const TriangleCoverage& tri, int py) {
+  const std::int64_t span = static_cast<std::int64_t>(kBlockSize - 1) * kSubpixelOne;
+  const std::int64_t y = pixelCentreFixed(py);
+  BlockSpan keep{std::numeric_limits<std::int64_t>::min(),
+                 std::numeric_limits<std::int64_t>::max()};
+  for (const EdgeFunction& e : tri.edges) {
+    // maxE(bx) = slope * bx + rest, with pixelCentreFixed(bx) = 256 bx + 128.
+    const std::int64_t slope = e.a * kSubpixelOne;
+    const std::int64_t rest = e.a * (kSubpixelOne / 2) + e.b * y + e.c +
+                              std::max<std::int64_t>(e.a * span, 0) +
+                              std::max<std::int64_t>(e.b * span, 0);
+    if (slope > 0)  // bx >= -rest / slope, rounded up
+      keep.lo = std::max(keep.lo, -floorDiv(rest, slope));
+    else if (slope < 0)  // bx <= rest / -slope, rounded down
+      keep.hi = std::min(keep.hi, floorDiv(rest, -slope));
+    else if (rest < 0)
+      return {1, 0};  // this edge rejects the whole row (any lo > hi keeps nothing)
+  }
+  return keep;
 }
 
 // Per-pixel edge evaluation of the pixels of one block that lie inside `clip` (the rest would
@@ -113,7 +149,21 @@ void traverseTriangle(const TriangleCoverage& tri, const PixelRect& clip, BlockS
       const int by1 = std::min(ty + kTileSize, area.y1);
       const int bx1 = std::min(tx + kTileSize, area.x1);
       for (int by = by0; by < by1; by += kBlockSize) {
-        for (int bx = bx0; bx < bx1; bx += kBlockSize) {
+        // Blocks j = 0 .. count - 1 of this row in this tile are at bx0 + 8 j; each meets the
+        // area (bx0 and by0 are aligned down from it). Those outside [keep.lo, keep.hi] are the
+        // ones testRegion rejects.
+        const std::int64_t count = (bx1 - bx0 + kBlockSize - 1) / kBlockSize;
+        std::int64_t jFirst = 0, jEnd = count;
+        if (tileTest == RegionTest::Partial) {
+          const BlockSpan keep = unrejectedBlocks(tri, by);
+          if (keep.lo > bx0)
+            jFirst = std::min(count, (keep.lo - bx0 + kBlockSize - 1) / kBlockSize);
+          jEnd = keep.hi < bx0 ? 0 : std::min(count, (keep.hi - bx0) / kBlockSize + 1);
+          jEnd = std::max(jEnd, jFirst);
+          st.blocksRejected += static_cast<std::uint64_t>(jFirst + (count - jEnd));
+        }
+        for (std::int64_t j = jFirst; j < jEnd; ++j) {
+          const int bx = bx0 + static_cast<int>(j) * kBlockSize;
           const std::uint64_t inClip = blockMaskInside(bx, by, area);
           if (inClip == 0)
             continue;
