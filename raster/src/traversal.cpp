@@ -154,7 +154,10 @@ void traverseTriangle(const TriangleCoverage& tri, const PixelRect& clip, BlockS
         // ones testRegion rejects.
         const std::int64_t count = (bx1 - bx0 + kBlockSize - 1) / kBlockSize;
         std::int64_t jFirst = 0, jEnd = count;
-        if (tileTest == RegionTest::Partial) {
+        // The span costs three divisions: for a row of a few blocks (a small triangle's)
+        // testing each block is cheaper.
+        constexpr std::int64_t kFewBlocks = 3;
+        if (tileTest == RegionTest::Partial && count > kFewBlocks) {
           const BlockSpan keep = unrejectedBlocks(tri, by);
           if (keep.lo > bx0)
             jFirst = std::min(count, (keep.lo - bx0 + kBlockSize - 1) / kBlockSize);
