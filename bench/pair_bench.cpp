@@ -14,6 +14,8 @@
 #include "recode/raster/cpu_device.hpp"
 #include "recode/refine/block_growth.hpp"
 #include "recode/scene/builtin_scenes.hpp"
+#include "recode/scene/experiment_scenes.hpp"
+#include "recode/sim/simulation.hpp"
 
 namespace {
 
@@ -93,6 +95,54 @@ BENCHMARK(thinMorSpheres)
     ->ArgsProduct({{32, 1024}, {0, 1}})
     ->ArgNames({"segments", "hierarchy"})
     ->Unit(benchmark::kMicrosecond);
+
+// The pairs that cost the hands' frames: a fingertip touching the ball in hand-grasp at
+// 2,304 triangles per block, frame 69 (every finger touches), drawn as a run draws it (world
+// meshes with their triangle hierarchies, the run's pair frame): the fingertip lies wholly
+// inside the MOR. Step times as in pairBench.
+void fingertipOnBall(benchmark::State& state) {
+  const core::Scene scene = core::builtinExperimentScene("hand-grasp", 2304);
+  core::Simulation sim(scene, core::RunOptions{});
+  static_cast<void>(sim.runFrame(69));
+  sim.updateAllBounds();
+  const auto leaf = [&](std::size_t object, const std::string& path) {
+    const core::ObjectTree& tree = sim.objects()[object];
+    for (const int n : tree.leaves())
+      if (tree.nodes()[static_cast<std::size_t>(n)].path == path)
+        return n;
+    throw std::invalid_argument("no leaf " + path);
+  };
+  const core::ObjectTree& hand = sim.objects()[0];
+  const core::ObjectTree& ball = sim.objects()[2];
+  const int tip = leaf(0, "left hand/thumb/proximal/middle/distal");
+  const int whole = leaf(2, "ball");
+  const core::TriangleMesh tipMesh = hand.worldMesh(tip), ballMesh = ball.worldMesh(whole);
+  const core::HierarchyNode& tipNode = hand.nodes()[static_cast<std::size_t>(tip)];
+  const core::HierarchyNode& ballNode = ball.nodes()[static_cast<std::size_t>(whole)];
+  const core::PairBlock a(tipMesh, hand.triangleHierarchy(tip), tipNode.world);
+  const core::PairBlock b(ballMesh, ball.triangleHierarchy(whole), ballNode.world);
+  core::PairRequest request;
+  request.frame = sim.leafPairFrame(tipNode, ballNode);
+  raster::CpuDevice device(request.frame.width, request.frame.height);
+  std::array<double, core::kPairStepCount> stepUs{};
+  core::PairResult last;
+  for (auto _ : state) {
+    last = core::collidePair(device, a, b, request);
+    for (std::size_t s = 0; s < stepUs.size(); ++s)
+      stepUs[s] += last.timing.stepUs[s];
+    benchmark::DoNotOptimize(last.collide);
+  }
+  const double n = static_cast<double>(state.iterations());
+  for (std::size_t s = 0; s < stepUs.size(); ++s)
+    state.counters[std::string(core::toString(static_cast<core::PairStep>(s))) + "_us"] =
+        stepUs[s] / n;
+  state.counters["triangles_drawn"] = static_cast<double>(device.counters().trianglesSubmitted) / n;
+  state.counters["fragments"] = static_cast<double>(device.counters().fragments) / n;
+  state.counters["mor_px"] = static_cast<double>(last.mor.area());
+  state.counters["interfering_px"] = static_cast<double>(last.interferingPixels);
+}
+
+BENCHMARK(fingertipOnBall)->Unit(benchmark::kMicrosecond);
 
 // Building one block's triangle hierarchy (once per block, outside the pair tests).
 void triangleHierarchyBuild(benchmark::State& state) {
