@@ -36,14 +36,11 @@ std::int64_t twiceArea(const FixedVertex& v0, const FixedVertex& v1, const Fixed
   return (v1.x - v0.x) * (v2.y - v0.y) - (v2.x - v0.x) * (v1.y - v0.y);
 }
 
-}  // namespace
-
-FixedVertex snapVertex(const WindowVertex& v) {
-  return {snapToFixed(v.x), snapToFixed(v.y), v.z};
-}
-
-std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0, const FixedVertex& v1,
-                                              const FixedVertex& v2) {
+// setupCoverage written into `t`, false for a zero-area triangle. setupTriangle fills its own
+// result with it in place: copying a returned TriangleCoverage into it read the callee's
+// stores back in wider loads, which stalled the store forwarding.
+[[gnu::always_inline]] inline bool coverageInto(const FixedVertex& v0, const FixedVertex& v1,
+                                                const FixedVertex& v2, TriangleCoverage& t) {
   // The device refuses vertices beyond kMaxWindowCoordinate, which keeps every product of the
   // edge functions below 2^49 (docs/rasterization.md, section 3).
   constexpr std::int64_t kMaxFixed = static_cast<std::int64_t>(kMaxWindowCoordinate) * kSubpixelOne;
@@ -54,9 +51,8 @@ std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0, const Fixed
   }
   const std::int64_t area2 = twiceArea(v0, v1, v2);
   if (area2 == 0)
-    return std::nullopt;
+    return false;
 
-  TriangleCoverage t;
   t.frontFacing = area2 > 0;
   // Coverage uses the counter-clockwise order; the depth plane uses the submitted order.
   const FixedVertex& p1 = t.frontFacing ? v1 : v2;
@@ -71,15 +67,28 @@ std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0, const Fixed
   t.bounds.x1 = static_cast<int>(floorDiv(maxX - half, kSubpixelOne) + 1);
   t.bounds.y0 = static_cast<int>(-floorDiv(-(minY - half), kSubpixelOne));
   t.bounds.y1 = static_cast<int>(floorDiv(maxY - half, kSubpixelOne) + 1);
+  return true;
+}
+
+}  // namespace
+
+std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0, const FixedVertex& v1,
+                                              const FixedVertex& v2) {
+  // One named result on every path, so that it is built in the caller's storage.
+  std::optional<TriangleCoverage> t(std::in_place);
+  if (!coverageInto(v0, v1, v2, *t))
+    t.reset();
   return t;
 }
 
 std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0, const FixedVertex& v1,
                                            const FixedVertex& v2) {
-  const std::optional<TriangleCoverage> coverage = setupCoverage(v0, v1, v2);
-  if (!coverage)
-    return std::nullopt;
-  TriangleSetup t{*coverage, {}};
+  std::optional<TriangleSetup> setup(std::in_place);
+  if (!coverageInto(v0, v1, v2, *setup)) {
+    setup.reset();
+    return setup;
+  }
+  TriangleSetup& t = *setup;
 
   // Depth plane through the three snapped vertices, in the submitted order:
   // dz/dX = (dz1 e2y - dz2 e1y) / area2, dz/dY = (dz2 e1x - dz1 e2x) / area2.
@@ -94,7 +103,7 @@ std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0, const FixedVer
   t.depth.z0 = z0;
   t.depth.dzdx = (dz1 * static_cast<double>(e2y) - dz2 * static_cast<double>(e1y)) / a2;
   t.depth.dzdy = (dz2 * static_cast<double>(e1x) - dz1 * static_cast<double>(e2x)) / a2;
-  return t;
+  return setup;
 }
 
 }  // namespace recode::raster

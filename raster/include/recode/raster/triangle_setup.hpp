@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "recode/raster/device.hpp"
+#include "recode/raster/fixed_point.hpp"
 #include "recode/raster/state.hpp"
 
 namespace recode::raster {
@@ -56,7 +57,12 @@ struct FixedVertex {
   float z = 0.0f;
 };
 
-[[nodiscard]] FixedVertex snapVertex(const WindowVertex& v);
+// Inline: it runs three times per triangle, and as a call it returned the vertex through
+// memory that the caller read back in wider loads than the callee's stores, which the CPU
+// cannot forward (a stall of about as long as the rest of the call).
+[[nodiscard]] inline FixedVertex snapVertex(const WindowVertex& v) {
+  return {snapToFixed(v.x), snapToFixed(v.y), v.z};
+}
 
 // The coverage half of setupTriangle, the same edges, facing and bounds without the depth
 // plane's two divisions: for a caller that asks only which centres a triangle covers. Returns
