@@ -13,6 +13,7 @@ void drawTriangles(const RenderState& state, std::span<const WindowVertex> verti
                    "the scissor is clamped to the framebuffer");
   PipelineCounters local;
   PipelineCounters& count = counters != nullptr ? *counters : local;
+  TriangleSetup triangle;  // every field rewritten for each triangle
   for (std::size_t k = 0; k + 2 < indices.size(); k += 3) {
     ++count.trianglesSubmitted;
     std::array<FixedVertex, 3> snapped;
@@ -21,17 +22,16 @@ void drawTriangles(const RenderState& state, std::span<const WindowVertex> verti
       RECODE_INVARIANT(index < vertices.size(), "a draw's indices are in range");
       snapped[corner] = snapVertex(vertices[index]);
     }
-    const auto triangle = setupTriangle(snapped[0], snapped[1], snapped[2]);
-    if (!triangle) {
+    if (!setupTriangleInto(snapped[0], snapped[1], snapped[2], triangle)) {
       ++count.trianglesDegenerate;
       continue;
     }
-    if (state.culls(triangle->frontFacing)) {
+    if (state.culls(triangle.frontFacing)) {
       ++count.trianglesCulled;
       continue;
     }
-    sink.beginTriangle(*triangle, snapped);
-    traverseTriangle(*triangle, state.scissor, sink, &count.traversal);
+    sink.beginTriangle(triangle, snapped);
+    traverseTriangle(triangle, state.scissor, sink, &count.traversal);
   }
 }
 

@@ -83,12 +83,17 @@ std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0, const Fixed
 
 std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0, const FixedVertex& v1,
                                            const FixedVertex& v2) {
+  // One named result on every path, so that it is built in the caller's storage.
   std::optional<TriangleSetup> setup(std::in_place);
-  if (!coverageInto(v0, v1, v2, *setup)) {
+  if (!setupTriangleInto(v0, v1, v2, *setup))
     setup.reset();
-    return setup;
-  }
-  TriangleSetup& t = *setup;
+  return setup;
+}
+
+bool setupTriangleInto(const FixedVertex& v0, const FixedVertex& v1, const FixedVertex& v2,
+                       TriangleSetup& t) {
+  if (!coverageInto(v0, v1, v2, t))
+    return false;
 
   // Depth plane through the three snapped vertices, in the submitted order:
   // dz/dX = (dz1 e2y - dz2 e1y) / area2, dz/dY = (dz2 e1x - dz1 e2x) / area2.
@@ -103,7 +108,7 @@ std::optional<TriangleSetup> setupTriangle(const FixedVertex& v0, const FixedVer
   t.depth.z0 = z0;
   t.depth.dzdx = (dz1 * static_cast<double>(e2y) - dz2 * static_cast<double>(e1y)) / a2;
   t.depth.dzdy = (dz2 * static_cast<double>(e1x) - dz1 * static_cast<double>(e2x)) / a2;
-  return setup;
+  return true;
 }
 
 }  // namespace recode::raster

@@ -76,6 +76,12 @@ struct FixedVertex {
                                                          const FixedVertex& v1,
                                                          const FixedVertex& v2);
 
+// The same written over every field of `out`, false (and `out` unspecified) for a zero-area
+// triangle: for the pipeline's loop, which reuses one setup for every triangle of a draw
+// instead of clearing a new one for each.
+[[nodiscard]] bool setupTriangleInto(const FixedVertex& v0, const FixedVertex& v1,
+                                     const FixedVertex& v2, TriangleSetup& out);
+
 // The fill rule alone: is edge a->b of a counter-clockwise triangle (y up) inclusive, i.e.
 // a left edge (going down) or a bottom edge (horizontal, going right)?
 [[nodiscard]] constexpr bool isInclusiveEdge(std::int64_t dx, std::int64_t dy) {
