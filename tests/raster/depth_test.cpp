@@ -2,7 +2,10 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <optional>
+#include <random>
 
 #include "raster_test_support.hpp"
 #include "recode/raster/cpu_device.hpp"
@@ -105,4 +108,44 @@ TEST_CASE("stored depth equals DepthPlane::at at every covered sample", "[depth]
     }
   }
   CHECK(compared > 1500);
+}
+
+TEST_CASE("setupTriangleInto a reused setup gives setupTriangle's every field", "[depth]") {
+  // The pipeline sets each triangle of a draw up into one TriangleSetup (setupTriangleInto);
+  // whatever the last triangle left there, every field must be this triangle's. Random
+  // triangles of both facings, slivers and zero-area ones, with the same setup reused.
+  std::mt19937 rng(2611);
+  std::uniform_int_distribution<std::int64_t> coordinate(-40 * kSubpixelOne, 40 * kSubpixelOne);
+  std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+  TriangleSetup reused;
+  int checked = 0, degenerate = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    FixedVertex v[3];
+    for (FixedVertex& p : v)
+      p = {coordinate(rng), coordinate(rng), depth(rng)};
+    if (trial % 10 == 0)
+      v[2] = {v[0].x + 2 * (v[1].x - v[0].x), v[0].y + 2 * (v[1].y - v[0].y), v[2].z};  // collinear
+    const std::optional<TriangleSetup> fresh = setupTriangle(v[0], v[1], v[2]);
+    const bool made = setupTriangleInto(v[0], v[1], v[2], reused);
+    REQUIRE(made == fresh.has_value());
+    if (!made) {
+      ++degenerate;
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      CHECK(reused.edges[k].a == fresh->edges[k].a);
+      CHECK(reused.edges[k].b == fresh->edges[k].b);
+      CHECK(reused.edges[k].c == fresh->edges[k].c);
+    }
+    CHECK(reused.frontFacing == fresh->frontFacing);
+    CHECK(reused.bounds == fresh->bounds);
+    CHECK(reused.depth.x0 == fresh->depth.x0);
+    CHECK(reused.depth.y0 == fresh->depth.y0);
+    CHECK(std::memcmp(&reused.depth.z0, &fresh->depth.z0, sizeof(double)) == 0);
+    CHECK(std::memcmp(&reused.depth.dzdx, &fresh->depth.dzdx, sizeof(double)) == 0);
+    CHECK(std::memcmp(&reused.depth.dzdy, &fresh->depth.dzdy, sizeof(double)) == 0);
+    ++checked;
+  }
+  CHECK(checked > 15000);
+  CHECK(degenerate >= 2000);
 }
