@@ -33,10 +33,6 @@ RegionTest testRegion(const TriangleCoverage& tri, int px, int py, int size) {
   return allInside ? RegionTest::Accept : RegionTest::Partial;
 }
 
-std::int64_t floorDiv(std::int64_t n, std::int64_t d) {  // d > 0
-  return n >= 0 ? n / d : -((-n + d - 1) / d);
-}
-
 // The blocks of one row of blocks (bottom pixel row py) that testRegion would not reject: x
 // positions bx with lo <= bx <= hi. Edge k's largest value over the block at bx is
 // a (pixelCentreFixed(bx) + max(span, 0)) + b (pixelCentreFixed(py) + max(span, 0)) + c up to

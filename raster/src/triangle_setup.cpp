@@ -9,14 +9,6 @@ namespace recode::raster {
 
 namespace {
 
-// Floor division by a positive divisor, correct for negative numerators.
-std::int64_t floorDiv(std::int64_t n, std::int64_t d) {
-  std::int64_t q = n / d;
-  if ((n % d != 0) && (n < 0))
-    --q;
-  return q;
-}
-
 // Edge a->b of a counter-clockwise triangle: E = (xb - xa)(Y - ya) - (yb - ya)(X - xa),
 // positive on the interior side. Exclusive edges get c - 1 so that "E >= 0" rejects ties.
 EdgeFunction makeEdge(const FixedVertex& a, const FixedVertex& b) {

@@ -20,6 +20,15 @@ namespace recode::raster {
   return static_cast<float>(std::nearbyint(x * kSubpixelOne) / kSubpixelOne);
 }
 
+// Floor division by a positive divisor, correct for negative numerators: the pixel bounds of a
+// setup and the block spans of the traversal round with it.
+[[nodiscard]] inline std::int64_t floorDiv(std::int64_t n, std::int64_t d) {
+  std::int64_t q = n / d;
+  if ((n % d != 0) && (n < 0))
+    --q;
+  return q;
+}
+
 // Fixed-point coordinate of the centre of pixel column/row i: 256 i + 128.
 [[nodiscard]] inline std::int64_t pixelCentreFixed(int i) {
   return static_cast<std::int64_t>(i) * kSubpixelOne + kSubpixelOne / 2;
