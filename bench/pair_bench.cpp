@@ -21,6 +21,27 @@ namespace {
 
 using namespace recode;
 
+// The mean time of each step of the pairs a benchmark ran, as counters named after the steps.
+class StepTimes {
+ public:
+  void add(const core::PairResult& result) {
+    for (std::size_t s = 0; s < stepUs_.size(); ++s)
+      stepUs_[s] += result.timing.stepUs[s];
+    classifyUs_ += result.timing.classifyUs;
+  }
+  void report(benchmark::State& state) const {
+    const double n = static_cast<double>(state.iterations());
+    for (std::size_t s = 0; s < stepUs_.size(); ++s)
+      state.counters[std::string(core::toString(static_cast<core::PairStep>(s))) + "_us"] =
+          stepUs_[s] / n;
+    state.counters["classify_us"] = classifyUs_ / n;
+  }
+
+ private:
+  std::array<double, core::kPairStepCount> stepUs_{};
+  double classifyUs_ = 0.0;
+};
+
 void pairBench(benchmark::State& state) {
   const int resolution = static_cast<int>(state.range(0));
   const auto mor = static_cast<core::MorMode>(state.range(1));
@@ -32,21 +53,14 @@ void pairBench(benchmark::State& state) {
   request.frame = core::resolveFrame(scene.view, bounds, {resolution, resolution, {}});
   request.mor = mor;
   raster::CpuDevice device(resolution, resolution);
-  std::array<double, core::kPairStepCount> stepUs{};
-  double classifyUs = 0.0;
+  StepTimes steps;
   core::PairResult last;
   for (auto _ : state) {
     last = core::collidePair(device, a, b, request);
-    for (std::size_t s = 0; s < stepUs.size(); ++s)
-      stepUs[s] += last.timing.stepUs[s];
-    classifyUs += last.timing.classifyUs;
+    steps.add(last);
     benchmark::DoNotOptimize(last.collide);
   }
-  const double n = static_cast<double>(state.iterations());
-  for (std::size_t s = 0; s < stepUs.size(); ++s)
-    state.counters[std::string(core::toString(static_cast<core::PairStep>(s))) + "_us"] =
-        stepUs[s] / n;
-  state.counters["classify_us"] = classifyUs / n;
+  steps.report(state);
   state.counters["stencil_px"] = static_cast<double>(last.stencilPixelsRead);
   state.counters["depth_px"] = static_cast<double>(last.depthPixelsRead);
   state.counters["interfering_px"] = static_cast<double>(last.interferingPixels);
@@ -124,18 +138,15 @@ void fingertipOnBall(benchmark::State& state) {
   core::PairRequest request;
   request.frame = sim.leafPairFrame(tipNode, ballNode);
   raster::CpuDevice device(request.frame.width, request.frame.height);
-  std::array<double, core::kPairStepCount> stepUs{};
+  StepTimes steps;
   core::PairResult last;
   for (auto _ : state) {
     last = core::collidePair(device, a, b, request);
-    for (std::size_t s = 0; s < stepUs.size(); ++s)
-      stepUs[s] += last.timing.stepUs[s];
+    steps.add(last);
     benchmark::DoNotOptimize(last.collide);
   }
+  steps.report(state);
   const double n = static_cast<double>(state.iterations());
-  for (std::size_t s = 0; s < stepUs.size(); ++s)
-    state.counters[std::string(core::toString(static_cast<core::PairStep>(s))) + "_us"] =
-        stepUs[s] / n;
   state.counters["triangles_drawn"] = static_cast<double>(device.counters().trianglesSubmitted) / n;
   state.counters["fragments"] = static_cast<double>(device.counters().fragments) / n;
   state.counters["mor_px"] = static_cast<double>(last.mor.area());

@@ -8,9 +8,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include <iterator>
 #include <random>
 #include <vector>
 
+#include "recode/raster/block_fragments.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
 
@@ -48,77 +50,50 @@ void BM_FillQuad(benchmark::State& state) {
 BENCHMARK(BM_FillQuad)->Arg(64)->Arg(512)->Unit(benchmark::kMicrosecond);
 
 // The states of RECODE's passes (core/pair/src/pair_passes.hpp), each drawn over a 512x512
-// scissor as BM_FillQuad draws: the fill rate the pair test's passes see.
+// scissor as BM_FillQuad draws: the fill rate the pair test's passes see. Their compare
+// functions and stencil ops are those the fragment stage has a kernel compiled for
+// (detail::kCompiledFragmentFuncs, in the same order); the rest of each state is here.
 struct PassState {
   const char* name;
   bool depthWrite;
-  CompareFunc depthFunc;
-  CompareFunc stencilFunc;
   std::uint8_t ref;
   std::uint8_t valueMask;
   std::uint8_t writeMask;
-  StencilOps ops;
 };
-constexpr StencilOp kKeep = StencilOp::Keep;
 const PassState kPassStates[] = {
-    {"setZ",
-     true,
-     CompareFunc::GEqual,
-     CompareFunc::Always,
-     1,
-     0xFF,
-     0xFF,
-     {kKeep, kKeep, StencilOp::Replace}},
-    {"testZ",
-     false,
-     CompareFunc::LEqual,
-     CompareFunc::LEqual,
-     1,
-     0x03,
-     0x03,
-     {kKeep, kKeep, StencilOp::Incr}},
-    {"loadAmin", true, CompareFunc::LEqual, CompareFunc::Always, 0, 0xFF, 0, {kKeep, kKeep, kKeep}},
-    {"testAmin",
-     false,
-     CompareFunc::GEqual,
-     CompareFunc::LEqual,
-     1,
-     0x03,
-     0x04,
-     {StencilOp::Invert, kKeep, StencilOp::Invert}},
-    {"overlapNear",
-     true,
-     CompareFunc::GEqual,
-     CompareFunc::Always,
-     0,
-     0xFF,
-     0,
-     {kKeep, kKeep, kKeep}},
+    {"setZ", true, 1, 0xFF, 0xFF},     {"testZ", false, 1, 0x03, 0x03},
+    {"loadAmin", true, 0, 0xFF, 0},    {"testAmin", false, 1, 0x03, 0x04},
+    {"overlapNear", true, 0, 0xFF, 0},
 };
+static_assert(std::size(kPassStates) == detail::kCompiledFragmentKernels,
+              "one pass state per compiled fragment kernel");
 
 void BM_FillPass(benchmark::State& state) {
   const PassState& pass = kPassStates[state.range(0)];
+  const detail::FragmentFuncs& funcs = detail::kCompiledFragmentFuncs[state.range(0)];
   state.SetLabel(pass.name);
   const int size = 512;
   CpuDevice dev(1024, 1024);
   dev.setScissor({100, 100, 100 + size, 100 + size});
-  dev.setDepthFunc(pass.depthFunc);
+  dev.setDepthFunc(funcs.depthFunc);
   dev.setDepthWriteMask(pass.depthWrite);
-  dev.setStencilFunc(pass.stencilFunc, pass.ref, pass.valueMask);
+  dev.setStencilFunc(funcs.stencilFunc, pass.ref, pass.valueMask);
   dev.setStencilWriteMask(pass.writeMask);
-  dev.setStencilOps(Face::Both, pass.ops);
+  dev.setStencilOps(Face::Both, funcs.ops);
   const float far = 110.0f + static_cast<float>(size);
   const std::vector<WindowVertex> v = {
       {90.0f, 90.0f, 0.1f}, {far, 90.0f, 0.4f}, {far, far, 0.6f}, {90.0f, far, 0.3f}};
   const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
   for (auto _ : state) {
-    dev.clearDepth(pass.depthFunc == CompareFunc::GEqual ? 0.0 : 1.0);
+    dev.clearDepth(funcs.depthFunc == CompareFunc::GEqual ? 0.0 : 1.0);
     dev.drawTriangles(v, idx);
     benchmark::DoNotOptimize(dev.stencilBuffer().data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(size) * size);
 }
-BENCHMARK(BM_FillPass)->DenseRange(0, 4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FillPass)
+    ->DenseRange(0, detail::kCompiledFragmentKernels - 1)
+    ->Unit(benchmark::kMicrosecond);
 
 // Many small random triangles (edge length about `range(0)` pixels) in a 512x512 frame.
 void BM_SmallTriangles(benchmark::State& state) {
