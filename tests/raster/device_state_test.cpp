@@ -1,6 +1,11 @@
 // Scissor, clears, culling, read-back layout and the errors of the CPU device.
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
 
 #include "raster_test_support.hpp"
 #include "recode/raster/cpu_device.hpp"
@@ -136,4 +141,35 @@ TEST_CASE("vertices are snapped to 1/256 pixel with round half to even", "[state
   CHECK(snapToFixed(5.0f / 512.0f) == 2);    // 2.5 -> 2
   CHECK(snapToFixed(-32768.0f) == -8388608);
   CHECK(snapToSubpixel(0.3) == 77.0f / 256.0f);  // 76.8 -> 77
+}
+
+// snapToFixed rounds with one conversion instruction where it can; it must give nearbyint's
+// integer for every coordinate the device accepts, halves (round half to even) and negatives
+// included.
+TEST_CASE("snapToFixed is nearbyint of 256 x over the whole window range", "[state]") {
+  const auto expected = [](float x) {
+    return static_cast<std::int64_t>(std::nearbyint(static_cast<double>(x) * kSubpixelOne));
+  };
+  std::vector<float> values = {0.0f,
+                               -0.0f,
+                               kMaxWindowCoordinate,
+                               -kMaxWindowCoordinate,
+                               std::numeric_limits<float>::denorm_min(),
+                               1e-30f,
+                               -1e-30f};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> anywhere(-kMaxWindowCoordinate, kMaxWindowCoordinate);
+  std::uniform_int_distribution<int> steps(-(1 << 22), 1 << 22);
+  for (int i = 0; i < 200000; ++i) {
+    values.push_back(anywhere(rng));
+    // Half a sub-pixel step past a step, where round half to even decides.
+    values.push_back((static_cast<float>(steps(rng)) + 0.5f) / 256.0f);
+  }
+  int differ = 0, halves = 0;
+  for (const float x : values) {
+    differ += snapToFixed(x) != expected(x);
+    halves += std::fabs(std::fmod(static_cast<double>(x) * kSubpixelOne, 1.0)) == 0.5;
+  }
+  CHECK(differ == 0);
+  CHECK(halves > 100000);  // the ties were really tested
 }

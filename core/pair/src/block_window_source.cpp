@@ -93,15 +93,19 @@ class PosedBoxTest {
   PixelRect rect_;
 };
 
-// Whether the closed box of three window vertices holds the centre of a pixel of `rect`: the
-// only triangles that can cover one. The coordinates are multiples of 1/256, so the
-// differences are exact (as in pixelFootprint).
+// Whether the closed box of three window vertices, snapped as the device snaps them, holds the
+// centre of a pixel of `rect`: the only triangles that can cover one. In 24.8 fixed point the
+// centre of pixel i is 256 i + 128, so the candidates are ceil((min - 128) / 256) .. floor((max -
+// 128) / 256), the bounds triangle setup makes, in shifts (an arithmetic shift right floors).
 bool boxHoldsPixelCentre(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                          const PixelRect& rect) {
   const auto holds = [](float p, float q, float r, int lo, int hi) {
-    const double mn = std::min({p, q, r}), mx = std::max({p, q, r});
-    const double first = std::max(std::ceil(mn - 0.5), static_cast<double>(lo));
-    const double last = std::min(std::floor(mx - 0.5), static_cast<double>(hi - 1));
+    const std::int64_t fp = raster::snapToFixed(p), fq = raster::snapToFixed(q),
+                       fr = raster::snapToFixed(r);
+    const std::int64_t mn = std::min({fp, fq, fr}), mx = std::max({fp, fq, fr});
+    constexpr std::int64_t kHalf = raster::kSubpixelOne / 2;
+    const std::int64_t first = std::max<std::int64_t>(-((kHalf - mn) >> raster::kSubpixelBits), lo);
+    const std::int64_t last = std::min<std::int64_t>((mx - kHalf) >> raster::kSubpixelBits, hi - 1);
     return first <= last;
   };
   return holds(a.x, b.x, c.x, rect.x0, rect.x1) && holds(a.y, b.y, c.y, rect.y0, rect.y1);

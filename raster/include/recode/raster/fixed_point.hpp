@@ -5,14 +5,26 @@
 #include <cmath>
 #include <cstdint>
 
+#if defined(__x86_64__) && defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "recode/raster/state.hpp"
 
 namespace recode::raster {
 
 // Window coordinate -> 24.8 fixed point, round half to even. Exact for |x| < 65536 because
 // multiplying a float by 256 only changes its exponent.
+// On x86-64 one cvtsd2si, which rounds with the current rounding mode as nearbyint does (round
+// half to even by default) and gives nearbyint's integer for every result in the int64 range;
+// the libm call it replaces ran six times for every triangle of a draw.
 [[nodiscard]] inline std::int64_t snapToFixed(float x) {
-  return static_cast<std::int64_t>(std::nearbyint(static_cast<double>(x) * kSubpixelOne));
+  const double scaled = static_cast<double>(x) * kSubpixelOne;
+#if defined(__x86_64__) && defined(__SSE2__)
+  return _mm_cvtsd_si64(_mm_set_sd(scaled));
+#else
+  return static_cast<std::int64_t>(std::nearbyint(scaled));
+#endif
 }
 
 // The value a pre-snapping producer should hand to the device: x on the 1/256-pixel grid.
