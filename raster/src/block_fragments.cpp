@@ -88,6 +88,7 @@ struct FragmentState {
 // The compare functions and stencil ops a kernel applies, read from the state: the general
 // kernel, for any state.
 struct StateFuncs {
+  static constexpr int kKernel = -1;
   static CompareFunc stencilFunc(const FragmentState& s) { return s.stencilFunc; }
   static CompareFunc depthFunc(const FragmentState& s) { return s.depthFunc; }
   static const StencilOps& ops(const FragmentState& s) { return s.ops; }
@@ -97,6 +98,7 @@ struct StateFuncs {
 // of CompareLanes and StencilOpLanes fold to the one case.
 template <int K>
 struct CompiledFuncs {
+  static constexpr int kKernel = K;
   static constexpr detail::FragmentFuncs kFuncs = detail::kCompiledFragmentFuncs[K];
   static constexpr CompareFunc stencilFunc(const FragmentState&) { return kFuncs.stencilFunc; }
   static constexpr CompareFunc depthFunc(const FragmentState&) { return kFuncs.depthFunc; }
@@ -269,7 +271,7 @@ HWY_NOINLINE int ApplyBlockWith(const BlockFragments& b, const FragmentState& s,
     const unsigned bits = rowBits(r);
     if (!vectorRow(r)) {
       if (bits != 0)
-        applyRowFragments(b, r, bits);
+        applyRowFragmentsWith<Funcs::kKernel>(b, r, bits);
       continue;
     }
 #if HWY_TARGET != HWY_SCALAR
@@ -301,7 +303,7 @@ int ApplyBlock(const BlockFragments& b, std::uint64_t mask) {
                         state.depthWrite,
                         *b.ops};
   static_assert(detail::kCompiledFragmentKernels == 5, "one case per compiled kernel");
-  switch (detail::compiledFragmentKernel(state, s.ops)) {
+  switch (b.kernel) {  // the caller's detail::compiledFragmentKernel, found once per draw
     case 0:
       return ApplyBlockWith<CompiledFuncs<0>>(b, s, mask);
     case 1:

@@ -23,7 +23,11 @@ class FragmentWriter final : public TriangleSink {
  public:
   FragmentWriter(const RenderState& state, PixelBuffer<std::uint32_t>& depth,
                  PixelBuffer<std::uint8_t>& stencil)
-      : state_(state), depth_(depth), stencil_(stencil) {}
+      : state_(state),
+        depth_(depth),
+        stencil_(stencil),
+        frontKernel_(detail::compiledFragmentKernel(state, state.frontOps)),
+        backKernel_(detail::compiledFragmentKernel(state, state.backOps)) {}
 
   void beginTriangle(const TriangleSetup& triangle,
                      const std::array<FixedVertex, 3>& /*snapped*/) override {
@@ -34,6 +38,7 @@ class FragmentWriter final : public TriangleSink {
   void begin(const DepthPlane& plane, bool frontFacing) {
     plane_ = &plane;
     ops_ = &state_.opsFor(frontFacing);
+    kernel_ = frontFacing ? frontKernel_ : backKernel_;
   }
 
   void coveredBlock(int blockX, int blockY, std::uint64_t mask) override {
@@ -52,6 +57,7 @@ class FragmentWriter final : public TriangleSink {
     block.stencil = stencil_.data.data() + origin;
     block.stride = depth_.rect.width();
     block.wholeColumns = blockX + 8 <= depth_.rect.x1;
+    block.kernel = kernel_;
     fragments += static_cast<std::uint64_t>(applyBlockFragments(block, mask));
   }
 
@@ -63,6 +69,11 @@ class FragmentWriter final : public TriangleSink {
   PixelBuffer<std::uint8_t>& stencil_;
   const DepthPlane* plane_ = nullptr;
   const StencilOps* ops_ = nullptr;
+  // The fragment kernels compiled for this draw's state and each facing's ops (the state does
+  // not change during a draw), and the current triangle's.
+  int frontKernel_ = -1;
+  int backKernel_ = -1;
+  int kernel_ = -1;
 };
 
 // The fragment writer of a draw being recorded: each triangle and block goes to the recording

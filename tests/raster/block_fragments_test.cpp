@@ -75,8 +75,10 @@ StencilOp randomOp(std::mt19937_64& rng) {
 
 }  // namespace
 
-TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on every target",
-          "[raster][simd]") {
+TEST_CASE(
+    "block fragments: SIMD rows and the compiled one-pixel kernels give the general one-pixel "
+    "version's bytes on every target",
+    "[raster][simd]") {
   std::vector<std::string> targets;
   forEachSimdTarget([&](const char* name) {
     targets.emplace_back(name);
@@ -87,7 +89,7 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
     std::uniform_int_distribution<std::int64_t> position(-(std::int64_t{32768} << 8),
                                                          std::int64_t{32768} << 8);
     std::uniform_int_distribution<int> pixel(0, kMaxFramebufferSize / 8 - 1);
-    long long fullRows = 0, fullRowPairs = 0, denseBlocksWithPartialRows = 0;
+    long long fullRows = 0, fullRowPairs = 0, denseBlocksWithPartialRows = 0, sparseBlocks = 0;
     std::vector<int> compiledKernelTrials(detail::kCompiledFragmentKernels);
     std::uniform_int_distribution<int> compiledOrNot(-detail::kCompiledFragmentKernels,
                                                      detail::kCompiledFragmentKernels - 1);
@@ -121,6 +123,7 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
       block.state = &state;
       block.ops = &ops;
       block.plane = &plane;
+      block.kernel = kernel;
       block.x = pixel(rng) * 8;
       block.y = pixel(rng) * 8;
       std::vector<std::uint32_t> depth(8 * kStride);
@@ -132,13 +135,20 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
         stencil[i] = static_cast<std::uint8_t>(coin(rng) ? byte(rng) : state.stencilRef);
       }
       std::uint64_t mask = 0;
-      for (int r = 0; r < 8; ++r) {
-        const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
-        const std::uint64_t bits = kind == 0 ? 0 : kind == 1 ? 0xFF : byte(rng);
-        fullRows += bits == 0xFF;
-        fullRowPairs += r > 0 && bits == 0xFF && ((mask >> (8 * r - 8)) & 0xFF) == 0xFF;
-        mask |= bits << (8 * r);
+      if (trial % 4 == 0) {
+        // A sparse block, a small triangle's: the one-pixel kernels, not the vectors.
+        for (int i = 0; i < 64; ++i)
+          mask |= std::uint64_t{byte(rng) < 32} << i;
+      } else {
+        for (int r = 0; r < 8; ++r) {
+          const int kind = std::uniform_int_distribution<int>(0, 3)(rng);
+          const std::uint64_t bits = kind == 0 ? 0 : kind == 1 ? 0xFF : byte(rng);
+          fullRows += bits == 0xFF;
+          fullRowPairs += r > 0 && bits == 0xFF && ((mask >> (8 * r - 8)) & 0xFF) == 0xFF;
+          mask |= bits << (8 * r);
+        }
       }
+      sparseBlocks += __builtin_popcountll(mask) < detail::kMinSimdBlockPixels;
       // A block dense enough for the vectors whose partial rows go through them masked.
       bool partialRow = false;
       for (int r = 0; r < 8; ++r) {
@@ -168,6 +178,7 @@ TEST_CASE("block fragments: SIMD rows give the one-pixel version's bytes on ever
     CHECK(fullRows > 4000);
     CHECK(fullRowPairs > 1000);
     CHECK(denseBlocksWithPartialRows > 1000);
+    CHECK(sparseBlocks > 1000);
     // Each compiled kernel, not only the general one.
     for (const int trials : compiledKernelTrials)
       CHECK(trials > 400);

@@ -13,57 +13,13 @@
 
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/fragment_stage.hpp"
+#include "recode/raster/invariants.hpp"
 #include "recode/raster/state.hpp"
 #include "recode/raster/triangle_setup.hpp"
 
 namespace recode::raster {
 
-struct BlockFragments {
-  const RenderState* state = nullptr;
-  const StencilOps* ops = nullptr;    // the state's ops for the triangle's facing
-  const DepthPlane* plane = nullptr;  // the triangle's depth plane
-  int x = 0;                          // window pixel of the block's pixel (0, 0)
-  int y = 0;
-  std::uint32_t* depth = nullptr;   // the block's pixel (0, 0) in the depth buffer
-  std::uint8_t* stencil = nullptr;  // and in the stencil buffer
-  std::ptrdiff_t stride = 0;        // values from one row to the next, in both buffers
-  // Whether all 8 columns of the block lie inside the buffers' rows. Only then may a partial
-  // row go through the vectors, which read every column and write the uncovered ones back
-  // unchanged; at the right edge of a buffer whose width is not a multiple of 8 they would
-  // reach past the row (past the buffer, on its last row).
-  bool wholeColumns = false;
-
-  // The contract's z = (z0 + tx) + ty at pixel (c, r) of the block (DepthPlane::at).
-  [[nodiscard]] double depthAt(int c, int r) const {
-    return plane->at(pixelCentreFixed(x + c), pixelCentreFixed(y + r));
-  }
-};
-
-// Row r's fragments one pixel at a time, for the pixels in `bits` (bit c: column c).
-inline int applyRowFragments(const BlockFragments& b, int r, unsigned bits) {
-  int applied = 0;
-  std::uint32_t* depth = b.depth + r * b.stride;
-  std::uint8_t* stencil = b.stencil + r * b.stride;
-  while (bits != 0) {
-    const int c = __builtin_ctz(bits);
-    bits &= bits - 1;
-    applyFragment(*b.state, *b.ops, quantizeDepth(b.depthAt(c, r)), depth[c], stencil[c]);
-    ++applied;
-  }
-  return applied;
-}
-
-// Applies the fragments of the pixels whose bit (row * 8 + col) is set in `mask`, one pixel at
-// a time; only those pixels are read or written. Returns how many were applied.
-inline int applyBlockFragmentsScalar(const BlockFragments& block, std::uint64_t mask) {
-  int applied = 0;
-  while (mask != 0) {
-    const int r = __builtin_ctzll(mask) / 8;
-    applied += applyRowFragments(block, r, static_cast<unsigned>((mask >> (8 * r)) & 0xFF));
-    mask &= ~(std::uint64_t{0xFF} << (8 * r));
-  }
-  return applied;
-}
+struct BlockFragments;
 
 namespace detail {
 // The SIMD version (block_fragments.cpp): rows with a few covered pixels or more in vectors,
@@ -126,10 +82,118 @@ inline int compiledFragmentKernel(const RenderState& state, const StencilOps& op
 inline constexpr int kMinSimdBlockPixels = 16;
 }  // namespace detail
 
+struct BlockFragments {
+  const RenderState* state = nullptr;
+  const StencilOps* ops = nullptr;    // the state's ops for the triangle's facing
+  const DepthPlane* plane = nullptr;  // the triangle's depth plane
+  int x = 0;                          // window pixel of the block's pixel (0, 0)
+  int y = 0;
+  std::uint32_t* depth = nullptr;   // the block's pixel (0, 0) in the depth buffer
+  std::uint8_t* stencil = nullptr;  // and in the stencil buffer
+  std::ptrdiff_t stride = 0;        // values from one row to the next, in both buffers
+  // Whether all 8 columns of the block lie inside the buffers' rows. Only then may a partial
+  // row go through the vectors, which read every column and write the uncovered ones back
+  // unchanged; at the right edge of a buffer whose width is not a multiple of 8 they would
+  // reach past the row (past the buffer, on its last row).
+  bool wholeColumns = false;
+  // detail::compiledFragmentKernel(*state, *ops): the kernel compiled for this state, -1 for the
+  // general one. -1 is always right; another index must be the state's (the caller finds it
+  // once per draw, not per block).
+  int kernel = -1;
+
+  // The contract's z = (z0 + tx) + ty at pixel (c, r) of the block (DepthPlane::at).
+  [[nodiscard]] double depthAt(int c, int r) const {
+    return plane->at(pixelCentreFixed(x + c), pixelCentreFixed(y + r));
+  }
+};
+
+// Row r's fragments one pixel at a time, for the pixels in `bits` (bit c: column c), with the
+// compare functions and ops of kernel K (detail::kCompiledFragmentFuncs) or, for K = -1, the
+// state's.
+template <int K>
+inline int applyRowFragmentsWith(const BlockFragments& b, int r, unsigned bits) {
+  int applied = 0;
+  std::uint32_t* depth = b.depth + r * b.stride;
+  std::uint8_t* stencil = b.stencil + r * b.stride;
+  while (bits != 0) {
+    const int c = __builtin_ctz(bits);
+    bits &= bits - 1;
+    const std::uint32_t incoming = quantizeDepth(b.depthAt(c, r));
+    if constexpr (K < 0) {
+      applyFragment(*b.state, *b.ops, incoming, depth[c], stencil[c]);
+    } else {
+      constexpr detail::FragmentFuncs kFuncs = detail::kCompiledFragmentFuncs[K];
+      applyFragmentWith(kFuncs.stencilFunc, kFuncs.depthFunc, kFuncs.ops, *b.state, incoming,
+                        depth[c], stencil[c]);
+    }
+    ++applied;
+  }
+  return applied;
+}
+
+// Row r's fragments one pixel at a time with the state's functions and ops.
+inline int applyRowFragments(const BlockFragments& b, int r, unsigned bits) {
+  return applyRowFragmentsWith<-1>(b, r, bits);
+}
+
+// The pixels of `mask` one pixel at a time with kernel K's functions (-1: the state's).
+template <int K>
+inline int applyBlockFragmentsScalarWith(const BlockFragments& block, std::uint64_t mask) {
+  // The state, ops and plane copied into locals: every stencil store goes through a uint8_t
+  // pointer, which may alias anything, so fields read through the block's pointers would be
+  // loaded again after each pixel. Nothing can alias a local whose address stays here.
+  const RenderState state = *block.state;
+  const StencilOps ops = *block.ops;
+  const DepthPlane plane = *block.plane;
+  BlockFragments local = block;
+  local.state = &state;
+  local.ops = &ops;
+  local.plane = &plane;
+  int applied = 0;
+  while (mask != 0) {
+    const int r = __builtin_ctzll(mask) / 8;
+    applied += applyRowFragmentsWith<K>(local, r, static_cast<unsigned>((mask >> (8 * r)) & 0xFF));
+    mask &= ~(std::uint64_t{0xFF} << (8 * r));
+  }
+  return applied;
+}
+
+// Applies the fragments of the pixels whose bit (row * 8 + col) is set in `mask`, one pixel at
+// a time with the state's functions (the reference the other paths are tested against); only
+// those pixels are read or written. Returns how many were applied.
+inline int applyBlockFragmentsScalar(const BlockFragments& block, std::uint64_t mask) {
+  return applyBlockFragmentsScalarWith<-1>(block, mask);
+}
+
+namespace detail {
+// One pixel at a time with the block's kernel: the compare and stencil-op switches folded to
+// the pass's one case, as the SIMD kernels are.
+inline int applyBlockFragmentsCompiled(const BlockFragments& block, std::uint64_t mask) {
+  static_assert(kCompiledFragmentKernels == 5, "one case per compiled kernel");
+  switch (block.kernel) {
+    case 0:
+      return applyBlockFragmentsScalarWith<0>(block, mask);
+    case 1:
+      return applyBlockFragmentsScalarWith<1>(block, mask);
+    case 2:
+      return applyBlockFragmentsScalarWith<2>(block, mask);
+    case 3:
+      return applyBlockFragmentsScalarWith<3>(block, mask);
+    case 4:
+      return applyBlockFragmentsScalarWith<4>(block, mask);
+    default:
+      return applyBlockFragmentsScalarWith<-1>(block, mask);
+  }
+}
+}  // namespace detail
+
 // The same, the denser blocks in SIMD.
 inline int applyBlockFragments(const BlockFragments& block, std::uint64_t mask) {
+  RECODE_INVARIANT(block.kernel == -1 ||
+                       block.kernel == detail::compiledFragmentKernel(*block.state, *block.ops),
+                   "a block's fragment kernel is the one compiled for its state, or the general");
   if (detail::pixelsInBlock(detail::pixelsPerRow(mask)) < detail::kMinSimdBlockPixels)
-    return applyBlockFragmentsScalar(block, mask);
+    return detail::applyBlockFragmentsCompiled(block, mask);
   return detail::applyBlockFragmentsSimd(block, mask);
 }
 

@@ -70,16 +70,19 @@ namespace recode::raster {
   return compare(s.stencilFunc, s.stencilRef & s.stencilValueMask, stored & s.stencilValueMask);
 }
 
-// Applies one fragment of depth `incomingDepth` (24-bit) to a stored depth and stencil; `ops`
-// are the state's ops for the triangle's facing (RenderState::opsFor).
-inline void applyFragment(const RenderState& s, const StencilOps& ops, std::uint32_t incomingDepth,
-                          std::uint32_t& depth, std::uint8_t& stencil) {
+// applyFragment with the compare functions and ops given apart from the state (which supplies
+// the references, masks and depth write): a caller that passes constants gets the tables folded
+// to its one case (block_fragments.hpp compiles a kernel per pass of RECODE so).
+[[gnu::always_inline]] inline void applyFragmentWith(CompareFunc stencilFunc, CompareFunc depthFunc,
+                                                     const StencilOps& ops, const RenderState& s,
+                                                     std::uint32_t incomingDepth,
+                                                     std::uint32_t& depth, std::uint8_t& stencil) {
   const std::uint8_t old = stencil;
   StencilOp op;
   bool writeDepth = false;
-  if (!stencilTestPasses(s, old)) {
+  if (!compare(stencilFunc, s.stencilRef & s.stencilValueMask, old & s.stencilValueMask)) {
     op = ops.stencilFail;
-  } else if (!compare(s.depthFunc, incomingDepth, depth)) {
+  } else if (!compare(depthFunc, incomingDepth, depth)) {
     op = ops.depthFail;
   } else {
     op = ops.depthPass;
@@ -88,6 +91,13 @@ inline void applyFragment(const RenderState& s, const StencilOps& ops, std::uint
   stencil = writeThroughMask(old, applyStencilOp(op, old, s.stencilRef), s.stencilWriteMask);
   if (writeDepth)
     depth = incomingDepth;
+}
+
+// Applies one fragment of depth `incomingDepth` (24-bit) to a stored depth and stencil; `ops`
+// are the state's ops for the triangle's facing (RenderState::opsFor).
+inline void applyFragment(const RenderState& s, const StencilOps& ops, std::uint32_t incomingDepth,
+                          std::uint32_t& depth, std::uint8_t& stencil) {
+  applyFragmentWith(s.stencilFunc, s.depthFunc, ops, s, incomingDepth, depth, stencil);
 }
 
 }  // namespace recode::raster
