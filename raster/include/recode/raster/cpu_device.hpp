@@ -66,8 +66,8 @@ class CpuDevice final : public DepthStencilDevice {
 
   // Counters since construction (or the last reset): useful for benchmarks and teaching. The
   // pipeline's count the triangles that were snapped and set up; a replayed draw adds its
-  // recorded triangles to trianglesReplayed instead, and those its cull mode discards to
-  // trianglesCulled.
+  // recorded triangles (those that covered a pixel) to trianglesReplayed instead, and those its
+  // cull mode discards to trianglesCulled.
   struct Counters : PipelineCounters {
     std::uint64_t fragments = 0;
     std::uint64_t trianglesReplayed = 0;

@@ -10,7 +10,9 @@
 //
 // A recording is made only from a draw that culls nothing (so every triangle is in it) and
 // serves only draws whose scissor lies inside the recorded one (a smaller rectangle's covered
-// pixels are the recorded ones inside it).
+// pixels are the recorded ones inside it). A triangle that covered no pixel is not kept: a
+// replay would visit it for nothing, and a fine mesh's sub-pixel triangles often fall between
+// centres.
 
 #include <cstddef>
 #include <cstdint>
@@ -26,7 +28,8 @@ class DrawRecording {
   struct Triangle {
     DepthPlane plane;
     bool frontFacing = true;
-    std::uint32_t firstBlock = 0;  // its blocks are [firstBlock, the next triangle's firstBlock)
+    // Its blocks are [firstBlock, the next triangle's firstBlock), never none once finished.
+    std::uint32_t firstBlock = 0;
   };
   struct Block {
     std::int32_t x = 0;  // bottom-left pixel, on the 8x8 grid
