@@ -1,6 +1,7 @@
 #include "recode/raster/pipeline.hpp"
 
 #include "recode/raster/invariants.hpp"
+#include "triangle_setup_steps.hpp"
 
 namespace recode::raster {
 
@@ -22,7 +23,7 @@ void drawTriangles(const RenderState& state, std::span<const WindowVertex> verti
       RECODE_INVARIANT(index < vertices.size(), "a draw's indices are in range");
       snapped[corner] = snapVertex(vertices[index]);
     }
-    if (!setupTriangleInto(snapped[0], snapped[1], snapped[2], triangle)) {
+    if (!detail::setupInto(snapped[0], snapped[1], snapped[2], triangle)) {
       ++count.trianglesDegenerate;
       continue;
     }
