@@ -5,15 +5,6 @@
 
 namespace recode::raster {
 
-PixelRect PixelRect::intersect(const PixelRect& o) const {
-  PixelRect r{std::max(x0, o.x0), std::max(y0, o.y0), std::min(x1, o.x1), std::min(y1, o.y1)};
-  if (r.x1 < r.x0)
-    r.x1 = r.x0;
-  if (r.y1 < r.y0)
-    r.y1 = r.y0;
-  return r;
-}
-
 void RenderState::setStencilOps(Face face, const StencilOps& ops) {
   if (face != Face::Back)
     frontOps = ops;

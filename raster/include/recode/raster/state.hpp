@@ -4,6 +4,7 @@
 // which reads it and never changes it, and the command-stream format. Names follow OpenGL's
 // so that a back end maps them one to one.
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -59,7 +60,13 @@ struct PixelRect {
   [[nodiscard]] long long area() const {
     return static_cast<long long>(width()) * static_cast<long long>(height());
   }
-  [[nodiscard]] PixelRect intersect(const PixelRect& o) const;
+  // Inline: the traversal clips every triangle's bounds with it.
+  [[nodiscard]] PixelRect intersect(const PixelRect& o) const {
+    PixelRect r{std::max(x0, o.x0), std::max(y0, o.y0), std::min(x1, o.x1), std::min(y1, o.y1)};
+    r.x1 = std::max(r.x1, r.x0);
+    r.y1 = std::max(r.y1, r.y0);
+    return r;
+  }
 
   friend bool operator==(const PixelRect&, const PixelRect&) = default;
 };
