@@ -96,11 +96,11 @@ int alignDown(int v, int a) {
 // block's edge: for one of a few pixels, about two in five) take smallAreaBlocks.
 constexpr int kSmallArea = 16;
 
-// The coverage of a small clipped area that spans two or more blocks, each pixel's three edge
-// values stepped from one exact evaluation (the integers coverageMask tests), gathered into
-// its blocks' masks and handed out in the traversal's order: tiles row by row, then each
-// tile's blocks row by row. The tile and block tests of the general loop could only reject or
-// accept what the per-pixel test decides, and for a few pixels they cost more than it.
+// The coverage of a small clipped area that spans two or more blocks, each block's pixels in
+// the area tested on their own (coverageMask), handed out in the traversal's order: tiles row
+// by row, then each tile's blocks row by row. The tile and block tests of the general loop
+// could only reject or accept what the per-pixel test decides, and for a few pixels they cost
+// more than it.
 void smallAreaBlocks(const TriangleCoverage& tri, const PixelRect& area, int firstX, int firstY,
                      BlockSink& sink, TraversalStats& st) {
   // kSmallArea pixels span at most three blocks along either axis, and three blocks (24
@@ -109,29 +109,6 @@ void smallAreaBlocks(const TriangleCoverage& tri, const PixelRect& area, int fir
   const int columns = (area.x1 - 1 - firstX) / kBlockSize + 1;
   const int rows = (area.y1 - 1 - firstY) / kBlockSize + 1;
   RECODE_INVARIANT(columns <= kMaxSpan && rows <= kMaxSpan, "a small area spans three blocks");
-  std::uint64_t masks[kMaxSpan][kMaxSpan] = {};
-  std::int64_t rowStart[3], stepX[3], stepY[3];
-  for (int k = 0; k < 3; ++k) {
-    rowStart[k] = tri.edges[k].at(pixelCentreFixed(area.x0), pixelCentreFixed(area.y0));
-    stepX[k] = tri.edges[k].a * kSubpixelOne;
-    stepY[k] = tri.edges[k].b * kSubpixelOne;
-  }
-  for (int py = area.y0; py < area.y1; ++py) {
-    std::int64_t e0 = rowStart[0], e1 = rowStart[1], e2 = rowStart[2];
-    // Offsets from the first block's corner, non-negative: unsigned, so / and % are shifts.
-    const auto dy = static_cast<unsigned>(py - firstY);
-    for (int px = area.x0; px < area.x1; ++px) {
-      const bool inside = (e0 | e1 | e2) >= 0;  // all three non-negative
-      const auto dx = static_cast<unsigned>(px - firstX);
-      masks[dy / kBlockSize][dx / kBlockSize] |=
-          static_cast<std::uint64_t>(inside) << (dy % kBlockSize * kBlockSize + dx % kBlockSize);
-      e0 += stepX[0];
-      e1 += stepX[1];
-      e2 += stepX[2];
-    }
-    for (int k = 0; k < 3; ++k)
-      rowStart[k] += stepY[k];
-  }
   // The first block index of the second tile along each axis (the count when all lie in one).
   const auto tileSplit = [](int first, int count) {
     int n = 1;
@@ -146,8 +123,10 @@ void smallAreaBlocks(const TriangleCoverage& tri, const PixelRect& area, int fir
       for (int j = tileRows[ty]; j < tileRows[ty + 1]; ++j) {
         for (int i = tileColumns[tx]; i < tileColumns[tx + 1]; ++i) {
           ++st.blocksPartial;
-          if (masks[j][i] != 0)
-            sink.coveredBlock(firstX + i * kBlockSize, firstY + j * kBlockSize, masks[j][i]);
+          const int bx = firstX + i * kBlockSize, by = firstY + j * kBlockSize;
+          const std::uint64_t mask = coverageMask(tri, bx, by, area);
+          if (mask != 0)
+            sink.coveredBlock(bx, by, mask);
         }
       }
     }
