@@ -16,7 +16,7 @@ void DrawRecording::addTriangle(const TriangleSetup& triangle) {
                       static_cast<std::uint32_t>(blocks_.size())};
   // The triangle before covered no pixel (a sub-pixel triangle between centres, as many of a
   // fine mesh are): a replay would skip it anyway, so it is not kept.
-  if (!triangles_.empty() && triangles_.back().firstBlock == next.firstBlock)
+  if (lastTriangleCoveredNothing())
     triangles_.back() = next;
   else
     triangles_.push_back(next);
@@ -34,8 +34,8 @@ void DrawRecording::addBlock(int x, int y, std::uint64_t mask) {
 
 void DrawRecording::finish() {
   complete_ = !overflowed_;
-  if (!triangles_.empty() && triangles_.back().firstBlock == blocks_.size())
-    triangles_.pop_back();  // the last triangle covered no pixel either
+  if (lastTriangleCoveredNothing())
+    triangles_.pop_back();
 }
 
 void DrawRecording::clear() {

@@ -58,14 +58,11 @@ inline std::int64_t twiceArea(const FixedVertex& v0, const FixedVertex& v1, cons
 
   const std::int64_t minX = std::min({v0.x, v1.x, v2.x}), maxX = std::max({v0.x, v1.x, v2.x});
   const std::int64_t minY = std::min({v0.y, v1.y, v2.y}), maxY = std::max({v0.y, v1.y, v2.y});
-  const std::int64_t half = kSubpixelOne / 2;
-  // Pixel i is a candidate when its centre 256 i + 128 lies in [min, max]: i from
-  // ceil((min - 128) / 256) to floor((max - 128) / 256). An arithmetic shift right floors, so
-  // these are floorDiv's values without its branches.
-  t.bounds.x0 = static_cast<int>(-((half - minX) >> kSubpixelBits));
-  t.bounds.x1 = static_cast<int>(((maxX - half) >> kSubpixelBits) + 1);
-  t.bounds.y0 = static_cast<int>(-((half - minY) >> kSubpixelBits));
-  t.bounds.y1 = static_cast<int>(((maxY - half) >> kSubpixelBits) + 1);
+  // Pixel i is a candidate when its centre lies in [min, max].
+  t.bounds.x0 = static_cast<int>(firstPixelCentreFrom(minX));
+  t.bounds.x1 = static_cast<int>(lastPixelCentreTo(maxX) + 1);
+  t.bounds.y0 = static_cast<int>(firstPixelCentreFrom(minY));
+  t.bounds.y1 = static_cast<int>(lastPixelCentreTo(maxY) + 1);
   return true;
 }
 

@@ -94,18 +94,17 @@ class PosedBoxTest {
 };
 
 // Whether the closed box of three window vertices, snapped as the device snaps them, holds the
-// centre of a pixel of `rect`: the only triangles that can cover one. In 24.8 fixed point the
-// centre of pixel i is 256 i + 128, so the candidates are ceil((min - 128) / 256) .. floor((max -
-// 128) / 256), the bounds triangle setup makes, in shifts (an arithmetic shift right floors).
+// centre of a pixel of `rect`: the only triangles that can cover one (the candidates triangle
+// setup makes, from the same fixed-point helpers).
 bool boxHoldsPixelCentre(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                          const PixelRect& rect) {
   const auto holds = [](float p, float q, float r, int lo, int hi) {
     const std::int64_t fp = raster::snapToFixed(p), fq = raster::snapToFixed(q),
                        fr = raster::snapToFixed(r);
-    const std::int64_t mn = std::min({fp, fq, fr}), mx = std::max({fp, fq, fr});
-    constexpr std::int64_t kHalf = raster::kSubpixelOne / 2;
-    const std::int64_t first = std::max<std::int64_t>(-((kHalf - mn) >> raster::kSubpixelBits), lo);
-    const std::int64_t last = std::min<std::int64_t>((mx - kHalf) >> raster::kSubpixelBits, hi - 1);
+    const std::int64_t first =
+        std::max<std::int64_t>(raster::firstPixelCentreFrom(std::min({fp, fq, fr})), lo);
+    const std::int64_t last =
+        std::min<std::int64_t>(raster::lastPixelCentreTo(std::max({fp, fq, fr})), hi - 1);
     return first <= last;
   };
   return holds(a.x, b.x, c.x, rect.x0, rect.x1) && holds(a.y, b.y, c.y, rect.y0, rect.y1);

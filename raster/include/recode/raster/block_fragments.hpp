@@ -131,11 +131,6 @@ inline int applyRowFragmentsWith(const BlockFragments& b, int r, unsigned bits) 
   return applied;
 }
 
-// Row r's fragments one pixel at a time with the state's functions and ops.
-inline int applyRowFragments(const BlockFragments& b, int r, unsigned bits) {
-  return applyRowFragmentsWith<-1>(b, r, bits);
-}
-
 // The pixels of `mask` one pixel at a time with kernel K's functions (-1: the state's).
 template <int K>
 inline int applyBlockFragmentsScalarWith(const BlockFragments& block, std::uint64_t mask) {

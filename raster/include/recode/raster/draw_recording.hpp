@@ -58,6 +58,11 @@ class DrawRecording {
   [[nodiscard]] const std::vector<Block>& blocks() const { return blocks_; }
 
  private:
+  // Whether the last triangle added has no block after it (yet): it covered no pixel.
+  [[nodiscard]] bool lastTriangleCoveredNothing() const {
+    return !triangles_.empty() && triangles_.back().firstBlock == blocks_.size();
+  }
+
   std::uint64_t key_ = 0;  // 0: nothing usable recorded
   bool complete_ = false;
   bool overflowed_ = false;

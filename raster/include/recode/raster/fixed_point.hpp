@@ -32,13 +32,23 @@ namespace recode::raster {
   return static_cast<float>(std::nearbyint(x * kSubpixelOne) / kSubpixelOne);
 }
 
-// Floor division by a positive divisor, correct for negative numerators: the pixel bounds of a
-// setup and the block spans of the traversal round with it.
+// Floor division by a positive divisor, correct for negative numerators: the block spans of
+// the traversal round with it.
 [[nodiscard]] inline std::int64_t floorDiv(std::int64_t n, std::int64_t d) {
   std::int64_t q = n / d;
   if ((n % d != 0) && (n < 0))
     --q;
   return q;
+}
+
+// The first and last pixel whose centre 256 i + 128 lies in [lo, hi] (24.8 fixed point):
+// ceil((lo - 128) / 256) and floor((hi - 128) / 256), the candidate pixels of a triangle's box.
+// An arithmetic shift right floors, so these are floorDiv's values without its branches.
+[[nodiscard]] inline std::int64_t firstPixelCentreFrom(std::int64_t lo) {
+  return -((kSubpixelOne / 2 - lo) >> kSubpixelBits);
+}
+[[nodiscard]] inline std::int64_t lastPixelCentreTo(std::int64_t hi) {
+  return (hi - kSubpixelOne / 2) >> kSubpixelBits;
 }
 
 // Fixed-point coordinate of the centre of pixel column/row i: 256 i + 128.

@@ -65,9 +65,16 @@ namespace recode::raster {
                                    (old & static_cast<std::uint8_t>(~writeMask)));
 }
 
-// Whether the stencil test passes against a stored value.
+// Whether the stencil test with compare function `func` passes against a stored value, under
+// the state's reference and value mask.
+[[nodiscard]] inline bool stencilTestPasses(CompareFunc func, const RenderState& s,
+                                            std::uint8_t stored) {
+  return compare(func, s.stencilRef & s.stencilValueMask, stored & s.stencilValueMask);
+}
+
+// Whether the state's stencil test passes against a stored value.
 [[nodiscard]] inline bool stencilTestPasses(const RenderState& s, std::uint8_t stored) {
-  return compare(s.stencilFunc, s.stencilRef & s.stencilValueMask, stored & s.stencilValueMask);
+  return stencilTestPasses(s.stencilFunc, s, stored);
 }
 
 // applyFragment with the compare functions and ops given apart from the state (which supplies
@@ -80,7 +87,7 @@ namespace recode::raster {
   const std::uint8_t old = stencil;
   StencilOp op;
   bool writeDepth = false;
-  if (!compare(stencilFunc, s.stencilRef & s.stencilValueMask, old & s.stencilValueMask)) {
+  if (!stencilTestPasses(stencilFunc, s, old)) {
     op = ops.stencilFail;
   } else if (!compare(depthFunc, incomingDepth, depth)) {
     op = ops.depthFail;
