@@ -78,6 +78,11 @@ BENCHMARK_CAPTURE(runLevel, comb_translate_aligned, "comb-translate-aligned")
     ->ArgsProduct({{4096}, {0, 1}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(runLevel, hierarchy_9, "hierarchy-9")
+    ->ArgNames({"per_block", "skip_apart"})
+    ->ArgsProduct({{2880}, {0}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

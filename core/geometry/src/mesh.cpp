@@ -53,7 +53,7 @@ void transformIntoImpl(const TriangleMesh& mesh, const Eigen::Matrix3d& linear,
                        const Eigen::Vector3d& translation, TriangleMesh& out) {
   out.vertices.resize(mesh.vertices.size());
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    out.vertices[i] = linear * mesh.vertices[i] + translation;
+    out.vertices[i] = posedPoint(linear, translation, mesh.vertices[i]);
   const bool mirrored = linear.determinant() < 0.0;
   if (sameTriangles(mesh, mirrored, out))
     return;

@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "posed_vertex_box.hpp"
+
 namespace recode::core {
 
 namespace {
@@ -153,12 +155,8 @@ void ObjectTree::updateAabbs() {
     if (node.isLeaf()) {
       if (!boundsValid_[i] || boundsAt_[i].matrix() != node.world.matrix()) {
         // The same arithmetic as transformed(), so the box is exactly worldMesh()'s box.
-        const Eigen::Matrix3d linear = node.world.linear();
-        const Eigen::Vector3d translation = node.world.translation();
-        Aabb box;
-        for (const Eigen::Vector3d& v : node.localMesh.vertices)
-          box.extend(Eigen::Vector3d(linear * v + translation));
-        node.worldAabb = box;
+        node.worldAabb = detail::posedVertexBox(node.localMesh.vertices, node.world.linear(),
+                                                node.world.translation());
         boundsAt_[i] = node.world;
         boundsValid_[i] = true;
       }

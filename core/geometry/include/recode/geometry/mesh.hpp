@@ -70,8 +70,25 @@ struct TriangleMesh {
 // vertices. Non-finite coordinates propagate into the box as the min/max operations give.
 [[nodiscard]] Aabb boundingBox(const TriangleMesh& mesh);
 
-// A copy with every vertex mapped by `transform`. The triangles are copied unchanged, except
-// that when the transform's linear part has a negative determinant (a reflection) each
+// linear * v + translation, each product and sum rounded on its own in a fixed order: rows x
+// and y as ((l0 v0 + l1 v1) + l2 v2) + t, row z as (l0 v0 + (l1 v1 + l2 v2)) + t. That is the
+// order Eigen's Matrix3d * Vector3d took in the baseline x86-64 build every golden result was
+// made with; written out (and compiled without FMA contraction: core/geometry/CMakeLists.txt), it
+// no longer depends on how Eigen is vectorised in a given build, and a SIMD loop can repeat it lane
+// for lane (core/sim's posed vertex box). Code that calls it gets those bits only when it too is
+// built without contraction.
+[[nodiscard]] inline Eigen::Vector3d posedPoint(const Eigen::Matrix3d& linear,
+                                                const Eigen::Vector3d& translation,
+                                                const Eigen::Vector3d& v) {
+  const auto row = [&](int r) {
+    return (linear(r, 0) * v.x() + linear(r, 1) * v.y()) + linear(r, 2) * v.z();
+  };
+  const double z = linear(2, 0) * v.x() + (linear(2, 1) * v.y() + linear(2, 2) * v.z());
+  return {row(0) + translation.x(), row(1) + translation.y(), z + translation.z()};
+}
+
+// A copy with every vertex mapped by `transform` (posedPoint). The triangles are copied unchanged,
+// except that when the transform's linear part has a negative determinant (a reflection) each
 // triangle's last two indices are swapped, so outward faces stay outward.
 [[nodiscard]] TriangleMesh transformed(const TriangleMesh& mesh,
                                        const Eigen::Isometry3d& transform);
