@@ -19,10 +19,20 @@ using raster::WindowVertex;
 // Whether a window range [lo, hi] (pixels, before snapping) can hold, once snapped, the centre
 // i + 0.5 of a pixel with first <= i < end. Snapping moves a coordinate by at most 1/512 pixel;
 // the range is widened by 1/64.
+// The range of centres' indices is [lo - margin - 1/2, hi + margin - 1/2]: when it meets
+// [first, end - 1] and is at least 1 long, it holds an integer there (the meeting part ends at
+// an integer bound or is the whole range), so only a range shorter than a pixel needs the
+// rounding. Inlined into every node and candidate test, which the first two comparisons end
+// for most of them.
 bool holdsCentre(double lo, double hi, int first, int end) {
   constexpr double kSnapMargin = 1.0 / 64.0;
-  const double i0 = std::max(std::ceil(lo - kSnapMargin - 0.5), static_cast<double>(first));
-  const double i1 = std::min(std::floor(hi + kSnapMargin - 0.5), static_cast<double>(end - 1));
+  const double a = lo - kSnapMargin - 0.5, b = hi + kSnapMargin - 0.5;
+  if (!(b >= first && a <= end - 1))
+    return false;
+  if (b - a >= 1.0)
+    return true;
+  const double i0 = std::max(std::ceil(a), static_cast<double>(first));
+  const double i1 = std::min(std::floor(b), static_cast<double>(end - 1));
   return i0 <= i1;
 }
 
