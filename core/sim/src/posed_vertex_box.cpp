@@ -96,6 +96,8 @@ Aabb posedVertexBoxScalar(std::span<const Eigen::Vector3d> local, const Eigen::M
 Aabb posedVertexBox(std::span<const Eigen::Vector3d> local, const Eigen::Matrix3d& linear,
                     const Eigen::Vector3d& translation) {
 #if RECODE_SIM_HWY
+  if (local.empty())
+    return Aabb{};  // (and no vertex to take the address of)
   static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "vertices must be packed xyz");
   std::array<double, 12> m{};
   for (int r = 0; r < 3; ++r) {
