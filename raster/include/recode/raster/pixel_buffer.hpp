@@ -44,23 +44,32 @@ struct PixelBuffer {
   [[nodiscard]] const T& at(int x, int y) const { return data[index(x, y)]; }
 
   // The values over `r` clipped to this buffer's rectangle, laid out the same way.
+  // The row loops below step a pointer by the stride: a pair's MOR is often a few pixels wide
+  // and hundreds tall, where working out each row's index cost more than its values.
   [[nodiscard]] std::vector<T> copy(const PixelRect& r) const {
     const PixelRect c = r.intersect(rect);
     std::vector<T> out;
+    if (c.empty())
+      return out;
     out.reserve(static_cast<std::size_t>(c.area()));
-    for (int y = c.y0; y < c.y1; ++y) {
-      const auto row = data.begin() + static_cast<std::ptrdiff_t>(index(c.x0, y));
-      out.insert(out.end(), row, row + c.width());
-    }
+    const auto stride = static_cast<std::size_t>(rect.width());
+    const auto width = static_cast<std::size_t>(c.width());
+    const T* row = data.data() + index(c.x0, c.y0);
+    for (int y = c.y0; y < c.y1; ++y, row += stride)
+      out.insert(out.end(), row, row + width);
     return out;
   }
   // Every pixel of `r` clipped to this buffer's rectangle set to `value`.
   void fill(const PixelRect& r, const T& value) {
     const PixelRect c = r.intersect(rect);
-    for (int y = c.y0; y < c.y1; ++y) {
-      const auto row = data.begin() + static_cast<std::ptrdiff_t>(index(c.x0, y));
-      std::fill(row, row + c.width(), value);
-    }
+    if (c.empty())
+      return;
+    const auto stride = static_cast<std::size_t>(rect.width());
+    const auto width = static_cast<std::size_t>(c.width());
+    const T v = value;  // a copy: the stores below may not change it
+    T* row = data.data() + index(c.x0, c.y0);
+    for (int y = c.y0; y < c.y1; ++y, row += stride)
+      std::fill_n(row, width, v);
   }
 
   friend bool operator==(const PixelBuffer&, const PixelBuffer&) = default;
