@@ -18,12 +18,10 @@ using raster::WindowVertex;
 
 // Whether a window range [lo, hi] (pixels, before snapping) can hold, once snapped, the centre
 // i + 0.5 of a pixel with first <= i < end. Snapping moves a coordinate by at most 1/512 pixel;
-// the range is widened by 1/64.
-// The range of centres' indices is [lo - margin - 1/2, hi + margin - 1/2]: when it meets
-// [first, end - 1] and is at least 1 long, it holds an integer there (the meeting part ends at
-// an integer bound or is the whole range), so only a range shorter than a pixel needs the
-// rounding. Inlined into every node and candidate test, which the first two comparisons end
-// for most of them.
+// the range is widened by 1/64. The indices it can hold are [lo - 1/64 - 1/2, hi + 1/64 - 1/2]:
+// when that meets [first, end - 1] and is at least 1 long, it holds an integer there (the
+// common part ends at an integer bound or is the whole range), so only a range shorter than a
+// pixel is rounded. Every hierarchy node and candidate triangle of a query comes here.
 bool holdsCentre(double lo, double hi, int first, int end) {
   constexpr double kSnapMargin = 1.0 / 64.0;
   const double a = lo - kSnapMargin - 0.5, b = hi + kSnapMargin - 0.5;

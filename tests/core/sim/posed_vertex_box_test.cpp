@@ -55,7 +55,6 @@ TEST_CASE("posedVertexBox: the bits of transformed()'s box for random blocks and
           "[hierarchy][posed-box]") {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> coordinate(-3.0, 3.0);
-  int checked = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     // 0 to 40 vertices: below one vector, whole vectors and every tail length.
     TriangleMesh mesh;
@@ -69,9 +68,7 @@ TEST_CASE("posedVertexBox: the bits of transformed()'s box for random blocks and
                      expected));
     INFO("trial " << trial << ", " << count << " vertices");
     REQUIRE(sameBits(posed(mesh, pose), expected));
-    ++checked;
   }
-  CHECK(checked == 2000);
 }
 
 TEST_CASE("posedVertexBox: zero extremes keep the scalar loop's signs, NaN its NaNs",
