@@ -14,6 +14,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "recode/geometry/mesh.hpp"
+
 namespace recode::core {
 
 namespace {
@@ -229,8 +231,8 @@ Approach closestApproach(std::span<const Eigen::Vector3d> a, std::span<const Eig
 }
 
 // The same for a set read in its own coordinates: a support is made as its world point is
-// (linear * p + translation); a slab end is (L^T n).p + n.t, within about 1e-15 of the
-// world points' size of the world value.
+// (posedPoint, transformed()'s arithmetic); a slab end is (L^T n).p + n.t, within about 1e-15 of
+// the world points' size of the world value.
 class PosedSet {
  public:
   explicit PosedSet(const PosedPoints& points)
@@ -257,7 +259,7 @@ class PosedSet {
 
  private:
   [[nodiscard]] Eigen::Vector3d world(const Eigen::Vector3d& p) const {
-    return linear_ * p + translation_;
+    return posedPoint(linear_, translation_, p);
   }
   std::span<const Eigen::Vector3d> local_;
   Eigen::Matrix3d linear_, transposed_;

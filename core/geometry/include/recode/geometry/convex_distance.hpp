@@ -39,7 +39,7 @@ namespace recode::core {
                                     const Eigen::Vector3d& margin);
 
 // A point set in its own coordinates and the map to the world: its world points are
-// pose.linear() * p + pose.translation(), as core::transformed makes a mesh's vertices.
+// posedPoint(pose.linear(), pose.translation(), p), as core::transformed makes a mesh's vertices.
 struct PosedPoints {
   std::span<const Eigen::Vector3d> local;
   Eigen::Isometry3d pose;
