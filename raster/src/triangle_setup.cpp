@@ -8,7 +8,7 @@ std::optional<TriangleCoverage> setupCoverage(const FixedVertex& v0, const Fixed
                                               const FixedVertex& v2) {
   // One named result on every path, so that it is built in the caller's storage.
   std::optional<TriangleCoverage> t(std::in_place);
-  if (!detail::coverageInto(v0, v1, v2, *t))
+  if (detail::coverageInto(v0, v1, v2, *t) == 0)
     t.reset();
   return t;
 }

@@ -33,11 +33,14 @@ inline std::int64_t twiceArea(const FixedVertex& v0, const FixedVertex& v1, cons
   return (v1.x - v0.x) * (v2.y - v0.y) - (v2.x - v0.x) * (v1.y - v0.y);
 }
 
-// setupCoverage written into `t`, false for a zero-area triangle. setupTriangle fills its own
-// result with it in place: copying a returned TriangleCoverage into it read the callee's
-// stores back in wider loads, which stalled the store forwarding.
-[[gnu::always_inline]] inline bool coverageInto(const FixedVertex& v0, const FixedVertex& v1,
-                                                const FixedVertex& v2, TriangleCoverage& t) {
+// setupCoverage written into `t`; returns twiceArea, 0 for a zero-area triangle (then `t` is
+// left unfinished). setupTriangle fills its own result with it in place: copying a returned
+// TriangleCoverage into it read the callee's stores back in wider loads, which stalled the
+// store forwarding.
+[[gnu::always_inline]] inline std::int64_t coverageInto(const FixedVertex& v0,
+                                                        const FixedVertex& v1,
+                                                        const FixedVertex& v2,
+                                                        TriangleCoverage& t) {
   // The device refuses vertices beyond kMaxWindowCoordinate, which keeps every product of the
   // edge functions below 2^49 (docs/rasterization.md, section 3).
   constexpr std::int64_t kMaxFixed = static_cast<std::int64_t>(kMaxWindowCoordinate) * kSubpixelOne;
@@ -48,7 +51,7 @@ inline std::int64_t twiceArea(const FixedVertex& v0, const FixedVertex& v1, cons
   }
   const std::int64_t area2 = twiceArea(v0, v1, v2);
   if (area2 == 0)
-    return false;
+    return 0;
 
   t.frontFacing = area2 > 0;
   // Coverage uses the counter-clockwise order; the depth plane uses the submitted order.
@@ -63,13 +66,14 @@ inline std::int64_t twiceArea(const FixedVertex& v0, const FixedVertex& v1, cons
   t.bounds.x1 = static_cast<int>(lastPixelCentreTo(maxX) + 1);
   t.bounds.y0 = static_cast<int>(firstPixelCentreFrom(minY));
   t.bounds.y1 = static_cast<int>(lastPixelCentreTo(maxY) + 1);
-  return true;
+  return area2;
 }
 
 // setupTriangleInto's work (triangle_setup.hpp).
 [[gnu::always_inline]] inline bool setupInto(const FixedVertex& v0, const FixedVertex& v1,
                                              const FixedVertex& v2, TriangleSetup& t) {
-  if (!coverageInto(v0, v1, v2, t))
+  const std::int64_t area2 = coverageInto(v0, v1, v2, t);
+  if (area2 == 0)
     return false;
 
   // Depth plane through the three snapped vertices, in the submitted order:
@@ -79,7 +83,7 @@ inline std::int64_t twiceArea(const FixedVertex& v0, const FixedVertex& v1, cons
   const double z0 = static_cast<double>(v0.z);
   const double dz1 = static_cast<double>(v1.z) - z0;
   const double dz2 = static_cast<double>(v2.z) - z0;
-  const double a2 = static_cast<double>(twiceArea(v0, v1, v2));
+  const double a2 = static_cast<double>(area2);
   t.depth.x0 = v0.x;
   t.depth.y0 = v0.y;
   t.depth.z0 = z0;
