@@ -1,96 +1,54 @@
 #include "recode/refine/block_growth.hpp"
 
-#include <cstdint>
-#include <unordered_map>
+#include <cmath>
+#include <limits>
 #include <vector>
+
+#include "recode/geometry/convex_hull.hpp"
 
 namespace recode::core {
 
 namespace {
 
-std::uint64_t edgeKey(VertexIndex from, VertexIndex to) {
-  return (std::uint64_t{from} << 32) | std::uint64_t{to};
-}
-
-// Keeps only the vertices some triangle uses, in first-use order.
-TriangleMesh compacted(const TriangleMesh& mesh) {
-  TriangleMesh out;
-  std::vector<VertexIndex> remap(mesh.vertices.size(), ~VertexIndex{0});
-  out.triangles.reserve(mesh.triangles.size());
-  for (const Triangle& t : mesh.triangles) {
-    Triangle n{};
-    for (int k = 0; k < 3; ++k) {
-      VertexIndex& r = remap[t[static_cast<std::size_t>(k)]];
-      if (r == ~VertexIndex{0}) {
-        r = static_cast<VertexIndex>(out.vertices.size());
-        out.vertices.push_back(mesh.vertices[t[static_cast<std::size_t>(k)]]);
-      }
-      n[static_cast<std::size_t>(k)] = r;
-    }
-    out.triangles.push_back(n);
-  }
-  return out;
+// x + d rounded away from x (towards +inf for d > 0, -inf for d < 0): at least as far out as the
+// exact sum. The error-free two-sum gives the rounding error of x + d exactly.
+double sumRoundedOutward(double x, double d) {
+  const double s = x + d;
+  const double bv = s - x;
+  const double av = s - bv;
+  const double err = (x - av) + (d - bv);  // exact: x + d == s + err
+  if (d > 0.0 && err > 0.0)
+    return std::nextafter(s, std::numeric_limits<double>::infinity());
+  if (d < 0.0 && err < 0.0)
+    return std::nextafter(s, -std::numeric_limits<double>::infinity());
+  return s;
 }
 
 }  // namespace
 
-TriangleMesh sweptAlongAxis(const TriangleMesh& block, int axis, double h) {
-  if (!(h > 0.0))
-    return block;
-  const auto n = static_cast<VertexIndex>(block.vertices.size());
-  TriangleMesh out;
-  out.vertices.reserve(2 * block.vertices.size());
-  // Vertex v - h e (index v) and v + h e (index n + v).
-  for (const Eigen::Vector3d& v : block.vertices) {
-    Eigen::Vector3d p = v;
-    p[axis] -= h;
-    out.vertices.push_back(p);
-  }
-  for (const Eigen::Vector3d& v : block.vertices) {
-    Eigen::Vector3d p = v;
-    p[axis] += h;
-    out.vertices.push_back(p);
-  }
-  // A face moves up when its outward normal points up the axis; a face parallel to the axis
-  // moves down, and the quads of its upper edges stretch it over the whole sweep.
-  std::vector<char> up(block.triangles.size());
-  std::unordered_map<std::uint64_t, std::size_t> owner;
-  owner.reserve(3 * block.triangles.size());
-  for (std::size_t t = 0; t < block.triangles.size(); ++t) {
-    const Triangle& tri = block.triangles[t];
-    const Eigen::Vector3d& a = block.vertices[tri[0]];
-    const Eigen::Vector3d normal = (block.vertices[tri[1]] - a).cross(block.vertices[tri[2]] - a);
-    up[t] = normal[axis] > 0.0 ? 1 : 0;
-    for (int k = 0; k < 3; ++k)
-      owner[edgeKey(tri[static_cast<std::size_t>(k)], tri[static_cast<std::size_t>((k + 1) % 3)])] =
-          t;
-  }
-  out.triangles.reserve(block.triangles.size() + 16);
-  for (std::size_t t = 0; t < block.triangles.size(); ++t) {
-    const Triangle& tri = block.triangles[t];
-    const VertexIndex shift = up[t] ? n : 0;
-    out.triangles.push_back({tri[0] + shift, tri[1] + shift, tri[2] + shift});
-    if (!up[t])
-      continue;
-    for (int k = 0; k < 3; ++k) {
-      const VertexIndex i = tri[static_cast<std::size_t>(k)];
-      const VertexIndex j = tri[static_cast<std::size_t>((k + 1) % 3)];
-      const auto twin = owner.find(edgeKey(j, i));
-      if (twin == owner.end() || up[twin->second])
-        continue;
-      // Edge i -> j of an upper face beside a lower face: the quad j+, i+, i-, j- lies outside
-      // the upper face across that edge, wound like it (outward).
-      out.triangles.push_back({j + n, i + n, i});
-      out.triangles.push_back({j + n, i, j});
-    }
-  }
-  return compacted(out);
-}
-
+// Why a hull and not three sweeps: a sweep moves each face up or down by the sign of its
+// normal's component along the axis, and the quads a sweep adds along edges nearly parallel to
+// the axis have no reliable sign for the next one; a block turned by 1e-5 degrees lost a whole
+// pixel that way. The hull takes no sign from rounded normals: its predicates are exact, and
+// every corner sum is rounded outward, so for any direction n the hull's support is at least
+// max over the vertices of n.v plus the box's support in n (the corner whose signs are n's is
+// rounded outward along n).
 TriangleMesh grownByBox(const TriangleMesh& block, const Eigen::Vector3d& half) {
-  TriangleMesh m = sweptAlongAxis(block, 0, half.x());
-  m = sweptAlongAxis(m, 1, half.y());
-  return sweptAlongAxis(m, 2, half.z());
+  const int steps[3] = {half.x() > 0.0 ? 2 : 1, half.y() > 0.0 ? 2 : 1, half.z() > 0.0 ? 2 : 1};
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(block.vertices.size() * static_cast<std::size_t>(steps[0] * steps[1] * steps[2]));
+  for (const Eigen::Vector3d& v : block.vertices)
+    for (int i = 0; i < steps[0]; ++i)
+      for (int j = 0; j < steps[1]; ++j)
+        for (int k = 0; k < steps[2]; ++k) {
+          const int sign[3] = {i, j, k};
+          Eigen::Vector3d p = v;
+          for (int axis = 0; axis < 3; ++axis)
+            if (steps[axis] == 2)
+              p[axis] = sumRoundedOutward(v[axis], sign[axis] ? half[axis] : -half[axis]);
+          points.push_back(p);
+        }
+  return convexHull(points, "a block grown by a box").mesh;
 }
 
 }  // namespace recode::core

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "recode/geometry/exact_predicates.hpp"
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/mesh.hpp"
 #include "recode/geometry/validate.hpp"
@@ -43,6 +44,27 @@ core::TriangleMesh tiltedCone() {
   return core::transformed(core::makeCone(0.4, 1.3, 16), pose);
 }
 
+// The number of (face, point) pairs with the point strictly outside the face's plane, decided
+// exactly: 0 when every point lies in the closed convex solid the faces bound.
+long long pointsOutsideFaces(const core::TriangleMesh& m, const std::vector<Vector3d>& points) {
+  long long outsideCount = 0;
+  for (const core::Triangle& t : m.triangles)
+    for (const Vector3d& p : points)
+      outsideCount +=
+          core::orient3d(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], p) < 0 ? 1 : 0;
+  return outsideCount;
+}
+
+// Every vertex moved to every corner, each sum rounded to nearest (within the exact sum's box).
+std::vector<Vector3d> cornerSums(const core::TriangleMesh& block, const Vector3d& half) {
+  std::vector<Vector3d> sums;
+  for (const Vector3d& v : block.vertices)
+    for (int c = 0; c < 8; ++c)
+      sums.push_back(v + Vector3d((c & 1 ? 1 : -1) * half.x(), (c & 2 ? 1 : -1) * half.y(),
+                                  (c & 4 ? 1 : -1) * half.z()));
+  return sums;
+}
+
 }  // namespace
 
 TEST_CASE("a block grown by a box is the convex hull of every vertex moved to every corner") {
@@ -67,6 +89,32 @@ TEST_CASE("a block grown by a box is the convex hull of every vertex moved to ev
       REQUIRE(found);
     }
   }
+}
+
+TEST_CASE("a block grown by a box is exactly convex and holds every corner sum, however turned") {
+  // Thin posts, flat disks, boxes and a large sphere, turned by 1e-9 to 10 degrees about each
+  // axis: a sweep that took each face's side from the sign of a rounded normal broke here (a
+  // post turned 1e-5 degrees about x lost the pixel the conservative mode must see).
+  const std::vector<core::TriangleMesh> shapes = {
+      core::makeCylinder(0.025, 0.1, 24), core::makeCylinder(9, 0.0025, 32),
+      core::makeBox(0.5, 0.5, 0.5),       core::makeBox(2, 0.01, 1),
+      core::makeSphere(9, 24, 12),        core::makeCappedCone(0.3, 0.1, 0.5, 16, 4)};
+  const Vector3d half(0.035, 0.035, 1.5e-8);
+  int checked = 0;
+  for (std::size_t s = 0; s < shapes.size(); ++s)
+    for (int axis = 0; axis < 3; ++axis)
+      for (const double degrees : {1e-9, 1e-7, 1e-5, 1e-3, 0.1, 10.0}) {
+        const Eigen::Affine3d pose(
+            Eigen::AngleAxisd(degrees * 3.14159265358979323846 / 180.0, Vector3d::Unit(axis)));
+        const core::TriangleMesh block = core::transformed(shapes[s], pose);
+        const core::TriangleMesh g = core::grownByBox(block, half);
+        INFO("shape " << s << ", axis " << axis << ", " << degrees << " degrees");
+        REQUIRE(core::signedVolume(g) > 0.0);
+        CHECK(pointsOutsideFaces(g, g.vertices) == 0);               // exactly convex
+        CHECK(pointsOutsideFaces(g, cornerSums(block, half)) == 0);  // holds A + S
+        ++checked;
+      }
+  CHECK(checked == 108);
 }
 
 TEST_CASE("a box grown by a box is the larger box, with the summed volume") {
