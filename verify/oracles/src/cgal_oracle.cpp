@@ -190,6 +190,21 @@ bool exactlyIntersect(const core::TriangleMesh& worldA, const core::TriangleMesh
   return closedSolidsIntersect(pair.a, pair.b);
 }
 
+bool grownBlockMeets(const core::TriangleMesh& worldA, const Eigen::Vector3d& half,
+                     const core::TriangleMesh& worldB) {
+  const ExactPair pair = toExactPair(worldA, worldB);
+  std::vector<Point> sums;
+  sums.reserve(8 * worldA.vertices.size());
+  for (const Eigen::Vector3d& v : worldA.vertices)
+    for (int c = 0; c < 8; ++c)
+      sums.emplace_back(Kernel::FT(v.x()) + Kernel::FT((c & 1 ? 1 : -1) * half.x()),
+                        Kernel::FT(v.y()) + Kernel::FT((c & 2 ? 1 : -1) * half.y()),
+                        Kernel::FT(v.z()) + Kernel::FT((c & 4 ? 1 : -1) * half.z()));
+  Mesh grown;
+  CGAL::convex_hull_3(sums.begin(), sums.end(), grown);
+  return closedSolidsIntersect(grown, pair.b);
+}
+
 ExactIntersection exactIntersection(const core::TriangleMesh& worldA,
                                     const core::TriangleMesh& worldB) {
   const ExactPair pair = toExactPair(worldA, worldB);

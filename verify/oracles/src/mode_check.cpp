@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "recode/raster/cpu_device.hpp"
-#include "recode/refine/block_growth.hpp"
+#include "recode/raster/state.hpp"
 #include "recode/verify/cgal_oracle.hpp"
 
 namespace recode::verify {
@@ -16,6 +16,21 @@ using Clock = std::chrono::steady_clock;
 
 double microsecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::micro>(Clock::now() - start).count();
+}
+
+// The bound a conservative extra must keep: the grown blocks meet only if A and B differ by a
+// vector of S - S (twice the growth), and the device may report grown blocks that only come
+// within its rounding of each other (kEdgeTolerancePixels across, kDepthToleranceLsb depth
+// steps of the grown pair's range along the view).
+Eigen::Vector3d extraBound(const core::FrameSpec& frame, const core::ConservativeResult& r) {
+  Eigen::Vector3d bound = 2.0 * r.growth;
+  const int d = static_cast<int>(frame.axis);
+  const int u = (d + 1) % 3, v = (d + 2) % 3;
+  bound[u] += kEdgeTolerancePixels * (frame.window.umax - frame.window.umin) / frame.width;
+  bound[v] += kEdgeTolerancePixels * (frame.window.vmax - frame.window.vmin) / frame.height;
+  bound[d] += kDepthToleranceLsb * (r.pair.depthMax - r.pair.depthMin) /
+              static_cast<double>(raster::kDepthMax);
+  return bound;
 }
 
 void score(MissExtra& m, bool found, bool truth) {
@@ -51,8 +66,7 @@ ModeCheck checkModes(const core::TriangleMesh& a, const core::TriangleMesh& b,
   c.conservativeCollide = conservative.pair.collide;
   if (c.conservativeCollide && !exactIntersect) {
 #if RECODE_HAVE_CGAL
-    c.conservativeExtraWithinBound =
-        exactlyIntersect(core::grownByBox(a, 2.0 * conservative.growth), b);
+    c.conservativeExtraWithinBound = grownBlockMeets(a, extraBound(frame, conservative), b);
 #else
     throw std::runtime_error(
         "checking a conservative extra's bound needs the CGAL oracle (RECODE_WITH_CGAL)");

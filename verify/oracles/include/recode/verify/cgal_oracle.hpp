@@ -39,6 +39,14 @@ struct ExactIntersection {
 [[nodiscard]] bool exactlyIntersect(const core::TriangleMesh& worldA,
                                     const core::TriangleMesh& worldB);
 
+// Whether A grown by the box of half-sides `half` (the Minkowski sum A + [-h, h]^3 per axis)
+// meets B, decided exactly: the grown block is CGAL's hull of every vertex of A plus every corner
+// of the box, the sums taken exactly, so no block the program made is ever rounded or checked as
+// input. A and B are the user's blocks and are validated as exactlyIntersect validates them.
+// What `recode verify --modes` uses to check a conservative extra's bound.
+[[nodiscard]] bool grownBlockMeets(const core::TriangleMesh& worldA, const Eigen::Vector3d& half,
+                                   const core::TriangleMesh& worldB);
+
 // The tolerances of the judgement, in the units of the device (docs/verification.md).
 // An overlap or gap along the view axis within this many depth steps (LSB of 24-bit depth over
 // the pair's depth range) is within rounding: each end of a depth interval is off by at most
