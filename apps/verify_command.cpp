@@ -137,10 +137,7 @@ int runVerifyCommand(const VerifyOptions& o) {
     std::cout << j.dump(2) << '\n';
   } else
     printVerifyReport(std::cout, run, o.verbose);
-  // The conservative mode's guarantees: nothing missed, every extra within its bound.
-  const bool modesHold = !run.modes || (run.modes->conservative.missed == 0 &&
-                                        run.modes->conservativeExtrasBeyondBound == 0);
-  return run.totals.passed() && modesHold ? 0 : 2;
+  return verifyRunPassed(run) ? 0 : 2;
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <iomanip>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "recode/io/printable.hpp"
 
@@ -39,7 +41,7 @@ void printDifferences(std::ostream& out, const std::vector<verify::GlDifference>
 }
 
 bool worthShowing(const verify::PairVerification& p) {
-  return !p.passed() || (p.cgal && p.cgal->verdict == verify::VerdictCheck::ResolutionMiss);
+  return !p.passed() || (p.cgal && p.cgal->verdict != verify::VerdictCheck::Agree);
 }
 
 void printPair(std::ostream& out, const verify::PairVerification& p) {
@@ -122,6 +124,25 @@ ordered_json pairJson(const verify::PairVerification& p) {
 
 }  // namespace
 
+// What made the run fail, for the verdict line.
+std::string failures(const VerifyRun& run) {
+  std::vector<std::string> parts;
+  if (!run.totals.passed())
+    parts.push_back(std::to_string(run.totals.failedPairs) + " pairs with unexplained differences");
+  if (run.modes && !run.modes->promisesHold()) {
+    const verify::ModeCounts& m = *run.modes;
+    parts.push_back(
+        "modes broke their promises: conservative missed " + std::to_string(m.conservative.missed) +
+        ", below the reference " + std::to_string(m.conservativeBelowReference) +
+        ", extras beyond the bound " + std::to_string(m.conservativeExtrasBeyondBound) +
+        "; adaptive definite apart on intersecting pairs " + std::to_string(m.adaptive.missed));
+  }
+  std::string out;
+  for (const std::string& p : parts)
+    out += (out.empty() ? "" : "; ") + p;
+  return out;
+}
+
 void printModes(std::ostream& out, const verify::ModeCounts& m) {
   const auto row = [&out](const char* name, const verify::MissExtra& e) {
     out << "    " << name << e.found << " found, " << e.missed << " missed, " << e.extra
@@ -134,7 +155,8 @@ void printModes(std::ostream& out, const verify::ModeCounts& m) {
       << " intersect), missed by the reference but seen at finer pixels " << m.seenFiner << ", "
       << m.adaptiveRuns << " pair runs, deepest level " << m.deepestLevel << '\n';
   row("conservative  ", m.conservative);
-  out << "      extras beyond the bound (CGAL) " << m.conservativeExtrasBeyondBound << '\n';
+  out << "      extras beyond the bound (CGAL) " << m.conservativeExtrasBeyondBound
+      << ", apart where the reference collides " << m.conservativeBelowReference << '\n';
   out << "    time, ms: reference " << m.referenceUs / 1000 << ", adaptive " << m.adaptiveUs / 1000
       << ", conservative " << m.conservativeUs / 1000 << '\n';
 }
@@ -155,10 +177,15 @@ ordered_json modesJson(const verify::ModeCounts& m) {
           {"deepest_level", m.deepestLevel},
           {"conservative", missExtraJson(m.conservative)},
           {"conservative_extras_beyond_bound", m.conservativeExtrasBeyondBound},
+          {"conservative_below_reference", m.conservativeBelowReference},
           {"timing_us",
            {{"reference", m.referenceUs},
             {"adaptive", m.adaptiveUs},
             {"conservative", m.conservativeUs}}}};
+}
+
+bool verifyRunPassed(const VerifyRun& run) {
+  return run.totals.passed() && (!run.modes || run.modes->promisesHold());
 }
 
 void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) {
@@ -169,7 +196,9 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
   for (const verify::PairVerification& p : run.pairs)
     if (everyPair || worthShowing(p)) {
       if (!listed)
-        out << (everyPair ? "pairs:\n" : "pairs worth a look (failures, resolution misses):\n");
+        out << (everyPair ? "pairs:\n"
+                          : "pairs worth a look (failures, resolution misses, extras within "
+                            "rounding):\n");
       listed = true;
       printPair(out, p);
     }
@@ -179,8 +208,9 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
         << t.embreeSeconds << " s)\n";
   if (run.oracles.cgal)
     out << "  cgal    " << t.cgal.pairs << " pairs: " << t.cgal.agree << " agree, "
-        << t.cgal.resolutionMisses << " resolution misses, " << t.cgal.disagree << " disagree  ("
-        << t.cgalSeconds << " s)\n";
+        << t.cgal.resolutionMisses << " resolution misses, " << t.cgal.roundingExtras
+        << " extras within rounding, " << t.cgal.disagree << " disagree  (" << t.cgalSeconds
+        << " s)\n";
   if (run.oracles.gl)
     out << "  gl      " << glLine(t.gl) << "  (" << t.glSeconds << " s)\n";
   if (run.oracles.glExact)
@@ -198,11 +228,7 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
         << v.sceneStencilPixels << "), time " << v.recodeUs / 1000 << " ms (scene axis "
         << v.sceneRecodeUs / 1000 << " ms)\n";
   }
-  out << "verdict: "
-      << (t.passed() ? "VERIFIED"
-                     : "FAILED (" + std::to_string(t.failedPairs) +
-                           " pairs with unexplained "
-                           "differences)")
+  out << "verdict: " << (verifyRunPassed(run) ? "VERIFIED" : "FAILED (" + failures(run) + ")")
       << '\n';
 }
 
@@ -235,6 +261,7 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
     j["cgal"] = {{"pairs", t.cgal.pairs},
                  {"agree", t.cgal.agree},
                  {"resolution_misses", t.cgal.resolutionMisses},
+                 {"extras_within_rounding", t.cgal.roundingExtras},
                  {"disagree", t.cgal.disagree},
                  {"seconds", t.cgalSeconds}};
   if (run.oracles.gl) {
@@ -261,7 +288,7 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
                       {"scene_stencil_pixels_read", v.sceneStencilPixels},
                       {"timing_us", {{"chosen", v.recodeUs}, {"scene", v.sceneRecodeUs}}}};
   }
-  j["passed"] = t.passed();
+  j["passed"] = verifyRunPassed(run);
   return j;
 }
 

@@ -40,6 +40,10 @@ struct VerifyRun {
   std::optional<ViewAxisTotals> viewAxis;
 };
 
+// The run's verdict, which the report prints and the exit status gives: every pair passed its
+// oracles and, with --modes, the modes kept their promises (verify::ModeCounts::promisesHold).
+[[nodiscard]] bool verifyRunPassed(const VerifyRun& run);
+
 // Per-pair lines for failing pairs and resolution misses, every pair when `everyPair`; then the
 // totals of each oracle that ran and the overall verdict.
 void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair);

@@ -256,8 +256,8 @@ void judgeTouch(const JudgeFrame& f, const core::TriangleMesh& a, const core::Tr
       << f.inSteps(worstGap) << " depth steps) apart, beyond the tolerance " << f.tolerance << " ("
       << kDepthToleranceLsb << " steps)";
   } else {
-    j.verdict = VerdictCheck::ResolutionMiss;
-    s << "resolution miss (touching within rounding): at all " << scan.interfering
+    j.verdict = VerdictCheck::RoundingExtra;
+    s << "extra within rounding (the blocks touch within rounding): at all " << scan.interfering
       << " interfering pixels the blocks come within " << std::max(worstGap, 0.0) << " ("
       << f.inSteps(std::max(worstGap, 0.0)) << " depth steps, largest at pixel (" << j.pixelX
       << ", " << j.pixelY << ")) of each other near the centre, within the tolerance "
@@ -363,6 +363,8 @@ std::string_view toString(VerdictCheck check) {
       return "agree";
     case VerdictCheck::ResolutionMiss:
       return "resolution miss";
+    case VerdictCheck::RoundingExtra:
+      return "extra within rounding";
     case VerdictCheck::Disagree:
       return "disagree";
   }
@@ -401,6 +403,9 @@ void CgalCounts::add(const CgalJudgement& judgement) {
       break;
     case VerdictCheck::ResolutionMiss:
       ++resolutionMisses;
+      break;
+    case VerdictCheck::RoundingExtra:
+      ++roundingExtras;
       break;
     case VerdictCheck::Disagree:
       ++disagree;

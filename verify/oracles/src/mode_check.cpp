@@ -88,6 +88,7 @@ void ModeCounts::add(const ModeCheck& c) {
   score(conservative, c.conservativeCollide, c.exactIntersect);
   seenFiner += c.seenFiner ? 1 : 0;
   conservativeExtrasBeyondBound += c.conservativeExtraWithinBound ? 0 : 1;
+  conservativeBelowReference += c.referenceCollide && !c.conservativeCollide ? 1 : 0;
   adaptiveRuns += c.adaptiveRuns;
   deepestLevel = std::max(deepestLevel, c.adaptiveLevel);
   referenceUs += c.referenceUs;

@@ -60,10 +60,12 @@ inline constexpr double kEdgeTolerancePixels = 1.0 / 256.0;
 
 enum class VerdictCheck {
   Agree,           // same verdict (and, when both collide, the contact box fits)
-  ResolutionMiss,  // different verdicts, explained by the resolution (see judgePair)
+  ResolutionMiss,  // CGAL intersect, RECODE apart: no pixel could see the overlap (judgePair)
+  RoundingExtra,   // CGAL apart, RECODE collide: a touch within the device's rounding (judgePair)
   Disagree,        // anything else: a bug in RECODE or in the oracle
 };
-[[nodiscard]] std::string_view toString(VerdictCheck check);  // "agree", "resolution miss", ...
+[[nodiscard]] std::string_view toString(
+    VerdictCheck check);  // "agree", "resolution miss", "extra within rounding", ...
 
 struct CgalJudgement {
   VerdictCheck verdict = VerdictCheck::Agree;
@@ -87,7 +89,7 @@ struct CgalJudgement {
 };
 
 // Compares RECODE's result for the pair (worldA, worldB) rendered in `frame` with the exact
-// answer. Different verdicts are a ResolutionMiss when
+// answer. Different verdicts are a ResolutionMiss (a) or a RoundingExtra (b) when
 //  (a) CGAL says intersect, RECODE says apart, and no pixel can be shown to have needed to see
 //      the overlap: a pixel must see it when, at all four corners of the square of half-size
 //      kEdgeTolerancePixels around its centre, the view lines meet both blocks and the overlap
@@ -120,7 +122,8 @@ struct CgalJudgement {
 struct CgalCounts {
   long long pairs = 0;
   long long agree = 0;
-  long long resolutionMisses = 0;
+  long long resolutionMisses = 0;  // RECODE apart where CGAL intersects, explained
+  long long roundingExtras = 0;    // RECODE collide where CGAL is apart, explained
   long long disagree = 0;
 
   void add(const CgalJudgement& judgement);

@@ -45,11 +45,20 @@ struct ModeCounts {
   long long apartAtLimit = 0;      // adaptive verdicts apart_at_limit (neither missed nor extra)
   long long apartAtLimitTrue = 0;  // of them, pairs CGAL says intersect
   long long conservativeExtrasBeyondBound = 0;
+  long long conservativeBelowReference = 0;  // reference collide, conservative apart
   long long adaptiveRuns = 0;
   int deepestLevel = 0;
   double referenceUs = 0.0, adaptiveUs = 0.0, conservativeUs = 0.0;
 
   void add(const ModeCheck& check);
+
+  // The modes' promises (docs/accuracy.md): the conservative mode misses nothing, says collide
+  // wherever the reference does and keeps every extra within its bound; the adaptive mode says
+  // a definite apart for no pair that intersects (its misses, apart_at_limit aside).
+  [[nodiscard]] bool promisesHold() const {
+    return conservative.missed == 0 && conservativeBelowReference == 0 &&
+           conservativeExtrasBeyondBound == 0 && adaptive.missed == 0;
+  }
 };
 
 }  // namespace recode::verify
