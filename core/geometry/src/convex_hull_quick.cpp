@@ -10,9 +10,9 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <numeric>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -22,18 +22,31 @@
 namespace recode::core::detail {
 namespace {
 
+constexpr std::size_t kNoFace = std::numeric_limits<std::size_t>::max();
+
 struct Face {
   Triangle v;
+  // The face across edge v[i] -> v[i + 1], in the same direction reversed.
+  std::array<std::size_t, 3> neighbour{kNoFace, kNoFace, kNoFace};
   bool alive = true;
   std::vector<VertexIndex> outside;  // points strictly in front of this face
+  // The last eye that looked at this face (addFarthestPoint's walk) and what it saw.
+  std::size_t visitedBy = kNoFace;
+  bool visible = false;
 };
+
+Face faceOf(const Triangle& t) {
+  Face f;
+  f.v = t;
+  return f;
+}
 
 class QuickHull {
  public:
   explicit QuickHull(std::span<const Eigen::Vector3d> points) : points_(points) {}
 
   std::vector<Triangle> run() {
-    edgeFace_.reserve(6 * points_.size());  // at most 2n - 4 faces alive, 3 edges each
+    newFaceFrom_.assign(points_.size(), kNoFace);
     start();
     while (!pending_.empty()) {
       const std::size_t f = pending_.back();
@@ -78,8 +91,17 @@ class QuickHull {
       // Outward: the fourth point lies behind (below) the face.
       if (orient3d(p(t[0]), p(t[1]), p(t[2]), p(s[static_cast<std::size_t>(skip)])) < 0)
         std::swap(t[1], t[2]);
-      addFace(t);
+      faces_.push_back(faceOf(t));
     }
+    // Each edge of the tetrahedron is shared by the two faces that hold its ends.
+    for (std::size_t f = 0; f < 4; ++f)
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t g = 0; g < 4; ++g)
+          if (g != f) {
+            const std::size_t j = edgeIndex(faces_[g].v, faces_[f].v[(i + 1) % 3], faces_[f].v[i]);
+            if (j < 3)
+              faces_[f].neighbour[i] = g;
+          }
     std::vector<VertexIndex> rest;
     for (VertexIndex i = 0; i < points_.size(); ++i) {
       if (std::find(s.begin(), s.end(), i) == s.end())
@@ -100,13 +122,19 @@ class QuickHull {
     std::vector<VertexIndex> all(n);
     std::iota(all.begin(), all.end(), VertexIndex{0});
     const VertexIndex a = *std::min_element(all.begin(), all.end(), lexLess);
+    // The highest-scoring point the exact test accepts, ties to the lower index: a heap, so
+    // that the usual case (the first candidate passes) costs one pass, not a sort.
     const auto firstExact = [&](auto score, auto accept) {
       std::vector<std::pair<double, VertexIndex>> ranked;
       ranked.reserve(n);
       for (VertexIndex i = 0; i < n; ++i)
         ranked.emplace_back(-score(i), i);
-      std::sort(ranked.begin(), ranked.end());
-      for (const auto& [negScore, i] : ranked) {
+      const auto after = std::greater<std::pair<double, VertexIndex>>();
+      std::make_heap(ranked.begin(), ranked.end(), after);
+      while (!ranked.empty()) {
+        std::pop_heap(ranked.begin(), ranked.end(), after);
+        const VertexIndex i = ranked.back().second;
+        ranked.pop_back();
         if (accept(i))
           return i;
       }
@@ -123,12 +151,12 @@ class QuickHull {
     return {a, b, c, d};
   }
 
-  std::size_t addFace(const Triangle& t) {
-    const std::size_t f = faces_.size();
-    faces_.push_back(Face{t, true, {}});
+  // The index i of the directed edge from -> to in t (t[i] == from, t[i + 1] == to), or 3.
+  static std::size_t edgeIndex(const Triangle& t, VertexIndex from, VertexIndex to) {
     for (std::size_t i = 0; i < 3; ++i)
-      edgeFace_[edgeKey(t[i], t[(i + 1) % 3])] = f;
-    return f;
+      if (t[i] == from && t[(i + 1) % 3] == to)
+        return i;
+    return 3;
   }
 
   // Puts each point into the outside set of the first face from `firstFace` on that it sees;
@@ -155,24 +183,29 @@ class QuickHull {
         waiting.begin(), waiting.end(),
         [&](VertexIndex x, VertexIndex y) { return height(x, startFace) < height(y, startFace); });
 
-    // The faces the eye sees, by a walk over neighbours; the boundary edges on the way.
+    // The faces the eye sees, by a walk over neighbours; the boundary edges on the way, each
+    // with the face beyond it that stays.
+    struct HorizonEdge {
+      VertexIndex u, v;
+      std::size_t beyond;
+    };
     std::vector<std::size_t> visible{start};
-    std::unordered_map<std::size_t, bool> seen{{start, true}};
-    std::vector<std::pair<VertexIndex, VertexIndex>> horizon;
+    faces_[start].visitedBy = eye;
+    faces_[start].visible = true;
+    std::vector<HorizonEdge> horizon;
     for (std::size_t k = 0; k < visible.size(); ++k) {
-      const Triangle t = faces_[visible[k]].v;
+      const Face& face = faces_[visible[k]];
       for (std::size_t i = 0; i < 3; ++i) {
-        const VertexIndex u = t[i];
-        const VertexIndex v = t[(i + 1) % 3];
-        const std::size_t g = edgeFace_.at(edgeKey(v, u));
-        auto [it, added] = seen.emplace(g, false);
-        if (added) {
-          it->second = sees(eye, g);
-          if (it->second)
+        const std::size_t g = face.neighbour[i];
+        Face& other = faces_[g];
+        if (other.visitedBy != eye) {
+          other.visitedBy = eye;
+          other.visible = sees(eye, g);
+          if (other.visible)
             visible.push_back(g);
         }
-        if (!it->second)
-          horizon.emplace_back(u, v);
+        if (!other.visible)
+          horizon.push_back({face.v[i], face.v[(i + 1) % 3], g});
       }
     }
 
@@ -186,23 +219,31 @@ class QuickHull {
       }
       face.outside.clear();
       face.outside.shrink_to_fit();
-      for (std::size_t i = 0; i < 3; ++i) {
-        const auto key = edgeKey(face.v[i], face.v[(i + 1) % 3]);
-        const auto it = edgeFace_.find(key);
-        if (it != edgeFace_.end() && it->second == f)
-          edgeFace_.erase(it);
-      }
     }
+    // A new face (u, v, eye) per horizon edge: across u -> v the face that stays; across
+    // v -> eye the new face of the horizon edge that starts at v, across eye -> u the one that
+    // ends at u (the horizon is one cycle).
     const std::size_t firstNew = faces_.size();
-    for (const auto& [u, v] : horizon)
-      addFace({u, v, eye});
+    for (const HorizonEdge& e : horizon) {
+      const std::size_t f = faces_.size();
+      faces_.push_back(faceOf({e.u, e.v, eye}));
+      faces_[f].neighbour[0] = e.beyond;
+      Face& beyond = faces_[e.beyond];
+      beyond.neighbour[edgeIndex(beyond.v, e.v, e.u)] = f;
+      newFaceFrom_[e.u] = f;
+    }
+    for (std::size_t f = firstNew; f < faces_.size(); ++f) {
+      Face& face = faces_[f];
+      face.neighbour[1] = newFaceFrom_[face.v[1]];
+      faces_[face.neighbour[1]].neighbour[2] = f;
+    }
     assign(orphans, firstNew);
   }
 
   std::span<const Eigen::Vector3d> points_;
   std::vector<Face> faces_;
-  std::unordered_map<std::uint64_t, std::size_t> edgeFace_;  // directed edge -> its face
-  std::vector<std::size_t> pending_;                         // faces that may have outside points
+  std::vector<std::size_t> pending_;      // faces that may have outside points
+  std::vector<std::size_t> newFaceFrom_;  // per horizon vertex u, the new face (u, v, eye)
 };
 
 }  // namespace

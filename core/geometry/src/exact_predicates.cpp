@@ -11,15 +11,14 @@
 
 #include "recode/geometry/exact_predicates.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
+#include <stdexcept>
 
 namespace recode::core {
 namespace {
-
-using Expansion = std::vector<double>;
 
 // s + e == a + b exactly, |e| <= ulp(s) / 2.
 inline void twoSum(double a, double b, double& s, double& e) {
@@ -35,50 +34,66 @@ inline void twoProduct(double a, double b, double& p, double& e) {
   e = std::fma(a, b, -p);
 }
 
-// e += b, keeping e non-overlapping, increasing and free of zeros.
-void grow(Expansion& e, double b) {
-  double q = b;
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < e.size(); ++i) {
-    double sum = 0.0;
-    double err = 0.0;
-    twoSum(q, e[i], sum, err);
-    q = sum;
-    if (err != 0.0)
-      e[out++] = err;
+// An expansion held on the stack: the exact paths below never need more components than the
+// doubles summed into them, at most 192 (orient3d: three products of a two-component difference
+// with a 16-component minor, each summing 2 x 16 two-products of two doubles). No allocation:
+// the hull of a block with large coplanar faces takes this path for most of its tests.
+class Expansion {
+ public:
+  static constexpr std::size_t kCapacity = 192;
+
+  [[nodiscard]] std::size_t size() const { return size_; }
+  [[nodiscard]] bool empty() const { return size_ == 0; }
+  [[nodiscard]] double operator[](std::size_t i) const { return parts_[i]; }
+  [[nodiscard]] double back() const { return parts_[size_ - 1]; }
+
+  // this += b, keeping the components non-overlapping, increasing and free of zeros.
+  void grow(double b) {
+    double q = b;
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < size_; ++i) {
+      double sum = 0.0;
+      double err = 0.0;
+      twoSum(q, parts_[i], sum, err);
+      q = sum;
+      if (err != 0.0)
+        parts_[out++] = err;
+    }
+    if (q != 0.0) {
+      if (out == kCapacity)
+        throw std::logic_error("exact predicates: an expansion outgrew its capacity");
+      parts_[out++] = q;
+    }
+    size_ = out;
   }
-  e.resize(out);
-  if (q != 0.0)
-    e.push_back(q);
-}
+
+ private:
+  std::array<double, kCapacity> parts_;
+  std::size_t size_ = 0;
+};
 
 Expansion fromDifference(double a, double b) {
   Expansion e;
-  grow(e, a);
-  grow(e, -b);
+  e.grow(a);
+  e.grow(-b);
   return e;
 }
 
-void add(Expansion& e, const Expansion& f) {
-  for (const double x : f)
-    grow(e, x);
-}
-
-Expansion negated(Expansion e) {
-  for (double& x : e)
-    x = -x;
-  return e;
+// e += sign * f (sign +1 or -1: exact).
+void add(Expansion& e, const Expansion& f, double sign = 1.0) {
+  for (std::size_t i = 0; i < f.size(); ++i)
+    e.grow(sign * f[i]);
 }
 
 Expansion multiply(const Expansion& e, const Expansion& f) {
   Expansion product;
-  for (const double a : e) {
-    for (const double b : f) {
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    for (std::size_t j = 0; j < f.size(); ++j) {
       double p = 0.0;
       double err = 0.0;
-      twoProduct(a, b, p, err);
-      grow(product, err);
-      grow(product, p);
+      twoProduct(e[i], f[j], p, err);
+      product.grow(err);
+      product.grow(p);
     }
   }
   return product;
@@ -108,7 +123,7 @@ int orient2dExact(double a0, double a1, double b0, double b1, double c0, double 
   const Expansion bcx = fromDifference(b0, c0);
   const Expansion bcy = fromDifference(b1, c1);
   Expansion det = multiply(acx, bcy);
-  add(det, negated(multiply(acy, bcx)));
+  add(det, multiply(acy, bcx), -1.0);
   return sign(det);
 }
 
@@ -128,7 +143,7 @@ int orient3dExact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eige
   const auto minor = [](const Expansion& p, const Expansion& q, const Expansion& r,
                         const Expansion& s) {
     Expansion m = multiply(p, q);
-    add(m, negated(multiply(r, s)));
+    add(m, multiply(r, s), -1.0);
     return m;
   };
   Expansion det = multiply(adx, minor(bdy, cdz, bdz, cdy));
