@@ -183,13 +183,7 @@ struct AdaptivePairTester::Search {
       out.contactLevel = level;
       return true;
     }
-    const Aabb boxA = boundingBox(a), boxB = boundingBox(b);
-    // Every common point of A and B lies within one growth of the grown blocks' contact box
-    // (the pixel that must see it is within half a pixel across, its overlap interval holds
-    // the point's depth) and in both boxes.
-    const Eigen::Vector3d margin = 2.0 * wide.growth;
-    const Aabb region = intersection(grown(wide.pair.contact.box, margin),
-                                     intersection(grown(boxA, margin), grown(boxB, margin)));
+    const Aabb region = possibleContactRegion(a, b, wide);
     if (region.isEmpty())
       return false;
     if (last) {
@@ -197,39 +191,81 @@ struct AdaptivePairTester::Search {
       out.unresolved.extend(region);
       return false;
     }
-    const PlaneAxes ax = planeAxes(frame.axis);
-    const int side = limits.tileSide;
+    return refineTiles(a, b, region, frame, level);
+  }
+
+  // Every common point of A and B lies within one growth of the grown blocks' contact box (the
+  // pixel that must see it is within half a pixel across, its overlap interval holds the
+  // point's depth) and in both boxes: the region a finer grid must look at.
+  static Aabb possibleContactRegion(const TriangleMesh& a, const TriangleMesh& b,
+                                    const ConservativeResult& wide) {
+    const Eigen::Vector3d margin = 2.0 * wide.growth;
+    return intersection(grown(wide.pair.contact.box, margin),
+                        intersection(grown(boundingBox(a), margin), grown(boundingBox(b), margin)));
+  }
+
+  // The tiles of `region` at the next level: tileSide x tileSide pixels, `factor` times smaller
+  // per axis than the frame's, row by row from the region's lower corner; the last row and
+  // column are cut at the region's edge. nu x nv of them.
+  struct Tiling {
+    PlaneAxes ax;
+    double u0, v0, tileU, tileV;
+    int nu, nv;
+
+    [[nodiscard]] Aabb tile(const Aabb& region, int i, int j) const {
+      Aabb t = region;
+      t.min[ax.u] = u0 + i * tileU;
+      t.max[ax.u] = std::min(region.max[ax.u], u0 + (i + 1) * tileU);
+      t.min[ax.v] = v0 + j * tileV;
+      t.max[ax.v] = std::min(region.max[ax.v], v0 + (j + 1) * tileV);
+      return t;
+    }
+    // The tile's frame: the whole tile side in pixels, from the tile's lower corner.
+    [[nodiscard]] FrameSpec frame(ViewAxis axis, int side, const Aabb& t) const {
+      FrameSpec sub;
+      sub.axis = axis;
+      sub.width = side;
+      sub.height = side;
+      sub.window = {t.min[ax.u], t.min[ax.v], t.min[ax.u] + tileU, t.min[ax.v] + tileV};
+      return sub;
+    }
+  };
+
+  [[nodiscard]] Tiling tiling(const Aabb& region, const FrameSpec& frame) const {
+    Tiling t;
+    t.ax = planeAxes(frame.axis);
     const double pu = pixelU(frame) / limits.factor, pv = pixelV(frame) / limits.factor;
-    const double tileU = side * pu, tileV = side * pv;
-    const double u0 = region.min[ax.u], v0 = region.min[ax.v];
-    const int nu = std::max(1, static_cast<int>(std::ceil((region.max[ax.u] - u0) / tileU)));
-    const int nv = std::max(1, static_cast<int>(std::ceil((region.max[ax.v] - v0) / tileV)));
-    for (int j = 0; j < nv; ++j) {
-      for (int i = 0; i < nu; ++i) {
+    t.tileU = limits.tileSide * pu;
+    t.tileV = limits.tileSide * pv;
+    t.u0 = region.min[t.ax.u];
+    t.v0 = region.min[t.ax.v];
+    t.nu = std::max(1, static_cast<int>(std::ceil((region.max[t.ax.u] - t.u0) / t.tileU)));
+    t.nv = std::max(1, static_cast<int>(std::ceil((region.max[t.ax.v] - t.v0) / t.tileV)));
+    return t;
+  }
+
+  // Refines each tile of `region` holding pieces of both blocks, until one sees a contact (true)
+  // or the run limit leaves the region unresolved.
+  bool refineTiles(const TriangleMesh& a, const TriangleMesh& b, const Aabb& region,
+                   const FrameSpec& frame, int level) {
+    const Tiling tiles = tiling(region, frame);
+    for (int j = 0; j < tiles.nv; ++j) {
+      for (int i = 0; i < tiles.nu; ++i) {
         if (out.runs + 2 > limits.maxRuns) {
           hitLimit = true;
           out.unresolved.extend(region);
           return false;
         }
-        Aabb tile = region;
-        tile.min[ax.u] = u0 + i * tileU;
-        tile.max[ax.u] = std::min(region.max[ax.u], u0 + (i + 1) * tileU);
-        tile.min[ax.v] = v0 + j * tileV;
-        tile.max[ax.v] = std::min(region.max[ax.v], v0 + (j + 1) * tileV);
+        const Aabb tile = tiles.tile(region, i, j);
         const TriangleMesh ca = clippedToBox(a, tile);
         if (ca.triangles.empty())
           continue;
         const TriangleMesh cb = clippedToBox(b, tile);
         if (cb.triangles.empty())
           continue;
-        FrameSpec sub;
-        sub.axis = frame.axis;
-        sub.width = side;
-        sub.height = side;
-        sub.window = {tile.min[ax.u], tile.min[ax.v], tile.min[ax.u] + tileU,
-                      tile.min[ax.v] + tileV};
         try {
-          if (refine(tileDevice, ca, cb, tile, sub, level + 1))
+          if (refine(tileDevice, ca, cb, tile, tiles.frame(frame.axis, limits.tileSide, tile),
+                     level + 1))
             return true;
         } catch (const std::invalid_argument&) {
           // A clipped piece the view cannot map (both flat in one depth plane): unresolved.

@@ -123,6 +123,69 @@ std::string tooManyPairTests(int frame, std::size_t listed, long long limit) {
          "--max-pair-tests, or space the objects out)";
 }
 
+// The tasks the skip-apart mode proves apart (1) from each leaf's own mesh and pose, before any
+// world mesh is made or device cleared for them; none in the other modes.
+std::vector<char> provenApartTasks(const std::vector<ObjectTree>& objects,
+                                   const std::vector<PairTask>& tasks, const RunOptions& options,
+                                   PairTestRunner& runner) {
+  std::vector<char> skipped(tasks.size(), 0);
+  if (options.pairMode == PairMode::SkipApart)
+    runner.forEach(tasks.size(), [&](std::size_t i) {
+      skipped[i] = provenApart(posedLeaf(objects, tasks[i].objectA, tasks[i].leaves.leafA),
+                               posedLeaf(objects, tasks[i].objectB, tasks[i].leaves.leafB),
+                               tasks[i].request.frame);
+    });
+  return skipped;
+}
+
+// The drawn leaves' world blocks, each made once (or kept from the last frame), attached to
+// the tasks that draw them.
+void attachWorldBlocks(FrameLeafBlocks& blocks, const std::vector<ObjectTree>& objects,
+                       PairTestRunner& runner, std::vector<PairTask>& drawn) {
+  blocks.start();
+  std::vector<std::pair<std::size_t, std::size_t>> slots;  // each drawn task's two blocks
+  slots.reserve(drawn.size());
+  for (const PairTask& task : drawn)
+    slots.emplace_back(blocks.need(task.objectA, task.leaves.leafA),
+                       blocks.need(task.objectB, task.leaves.leafB));
+  blocks.make(objects, runner);
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    drawn[i].blockA = blocks.at(slots[i].first);
+    drawn[i].blockB = blocks.at(slots[i].second);
+  }
+}
+
+// Every task's result into the report, in task order: a skipped pair's result is made here, a
+// drawn one is the next of `outcomes` (the drawn tasks' in order); the tests a device error
+// left unrun come after the last outcome. An outcome's error is rethrown naming its pair.
+void collectOutcomes(const std::vector<ObjectTree>& objects, int frame,
+                     const std::vector<PairTask>& tasks, const std::vector<char>& skipped,
+                     std::vector<PairOutcome>& outcomes, FrameReport& report) {
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    const PairTask& task = tasks[i];
+    if (skipped[i]) {
+      addPairTest(report, task,
+                  skippedResult(nodeOf(objects, task.objectA, task.leaves.leafA).worldAabb,
+                                nodeOf(objects, task.objectB, task.leaves.leafB).worldAabb,
+                                task.request.frame),
+                  true);
+      continue;
+    }
+    if (next == outcomes.size())
+      break;
+    PairOutcome& outcome = outcomes[next++];
+    if (outcome.error) {
+      try {
+        std::rethrow_exception(outcome.error);
+      } catch (...) {
+        rethrowNamingPair(objects, frame, task);
+      }
+    }
+    addPairTest(report, task, std::move(outcome.result), false);
+  }
+}
+
 }  // namespace
 
 double runPixelSize(const ViewSpec& view, const Aabb& bounds, const FrameOverrides& overrides) {
@@ -230,9 +293,35 @@ FrameReport Simulation::runFrame(int frame) {
   const std::vector<std::pair<int, int>> candidates =
       overlappingObjects(objects_, broadPhase_, *pairTests_);
   report.objectPairs = static_cast<long long>(candidates.size());
+  const std::vector<PairTask> tasks = listPairTasks(candidates, frame, report);
+  const std::vector<char> skipped = provenApartTasks(objects_, tasks, options_, *pairTests_);
+  std::vector<PairTask> drawn;
+  for (std::size_t i = 0; i < tasks.size(); ++i)
+    if (!skipped[i])
+      drawn.push_back(tasks[i]);
+  attachWorldBlocks(*leafBlocks_, objects_, *pairTests_, drawn);
 
-  // The pair tests are listed first, in the order of the sequential loop (candidates, then
-  // the descent's leaf pairs), and read back in that order whatever threads ran them.
+  const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(drawn);
+  report.deviceSetupUs = setup.us;
+  std::vector<PairOutcome> outcomes = pairTests_->run(drawn, setup.usable);
+  collectOutcomes(objects_, frame, tasks, skipped, outcomes, report);
+  if (setup.error) {
+    try {
+      std::rethrow_exception(setup.error);
+    } catch (...) {
+      rethrowNamingPair(objects_, frame, drawn[setup.usable]);
+    }
+  }
+  const Clock::time_point done = Clock::now();
+  report.collisionUs = microseconds(posed, done) - report.deviceSetupUs;
+  report.frameUs = microseconds(start, done) - report.deviceSetupUs;
+  return report;
+}
+
+std::vector<PairTask> Simulation::listPairTasks(const std::vector<std::pair<int, int>>& candidates,
+                                                int frame, FrameReport& report) const {
+  // In the order of the sequential loop (candidates, then each descent's leaf pairs): the
+  // results are read back in this order whatever threads ran them.
   std::vector<PairTask> tasks;
   std::vector<LeafPair> leafPairs;
   for (const auto& [ia, ib] : candidates) {
@@ -259,74 +348,7 @@ FrameReport Simulation::runFrame(int frame) {
       tasks.push_back(task);
     }
   }
-
-  // The skip-apart mode proves pairs apart first, from each leaf's own mesh and pose, so that
-  // no world mesh is made and no device made or cleared for a pair that will not be drawn; the
-  // rest are drawn as in the reference mode.
-  std::vector<char> skipped(tasks.size(), 0);
-  if (options_.pairMode == PairMode::SkipApart)
-    pairTests_->forEach(tasks.size(), [&](std::size_t i) {
-      skipped[i] = provenApart(posedLeaf(objects_, tasks[i].objectA, tasks[i].leaves.leafA),
-                               posedLeaf(objects_, tasks[i].objectB, tasks[i].leaves.leafB),
-                               tasks[i].request.frame);
-    });
-  std::vector<PairTask> drawn;
-  for (std::size_t i = 0; i < tasks.size(); ++i)
-    if (!skipped[i])
-      drawn.push_back(tasks[i]);
-
-  // The drawn leaves' world blocks, each made once (or kept from the last frame).
-  FrameLeafBlocks& blocks = *leafBlocks_;
-  blocks.start();
-  std::vector<std::pair<std::size_t, std::size_t>> slots;  // each drawn task's two blocks
-  slots.reserve(drawn.size());
-  for (const PairTask& task : drawn)
-    slots.emplace_back(blocks.need(task.objectA, task.leaves.leafA),
-                       blocks.need(task.objectB, task.leaves.leafB));
-  blocks.make(objects_, *pairTests_);
-  for (std::size_t i = 0; i < drawn.size(); ++i) {
-    drawn[i].blockA = blocks.at(slots[i].first);
-    drawn[i].blockB = blocks.at(slots[i].second);
-  }
-
-  const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(drawn);
-  report.deviceSetupUs = setup.us;
-  std::vector<PairOutcome> outcomes = pairTests_->run(drawn, setup.usable);
-  // Read back in task order: a skipped pair's outcome is made here, a drawn one is the next of
-  // `outcomes`; the tests a device error left unrun come after the last outcome.
-  std::size_t next = 0;
-  for (std::size_t i = 0; i < tasks.size(); ++i) {
-    if (skipped[i]) {
-      addPairTest(report, tasks[i],
-                  skippedResult(nodeOf(objects_, tasks[i].objectA, tasks[i].leaves.leafA).worldAabb,
-                                nodeOf(objects_, tasks[i].objectB, tasks[i].leaves.leafB).worldAabb,
-                                tasks[i].request.frame),
-                  true);
-      continue;
-    }
-    if (next == outcomes.size())
-      break;
-    PairOutcome& outcome = outcomes[next++];
-    if (outcome.error) {
-      try {
-        std::rethrow_exception(outcome.error);
-      } catch (...) {
-        rethrowNamingPair(objects_, frame, tasks[i]);
-      }
-    }
-    addPairTest(report, tasks[i], std::move(outcome.result), false);
-  }
-  if (setup.error) {
-    try {
-      std::rethrow_exception(setup.error);
-    } catch (...) {
-      rethrowNamingPair(objects_, frame, drawn[setup.usable]);
-    }
-  }
-  const Clock::time_point done = Clock::now();
-  report.collisionUs = microseconds(posed, done) - report.deviceSetupUs;
-  report.frameUs = microseconds(start, done) - report.deviceSetupUs;
-  return report;
+  return tasks;
 }
 
 }  // namespace recode::core

@@ -30,6 +30,7 @@ namespace recode::core {
 
 class PairTestRunner;   // core/sim/src/pair_tests.hpp
 class FrameLeafBlocks;  // core/sim/src/frame_leaf_blocks.hpp
+struct PairTask;        // core/sim/src/pair_tests.hpp
 
 inline constexpr int kPairFrameGranule = 32;
 inline constexpr int kDefaultRunFrames = 100;  // when neither the scene nor the caller says
@@ -147,6 +148,11 @@ class Simulation {
   [[nodiscard]] FrameSpec leafPairFrame(const HierarchyNode& a, const HierarchyNode& b) const;
 
  private:
+  // runFrame's second step: the frame's pair tests from the overlapping object pairs (the
+  // descent's box tests counted into `report`); throws past RunOptions::maxPairTestsPerFrame.
+  [[nodiscard]] std::vector<PairTask> listPairTasks(
+      const std::vector<std::pair<int, int>>& candidates, int frame, FrameReport& report) const;
+
   std::vector<ObjectTree> objects_;
   RunOptions options_;
   ViewAxis axis_ = ViewAxis::Z;
