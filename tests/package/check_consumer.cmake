@@ -1,7 +1,9 @@
-# Builds a consumer of the library and runs it. MODE installed: configure this source tree with
-# RECODE_LIBRARY_ONLY=ON, build, install into a prefix under WORK_DIR, then build
-# tests/package/installed against that prefix. MODE subdirectory: build
-# tests/package/subdirectory, which adds the source tree itself.
+# Builds a consumer of the library and runs it; the libraries are compiled once for both modes.
+# MODE subdirectory: build tests/package/subdirectory, which adds this source tree with
+# add_subdirectory (the libraries alone, RECODE_LIBRARY_ONLY being the default there), into
+# WORK_DIR/subdirectory, and run its consumer. MODE installed (after subdirectory): install that
+# build tree's libraries with RECODE's own install rules into WORK_DIR/prefix, then build
+# tests/package/installed against the prefix with find_package(recode) and run it.
 # Arguments: -DMODE=installed|subdirectory -DRECODE_SOURCE_DIR=... -DWORK_DIR=... -DGENERATOR=...
 # [-DLAUNCHER=...]
 foreach(var MODE RECODE_SOURCE_DIR WORK_DIR GENERATOR)
@@ -22,14 +24,21 @@ function(run_step what)
   message(STATUS "${what}: ok")
 endfunction()
 
-file(REMOVE_RECURSE "${WORK_DIR}")
-if(MODE STREQUAL "installed")
-  set(prefix "${WORK_DIR}/prefix")
-  run_step("configure the libraries" ${CMAKE_COMMAND} -S "${RECODE_SOURCE_DIR}"
-           -B "${WORK_DIR}/library" ${common} -DRECODE_LIBRARY_ONLY=ON
-           "-DCMAKE_INSTALL_PREFIX=${prefix}")
-  run_step("build the libraries" ${CMAKE_COMMAND} --build "${WORK_DIR}/library" -j 2)
-  run_step("install the libraries" ${CMAKE_COMMAND} --install "${WORK_DIR}/library")
+set(library_build "${WORK_DIR}/subdirectory")
+set(prefix "${WORK_DIR}/prefix")
+if(MODE STREQUAL "subdirectory")
+  file(REMOVE_RECURSE "${WORK_DIR}")
+  set(consumer_build "${library_build}")
+  run_step("configure the consumer and the libraries" ${CMAKE_COMMAND}
+           -S "${RECODE_SOURCE_DIR}/tests/package/subdirectory" -B "${consumer_build}" ${common}
+           "-DRECODE_SOURCE_DIR=${RECODE_SOURCE_DIR}" "-DCMAKE_INSTALL_PREFIX=${prefix}")
+elseif(MODE STREQUAL "installed")
+  if(NOT EXISTS "${library_build}/CMakeCache.txt")
+    message(FATAL_ERROR "no library build in ${library_build}: run package/consumer-subdirectory "
+                        "first (ctest does: it is this test's fixture)")
+  endif()
+  file(REMOVE_RECURSE "${prefix}" "${WORK_DIR}/installed")
+  run_step("install the libraries" ${CMAKE_COMMAND} --install "${library_build}")
   foreach(file include/recode/pair/pair.hpp include/recode/raster/fragment_stage.hpp
                include/recode/api/collision.hpp
                lib/cmake/recode/recodeConfig.cmake)
@@ -37,14 +46,11 @@ if(MODE STREQUAL "installed")
       message(FATAL_ERROR "the install has no ${file}")
     endif()
   endforeach()
-  set(consumer_args -S "${RECODE_SOURCE_DIR}/tests/package/installed" "-DCMAKE_PREFIX_PATH=${prefix}")
-elseif(MODE STREQUAL "subdirectory")
-  set(consumer_args -S "${RECODE_SOURCE_DIR}/tests/package/subdirectory"
-                    "-DRECODE_SOURCE_DIR=${RECODE_SOURCE_DIR}")
+  set(consumer_build "${WORK_DIR}/installed")
+  run_step("configure the consumer" ${CMAKE_COMMAND} -S "${RECODE_SOURCE_DIR}/tests/package/installed"
+           -B "${consumer_build}" ${common} "-DCMAKE_PREFIX_PATH=${prefix}")
 else()
   message(FATAL_ERROR "check_consumer.cmake: MODE is installed or subdirectory, not ${MODE}")
 endif()
-run_step("configure the consumer" ${CMAKE_COMMAND} ${consumer_args} -B "${WORK_DIR}/consumer"
-         ${common})
-run_step("build the consumer" ${CMAKE_COMMAND} --build "${WORK_DIR}/consumer" -j 2)
-run_step("run the consumer" "${WORK_DIR}/consumer/consumer")
+run_step("build the consumer" ${CMAKE_COMMAND} --build "${consumer_build}" -j 2)
+run_step("run the consumer" "${consumer_build}/consumer")
