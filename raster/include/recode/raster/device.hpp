@@ -1,8 +1,8 @@
 #pragma once
 // The seam between the RECODE algorithm and a depth/stencil machine: a small subset of
 // OpenGL's per-fragment pipeline, expressed as plain commands. Every back end (the CPU
-// reference, OSMesa, a future CUDA/Vulkan device) implements this interface, so the same
-// command stream runs on all of them. The exact semantics are in docs/rasterization.md.
+// reference, fixed-function OpenGL, the exact OpenGL and Vulkan devices) implements this
+// interface, so the same command stream runs on all of them. The exact semantics are in docs/rasterization.md.
 
 #include <cstdint>
 #include <span>
