@@ -1,4 +1,4 @@
-// The device seam: a DepthStencilDevice of our own, here a thin wrapper that counts draws and
+// The device seam: a DepthStencilDevice of our own, here a ForwardingDevice that counts draws and
 // hands every command to the CPU reference device, given to the API through a device factory.
 // A GPU back end plugs in the same way (docs/architecture.md, "The device seam").
 #include <cstdio>
@@ -8,44 +8,25 @@
 #include "recode/api/collision.hpp"
 #include "recode/geometry/generators.hpp"
 #include "recode/raster/cpu_device.hpp"
+#include "recode/raster/forwarding_device.hpp"
 
 namespace {
 
 namespace raster = recode::raster;
 
-class CountingDevice final : public raster::DepthStencilDevice {
+// Everything goes to the CPU device it owns (ForwardingDevice); only the draws are counted.
+class CountingDevice final : public raster::ForwardingDevice {
  public:
-  CountingDevice(int width, int height, long long& draws) : cpu_(width, height), draws_(draws) {}
+  CountingDevice(int width, int height, long long& draws)
+      : ForwardingDevice(std::make_unique<raster::CpuDevice>(width, height)), draws_(draws) {}
 
-  int width() const override { return cpu_.width(); }
-  int height() const override { return cpu_.height(); }
-  void setScissor(const raster::PixelRect& rect) override { cpu_.setScissor(rect); }
-  void clearDepth(double depth) override { cpu_.clearDepth(depth); }
-  void clearStencil(std::uint8_t value) override { cpu_.clearStencil(value); }
-  void setDepthFunc(raster::CompareFunc func) override { cpu_.setDepthFunc(func); }
-  void setDepthWriteMask(bool write) override { cpu_.setDepthWriteMask(write); }
-  void setStencilFunc(raster::CompareFunc func, std::uint8_t ref, std::uint8_t mask) override {
-    cpu_.setStencilFunc(func, ref, mask);
-  }
-  void setStencilOps(raster::Face face, const raster::StencilOps& ops) override {
-    cpu_.setStencilOps(face, ops);
-  }
-  void setStencilWriteMask(std::uint8_t mask) override { cpu_.setStencilWriteMask(mask); }
-  void setCullMode(raster::CullMode mode) override { cpu_.setCullMode(mode); }
   void drawTriangles(std::span<const raster::WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override {
     ++draws_;
-    cpu_.drawTriangles(vertices, indices);
-  }
-  std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override {
-    return cpu_.readStencil(rect);
-  }
-  std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override {
-    return cpu_.readDepth(rect);
+    ForwardingDevice::drawTriangles(vertices, indices);
   }
 
  private:
-  raster::CpuDevice cpu_;
   long long& draws_;
 };
 

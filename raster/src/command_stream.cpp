@@ -72,50 +72,50 @@ bool applyToState(const Command& command, RenderState& state, int width, int hei
       command);
 }
 
-RecordingDevice::RecordingDevice(DepthStencilDevice& inner) : inner_(inner) {
+RecordingDevice::RecordingDevice(DepthStencilDevice& inner) : ForwardingDevice(inner) {
   stream_.width = inner.width();
   stream_.height = inner.height();
 }
 
 void RecordingDevice::setScissor(const PixelRect& rect) {
+  ForwardingDevice::setScissor(rect);
   stream_.commands.emplace_back(cmd::Scissor{rect});
-  inner_.setScissor(rect);
 }
 void RecordingDevice::clearDepth(double depth) {
+  ForwardingDevice::clearDepth(depth);
   stream_.commands.emplace_back(cmd::ClearDepth{depth});
-  inner_.clearDepth(depth);
 }
 void RecordingDevice::clearStencil(std::uint8_t value) {
+  ForwardingDevice::clearStencil(value);
   stream_.commands.emplace_back(cmd::ClearStencil{value});
-  inner_.clearStencil(value);
 }
 void RecordingDevice::setDepthFunc(CompareFunc func) {
+  ForwardingDevice::setDepthFunc(func);
   stream_.commands.emplace_back(cmd::DepthFunc{func});
-  inner_.setDepthFunc(func);
 }
 void RecordingDevice::setDepthWriteMask(bool write) {
+  ForwardingDevice::setDepthWriteMask(write);
   stream_.commands.emplace_back(cmd::DepthWriteMask{write});
-  inner_.setDepthWriteMask(write);
 }
 void RecordingDevice::setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) {
+  ForwardingDevice::setStencilFunc(func, ref, valueMask);
   stream_.commands.emplace_back(cmd::StencilFunc{func, ref, valueMask});
-  inner_.setStencilFunc(func, ref, valueMask);
 }
 void RecordingDevice::setStencilOps(Face face, const StencilOps& ops) {
+  ForwardingDevice::setStencilOps(face, ops);
   stream_.commands.emplace_back(cmd::StencilOpsCmd{face, ops});
-  inner_.setStencilOps(face, ops);
 }
 void RecordingDevice::setStencilWriteMask(std::uint8_t mask) {
+  ForwardingDevice::setStencilWriteMask(mask);
   stream_.commands.emplace_back(cmd::StencilWriteMask{mask});
-  inner_.setStencilWriteMask(mask);
 }
 void RecordingDevice::setCullMode(CullMode mode) {
+  ForwardingDevice::setCullMode(mode);
   stream_.commands.emplace_back(cmd::Cull{mode});
-  inner_.setCullMode(mode);
 }
 void RecordingDevice::drawTriangles(std::span<const WindowVertex> vertices,
                                     std::span<const std::uint32_t> indices) {
-  inner_.drawTriangles(vertices, indices);  // validates first: a rejected draw is not recorded
+  ForwardingDevice::drawTriangles(vertices, indices);  // validates first
   stream_.commands.emplace_back(
       cmd::Draw{{vertices.begin(), vertices.end()}, {indices.begin(), indices.end()}});
 }

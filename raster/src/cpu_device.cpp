@@ -102,7 +102,7 @@ class RecordingWriter final : public TriangleSink {
 }  // namespace
 
 // What a new device is lives in reshape alone, so that a reshaped device cannot drift from it.
-CpuDevice::CpuDevice(int width, int height) {
+CpuDevice::CpuDevice(int width, int height) : RenderStateDevice(width, height) {
   reshape(width, height);
 }
 
@@ -138,10 +138,6 @@ std::size_t bestDeviceToReshape(std::span<const CpuDevice* const> devices, int w
                                   devices.begin());
 }
 
-void CpuDevice::setScissor(const PixelRect& rect) {
-  state_.setScissor(rect, width(), height());
-}
-
 void CpuDevice::clearDepth(double depth) {
   if (!std::isfinite(depth))
     throw std::invalid_argument("clearDepth: value is not finite");
@@ -164,16 +160,6 @@ void CpuDevice::clearStencil(std::uint8_t value) {
     for (int i = 0; i < r.width(); ++i)
       row[i] = writeThroughMask(row[i], value, writeMask);
   }
-}
-
-void CpuDevice::setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) {
-  state_.stencilFunc = func;
-  state_.stencilRef = ref;
-  state_.stencilValueMask = valueMask;
-}
-
-void CpuDevice::setStencilOps(Face face, const StencilOps& ops) {
-  state_.setStencilOps(face, ops);
 }
 
 void CpuDevice::drawTriangles(std::span<const WindowVertex> vertices,

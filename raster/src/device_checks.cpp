@@ -49,4 +49,29 @@ void checkDraw(std::span<const WindowVertex> vertices, std::span<const std::uint
   }
 }
 
+void checkCompareFunc(CompareFunc func, const char* what) {
+  if (static_cast<int>(func) > static_cast<int>(CompareFunc::Always))
+    throw std::invalid_argument(std::string(what) + ": unknown compare function " +
+                                std::to_string(static_cast<int>(func)));
+}
+
+void checkStencilOps(const StencilOps& ops) {
+  for (const StencilOp op : {ops.stencilFail, ops.depthFail, ops.depthPass})
+    if (static_cast<int>(op) > static_cast<int>(StencilOp::Invert))
+      throw std::invalid_argument("setStencilOps: unknown stencil op " +
+                                  std::to_string(static_cast<int>(op)));
+}
+
+void checkFace(Face face) {
+  if (static_cast<int>(face) > static_cast<int>(Face::Both))
+    throw std::invalid_argument("setStencilOps: unknown face " +
+                                std::to_string(static_cast<int>(face)));
+}
+
+void checkCullMode(CullMode mode) {
+  if (static_cast<int>(mode) > static_cast<int>(CullMode::Back))
+    throw std::invalid_argument("setCullMode: unknown cull mode " +
+                                std::to_string(static_cast<int>(mode)));
+}
+
 }  // namespace recode::raster

@@ -10,6 +10,7 @@
 #include "raster_test_support.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/forwarding_device.hpp"
 
 using namespace recode::raster;
 using recode::test::drawTriangle;
@@ -172,4 +173,54 @@ TEST_CASE("snapToFixed is nearbyint of 256 x over the whole window range", "[sta
   }
   CHECK(differ == 0);
   CHECK(halves > 100000);  // the ties were really tested
+}
+
+TEST_CASE("an unknown state value is refused before any state changes", "[state]") {
+  // RenderStateDevice's checks, which every device built on it shares.
+  CpuDevice dev(8, 8);
+  dev.setDepthFunc(CompareFunc::Greater);
+  dev.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Incr, StencilOp::Invert});
+  dev.setCullMode(CullMode::Back);
+  const RenderState before = dev.state();
+  const auto badFunc = static_cast<CompareFunc>(8);
+  CHECK_THROWS_WITH(dev.setDepthFunc(badFunc), "setDepthFunc: unknown compare function 8");
+  CHECK_THROWS_WITH(dev.setStencilFunc(badFunc, 1, 0xFF),
+                    "setStencilFunc: unknown compare function 8");
+  CHECK_THROWS_WITH(
+      dev.setStencilOps(Face::Front, {StencilOp::Keep, static_cast<StencilOp>(8), StencilOp::Keep}),
+      "setStencilOps: unknown stencil op 8");
+  CHECK_THROWS_WITH(dev.setStencilOps(static_cast<Face>(3), {}), "setStencilOps: unknown face 3");
+  CHECK_THROWS_WITH(dev.setCullMode(static_cast<CullMode>(3)), "setCullMode: unknown cull mode 3");
+  const RenderState& after = dev.state();
+  CHECK(after.depthFunc == before.depthFunc);
+  CHECK(after.stencilFunc == before.stencilFunc);
+  CHECK(after.stencilRef == before.stencilRef);
+  CHECK(after.frontOps.depthFail == before.frontOps.depthFail);
+  CHECK(after.backOps.depthPass == before.backOps.depthPass);
+  CHECK(after.cull == before.cull);
+}
+
+TEST_CASE("a forwarding device hands every command on and draws blocks whole", "[state]") {
+  // The same commands on a CpuDevice directly and through a ForwardingDevice, which owns one.
+  CpuDevice direct(16, 16);
+  ForwardingDevice forwarding(std::make_unique<CpuDevice>(16, 16));
+  for (DepthStencilDevice* dev :
+       {static_cast<DepthStencilDevice*>(&direct), static_cast<DepthStencilDevice*>(&forwarding)}) {
+    dev->setScissor({1, 2, 14, 13});
+    dev->clearStencil(3);
+    dev->clearDepth(0.75);
+    setCountingState(*dev);
+    dev->setStencilWriteMask(0x7F);
+    drawTriangle(*dev, {1, 1, 0.2f}, {15, 2, 0.2f}, {8, 15, 0.6f});
+    dev->setCullMode(CullMode::Front);
+    drawTriangle(*dev, {2, 14, 0.4f}, {14, 14, 0.4f}, {8, 1, 0.4f});
+  }
+  CHECK(forwarding.width() == 16);
+  CHECK(forwarding.height() == 16);
+  CHECK(forwarding.readStencil({0, 0, 16, 16}) == direct.readStencil({0, 0, 16, 16}));
+  CHECK(forwarding.readDepth({0, 0, 16, 16}) == direct.readDepth({0, 0, 16, 16}));
+  const auto& inner = dynamic_cast<const CpuDevice&>(forwarding.inner());
+  CHECK(inner.state().stencilWriteMask == 0x7F);
+  CHECK(inner.scissor().x0 == 1);
+  CHECK_THROWS_AS(ForwardingDevice(std::unique_ptr<DepthStencilDevice>{}), std::invalid_argument);
 }

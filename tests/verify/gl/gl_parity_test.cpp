@@ -18,6 +18,7 @@
 #include "recode/raster/command_stream.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/forwarding_device.hpp"
 #include "recode/raster/golden.hpp"
 #include "recode/verify/gl_device.hpp"
 #include "recode/verify/gl_parity.hpp"
@@ -32,50 +33,34 @@ using raster::WindowVertex;
 namespace {
 
 // Forwards everything to an inner device, with hooks that make it wrong on purpose.
-class AlteredDevice final : public raster::DepthStencilDevice {
+class AlteredDevice final : public raster::ForwardingDevice {
  public:
   explicit AlteredDevice(std::unique_ptr<raster::DepthStencilDevice> inner)
-      : inner_(std::move(inner)) {}
+      : ForwardingDevice(std::move(inner)) {}
 
   std::function<raster::StencilOps(raster::StencilOps)> alterOps;
   std::function<void(int draw, std::vector<WindowVertex>&)> alterVertices;
   std::function<void(const raster::PixelRect&, std::vector<std::uint8_t>&)> alterStencil;
 
-  [[nodiscard]] int width() const override { return inner_->width(); }
-  [[nodiscard]] int height() const override { return inner_->height(); }
-  void setScissor(const raster::PixelRect& r) override { inner_->setScissor(r); }
-  void clearDepth(double d) override { inner_->clearDepth(d); }
-  void clearStencil(std::uint8_t v) override { inner_->clearStencil(v); }
-  void setDepthFunc(CompareFunc f) override { inner_->setDepthFunc(f); }
-  void setDepthWriteMask(bool w) override { inner_->setDepthWriteMask(w); }
-  void setStencilFunc(CompareFunc f, std::uint8_t ref, std::uint8_t mask) override {
-    inner_->setStencilFunc(f, ref, mask);
-  }
   void setStencilOps(Face face, const raster::StencilOps& ops) override {
-    inner_->setStencilOps(face, alterOps ? alterOps(ops) : ops);
+    ForwardingDevice::setStencilOps(face, alterOps ? alterOps(ops) : ops);
   }
-  void setStencilWriteMask(std::uint8_t m) override { inner_->setStencilWriteMask(m); }
-  void setCullMode(raster::CullMode m) override { inner_->setCullMode(m); }
   void drawTriangles(std::span<const WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override {
     std::vector<WindowVertex> v(vertices.begin(), vertices.end());
     if (alterVertices)
       alterVertices(draws_, v);
     ++draws_;
-    inner_->drawTriangles(v, indices);
+    ForwardingDevice::drawTriangles(v, indices);
   }
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& r) const override {
-    auto s = inner_->readStencil(r);
+    auto s = ForwardingDevice::readStencil(r);
     if (alterStencil)
       alterStencil(r, s);
     return s;
   }
-  [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& r) const override {
-    return inner_->readDepth(r);
-  }
 
  private:
-  std::unique_ptr<raster::DepthStencilDevice> inner_;
   int draws_ = 0;
 };
 

@@ -14,6 +14,7 @@
 #include "recode/geometry/triangle_bvh.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
+#include "recode/raster/forwarding_device.hpp"
 #include "recode/verify/pair_suite.hpp"
 
 using namespace recode;
@@ -22,38 +23,7 @@ namespace {
 
 // Forwards everything to a CpuDevice but keeps the seam's default drawMesh: every block is
 // drawn whole with drawTriangles, as on GL, Vulkan or a recording.
-class WholeDrawDevice final : public raster::DepthStencilDevice {
- public:
-  explicit WholeDrawDevice(raster::CpuDevice& inner) : inner_(inner) {}
-  [[nodiscard]] int width() const override { return inner_.width(); }
-  [[nodiscard]] int height() const override { return inner_.height(); }
-  void setScissor(const raster::PixelRect& r) override { inner_.setScissor(r); }
-  void clearDepth(double d) override { inner_.clearDepth(d); }
-  void clearStencil(std::uint8_t v) override { inner_.clearStencil(v); }
-  void setDepthFunc(raster::CompareFunc f) override { inner_.setDepthFunc(f); }
-  void setDepthWriteMask(bool w) override { inner_.setDepthWriteMask(w); }
-  void setStencilFunc(raster::CompareFunc f, std::uint8_t ref, std::uint8_t mask) override {
-    inner_.setStencilFunc(f, ref, mask);
-  }
-  void setStencilOps(raster::Face face, const raster::StencilOps& ops) override {
-    inner_.setStencilOps(face, ops);
-  }
-  void setStencilWriteMask(std::uint8_t m) override { inner_.setStencilWriteMask(m); }
-  void setCullMode(raster::CullMode m) override { inner_.setCullMode(m); }
-  void drawTriangles(std::span<const raster::WindowVertex> v,
-                     std::span<const std::uint32_t> i) override {
-    inner_.drawTriangles(v, i);
-  }
-  [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& r) const override {
-    return inner_.readStencil(r);
-  }
-  [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& r) const override {
-    return inner_.readDepth(r);
-  }
-
- private:
-  raster::CpuDevice& inner_;
-};
+using WholeDrawDevice = raster::ForwardingDevice;
 
 bool sameBits(double x, double y) {
   return std::memcmp(&x, &y, sizeof x) == 0;

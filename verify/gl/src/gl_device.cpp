@@ -165,7 +165,8 @@ struct GlDevice::Impl {
   }
 };
 
-GlDevice::GlDevice(int width, int height) : width_(width), height_(height) {
+GlDevice::GlDevice(int width, int height)
+    : RenderStateDevice(width, height), width_(width), height_(height) {
   raster::checkFramebufferSize(width, height);
   impl_ = std::make_unique<Impl>();
   impl_->context = detail::makeOsMesaContext(width, height);
@@ -186,11 +187,39 @@ std::string GlDevice::renderer() const {
   return impl_->context->renderer();
 }
 
-void GlDevice::setScissor(const PixelRect& rect) {
-  // Clamped to the framebuffer like CpuDevice's; an empty result is a zero-sized scissor.
-  const PixelRect r = rect.intersect({0, 0, width_, height_});
+// RenderStateDevice's setters have checked and stored the change; it is set on GL here.
+void GlDevice::stateChanged(StateChange change, raster::Face face) {
   impl_->use();
-  glScissor(r.x0, r.y0, r.width(), r.height());
+  switch (change) {
+    case StateChange::Scissor: {  // clamped to the framebuffer; empty is a zero-sized scissor
+      const PixelRect& r = state_.scissor;
+      glScissor(r.x0, r.y0, r.width(), r.height());
+      return;
+    }
+    case StateChange::DepthFunc:
+      glDepthFunc(detail::glCompareEnum(state_.depthFunc));
+      return;
+    case StateChange::DepthWriteMask:
+      glDepthMask(state_.depthWrite ? GL_TRUE : GL_FALSE);
+      return;
+    case StateChange::StencilFunc:  // one func for both faces, as in the device interface
+      glStencilFunc(detail::glCompareEnum(state_.stencilFunc), state_.stencilRef,
+                    state_.stencilValueMask);
+      return;
+    case StateChange::StencilOps: {
+      const raster::StencilOps& ops = face == raster::Face::Back ? state_.backOps : state_.frontOps;
+      glStencilOpSeparate(detail::glFaceEnum(face), detail::glStencilOpEnum(ops.stencilFail),
+                          detail::glStencilOpEnum(ops.depthFail),
+                          detail::glStencilOpEnum(ops.depthPass));
+      return;
+    }
+    case StateChange::StencilWriteMask:
+      glStencilMask(state_.stencilWriteMask);
+      return;
+    case StateChange::CullMode:
+      applyCullMode(state_.cull);
+      return;
+  }
 }
 
 void GlDevice::clearDepth(double depth) {
@@ -207,39 +236,7 @@ void GlDevice::clearStencil(std::uint8_t value) {
   glClear(GL_STENCIL_BUFFER_BIT);
 }
 
-void GlDevice::setDepthFunc(CompareFunc func) {
-  const GLenum f = detail::glCompareEnum(func);
-  impl_->use();
-  glDepthFunc(f);
-}
-
-void GlDevice::setDepthWriteMask(bool write) {
-  impl_->use();
-  glDepthMask(write ? GL_TRUE : GL_FALSE);
-}
-
-void GlDevice::setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) {
-  const GLenum f = detail::glCompareEnum(func);
-  impl_->use();
-  glStencilFunc(f, ref, valueMask);  // one func for both faces, as in the device interface
-}
-
-void GlDevice::setStencilOps(raster::Face face, const raster::StencilOps& ops) {
-  const GLenum glFace = detail::glFaceEnum(face);
-  const GLenum sfail = detail::glStencilOpEnum(ops.stencilFail);
-  const GLenum dpfail = detail::glStencilOpEnum(ops.depthFail);
-  const GLenum dppass = detail::glStencilOpEnum(ops.depthPass);
-  impl_->use();
-  glStencilOpSeparate(glFace, sfail, dpfail, dppass);
-}
-
-void GlDevice::setStencilWriteMask(std::uint8_t mask) {
-  impl_->use();
-  glStencilMask(mask);
-}
-
-void GlDevice::setCullMode(raster::CullMode mode) {
-  impl_->use();
+void GlDevice::applyCullMode(raster::CullMode mode) {
   switch (mode) {
     case raster::CullMode::None:
       glDisable(GL_CULL_FACE);
@@ -253,8 +250,6 @@ void GlDevice::setCullMode(raster::CullMode mode) {
       glCullFace(GL_BACK);
       return;
   }
-  throw std::invalid_argument("GlDevice: unknown cull mode " +
-                              std::to_string(static_cast<int>(mode)));
 }
 
 void GlDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,

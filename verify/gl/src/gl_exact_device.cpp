@@ -187,7 +187,7 @@ struct GlExactDevice::Impl {
   int width = 0;
   int height = 0;
   SharedGl* shared = nullptr;
-  raster::RenderState state;  // the device interface's state, applied when the device binds
+  const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
   GLuint framebuffer = 0;
   GLuint depthStencil = 0;
 
@@ -204,15 +204,15 @@ struct GlExactDevice::Impl {
     g.Viewport(0, 0, width, height);
     g.Uniform2f(shared->framebufferSizeUniform, static_cast<GLfloat>(width),
                 static_cast<GLfloat>(height));
-    const raster::PixelRect& r = state.scissor;
+    const raster::PixelRect& r = state->scissor;
     g.Scissor(r.x0, r.y0, r.width(), r.height());
-    g.DepthFunc(detail::glCompareEnum(state.depthFunc));
-    g.DepthMask(state.depthWrite ? GL_TRUE : GL_FALSE);
-    g.StencilFunc(detail::glCompareEnum(state.stencilFunc), state.stencilRef,
-                  state.stencilValueMask);
-    applyStencilOps(GL_FRONT, state.frontOps);
-    applyStencilOps(GL_BACK, state.backOps);
-    g.StencilMask(state.stencilWriteMask);
+    g.DepthFunc(detail::glCompareEnum(state->depthFunc));
+    g.DepthMask(state->depthWrite ? GL_TRUE : GL_FALSE);
+    g.StencilFunc(detail::glCompareEnum(state->stencilFunc), state->stencilRef,
+                  state->stencilValueMask);
+    applyStencilOps(GL_FRONT, state->frontOps);
+    applyStencilOps(GL_BACK, state->backOps);
+    g.StencilMask(state->stencilWriteMask);
     shared->owner = this;
   }
 
@@ -284,12 +284,12 @@ GlPlatform resolveGlPlatform(GlPlatform requested) {
 }
 
 GlExactDevice::GlExactDevice(int width, int height, GlPlatform platform)
-    : impl_(std::make_unique<Impl>()) {
+    : RenderStateDevice(width, height), impl_(std::make_unique<Impl>()) {
   raster::checkFramebufferSize(width, height);
   Impl& d = *impl_;
   d.width = width;
   d.height = height;
-  d.state = raster::initialRenderState(width, height);
+  d.state = &state_;
   d.shared = &SharedGl::of(platform);
   d.shared->context->makeCurrent();
   d.requireLimits();
@@ -315,15 +315,41 @@ GlPlatform GlExactDevice::platform() const {
   return impl_->shared->platform;
 }
 
-// Each setter records the state (a device re-applies it when it binds again after another
-// device of the process used the shared context) and sets it on GL.
-
-void GlExactDevice::setScissor(const PixelRect& rect) {
+// RenderStateDevice's setters have stored the change (a device re-applies its whole state when
+// it binds again after another device of the process used the shared context); it is set on
+// GL here. The cull mode is applied on the CPU, where the facing is exact.
+void GlExactDevice::stateChanged(StateChange change, raster::Face face) {
+  if (change == StateChange::CullMode)
+    return;
   Impl& d = *impl_;
-  d.state.setScissor(rect, d.width, d.height);  // clamped to the framebuffer, like CpuDevice
-  const PixelRect& r = d.state.scissor;
   d.use();
-  d.gl().Scissor(r.x0, r.y0, r.width(), r.height());
+  const detail::GlCoreFunctions& g = d.gl();
+  switch (change) {
+    case StateChange::Scissor: {
+      const PixelRect& r = state_.scissor;
+      g.Scissor(r.x0, r.y0, r.width(), r.height());
+      return;
+    }
+    case StateChange::DepthFunc:
+      g.DepthFunc(detail::glCompareEnum(state_.depthFunc));
+      return;
+    case StateChange::DepthWriteMask:
+      g.DepthMask(state_.depthWrite ? GL_TRUE : GL_FALSE);
+      return;
+    case StateChange::StencilFunc:  // one func for both faces, as in the interface
+      g.StencilFunc(detail::glCompareEnum(state_.stencilFunc), state_.stencilRef,
+                    state_.stencilValueMask);
+      return;
+    case StateChange::StencilOps:
+      d.applyStencilOps(detail::glFaceEnum(face),
+                        face == raster::Face::Back ? state_.backOps : state_.frontOps);
+      return;
+    case StateChange::StencilWriteMask:
+      g.StencilMask(state_.stencilWriteMask);
+      return;
+    case StateChange::CullMode:
+      return;
+  }
 }
 
 void GlExactDevice::clearDepth(double depth) {
@@ -344,63 +370,10 @@ void GlExactDevice::clearStencil(std::uint8_t value) {
   d.gl().Clear(GL_STENCIL_BUFFER_BIT);
 }
 
-void GlExactDevice::setDepthFunc(raster::CompareFunc func) {
-  const GLenum f = detail::glCompareEnum(func);
-  Impl& d = *impl_;
-  d.use();
-  d.state.depthFunc = func;
-  d.gl().DepthFunc(f);
-}
-
-void GlExactDevice::setDepthWriteMask(bool write) {
-  Impl& d = *impl_;
-  d.use();
-  d.state.depthWrite = write;
-  d.gl().DepthMask(write ? GL_TRUE : GL_FALSE);
-}
-
-void GlExactDevice::setStencilFunc(raster::CompareFunc func, std::uint8_t ref,
-                                   std::uint8_t valueMask) {
-  const GLenum f = detail::glCompareEnum(func);
-  Impl& d = *impl_;
-  d.use();
-  d.state.stencilFunc = func;
-  d.state.stencilRef = ref;
-  d.state.stencilValueMask = valueMask;
-  d.gl().StencilFunc(f, ref, valueMask);  // one func for both faces, as in the interface
-}
-
-void GlExactDevice::setStencilOps(raster::Face face, const raster::StencilOps& ops) {
-  const GLenum glFace = detail::glFaceEnum(face);
-  Impl& d = *impl_;
-  d.use();
-  d.state.setStencilOps(face, ops);
-  d.applyStencilOps(glFace, ops);
-}
-
-void GlExactDevice::setStencilWriteMask(std::uint8_t mask) {
-  Impl& d = *impl_;
-  d.use();
-  d.state.stencilWriteMask = mask;
-  d.gl().StencilMask(mask);
-}
-
-void GlExactDevice::setCullMode(raster::CullMode mode) {
-  switch (mode) {
-    case raster::CullMode::None:
-    case raster::CullMode::Front:
-    case raster::CullMode::Back:
-      impl_->state.cull = mode;  // applied on the CPU, where the facing is exact
-      return;
-  }
-  throw std::invalid_argument("GL exact device: unknown cull mode " +
-                              std::to_string(static_cast<int>(mode)));
-}
-
 void GlExactDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
                                   std::span<const std::uint32_t> indices) {
   Impl& d = *impl_;
-  const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, d.state);
+  const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, state_);
   if (proxies.empty())
     return;
   d.use();

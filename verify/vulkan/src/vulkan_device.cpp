@@ -48,7 +48,7 @@ constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE
 struct VulkanDevice::Impl {
   int width = 0;
   int height = 0;
-  raster::RenderState state;
+  const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
   detail::VulkanContext* context = nullptr;
   const detail::ExactPipelines* pipelines = nullptr;
   VkImage image = VK_NULL_HANDLE;
@@ -141,7 +141,7 @@ struct VulkanDevice::Impl {
                                 0.0f,
                                 1.0f};
       vkCmdSetViewport(cmd, 0, 1, &viewport);
-      const VkRect2D scissor = framebufferRect(state.scissor);
+      const VkRect2D scissor = framebufferRect(state->scissor);
       vkCmdSetScissor(cmd, 0, 1, &scissor);
       vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);  // the CPU culls, from the exact facing
       const detail::FramePushConstants frame{
@@ -158,20 +158,20 @@ struct VulkanDevice::Impl {
   // and reference and each face its own ops.
   void setDrawState(VkCommandBuffer cmd) const {
     vkCmdSetDepthTestEnable(cmd, VK_TRUE);
-    vkCmdSetDepthWriteEnable(cmd, state.depthWrite ? VK_TRUE : VK_FALSE);
-    vkCmdSetDepthCompareOp(cmd, detail::vkCompareOp(state.depthFunc));
+    vkCmdSetDepthWriteEnable(cmd, state->depthWrite ? VK_TRUE : VK_FALSE);
+    vkCmdSetDepthCompareOp(cmd, detail::vkCompareOp(state->depthFunc));
     vkCmdSetStencilTestEnable(cmd, VK_TRUE);
-    const VkCompareOp compare = detail::vkCompareOp(state.stencilFunc);
+    const VkCompareOp compare = detail::vkCompareOp(state->stencilFunc);
     const auto ops = [&](VkStencilFaceFlags face, const raster::StencilOps& o) {
       vkCmdSetStencilOp(cmd, face, detail::vkStencilOp(o.stencilFail),
                         detail::vkStencilOp(o.depthPass), detail::vkStencilOp(o.depthFail),
                         compare);
     };
-    ops(VK_STENCIL_FACE_FRONT_BIT, state.frontOps);
-    ops(VK_STENCIL_FACE_BACK_BIT, state.backOps);
-    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state.stencilValueMask);
-    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state.stencilWriteMask);
-    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state.stencilRef);
+    ops(VK_STENCIL_FACE_FRONT_BIT, state->frontOps);
+    ops(VK_STENCIL_FACE_BACK_BIT, state->backOps);
+    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilValueMask);
+    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilWriteMask);
+    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilRef);
   }
 
   // Copies one aspect of a GL-window rectangle into the read-back buffer and returns its bytes,
@@ -209,12 +209,13 @@ struct VulkanDevice::Impl {
   }
 };
 
-VulkanDevice::VulkanDevice(int width, int height) : impl_(std::make_unique<Impl>()) {
+VulkanDevice::VulkanDevice(int width, int height)
+    : RenderStateDevice(width, height), impl_(std::make_unique<Impl>()) {
   raster::checkFramebufferSize(width, height);
   Impl& d = *impl_;
   d.width = width;
   d.height = height;
-  d.state = raster::initialRenderState(width, height);
+  d.state = &state_;
   d.pipelines = &sharedPipelines();  // makes the context too
   d.context = &detail::VulkanContext::instance();
   d.createImage();
@@ -235,18 +236,15 @@ std::string VulkanDevice::renderer() const {
   return impl_->context->deviceName();
 }
 
-// State is recorded here and set as dynamic state in every command buffer that draws.
-
-void VulkanDevice::setScissor(const PixelRect& rect) {
-  impl_->state.setScissor(rect, impl_->width, impl_->height);  // clamped, like CpuDevice
-}
+// The state setters are RenderStateDevice's: state_ is set as dynamic state in every command
+// buffer that draws or clears.
 
 void VulkanDevice::clearDepth(double depth) {
   if (!std::isfinite(depth))
     throw std::invalid_argument("clearDepth: value is not finite");
   Impl& d = *impl_;
   // The depth write mask applies to clears: with it off, a depth clear changes nothing.
-  if (!d.state.depthWrite || d.state.scissor.empty())
+  if (!state_.depthWrite || state_.scissor.empty())
     return;
   // The contract's quantisation, stored as the shaders store fragment depth, by a rectangle
   // that passes the depth test always and leaves stencil alone.
@@ -268,7 +266,7 @@ void VulkanDevice::clearDepth(double depth) {
 
 void VulkanDevice::clearStencil(std::uint8_t value) {
   Impl& d = *impl_;
-  if (d.state.stencilWriteMask == 0 || d.state.scissor.empty())
+  if (state_.stencilWriteMask == 0 || state_.scissor.empty())
     return;
   // REPLACE with the clear value as reference under the device's write mask gives
   // s = (value & mask) | (s & ~mask), GL's masked clear; depth is not tested, so not written.
@@ -280,56 +278,16 @@ void VulkanDevice::clearStencil(std::uint8_t value) {
     vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, VK_STENCIL_OP_REPLACE,
                       VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_REPLACE, VK_COMPARE_OP_ALWAYS);
     vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0xFF);
-    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, d.state.stencilWriteMask);
+    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state_.stencilWriteMask);
     vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, value);
     vkCmdDraw(cmd, 4, 1, 0, 0);
   });
 }
 
-void VulkanDevice::setDepthFunc(raster::CompareFunc func) {
-  (void)detail::vkCompareOp(func);  // rejects an unknown value now, as the other devices do
-  impl_->state.depthFunc = func;
-}
-
-void VulkanDevice::setDepthWriteMask(bool write) {
-  impl_->state.depthWrite = write;
-}
-
-void VulkanDevice::setStencilFunc(raster::CompareFunc func, std::uint8_t ref,
-                                  std::uint8_t valueMask) {
-  (void)detail::vkCompareOp(func);
-  raster::RenderState& s = impl_->state;
-  s.stencilFunc = func;
-  s.stencilRef = ref;
-  s.stencilValueMask = valueMask;
-}
-
-void VulkanDevice::setStencilOps(raster::Face face, const raster::StencilOps& ops) {
-  for (raster::StencilOp op : {ops.stencilFail, ops.depthFail, ops.depthPass})
-    (void)detail::vkStencilOp(op);
-  impl_->state.setStencilOps(face, ops);
-}
-
-void VulkanDevice::setStencilWriteMask(std::uint8_t mask) {
-  impl_->state.stencilWriteMask = mask;
-}
-
-void VulkanDevice::setCullMode(raster::CullMode mode) {
-  switch (mode) {
-    case raster::CullMode::None:
-    case raster::CullMode::Front:
-    case raster::CullMode::Back:
-      impl_->state.cull = mode;  // applied on the CPU, where the facing is exact
-      return;
-  }
-  throw std::invalid_argument("Vulkan device: unknown cull mode " +
-                              std::to_string(static_cast<int>(mode)));
-}
-
 void VulkanDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
                                  std::span<const std::uint32_t> indices) {
   Impl& d = *impl_;
-  const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, d.state);
+  const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, state_);
   if (proxies.empty())
     return;
   const std::size_t bytes = proxies.size() * sizeof(ProxyTriangle);

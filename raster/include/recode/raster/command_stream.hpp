@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "recode/raster/device.hpp"
+#include "recode/raster/forwarding_device.hpp"
 
 namespace recode::raster {
 
@@ -70,15 +71,14 @@ bool applyToState(const Command& command, RenderState& state, int width, int hei
 // parity checks read both devices back.
 [[nodiscard]] bool changesBuffers(const Command& command);
 
-// Forwards every call to an inner device and appends it to a stream.
-class RecordingDevice final : public DepthStencilDevice {
+// Forwards every call to an inner device and appends it to a stream once the inner device has
+// taken it (a command it rejects is not recorded).
+class RecordingDevice final : public ForwardingDevice {
  public:
   explicit RecordingDevice(DepthStencilDevice& inner);
 
   [[nodiscard]] const CommandStream& stream() const { return stream_; }
 
-  [[nodiscard]] int width() const override { return inner_.width(); }
-  [[nodiscard]] int height() const override { return inner_.height(); }
   void setScissor(const PixelRect& rect) override;
   void clearDepth(double depth) override;
   void clearStencil(std::uint8_t value) override;
@@ -90,15 +90,8 @@ class RecordingDevice final : public DepthStencilDevice {
   void setCullMode(CullMode mode) override;
   void drawTriangles(std::span<const WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override;
-  [[nodiscard]] std::vector<std::uint8_t> readStencil(const PixelRect& rect) const override {
-    return inner_.readStencil(rect);
-  }
-  [[nodiscard]] std::vector<std::uint32_t> readDepth(const PixelRect& rect) const override {
-    return inner_.readDepth(rect);
-  }
 
  private:
-  DepthStencilDevice& inner_;
   CommandStream stream_;
 };
 

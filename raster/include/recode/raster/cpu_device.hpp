@@ -14,11 +14,12 @@
 #include "recode/raster/draw_recording.hpp"
 #include "recode/raster/pipeline.hpp"
 #include "recode/raster/pixel_buffer.hpp"
+#include "recode/raster/render_state_device.hpp"
 #include "recode/raster/state.hpp"
 
 namespace recode::raster {
 
-class CpuDevice final : public DepthStencilDevice {
+class CpuDevice final : public RenderStateDevice {
  public:
   // Throws std::invalid_argument unless 1 <= width, height <= kMaxFramebufferSize. Depth
   // starts at 1.0 (2^24 - 1) and stencil at 0, as after GL's default clears.
@@ -38,15 +39,9 @@ class CpuDevice final : public DepthStencilDevice {
   [[nodiscard]] int width() const override { return depth_.rect.width(); }
   [[nodiscard]] int height() const override { return depth_.rect.height(); }
 
-  void setScissor(const PixelRect& rect) override;
+  // The state setters are RenderStateDevice's.
   void clearDepth(double depth) override;
   void clearStencil(std::uint8_t value) override;
-  void setDepthFunc(CompareFunc func) override { state_.depthFunc = func; }
-  void setDepthWriteMask(bool write) override { state_.depthWrite = write; }
-  void setStencilFunc(CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) override;
-  void setStencilOps(Face face, const StencilOps& ops) override;
-  void setStencilWriteMask(std::uint8_t mask) override { state_.stencilWriteMask = mask; }
-  void setCullMode(CullMode mode) override { state_.cull = mode; }
   void drawTriangles(std::span<const WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override;
   // Draws source.trianglesMeeting(scissor) when the source offers it, else the whole block. A
@@ -61,8 +56,6 @@ class CpuDevice final : public DepthStencilDevice {
   // Direct views of the whole buffers (row-major, bottom row first), for tools and tests.
   [[nodiscard]] std::span<const std::uint8_t> stencilBuffer() const { return stencil_.data; }
   [[nodiscard]] std::span<const std::uint32_t> depthBuffer() const { return depth_.data; }
-  [[nodiscard]] const RenderState& state() const { return state_; }
-  [[nodiscard]] const PixelRect& scissor() const { return state_.scissor; }
 
   // Counters since construction (or the last reset): useful for benchmarks and teaching. The
   // pipeline's count the triangles that were snapped and set up; a replayed draw adds its
@@ -84,7 +77,6 @@ class CpuDevice final : public DepthStencilDevice {
 
   PixelBuffer<std::uint32_t> depth_;  // the whole framebuffer; its rectangle gives the size
   PixelBuffer<std::uint8_t> stencil_;
-  RenderState state_;
   Counters counters_;
   std::array<DrawRecording, 2> recordings_;
   std::size_t nextRecording_ = 0;  // the one the next recorded draw overwrites

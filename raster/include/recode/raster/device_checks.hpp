@@ -17,4 +17,11 @@ void checkFramebufferSize(int width, int height);
 // z outside [0, 1]. Checks the whole draw, so a device can validate before changing any pixel.
 void checkDraw(std::span<const WindowVertex> vertices, std::span<const std::uint32_t> indices);
 
+// Throw std::invalid_argument ("<what>: unknown compare function 9") for a value outside its
+// enumeration: a setter checks before it changes any state (RenderStateDevice calls them).
+void checkCompareFunc(CompareFunc func, const char* what);
+void checkStencilOps(const StencilOps& ops);
+void checkFace(Face face);
+void checkCullMode(CullMode mode);
+
 }  // namespace recode::raster

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "recode/raster/device.hpp"
+#include "recode/raster/render_state_device.hpp"
 
 namespace recode::verify {
 
@@ -18,7 +18,7 @@ namespace detail {
 class GlContext;
 }
 
-class GlDevice final : public raster::DepthStencilDevice {
+class GlDevice final : public raster::RenderStateDevice {
  public:
   // A framebuffer of width x height pixels with a 24-bit depth and an 8-bit stencil buffer,
   // cleared to depth 1.0 and stencil 0, in GL's default state (docs/rasterization.md,
@@ -36,15 +36,9 @@ class GlDevice final : public raster::DepthStencilDevice {
   [[nodiscard]] int width() const override { return width_; }
   [[nodiscard]] int height() const override { return height_; }
 
-  void setScissor(const raster::PixelRect& rect) override;
+  // The state setters are RenderStateDevice's; stateChanged sets each change on GL.
   void clearDepth(double depth) override;
   void clearStencil(std::uint8_t value) override;
-  void setDepthFunc(raster::CompareFunc func) override;
-  void setDepthWriteMask(bool write) override;
-  void setStencilFunc(raster::CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) override;
-  void setStencilOps(raster::Face face, const raster::StencilOps& ops) override;
-  void setStencilWriteMask(std::uint8_t mask) override;
-  void setCullMode(raster::CullMode mode) override;
   // Validated exactly as CpuDevice validates (same std::invalid_argument cases) before
   // anything reaches GL. x and y are snapped to the 1/256-pixel grid here, round half to even,
   // so GL starts from the same fixed-point vertices as the reference.
@@ -57,6 +51,9 @@ class GlDevice final : public raster::DepthStencilDevice {
   [[nodiscard]] std::string renderer() const;
 
  private:
+  void stateChanged(StateChange change, raster::Face face) override;
+  static void applyCullMode(raster::CullMode mode);
+
   struct Impl;
   int width_;
   int height_;

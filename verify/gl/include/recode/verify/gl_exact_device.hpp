@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "recode/raster/device.hpp"
+#include "recode/raster/render_state_device.hpp"
 
 namespace recode::verify {
 
@@ -33,7 +33,7 @@ enum class GlPlatform : std::uint8_t { Auto, OsMesa, Egl };
 // it once (Auto resolves to EGL or OSMesa). Throws as the device's constructor does.
 [[nodiscard]] GlPlatform resolveGlPlatform(GlPlatform requested);
 
-class GlExactDevice final : public raster::DepthStencilDevice {
+class GlExactDevice final : public raster::RenderStateDevice {
  public:
   // A width x height framebuffer (depth 1.0, stencil 0, GL's default state). Throws
   // std::invalid_argument unless 1 <= width, height <= 16384, and std::runtime_error when no
@@ -51,15 +51,9 @@ class GlExactDevice final : public raster::DepthStencilDevice {
   [[nodiscard]] int width() const override;
   [[nodiscard]] int height() const override;
 
-  void setScissor(const raster::PixelRect& rect) override;
+  // The state setters are RenderStateDevice's; stateChanged sets each change on GL.
   void clearDepth(double depth) override;
   void clearStencil(std::uint8_t value) override;
-  void setDepthFunc(raster::CompareFunc func) override;
-  void setDepthWriteMask(bool write) override;
-  void setStencilFunc(raster::CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) override;
-  void setStencilOps(raster::Face face, const raster::StencilOps& ops) override;
-  void setStencilWriteMask(std::uint8_t mask) override;
-  void setCullMode(raster::CullMode mode) override;
   // Validated exactly as CpuDevice validates, then snapped, set up (facing, culling, candidate
   // pixels) on the CPU, and drawn as one instanced draw of proxy rectangles.
   void drawTriangles(std::span<const raster::WindowVertex> vertices,
@@ -73,6 +67,8 @@ class GlExactDevice final : public raster::DepthStencilDevice {
   [[nodiscard]] GlPlatform platform() const;
 
  private:
+  void stateChanged(StateChange change, raster::Face face) override;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "recode/raster/device.hpp"
+#include "recode/raster/render_state_device.hpp"
 
 namespace recode::verify {
 
-class VulkanDevice final : public raster::DepthStencilDevice {
+class VulkanDevice final : public raster::RenderStateDevice {
  public:
   // A width x height framebuffer (depth 2^24 - 1, stencil 0, the interface's default state).
   // Throws std::invalid_argument unless 1 <= width, height <= 16384, and std::runtime_error
@@ -32,15 +32,9 @@ class VulkanDevice final : public raster::DepthStencilDevice {
   [[nodiscard]] int width() const override;
   [[nodiscard]] int height() const override;
 
-  void setScissor(const raster::PixelRect& rect) override;
+  // The state setters are RenderStateDevice's.
   void clearDepth(double depth) override;
   void clearStencil(std::uint8_t value) override;
-  void setDepthFunc(raster::CompareFunc func) override;
-  void setDepthWriteMask(bool write) override;
-  void setStencilFunc(raster::CompareFunc func, std::uint8_t ref, std::uint8_t valueMask) override;
-  void setStencilOps(raster::Face face, const raster::StencilOps& ops) override;
-  void setStencilWriteMask(std::uint8_t mask) override;
-  void setCullMode(raster::CullMode mode) override;
   // Validated exactly as CpuDevice validates, set up on the CPU (verify::buildProxyTriangles)
   // and drawn as one instanced draw of proxy rectangles.
   void drawTriangles(std::span<const raster::WindowVertex> vertices,
