@@ -12,7 +12,7 @@
 
 #include "recode/kit/buffer_diff.hpp"
 #include "recode/raster/golden.hpp"
-#include "recode/verify/device_factory.hpp"
+#include "recode/verify/device_registry.hpp"
 
 namespace recode::app {
 
@@ -134,6 +134,18 @@ int runConform(const ConformOptions& o) {
   return failed == 0 ? 0 : 2;
 }
 
+// The registry's devices for --help: each name, what it is, and what to install when this build
+// lacks it.
+std::string deviceChoices() {
+  std::string text;
+  for (const verify::DeviceInfo& d : verify::deviceRegistry()) {
+    text += (text.empty() ? "" : "; ") + std::string(d.name) + ": " + std::string(d.description);
+    if (!d.built)
+      text += " (not in this build: " + std::string(d.missing) + ")";
+  }
+  return text;
+}
+
 }  // namespace
 
 void addConformCommand(CLI::App& app, int& exitCode) {
@@ -142,10 +154,7 @@ void addConformCommand(CLI::App& app, int& exitCode) {
       "conform",
       "Replay every golden vector under a directory on a device and compare every depth and "
       "stencil value (exit 2 when any vector fails)");
-  cmd->add_option("--device", o->device,
-                  "cpu, gl (fixed-function OpenGL on OSMesa), gl-exact (OpenGL shaders, EGL or "
-                  "OSMesa) or vulkan")
-      ->capture_default_str();
+  cmd->add_option("--device", o->device, "the device: " + deviceChoices())->capture_default_str();
   cmd->add_option("--golden", o->golden, "directory searched recursively for *.json vectors")
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print one JSON object instead of the report");

@@ -9,22 +9,17 @@
 
 #include "recode/scene/scene.hpp"
 #include "recode/sim/simulation.hpp"
+#include "recode/verify/device_registry.hpp"
 #include "recode/verify/scene_detector.hpp"
 
 namespace recode::verify {
 
-enum class RecodeDevice {
-  Cpu,      // raster::CpuDevice
-  Gl,       // verify::GlDevice; needs RECODE_HAVE_OSMESA
-  GlExact,  // verify::GlExactDevice (auto platform); needs RECODE_HAVE_GL_EXACT
-  Vulkan,   // verify::VulkanDevice; needs RECODE_HAVE_VULKAN
-};
-
 class RecodeDetector final : public SceneDetector {
  public:
-  // The simulation of `scene` with `options` (options.deviceFactory is replaced for every
-  // device but Cpu). Throws std::runtime_error for a device this build lacks.
-  RecodeDetector(const core::Scene& scene, core::RunOptions options, RecodeDevice device,
+  // The simulation of `scene` with `options` (options.deviceFactory is replaced by
+  // warmDeviceFactory for every device but Cpu). Throws std::runtime_error for a device this
+  // build lacks.
+  RecodeDetector(const core::Scene& scene, core::RunOptions options, DeviceKind device,
                  std::string name);
 
   [[nodiscard]] std::string name() const override { return name_; }
@@ -43,11 +38,5 @@ class RecodeDetector final : public SceneDetector {
   std::string name_;
   core::FrameReport last_;
 };
-
-// The factory a RecodeDevice other than Cpu uses: a device of the size, warmed by one small
-// colliding pair so that the driver compiles its shaders (and the exact devices make their
-// shared context) before any timed frame. Throws std::runtime_error for a device this build
-// lacks, saying what to install.
-[[nodiscard]] core::DeviceFactory warmDeviceFactory(RecodeDevice device);
 
 }  // namespace recode::verify
