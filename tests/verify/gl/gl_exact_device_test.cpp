@@ -1,7 +1,8 @@
-// The exact GL device against the reference, with no tolerance: the golden vectors, random
-// streams with sloped planes, slivers and every state, and the generated pair suite, on every
-// context platform this build has (OSMesa; EGL where its surfaceless platform works here).
-// Plus what the shared context must not leak between devices, and the errors.
+// What is the exact GL device's own: the parity check's power to report a device that differs,
+// and what the shared context must not leak between devices (exact ones and fixed-function
+// ones), on every context platform this build has. The contract itself (golden vectors, random
+// streams, the pair suite, clears, errors) is the conformance suite's, which runs on every
+// exact device (tests/verify/device_conformance_test.cpp).
 
 #include <catch2/catch.hpp>
 
@@ -54,68 +55,6 @@ std::vector<GlPlatform> platforms() {
 }
 
 }  // namespace
-
-TEST_CASE("every golden vector replays bit for bit on the exact GL device", "[gl-exact][golden]") {
-  const auto files = goldenFiles();
-  REQUIRE(files.size() >= 7);
-  for (GlPlatform platform : platforms()) {
-    INFO("platform " << verify::toString(platform));
-    for (const auto& path : files) {
-      INFO(path.filename().string());
-      const raster::CommandFile file = raster::readCommandFile(path.string());
-      REQUIRE(file.hasExpected);
-      const raster::GoldenVector& g = file.content;
-      GlExactDevice device(g.stream.width, g.stream.height, platform);
-      raster::replay(g.stream.commands, device);
-      const raster::PixelRect all{0, 0, g.stream.width, g.stream.height};
-      CHECK(device.readDepth(all) == g.depth);
-      CHECK(device.readStencil(all) == g.stencil);
-    }
-  }
-}
-
-TEST_CASE("random sloped streams agree with the CPU device after every command",
-          "[gl-exact][random]") {
-  for (GlPlatform platform : platforms()) {
-    INFO("platform " << verify::toString(platform));
-    std::mt19937 rng(20261124);
-    verify::ExactParityCounts total;
-    for (int s = 0; s < 60; ++s) {
-      const int width = 8 + static_cast<int>(rng() % 90);
-      const int height = 8 + static_cast<int>(rng() % 70);
-      const raster::CommandStream stream = randomStream(rng, width, height);
-      raster::CpuDevice reference(width, height);
-      GlExactDevice candidate(width, height, platform);
-      const auto report = verify::compareStreamExactly(stream, reference, candidate);
-      INFO("stream " << s << ": " << describe(report));
-      CHECK(report.ok());
-      total += report.counts;
-    }
-    CHECK(total.pixels > 1000000);
-    CHECK(total.identical == total.pixels);
-  }
-}
-
-TEST_CASE("the generated pair suite is bit-identical on the exact GL device", "[gl-exact][suite]") {
-  const auto suite = verify::generatePairSuite();
-  REQUIRE(suite.size() == 504);
-  for (GlPlatform platform : platforms()) {
-    INFO("platform " << verify::toString(platform));
-    verify::ExactParityCounts total;
-    int compared = 0;
-    for (const verify::SuitePair& pair : suite) {
-      core::PairRequest request;
-      request.frame = pair.frame;
-      const auto report = verify::compareOnGlExact(pair.a, pair.b, request, platform);
-      INFO(pair.label << ": " << describe(report));
-      CHECK(report.ok());
-      total += report.counts;
-      compared += report.counts.pixels > 0;
-    }
-    CHECK(compared > 250);
-    CHECK(total.different == 0);
-  }
-}
 
 TEST_CASE("exact parity reports a device that differs", "[gl-exact][errors]") {
   // The comparer itself must be able to fail: the same stream with one vertex moved by one
@@ -185,19 +124,3 @@ TEST_CASE("exact GL devices keep working between uses of fixed-function GL devic
   }
 }
 #endif
-
-TEST_CASE("the exact GL device rejects what the CPU device rejects", "[gl-exact][errors]") {
-  for (GlPlatform platform : platforms()) {
-    CHECK_THROWS_AS(GlExactDevice(0, 4, platform), std::invalid_argument);
-    CHECK_THROWS_AS(GlExactDevice(16385, 4, platform), std::invalid_argument);
-    GlExactDevice device(4, 4, platform);
-    const WindowVertex v[3] = {{0, 0, 0.5f}, {4, 0, 1.5f}, {0, 4, 0.5f}};
-    const std::uint32_t bad[3] = {0, 1, 3};
-    const std::uint32_t good[3] = {0, 1, 2};
-    CHECK_THROWS_AS(device.drawTriangles(v, bad), std::invalid_argument);
-    CHECK_THROWS_AS(device.drawTriangles(v, good), std::invalid_argument);  // z = 1.5
-    CHECK_THROWS_AS(device.clearDepth(std::nan("")), std::invalid_argument);
-    const auto depth = device.readDepth({0, 0, 4, 4});
-    CHECK(std::all_of(depth.begin(), depth.end(), [](auto d) { return d == 16777215u; }));
-  }
-}

@@ -1,6 +1,8 @@
 #include "recode/verify/exact_parity.hpp"
 
+#include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "recode/raster/cpu_device.hpp"
 #ifdef RECODE_HAVE_VULKAN
@@ -83,6 +85,19 @@ ExactParityReport compareStreamExactly(const raster::CommandStream& stream,
   return report;
 }
 
+ExactParityReport comparePairExactly(const core::TriangleMesh& a, const core::TriangleMesh& b,
+                                     const core::PairRequest& request,
+                                     const core::DeviceFactory& makeCandidate) {
+  const RecordedPair pair = recordPair(a, b, request);
+  if (pair.mor.empty())
+    return {};
+  const raster::CommandStream& stream = pair.stream;
+  raster::CpuDevice reference(stream.width, stream.height);
+  const std::unique_ptr<raster::DepthStencilDevice> candidate =
+      makeCandidate(stream.width, stream.height);
+  return compareStreamExactly(stream, reference, *candidate, pair.mor);
+}
+
 #ifndef RECODE_HAVE_GL_EXACT
 GlPlatform resolveGlPlatform(GlPlatform) {
   throw std::runtime_error(
@@ -99,14 +114,13 @@ ExactParityReport compareOnGlExact(const core::TriangleMesh&, const core::Triang
 #else
 ExactParityReport compareOnGlExact(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                    const core::PairRequest& request, GlPlatform platform) {
-  const RecordedPair pair = recordPair(a, b, request);
-  if (pair.mor.empty())
-    return {};
-  const raster::CommandStream& stream = pair.stream;
-  raster::CpuDevice reference(stream.width, stream.height);
-  GlExactDevice candidate(stream.width, stream.height, platform);
-  ExactParityReport report = compareStreamExactly(stream, reference, candidate, pair.mor);
-  report.renderer = candidate.renderer();
+  std::string renderer;
+  ExactParityReport report = comparePairExactly(a, b, request, [&](int width, int height) {
+    auto device = std::make_unique<GlExactDevice>(width, height, platform);
+    renderer = device->renderer();
+    return device;
+  });
+  report.renderer = renderer;
   return report;
 }
 #endif
@@ -121,14 +135,13 @@ ExactParityReport compareOnVulkan(const core::TriangleMesh&, const core::Triangl
 #else
 ExactParityReport compareOnVulkan(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                   const core::PairRequest& request) {
-  const RecordedPair pair = recordPair(a, b, request);
-  if (pair.mor.empty())
-    return {};
-  const raster::CommandStream& stream = pair.stream;
-  raster::CpuDevice reference(stream.width, stream.height);
-  VulkanDevice candidate(stream.width, stream.height);
-  ExactParityReport report = compareStreamExactly(stream, reference, candidate, pair.mor);
-  report.renderer = candidate.renderer();
+  std::string renderer;
+  ExactParityReport report = comparePairExactly(a, b, request, [&](int width, int height) {
+    auto device = std::make_unique<VulkanDevice>(width, height);
+    renderer = device->renderer();
+    return device;
+  });
+  report.renderer = renderer;
   return report;
 }
 #endif

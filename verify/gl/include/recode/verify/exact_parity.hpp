@@ -12,6 +12,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/command_stream.hpp"
 #include "recode/raster/device.hpp"
+#include "recode/sim/simulation.hpp"
 #include "recode/verify/gl_exact_device.hpp"
 #include "recode/verify/gl_parity.hpp"
 
@@ -49,8 +50,15 @@ struct ExactParityReport {
                                                      int maxExamples = 8);
 
 // Runs core::collidePair for A and B on a CpuDevice, records its command stream and compares it
-// on a GlExactDevice of the platform over the pair's MOR. Pairs whose boxes do not overlap
-// compare nothing. Throws std::runtime_error when the build has no exact GL device.
+// on a fresh device that `makeCandidate` makes at the stream's size, over the pair's MOR. Pairs
+// whose boxes do not overlap compare nothing. What the factory throws goes through.
+[[nodiscard]] ExactParityReport comparePairExactly(const core::TriangleMesh& a,
+                                                   const core::TriangleMesh& b,
+                                                   const core::PairRequest& request,
+                                                   const core::DeviceFactory& makeCandidate);
+
+// comparePairExactly on a GlExactDevice of the platform, with its renderer. Throws
+// std::runtime_error when the build has no exact GL device.
 [[nodiscard]] ExactParityReport compareOnGlExact(const core::TriangleMesh& a,
                                                  const core::TriangleMesh& b,
                                                  const core::PairRequest& request,
