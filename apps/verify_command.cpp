@@ -189,12 +189,15 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   CLI::Option* json =
       cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   addNoTimingFlag(*cmd, json, o->noTiming);
-  cmd->add_flag("--verbose", o->verbose, "list every pair, not only failures and misses");
+  cmd->add_flag("--verbose", o->verbose,
+                "list every pair, not only failures, misses and extras within rounding");
   cmd->add_flag("--modes", o->modes,
                 "also run the adaptive and conservative modes (docs/algorithm.md, \"Beyond the "
                 "paper\") and count their missed and extra pairs against CGAL; needs --cgal. "
-                "Exit status 2 also when the conservative mode misses or an extra is beyond "
-                "its bound")
+                "The verdict is FAILED, exit status 2, also when a mode breaks its promise "
+                "(docs/accuracy.md): a conservative miss, a conservative apart where the "
+                "reference collides, an extra beyond its bound, or an adaptive definite apart "
+                "on a pair that intersects")
       ->needs(cgalFlag);
   addViewAxisOption(*cmd, o->viewAxis);
   const FrameOptionHandles frameOptions =
