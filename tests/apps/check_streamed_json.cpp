@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "streamed_json.hpp"
+#include "cli/streamed_json.hpp"
 
 using nlohmann::ordered_json;
 

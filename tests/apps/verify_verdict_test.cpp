@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "verify_report.hpp"
+#include "verify/verify_report.hpp"
 
 using namespace recode;
 

@@ -1,0 +1,134 @@
+// The experiment list of `recode bench`: scenes, tessellation levels, algorithms.
+#include "bench/bench_experiments.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+namespace recode::app {
+
+namespace {
+
+using Kind = AlgorithmSpec::Kind;
+
+// RECODE on every device (MIN MOR, as `recode run` defaults), its adaptive, conservative and
+// skip-apart modes and its adaptive view axis (`--view-axis adaptive`) on the CPU device, and
+// the three peers.
+std::vector<AlgorithmSpec> recodeAndPeers() {
+  AlgorithmSpec adaptive{"recode-adaptive", Kind::Recode, verify::DeviceKind::Cpu,
+                         core::MorMode::Min};
+  adaptive.mode = core::PairMode::Adaptive;
+  AlgorithmSpec conservative = adaptive;
+  conservative.name = "recode-conservative";
+  conservative.mode = core::PairMode::Conservative;
+  AlgorithmSpec skipApart = adaptive;
+  skipApart.name = "recode-skip-apart";
+  skipApart.mode = core::PairMode::SkipApart;
+  AlgorithmSpec viewAxis{"recode-view-axis", Kind::Recode, verify::DeviceKind::Cpu,
+                         core::MorMode::Min};
+  viewAxis.viewAxisRule = core::ViewAxisRule::ThinOverlap;
+  return {
+      {"recode-cpu", Kind::Recode, verify::DeviceKind::Cpu, core::MorMode::Min},
+      adaptive,
+      conservative,
+      skipApart,
+      viewAxis,
+      {"recode-gl", Kind::Recode, verify::DeviceKind::Gl, core::MorMode::Min},
+      {"recode-gl-exact", Kind::Recode, verify::DeviceKind::GlExact, core::MorMode::Min},
+      {"recode-vulkan", Kind::Recode, verify::DeviceKind::Vulkan, core::MorMode::Min},
+      {"fcl-gjk", Kind::FclGjk},
+      {"fcl-obbrss", Kind::FclObbrss},
+      {"bullet", Kind::Bullet},
+  };
+}
+
+// Table 1's columns: the MOR variants on the CPU device.
+std::vector<AlgorithmSpec> mors() {
+  std::vector<AlgorithmSpec> list;
+  for (const auto& [name, mor] :
+       {std::pair{"recode-min", core::MorMode::Min}, std::pair{"recode-max", core::MorMode::Max},
+        std::pair{"recode-full", core::MorMode::Full}})
+    list.push_back({name, Kind::Recode, verify::DeviceKind::Cpu, mor});
+  // The paper's FULL: the whole screen read for every pair test.
+  AlgorithmSpec screen{"recode-full-screen", Kind::Recode, verify::DeviceKind::Cpu,
+                       core::MorMode::Full};
+  screen.onScreen = true;
+  list.push_back(screen);
+  return list;
+}
+
+std::vector<Experiment> makeExperiments() {
+  std::vector<Experiment> list;
+  list.push_back({"table1",
+                  "Table 1: MIN, MAX and FULL MOR on hierarchy-9",
+                  {"hierarchy-9"},
+                  {2880},  // 126,720 triangles; the paper's scene had 126,600
+                  {288},
+                  mors()});
+  // Two hands of 33 blocks and a ball: 56 to 2,304 triangles per block spans the paper's
+  // 1,860 to 76,032 triangles.
+  list.push_back({"table2",
+                  "Table 2: two hands grasping a ball, over tessellation levels",
+                  {"hand-grasp"},
+                  {56, 128, 256, 512, 1024, 2304},
+                  {56},
+                  recodeAndPeers()});
+  // 100 blocks: 36 to 11,520 triangles per block is the paper's 3,600 to 1,152,000.
+  list.push_back({"figure8",
+                  "Figure 8: random shapes, 3,600 to 1,152,000 triangles",
+                  {"random-shapes"},
+                  {36, 144, 576, 2304, 11520},
+                  {36},
+                  recodeAndPeers()});
+  list.push_back({"comb",
+                  "The comb experiments: rotation and translation, tips aligned and offset",
+                  {"comb-rotate-aligned", "comb-rotate-offset", "comb-translate-aligned",
+                   "comb-translate-offset"},
+                  {64, 256, 1024, 4096},
+                  {64},
+                  recodeAndPeers()});
+  list.push_back({"random-cones",
+                  "100 cones in random motion",
+                  {"random-cones"},
+                  {16, 64, 256, 1152},
+                  {16},
+                  recodeAndPeers()});
+  return list;
+}
+
+std::string experimentNames() {
+  std::string names;
+  for (const Experiment& e : benchExperiments())
+    names += (names.empty() ? "" : ", ") + e.name;
+  return names;
+}
+
+}  // namespace
+
+const std::vector<Experiment>& benchExperiments() {
+  static const std::vector<Experiment> list = makeExperiments();
+  return list;
+}
+
+std::vector<const Experiment*> selectExperiments(const std::vector<std::string>& names) {
+  std::vector<const Experiment*> chosen;
+  if (names.empty()) {
+    for (const Experiment& e : benchExperiments())
+      chosen.push_back(&e);
+    return chosen;
+  }
+  for (const std::string& name : names) {
+    const auto& all = benchExperiments();
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const Experiment& e) { return e.name == name; });
+    if (it == all.end())
+      throw std::invalid_argument("unknown experiment \"" + name +
+                                  "\" (experiments: " + experimentNames() + ")");
+    if (std::find(chosen.begin(), chosen.end(), &*it) != chosen.end())
+      throw std::invalid_argument("experiment \"" + name + "\" is named twice");
+    chosen.push_back(&*it);
+  }
+  return chosen;
+}
+
+}  // namespace recode::app

@@ -1,0 +1,286 @@
+// `recode explain`: its command-line options, and the run that ties recorder, pictures and page.
+#include "explain/explain_command.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/atomic_file.hpp"
+#include "explain/explain_format.hpp"
+#include "explain/explain_gallery.hpp"
+#include "explain/explain_hierarchy.hpp"
+#include "explain/explain_page.hpp"
+#include "explain/explain_pictures.hpp"
+#include "explain/explain_rays.hpp"
+#include "explain/explain_recorder.hpp"
+#include "explain/explain_text.hpp"
+#include "pair/pair_setup.hpp"
+#include "recode/pair/frame.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/raster/cpu_device.hpp"
+
+#include "recode/io/printable.hpp"
+
+namespace recode::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+using core::PairStep;
+
+struct ExplainOptions {
+  std::string scene;  // empty: the built-in pair
+  std::string out;
+  std::string mor = "min";
+  std::string resolution;
+  bool boxTest = true;
+  bool gallery = false;
+  std::string pair;  // --pair NAME_A:NAME_B; empty: the scene's first two objects
+  int frame = 0;     // --frame K, with --pair
+};
+
+// Which buffers a step is about (a buffer that changed is pictured as well).
+bool stepWritesDepth(PairStep s) {
+  return s == PairStep::SetZ || s == PairStep::LoadAmin || s == PairStep::ContactNear ||
+         s == PairStep::ContactFar;
+}
+bool stepWritesStencil(PairStep s) {
+  return s == PairStep::SetZ || s == PairStep::TestZ || s == PairStep::TestAminFront ||
+         s == PairStep::TestAminBack;
+}
+
+// The depth a step clears to inside its rectangle (docs/algorithm.md section 3), -1 for none.
+double clearDepthOf(PairStep s) {
+  switch (s) {
+    case PairStep::SetZ:
+    case PairStep::ContactNear:
+      return 0.0;
+    case PairStep::LoadAmin:
+    case PairStep::ContactFar:
+      return 1.0;
+    default:
+      return -1.0;
+  }
+}
+
+void append(std::vector<explain::Picture>& to, std::vector<explain::Picture> pictures) {
+  for (explain::Picture& p : pictures)
+    to.push_back(std::move(p));
+}
+
+// The section of one step: its explanation, and pictures of the buffers it is about or
+// changed (the case map after the read-back).
+explain::Section stepSection(const explain::StepSnapshot& snap,
+                             const raster::PixelBuffer<std::uint8_t>& prevStencil,
+                             const raster::PixelBuffer<std::uint32_t>& prevDepth,
+                             const core::PairResult& result, explain::PictureWriter& pictures,
+                             int number) {
+  explain::Section s;
+  s.id = std::string(core::toString(snap.step));
+  s.step = s.id;
+  s.title = explain::stepTitle(snap.step);
+  s.text = explain::originText(snap.step) + explain::stepText(snap.step);
+  if (snap.state && snap.step != PairStep::ReadStencil)
+    s.text += explain::stateText(*snap.state, clearDepthOf(snap.step));
+  if (snap.step == PairStep::ReadStencil) {
+    s.text += explain::caseTableHtml(result);
+    append(s.pictures, pictures.cases(number));
+  } else {
+    if (stepWritesDepth(snap.step) || snap.depth != prevDepth)
+      append(s.pictures, pictures.depth(snap, number));
+    if (stepWritesStencil(snap.step) || snap.stencil != prevStencil) {
+      append(s.pictures, pictures.stencil(snap, number));
+      append(s.pictures, pictures.changes(snap, prevStencil, number));
+    }
+  }
+  return s;
+}
+
+// The page's sections in order, writing their pictures on the way: the silhouettes, one
+// section per step and, when the blocks collide, the contact region.
+std::vector<explain::Section> buildSections(const core::PairResult& result,
+                                            const std::vector<explain::StepSnapshot>& snapshots,
+                                            core::MorMode mor, bool boxTest,
+                                            explain::PictureWriter& pictures,
+                                            const std::string& descentHtml) {
+  std::vector<explain::Section> sections;
+  const auto next = [&sections] { return static_cast<int>(sections.size()) + 1; };
+  const raster::PixelRect frame = pictures.frame();
+  explain::Section first;
+  first.id = "silhouettes";
+  first.title = explain::kSilhouettesTitle;
+  first.text = explain::silhouettesText(result, mor, boxTest, frame);
+  first.pictures = pictures.silhouettes(next());
+  sections.push_back(std::move(first));
+  if (!descentHtml.empty()) {
+    explain::Section descent;
+    descent.id = "descent";
+    descent.title = "The box descent: how recode run came to this pair";
+    descent.text = descentHtml;
+    sections.push_back(std::move(descent));
+  }
+  const raster::PixelBuffer<std::uint8_t> noStencil(frame, std::uint8_t{0});
+  const raster::PixelBuffer<std::uint32_t> farDepth(frame, raster::kDepthMax);
+  const raster::PixelBuffer<std::uint8_t>* prevStencil = &noStencil;
+  const raster::PixelBuffer<std::uint32_t>* prevDepth = &farDepth;
+  for (const explain::StepSnapshot& snap : snapshots) {
+    sections.push_back(stepSection(snap, *prevStencil, *prevDepth, result, pictures, next()));
+    prevStencil = &snap.stencil;
+    prevDepth = &snap.depth;
+  }
+  if (result.collide) {
+    explain::Section contact;
+    contact.id = "contact";
+    contact.title = explain::kContactTitle;
+    contact.text = explain::contactText(result.contact);
+    contact.pictures = pictures.contact(next());
+    sections.push_back(std::move(contact));
+  }
+  return sections;
+}
+
+}  // namespace
+
+ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morName, bool boxTest,
+                               const fs::path& dir, const std::string& descentHtml) {
+  const core::FrameSpec& f = setup.frame;
+  if (f.width > kMaxExplainSide || f.height > kMaxExplainSide)
+    throw std::invalid_argument("the frame is " + std::to_string(f.width) + "x" +
+                                std::to_string(f.height) + "; recode explain draws at most " +
+                                std::to_string(kMaxExplainSide) +
+                                " pixels a side (use --resolution)");
+  // Run the pair, keeping the buffers after every step.
+  core::PairRequest request;
+  request.frame = f;
+  request.mor = core::parseMorMode(morName).value();  // CLI11 checked the name
+  request.contact = true;
+  request.boxTest = boxTest;
+  raster::CpuDevice device(f.width, f.height);
+  explain::StepRecorder recorder;
+  ExplainSummary summary;
+  summary.result = core::collidePair(device, setup.a, setup.b, request, &recorder);
+  const core::PairResult& result = summary.result;
+  const auto range =
+      core::pairDepthRange(f.axis, core::boundingBox(setup.a), core::boundingBox(setup.b));
+  const raster::PixelBuffer<std::uint8_t> coverage =
+      explain::blockCoverage(setup, range[0], range[1]);
+
+  explain::PictureWriter pictures(dir, setup, result, coverage);
+  const std::vector<explain::Section> sections =
+      buildSections(result, recorder.snapshots(), request.mor, boxTest, pictures, descentHtml);
+
+  const explain::FaceDepths facesA = explain::faceDepths(setup, setup.a, range[0], range[1]);
+  const explain::FaceDepths facesB = explain::faceDepths(setup, setup.b, range[0], range[1]);
+  const explain::RayInputs rays{result,  recorder.snapshots(), coverage, facesA, facesB, range[0],
+                                range[1]};
+  const raster::PixelRect frameRect{0, 0, f.width, f.height};
+  const nlohmann::json rayData =
+      explain::rayDataJson(rays, frameRect, explain::rayCrop(rays, frameRect));
+
+  const explain::Page page{setup,           morName,  result, pictures.scale(),
+                           pictures.view(), sections, rayData};
+  explain::writeIndexHtml(dir, page);
+  explain::writeExplainJson(dir, page);
+  for (const explain::Section& s : sections)
+    for (const explain::Picture& p : s.pictures) {
+      ++summary.pictures;
+      if (p.kind == "cases" || (p.kind == "silhouettes" && summary.thumbnail.empty()))
+        summary.thumbnail = p.file;
+    }
+  return summary;
+}
+
+namespace {
+
+int runExplain(const ExplainOptions& options) {
+  if (options.gallery) {
+    if (!options.scene.empty())
+      throw std::invalid_argument("--gallery runs its own pairs; leave out the scene " +
+                                  options.scene);
+    const core::FrameOverrides overrides =
+        options.resolution.empty() ? core::FrameOverrides{} : parseResolution(options.resolution);
+    const fs::path dir(options.out);
+    CreatedDirectory created(dir, "--out " + options.out);
+    const std::size_t pages = explain::writeGallery(dir, overrides);
+    created.keep();
+    std::cout << "recode explain --gallery: wrote " << pages << " pages and index.html to "
+              << dir.string() << '\n';
+    return 0;
+  }
+  const core::FrameOverrides overrides =
+      options.resolution.empty() ? core::FrameOverrides{} : parseResolution(options.resolution);
+  explain::HierarchyPair chosen;
+  if (!options.pair.empty()) {
+    if (options.scene.empty())
+      throw std::invalid_argument("--pair " + options.pair + ": needs a scene file");
+    chosen = explain::hierarchyPair(options.scene, options.frame, options.pair, overrides);
+  } else {
+    chosen.setup = loadPairSetup(
+        options.scene.empty() ? std::nullopt : std::optional<std::string>(options.scene),
+        overrides);
+  }
+  const PairSetup& setup = chosen.setup;
+  const core::FrameSpec& f = setup.frame;
+  // Removed again, with what was written into it, if anything below fails.
+  const fs::path dir(options.out);
+  CreatedDirectory created(dir, "--out " + options.out);
+  const ExplainSummary summary =
+      explainPairInto(setup, options.mor, options.boxTest, dir, chosen.descentHtml);
+  const core::PairResult& result = summary.result;
+  created.keep();
+  const std::size_t written = summary.pictures;
+  std::cout << "recode explain: " << io::printable(setup.nameA) << " and "
+            << io::printable(setup.nameB) << ", " << f.width << "x" << f.height << " pixels along "
+            << core::toString(f.axis) << ", MOR " << options.mor << ": "
+            << (result.collide ? "collide" : "no collision") << " (" << result.interferingPixels
+            << " interfering pixels)\n"
+            << "  wrote " << written << (written == 1 ? " picture" : " pictures")
+            << ", index.html and explain.json to " << dir.string() << '\n';
+  return 0;
+}
+
+}  // namespace
+
+void addExplainCommand(CLI::App& app, int& exitCode) {
+  auto opts = std::make_shared<ExplainOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "explain",
+      "Run RECODE on one pair and write a picture of the buffers after every step, with an "
+      "index.html that explains each step");
+  cmd->add_option("scene", opts->scene,
+                  "scene file (JSON, docs/scenes.md; its first two objects are A and B); omit "
+                  "for the built-in pair")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out", opts->out,
+                  "directory for the pictures, index.html and explain.json "
+                  "(created if missing)")
+      ->required();
+  cmd->add_option("--mor", opts->mor, "minimum overlapping region: min, max or full")
+      ->check(CLI::IsMember({"min", "max", "full"}))
+      ->capture_default_str();
+  cmd->add_option("--resolution", opts->resolution,
+                  "W or WxH pixels (W alone: square pixels); overrides the scene; at most " +
+                      std::to_string(kMaxExplainSide) + " a side");
+  cmd->add_flag("!--no-box-test", opts->boxTest,
+                "run the passes even when the blocks' boxes are apart (shows cases 1, 2, 7, 8)");
+  CLI::Option* pair = cmd->add_option(
+      "--pair", opts->pair,
+      "NAME_A:NAME_B: two blocks of the scene's objects (paths like 'dumbbell/bar', or names "
+      "when unique), for scenes whose objects have children; adds the box descent");
+  cmd->add_option("--frame", opts->frame, "with --pair: the frame to pose the scene at")
+      ->needs(pair)
+      ->capture_default_str();
+  cmd->add_flag("--gallery", opts->gallery,
+                "write one page per case 1-8 from small built-in pairs, and a pair that is "
+                "apart, with an index.html linking them (no scene; --mor and --no-box-test "
+                "are chosen per pair)");
+  cmd->callback([opts, &exitCode]() { exitCode = runExplain(*opts); });
+}
+
+}  // namespace recode::app

@@ -1,0 +1,42 @@
+#pragma once
+// The per-pixel data of the ray inspector: depth and stencil after every step, both blocks'
+// face depths and the case, over the MOR plus a margin, embedded in index.html as JSON.
+
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "explain/explain_recorder.hpp"
+#include "recode/pair/pair.hpp"
+#include "recode/raster/pixel_buffer.hpp"
+
+namespace recode::app::explain {
+
+// At most this many pixels of ray data go into the page (8 steps x 2 buffers each, about
+// 2.5 MB of JSON at the limit); a larger crop is cut to a window around where both blocks are.
+inline constexpr int kMaxRayPixels = 16384;
+
+struct RayInputs {
+  const core::PairResult& result;
+  const std::vector<StepSnapshot>& snapshots;
+  const raster::PixelBuffer<std::uint8_t>& coverage;  // bit 0: A, bit 1: B
+  const FaceDepths& a;
+  const FaceDepths& b;
+  double depthMin = 0.0;  // world range along the view axis that depth 0..1 spans
+  double depthMax = 1.0;
+};
+
+// The MOR with a margin (empty when the MOR is), inside the frame.
+[[nodiscard]] raster::PixelRect morWithMargin(const raster::PixelRect& mor,
+                                              const raster::PixelRect& frame);
+
+// The pixels the inspector has data for: the MOR with a margin, cut to kMaxRayPixels around
+// the pixels both blocks cover. Empty when there is no MOR.
+[[nodiscard]] raster::PixelRect rayCrop(const RayInputs& in, const raster::PixelRect& frame);
+
+// {"crop", "capped", "steps": [{"id"}], "depth": [[...]], "stencil": [[...]], "a_front",
+// "a_back", "b_front", "b_back", "coverage", "case", ...}: arrays row by row, bottom row first,
+// over `crop`.
+[[nodiscard]] nlohmann::json rayDataJson(const RayInputs& in, const raster::PixelRect& frame,
+                                         const raster::PixelRect& crop);
+
+}  // namespace recode::app::explain
