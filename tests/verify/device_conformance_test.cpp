@@ -39,8 +39,8 @@ struct ConformingDevice {
   core::DeviceFactory make;
 };
 
-// Every exact device this build has; the exact GL device once per context platform that gives a
-// context here (OSMesa; EGL where its headless platform works).
+// Every exact device this build has; the exact GL device once per context platform to test here
+// (verify::testing::exactGlPlatformsHere).
 std::vector<ConformingDevice> conformingDevices() {
   std::vector<ConformingDevice> list;
   for (const verify::DeviceInfo& d : verify::deviceRegistry()) {
@@ -48,19 +48,14 @@ std::vector<ConformingDevice> conformingDevices() {
       continue;
 #if RECODE_HAVE_GL_EXACT
     if (d.kind == verify::DeviceKind::GlExact) {
-      for (const verify::GlPlatform p : {verify::GlPlatform::OsMesa, verify::GlPlatform::Egl}) {
-        if (!verify::glPlatformBuilt(p))
-          continue;
-        try {
-          verify::GlExactDevice probe(1, 1, p);
-        } catch (const std::runtime_error& e) {
-          WARN("gl-exact on " << verify::toString(p) << " unavailable here: " << e.what());
-          continue;
-        }
+      std::vector<std::string> unavailable;
+      for (const verify::GlPlatform p : verify::testing::exactGlPlatformsHere(unavailable)) {
         list.push_back({"gl-exact/" + std::string(verify::toString(p)), [p](int w, int h) {
                           return std::make_unique<verify::GlExactDevice>(w, h, p);
                         }});
       }
+      for (const std::string& why : unavailable)
+        WARN(why);
       continue;
     }
 #endif

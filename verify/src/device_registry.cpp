@@ -99,8 +99,8 @@ DeviceKind parseDeviceKind(std::string_view name) {
       return info.kind;
     choices += (choices.empty() ? "" : ", ") + std::string(info.name);
   }
-  throw std::invalid_argument("unknown device \"" + std::string(name) + "\" (devices: " +
-                              choices + ")");
+  throw std::invalid_argument("unknown device \"" + std::string(name) + "\" (devices: " + choices +
+                              ")");
 }
 
 std::unique_ptr<raster::DepthStencilDevice> makeDevice(DeviceKind kind, int width, int height) {

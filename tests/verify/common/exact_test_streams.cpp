@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 
 namespace recode::verify::testing {
 
@@ -9,6 +11,23 @@ using raster::CompareFunc;
 using raster::Face;
 using raster::StencilOp;
 using raster::WindowVertex;
+
+#if RECODE_HAVE_GL_EXACT
+std::vector<GlPlatform> exactGlPlatformsHere(std::vector<std::string>& unavailable) {
+  std::vector<GlPlatform> list;
+  if (glPlatformBuilt(GlPlatform::OsMesa))
+    list.push_back(GlPlatform::OsMesa);
+  if (glPlatformBuilt(GlPlatform::Egl)) {
+    try {
+      GlExactDevice probe(1, 1, GlPlatform::Egl);
+      list.push_back(GlPlatform::Egl);
+    } catch (const std::runtime_error& e) {
+      unavailable.push_back(std::string("EGL exact device unavailable here: ") + e.what());
+    }
+  }
+  return list;
+}
+#endif
 
 std::vector<std::filesystem::path> goldenFiles() {
   std::vector<std::filesystem::path> files;

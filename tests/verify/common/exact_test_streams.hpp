@@ -10,6 +10,9 @@
 
 #include "recode/raster/command_stream.hpp"
 #include "recode/verify/exact_parity.hpp"
+#if RECODE_HAVE_GL_EXACT
+#include "recode/verify/gl_exact_device.hpp"
+#endif
 
 namespace recode::verify::testing {
 
@@ -23,5 +26,12 @@ namespace recode::verify::testing {
 // with z anywhere in [0, 1], slivers, vertices far outside the framebuffer (up to the +-32768
 // guard band), random sub-pixel positions and positions on pixel centres and edges.
 [[nodiscard]] raster::CommandStream randomStream(std::mt19937& rng, int width, int height);
+
+#if RECODE_HAVE_GL_EXACT
+// The exact GL device's context platforms to test here: OSMesa when built (it is what this
+// machine has: a failure to make its context fails the tests); EGL when built and its headless
+// platform gives a context, else why not is added to `unavailable`.
+[[nodiscard]] std::vector<GlPlatform> exactGlPlatformsHere(std::vector<std::string>& unavailable);
+#endif
 
 }  // namespace recode::verify::testing

@@ -37,20 +37,11 @@ using verify::testing::describe;
 using verify::testing::goldenFiles;
 using verify::testing::randomStream;
 
-// The platforms to test: OSMesa always (it is what this machine has); EGL when built and its
-// headless platform gives a context here.
 std::vector<GlPlatform> platforms() {
-  std::vector<GlPlatform> list;
-  if (verify::glPlatformBuilt(GlPlatform::OsMesa))
-    list.push_back(GlPlatform::OsMesa);
-  if (verify::glPlatformBuilt(GlPlatform::Egl)) {
-    try {
-      GlExactDevice probe(1, 1, GlPlatform::Egl);
-      list.push_back(GlPlatform::Egl);
-    } catch (const std::runtime_error& e) {
-      WARN("EGL exact device unavailable here: " << e.what());
-    }
-  }
+  std::vector<std::string> unavailable;
+  const std::vector<GlPlatform> list = verify::testing::exactGlPlatformsHere(unavailable);
+  for (const std::string& why : unavailable)
+    WARN(why);
   return list;
 }
 

@@ -98,6 +98,26 @@ ExactParityReport comparePairExactly(const core::TriangleMesh& a, const core::Tr
   return compareStreamExactly(stream, reference, *candidate, pair.mor);
 }
 
+namespace {
+
+// comparePairExactly on a Device(width, height, extra...) that names its renderer, which the
+// report keeps.
+template <class Device, class... Extra>
+ExactParityReport compareOnDeviceWithRenderer(const core::TriangleMesh& a,
+                                              const core::TriangleMesh& b,
+                                              const core::PairRequest& request, Extra... extra) {
+  std::string renderer;
+  ExactParityReport report = comparePairExactly(a, b, request, [&](int width, int height) {
+    auto device = std::make_unique<Device>(width, height, extra...);
+    renderer = device->renderer();
+    return device;
+  });
+  report.renderer = renderer;
+  return report;
+}
+
+}  // namespace
+
 #ifndef RECODE_HAVE_GL_EXACT
 GlPlatform resolveGlPlatform(GlPlatform) {
   throw std::runtime_error(
@@ -114,14 +134,7 @@ ExactParityReport compareOnGlExact(const core::TriangleMesh&, const core::Triang
 #else
 ExactParityReport compareOnGlExact(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                    const core::PairRequest& request, GlPlatform platform) {
-  std::string renderer;
-  ExactParityReport report = comparePairExactly(a, b, request, [&](int width, int height) {
-    auto device = std::make_unique<GlExactDevice>(width, height, platform);
-    renderer = device->renderer();
-    return device;
-  });
-  report.renderer = renderer;
-  return report;
+  return compareOnDeviceWithRenderer<GlExactDevice>(a, b, request, platform);
 }
 #endif
 
@@ -135,14 +148,7 @@ ExactParityReport compareOnVulkan(const core::TriangleMesh&, const core::Triangl
 #else
 ExactParityReport compareOnVulkan(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                   const core::PairRequest& request) {
-  std::string renderer;
-  ExactParityReport report = comparePairExactly(a, b, request, [&](int width, int height) {
-    auto device = std::make_unique<VulkanDevice>(width, height);
-    renderer = device->renderer();
-    return device;
-  });
-  report.renderer = renderer;
-  return report;
+  return compareOnDeviceWithRenderer<VulkanDevice>(a, b, request);
 }
 #endif
 

@@ -14,7 +14,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/verify/cgal_oracle.hpp"
-#include "suite_random.hpp"
+#include "suite_support.hpp"
 
 namespace recode::verify {
 
@@ -40,9 +40,7 @@ Eigen::Vector2d lateral(Random& rnd, double reach) {
 }
 
 core::TriangleMesh turned(const core::TriangleMesh& m, const Eigen::Matrix3d& r) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = r;
-  return core::transformed(m, t);
+  return core::transformed(m, pose(r, Vector3d::Zero()));
 }
 
 Eigen::Matrix3d about(int axis, double radians) {
@@ -123,16 +121,7 @@ Turn smallTurn(Random& rnd) {
 // A block turned about `pivot`.
 core::TriangleMesh turnedAbout(const core::TriangleMesh& m, const Turn& turn,
                                const Vector3d& pivot) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = turn.rotation;
-  t.translation() = pivot - turn.rotation * pivot;
-  return core::transformed(m, t);
-}
-
-Eigen::Isometry3d shifted(const Vector3d& by) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.translation() = by;
-  return t;
+  return core::transformed(m, pose(turn.rotation, pivot - turn.rotation * pivot));
 }
 
 // The gap along z between A's top and B's lowest point before the turns: touching exactly, or
@@ -177,8 +166,8 @@ PropertyCase propertyCase(long long index, std::uint32_t seed) {
   // B's lowest point, at the middle of its box across, over the contact point.
   const Vector3d lowB(0.5 * (boxB.min.x() + boxB.max.x()), 0.5 * (boxB.min.y() + boxB.max.y()),
                       boxB.min.z());
-  const core::TriangleMesh b =
-      core::transformed(s.b, shifted(contact - lowB + Vector3d(0.0, 0.0, gap)));
+  const core::TriangleMesh b = core::transformed(
+      s.b, pose(Eigen::Matrix3d::Identity(), contact - lowB + Vector3d(0.0, 0.0, gap)));
   // Each block turned (or, one time in four, not) about the contact point.
   const Turn ta = rnd.index(4) == 0 ? Turn{} : smallTurn(rnd);
   const Turn tb = rnd.index(4) == 0 ? Turn{} : smallTurn(rnd);

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "recode/geometry/generators.hpp"
-#include "suite_random.hpp"
+#include "suite_support.hpp"
 
 namespace recode::verify {
 
@@ -26,13 +26,6 @@ using Eigen::Vector3d;
 // touching, a gap under one depth step, a slight gap, a clear gap. One depth step of the
 // suite's frames is a few 1e-7 world units, so ±1e-7 sits inside the rounding.
 constexpr std::array<double, 7> kGaps = {-0.05, -1e-3, -1e-7, 0.0, 1e-7, 1e-3, 0.05};
-
-Eigen::Isometry3d pose(const Eigen::Matrix3d& rotation, const Vector3d& translation) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = rotation;
-  t.translation() = translation;
-  return t;
-}
 
 // An octahedron with semi-axes a, b, c: vertices on the axes, faces counter-clockwise seen
 // from outside.

@@ -2,7 +2,8 @@
 // The seam between the RECODE algorithm and a depth/stencil machine: a small subset of
 // OpenGL's per-fragment pipeline, expressed as plain commands. Every back end (the CPU
 // reference, fixed-function OpenGL, the exact OpenGL and Vulkan devices) implements this
-// interface, so the same command stream runs on all of them. The exact semantics are in docs/rasterization.md.
+// interface, so the same command stream runs on all of them. The exact semantics are in
+// docs/rasterization.md.
 
 #include <cstdint>
 #include <span>

@@ -1,7 +1,7 @@
 #pragma once
-// The random numbers of the generated suites (the pair suite, the mode property suite): one
-// std::mt19937 drawn through our own mappings (the standard distributions' outputs are
-// implementation-defined), so a suite is the same on every compiler and library.
+// What the generated suites (the pair suite, the mode property suite) share: random numbers from
+// one std::mt19937 drawn through our own mappings (the standard distributions' outputs are
+// implementation-defined), so a suite is the same on every compiler and library; and poses.
 
 #include <Eigen/Geometry>
 #include <array>
@@ -52,5 +52,13 @@ class Random {
  private:
   std::mt19937 engine_;
 };
+
+// The rigid motion x -> rotation x + translation.
+inline Eigen::Isometry3d pose(const Eigen::Matrix3d& rotation, const Eigen::Vector3d& translation) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear() = rotation;
+  t.translation() = translation;
+  return t;
+}
 
 }  // namespace recode::verify
