@@ -10,15 +10,15 @@
 #include <map>
 #include <vector>
 
+#include "recode/backends/gl_device.hpp"
+#include "recode/backends/gl_exact_device.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/verify/cgal_oracle.hpp"
 #include "recode/verify/embree_oracle.hpp"
-#include "recode/verify/gl_device.hpp"
-#include "recode/verify/gl_exact_device.hpp"
 #include "recode/verify/pair_suite.hpp"
 #ifdef RECODE_HAVE_VULKAN
-#include "recode/verify/vulkan_device.hpp"
+#include "recode/backends/vulkan_device.hpp"
 #endif
 
 namespace {
@@ -135,21 +135,21 @@ BENCHMARK(pairsOnDevice<raster::CpuDevice>)
     ->ArgName("width")
     ->Unit(benchmark::kMillisecond);
 #ifdef RECODE_HAVE_OSMESA
-BENCHMARK(pairsOnDevice<verify::GlDevice>)
+BENCHMARK(pairsOnDevice<backends::GlDevice>)
     ->Arg(64)
     ->Arg(512)
     ->ArgName("width")
     ->Unit(benchmark::kMillisecond);
 #endif
 #ifdef RECODE_HAVE_GL_EXACT
-BENCHMARK(pairsOnDevice<verify::GlExactDevice, verify::GlPlatform::OsMesa>)
+BENCHMARK(pairsOnDevice<backends::GlExactDevice, backends::GlPlatform::OsMesa>)
     ->Arg(64)
     ->Arg(512)
     ->ArgName("width")
     ->Unit(benchmark::kMillisecond);
 #endif
 #ifdef RECODE_HAVE_EGL
-BENCHMARK(pairsOnDevice<verify::GlExactDevice, verify::GlPlatform::Egl>)
+BENCHMARK(pairsOnDevice<backends::GlExactDevice, backends::GlPlatform::Egl>)
     ->Arg(64)
     ->Arg(512)
     ->ArgName("width")
@@ -157,7 +157,7 @@ BENCHMARK(pairsOnDevice<verify::GlExactDevice, verify::GlPlatform::Egl>)
 #endif
 
 #ifdef RECODE_HAVE_VULKAN
-BENCHMARK(pairsOnDevice<verify::VulkanDevice>)
+BENCHMARK(pairsOnDevice<backends::VulkanDevice>)
     ->Arg(64)
     ->Arg(512)
     ->ArgName("width")
@@ -169,17 +169,17 @@ BENCHMARK(pairsOnDevice<verify::VulkanDevice>)
 // device of a platform also pays for the context and the shader compilation; see
 // docs/backends.md for that figure).
 void exactDeviceCreation(benchmark::State& state) {
-  const auto platform = static_cast<verify::GlPlatform>(state.range(0));
+  const auto platform = static_cast<backends::GlPlatform>(state.range(0));
   const int size = static_cast<int>(state.range(1));
-  { verify::GlExactDevice warm(1, 1, platform); }
+  { backends::GlExactDevice warm(1, 1, platform); }
   for (auto _ : state) {
-    verify::GlExactDevice device(size, size, platform);
+    backends::GlExactDevice device(size, size, platform);
     benchmark::DoNotOptimize(device.width());
   }
 }
 BENCHMARK(exactDeviceCreation)
-    ->Args({static_cast<int>(verify::GlPlatform::OsMesa), 64})
-    ->Args({static_cast<int>(verify::GlPlatform::OsMesa), 512})
+    ->Args({static_cast<int>(backends::GlPlatform::OsMesa), 64})
+    ->Args({static_cast<int>(backends::GlPlatform::OsMesa), 512})
     ->ArgNames({"platform", "size"})
     ->Unit(benchmark::kMicrosecond);
 #endif

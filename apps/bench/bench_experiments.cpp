@@ -15,7 +15,7 @@ using Kind = AlgorithmSpec::Kind;
 // skip-apart modes and its adaptive view axis (`--view-axis adaptive`) on the CPU device, and
 // the three peers.
 std::vector<AlgorithmSpec> recodeAndPeers() {
-  AlgorithmSpec adaptive{"recode-adaptive", Kind::Recode, verify::DeviceKind::Cpu,
+  AlgorithmSpec adaptive{"recode-adaptive", Kind::Recode, backends::DeviceKind::Cpu,
                          core::MorMode::Min};
   adaptive.mode = core::PairMode::Adaptive;
   AlgorithmSpec conservative = adaptive;
@@ -24,18 +24,18 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec skipApart = adaptive;
   skipApart.name = "recode-skip-apart";
   skipApart.mode = core::PairMode::SkipApart;
-  AlgorithmSpec viewAxis{"recode-view-axis", Kind::Recode, verify::DeviceKind::Cpu,
+  AlgorithmSpec viewAxis{"recode-view-axis", Kind::Recode, backends::DeviceKind::Cpu,
                          core::MorMode::Min};
   viewAxis.viewAxisRule = core::ViewAxisRule::ThinOverlap;
   return {
-      {"recode-cpu", Kind::Recode, verify::DeviceKind::Cpu, core::MorMode::Min},
+      {"recode-cpu", Kind::Recode, backends::DeviceKind::Cpu, core::MorMode::Min},
       adaptive,
       conservative,
       skipApart,
       viewAxis,
-      {"recode-gl", Kind::Recode, verify::DeviceKind::Gl, core::MorMode::Min},
-      {"recode-gl-exact", Kind::Recode, verify::DeviceKind::GlExact, core::MorMode::Min},
-      {"recode-vulkan", Kind::Recode, verify::DeviceKind::Vulkan, core::MorMode::Min},
+      {"recode-gl", Kind::Recode, backends::DeviceKind::Gl, core::MorMode::Min},
+      {"recode-gl-exact", Kind::Recode, backends::DeviceKind::GlExact, core::MorMode::Min},
+      {"recode-vulkan", Kind::Recode, backends::DeviceKind::Vulkan, core::MorMode::Min},
       {"fcl-gjk", Kind::FclGjk},
       {"fcl-obbrss", Kind::FclObbrss},
       {"bullet", Kind::Bullet},
@@ -48,9 +48,9 @@ std::vector<AlgorithmSpec> mors() {
   for (const auto& [name, mor] :
        {std::pair{"recode-min", core::MorMode::Min}, std::pair{"recode-max", core::MorMode::Max},
         std::pair{"recode-full", core::MorMode::Full}})
-    list.push_back({name, Kind::Recode, verify::DeviceKind::Cpu, mor});
+    list.push_back({name, Kind::Recode, backends::DeviceKind::Cpu, mor});
   // The paper's FULL: the whole screen read for every pair test.
-  AlgorithmSpec screen{"recode-full-screen", Kind::Recode, verify::DeviceKind::Cpu,
+  AlgorithmSpec screen{"recode-full-screen", Kind::Recode, backends::DeviceKind::Cpu,
                        core::MorMode::Full};
   screen.onScreen = true;
   list.push_back(screen);

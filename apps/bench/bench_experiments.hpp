@@ -18,8 +18,8 @@ struct AlgorithmSpec {
   enum class Kind { Recode, FclGjk, FclObbrss, Bullet };
   std::string name;  // the CSV's `algorithm` column
   Kind kind = Kind::Recode;
-  verify::DeviceKind device = verify::DeviceKind::Cpu;  // Recode only
-  core::MorMode mor = core::MorMode::Min;               // Recode only
+  backends::DeviceKind device = backends::DeviceKind::Cpu;  // Recode only
+  core::MorMode mor = core::MorMode::Min;                   // Recode only
   bool onScreen = false;  // Recode only: core::RunOptions::drawOnScreen (the paper's screen)
   // Recode only: core::RunOptions::pairMode (recode-adaptive, recode-conservative,
   // recode-skip-apart)

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "recode/backends/device_registry.hpp"
 #include "recode/kit/buffer_diff.hpp"
 #include "recode/raster/golden.hpp"
-#include "recode/verify/device_registry.hpp"
 
 namespace recode::app {
 
@@ -53,11 +53,11 @@ std::vector<fs::path> goldenFiles(const fs::path& dir) {
 
 // A malformed file is an error of the run (FormatError propagates); a device that throws on a
 // valid stream fails the vector.
-VectorResult conformVector(const fs::path& file, const fs::path& dir, verify::DeviceKind kind) {
+VectorResult conformVector(const fs::path& file, const fs::path& dir, backends::DeviceKind kind) {
   const raster::GoldenVector g = raster::readGolden(file);
   VectorResult r;
   r.file = fs::relative(file, dir).generic_string();
-  auto device = verify::makeDevice(kind, g.stream.width, g.stream.height);
+  auto device = backends::makeDevice(kind, g.stream.width, g.stream.height);
   try {
     raster::replay(g.stream.commands, *device);
   } catch (const std::invalid_argument& e) {
@@ -106,9 +106,9 @@ void printResult(std::ostream& out, const VectorResult& r) {
 }
 
 int runConform(const ConformOptions& o) {
-  const verify::DeviceKind kind = verify::parseDeviceKind(o.device);
+  const backends::DeviceKind kind = backends::parseDeviceKind(o.device);
   // A device this build cannot make is an error before any vector is read.
-  (void)verify::makeDevice(kind, 1, 1);
+  (void)backends::makeDevice(kind, 1, 1);
   const fs::path dir = o.golden;
   std::vector<VectorResult> results;
   for (const fs::path& file : goldenFiles(dir))
@@ -138,7 +138,7 @@ int runConform(const ConformOptions& o) {
 // lacks it.
 std::string deviceChoices() {
   std::string text;
-  for (const verify::DeviceInfo& d : verify::deviceRegistry()) {
+  for (const backends::DeviceInfo& d : backends::deviceRegistry()) {
     text += (text.empty() ? "" : "; ") + std::string(d.name) + ": " + std::string(d.description);
     if (!d.built)
       text += " (not in this build: " + std::string(d.missing) + ")";

@@ -43,7 +43,7 @@ struct VerifyOptions {
 // "recode verify": the GL replay is asked for explicitly, as it needs OSMesa at run time).
 verify::OracleSelection selectedOracles(const VerifyOptions& o) {
   verify::OracleSelection s{
-      o.embree, o.cgal, o.gl, o.glExact, *verify::parseGlPlatform(o.glPlatform), o.vulkan};
+      o.embree, o.cgal, o.gl, o.glExact, *backends::parseGlPlatform(o.glPlatform), o.vulkan};
   if (!s.embree && !s.cgal && !s.gl && !s.glExact && !s.vulkan)
     s.embree = s.cgal = true;
   return s;
@@ -96,7 +96,7 @@ int runVerifyCommand(const VerifyOptions& o) {
     tester.emplace();
   }
   if (run.oracles.glExact)
-    run.glPlatform = verify::resolveGlPlatform(run.oracles.glPlatform);  // no context: an error
+    run.glPlatform = backends::resolveGlPlatform(run.oracles.glPlatform);  // no context: an error
   run.source = input.source;
   const core::ViewAxisRule axisRule = viewAxisRule(o.viewAxis);
   if (axisRule != core::ViewAxisRule::Scene)

@@ -214,7 +214,7 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
   if (run.oracles.gl)
     out << "  gl      " << glLine(t.gl) << "  (" << t.glSeconds << " s)\n";
   if (run.oracles.glExact)
-    out << "  gl-exact " << glExactLine(t.glExact) << "  (" << verify::toString(run.glPlatform)
+    out << "  gl-exact " << glExactLine(t.glExact) << "  (" << backends::toString(run.glPlatform)
         << ", " << t.glExactSeconds << " s)\n";
   if (run.oracles.vulkan)
     out << "  vulkan  " << glExactLine(t.vulkan) << "  (" << t.vulkanSeconds << " s)\n";
@@ -270,7 +270,7 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
   }
   if (run.oracles.glExact) {
     j["gl_exact"] = glExactJson(t.glExact);
-    j["gl_exact"]["platform"] = verify::toString(run.glPlatform);
+    j["gl_exact"]["platform"] = backends::toString(run.glPlatform);
     j["gl_exact"]["seconds"] = t.glExactSeconds;
   }
   if (run.oracles.vulkan) {

@@ -18,7 +18,7 @@ namespace recode::app {
 struct VerifyRun {
   std::string source;
   verify::OracleSelection oracles;
-  verify::GlPlatform glPlatform = verify::GlPlatform::Auto;  // the exact GL device's, resolved
+  backends::GlPlatform glPlatform = backends::GlPlatform::Auto;  // the exact GL device's, resolved
   std::vector<verify::PairVerification> pairs;
   verify::VerificationTotals totals;
   // --modes: the adaptive and conservative modes against CGAL (absent otherwise, so the

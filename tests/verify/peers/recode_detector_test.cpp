@@ -20,7 +20,8 @@ using verify::LeafPairId;
 TEST_CASE("RecodeDetector reports the simulation's contacts as sorted leaf pairs",
           "[bench][recode]") {
   const core::Scene scene = core::builtinExperimentScene("hierarchy-9", 288);
-  verify::RecodeDetector detector(scene, core::RunOptions{}, verify::DeviceKind::Cpu, "recode-cpu");
+  verify::RecodeDetector detector(scene, core::RunOptions{}, backends::DeviceKind::Cpu,
+                                  "recode-cpu");
   core::Simulation reference(scene, core::RunOptions{});
   std::vector<core::ObjectTree> trees = treesOf(scene);
   long long pairs = 0;
@@ -48,8 +49,8 @@ TEST_CASE("RECODE on the GL device finds the CPU reference's pairs on whole moti
           "[bench][recode][gl]") {
   const auto name = GENERATE("comb-translate-aligned", "hierarchy-9");
   const core::Scene scene = core::builtinExperimentScene(name, 64);
-  verify::RecodeDetector cpu(scene, core::RunOptions{}, verify::DeviceKind::Cpu, "recode-cpu");
-  verify::RecodeDetector gl(scene, core::RunOptions{}, verify::DeviceKind::Gl, "recode-gl");
+  verify::RecodeDetector cpu(scene, core::RunOptions{}, backends::DeviceKind::Cpu, "recode-cpu");
+  verify::RecodeDetector gl(scene, core::RunOptions{}, backends::DeviceKind::Gl, "recode-gl");
   std::vector<core::ObjectTree> trees = treesOf(scene);
   long long pairs = 0;
   for (int k = 0; k < scene.frames.value_or(core::kDefaultRunFrames); ++k) {
@@ -67,7 +68,7 @@ TEST_CASE("RECODE on the GL device finds the CPU reference's pairs on whole moti
 #else
 TEST_CASE("RECODE on the GL device is refused without OSMesa", "[bench][recode][gl]") {
   const core::Scene scene = core::builtinExperimentScene("comb-translate-aligned", 64);
-  CHECK_THROWS_AS(verify::RecodeDetector(scene, core::RunOptions{}, verify::DeviceKind::Gl, "gl"),
+  CHECK_THROWS_AS(verify::RecodeDetector(scene, core::RunOptions{}, backends::DeviceKind::Gl, "gl"),
                   std::runtime_error);
 }
 #endif

@@ -9,16 +9,16 @@ namespace recode::verify {
 
 namespace {
 
-core::RunOptions withDevice(core::RunOptions options, DeviceKind device) {
-  if (device != DeviceKind::Cpu)
-    options.deviceFactory = warmDeviceFactory(device);
+core::RunOptions withDevice(core::RunOptions options, backends::DeviceKind device) {
+  if (device != backends::DeviceKind::Cpu)
+    options.deviceFactory = backends::warmDeviceFactory(device);
   return options;
 }
 
 }  // namespace
 
 RecodeDetector::RecodeDetector(const core::Scene& scene, core::RunOptions options,
-                               DeviceKind device, std::string name)
+                               backends::DeviceKind device, std::string name)
     : simulation_(scene, withDevice(std::move(options), device)), name_(std::move(name)) {}
 
 Detection RecodeDetector::detect(const std::vector<core::ObjectTree>& /*objects*/, int frame) {

@@ -28,9 +28,9 @@ struct OracleSelection {
   bool embree = false;
   bool cgal = false;
   bool gl = false;
-  bool glExact = false;                      // bit-exact replay on GlExactDevice
-  GlPlatform glPlatform = GlPlatform::Auto;  // its context platform
-  bool vulkan = false;                       // bit-exact replay on VulkanDevice
+  bool glExact = false;  // bit-exact replay on backends::GlExactDevice
+  backends::GlPlatform glPlatform = backends::GlPlatform::Auto;  // its context platform
+  bool vulkan = false;  // bit-exact replay on backends::VulkanDevice
 };
 
 struct PairVerification {

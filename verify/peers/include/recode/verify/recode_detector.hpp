@@ -1,15 +1,15 @@
 #pragma once
 // RECODE as one of the bench's detectors (scene_detector.hpp): core::Simulation -- sort and
 // sweep, box descent, the pair algorithm per leaf pair -- drawing on the CPU reference device,
-// on fixed-function OpenGL (GlDevice, llvmpipe) or on the exact GPU-API devices (GlExactDevice,
-// VulkanDevice), so the bench compares them on the same work.
+// on fixed-function OpenGL (backends::GlDevice, llvmpipe) or on the exact GPU-API devices
+// (backends::GlExactDevice, backends::VulkanDevice), so the bench compares them on the same work.
 
 #include <memory>
 #include <string>
 
+#include "recode/backends/device_registry.hpp"
 #include "recode/scene/scene.hpp"
 #include "recode/sim/simulation.hpp"
-#include "recode/verify/device_registry.hpp"
 #include "recode/verify/scene_detector.hpp"
 
 namespace recode::verify {
@@ -17,9 +17,9 @@ namespace recode::verify {
 class RecodeDetector final : public SceneDetector {
  public:
   // The simulation of `scene` with `options` (options.deviceFactory is replaced by
-  // warmDeviceFactory for every device but Cpu). Throws std::runtime_error for a device this
-  // build lacks.
-  RecodeDetector(const core::Scene& scene, core::RunOptions options, DeviceKind device,
+  // backends::warmDeviceFactory for every device but Cpu). Throws std::runtime_error for a device
+  // this build lacks.
+  RecodeDetector(const core::Scene& scene, core::RunOptions options, backends::DeviceKind device,
                  std::string name);
 
   [[nodiscard]] std::string name() const override { return name_; }

@@ -1,0 +1,36 @@
+#pragma once
+// The CPU half of every exact GPU device (GL and Vulkan): a draw's triangles, validated,
+// snapped and set up as the contract says, become one proxy record per triangle that can touch
+// a pixel. The GPU draws each record as a rectangle over the triangle's candidate pixels and
+// decides coverage and depth itself in the fragment shader (shaders/exact_contract.glsl); the
+// CPU only decides what needs no per-pixel work: facing, culling and zero area.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "recode/raster/device.hpp"
+#include "recode/raster/state.hpp"
+
+namespace recode::backends {
+
+// One triangle as the exact shaders read it: 14 tightly packed 32-bit fields, in this order, as
+// per-instance vertex attributes.
+struct ProxyTriangle {
+  std::int32_t pixelRect[4];  // x0, y0, x1, y1: candidate pixels inside the scissor, half-open
+  std::int32_t fixedV0V1[4];  // snapped X0, Y0, X1, Y1 (24.8 fixed point, |value| <= 2^23)
+  std::int32_t fixedV2[2];    // snapped X2, Y2
+  float z[3];                 // z0, z1, z2 as submitted, in submitted order
+  std::int32_t frontFacing;   // 1 when the snapped area is positive, else 0
+};
+static_assert(sizeof(ProxyTriangle) == 56, "the shaders read 14 packed 32-bit fields");
+
+// The proxies of one draw in index order, which is the order the GPU must draw them in. Throws
+// std::invalid_argument exactly as CpuDevice does for an invalid draw (raster::checkDraw).
+// Triangles of zero snapped area, culled by state.cull, or whose candidate pixels all lie
+// outside state.scissor give no proxy.
+[[nodiscard]] std::vector<ProxyTriangle> buildProxyTriangles(
+    std::span<const raster::WindowVertex> vertices, std::span<const std::uint32_t> indices,
+    const raster::RenderState& state);
+
+}  // namespace recode::backends

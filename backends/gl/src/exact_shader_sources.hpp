@@ -1,0 +1,12 @@
+#pragma once
+// The exact devices' GLSL, embedded at build time from backends/exact/shaders and
+// backends/gl/shaders (embed_shaders.cmake).
+// Each is a body without a #version line: the device prepends the header its API needs.
+
+namespace recode::backends::detail {
+
+extern const char* const kExactContractGlsl;  // shaders/exact_contract.glsl
+extern const char* const kExactGlVertex;      // shaders/exact_gl.vert
+extern const char* const kExactGlFragment;    // shaders/exact_gl.frag
+
+}  // namespace recode::backends::detail

@@ -1,0 +1,435 @@
+// GlExactDevice: the contract on OpenGL 4.5 core. The CPU validates, snaps and sets up each
+// triangle (exact_proxy.cpp); the GPU draws a proxy rectangle per triangle and its shaders
+// (shaders/exact_*.glsl) decide coverage and depth; GL's fixed-function stencil, depth compare,
+// scissor and clears do the rest, as they do the same thing on every conforming driver.
+
+#include "recode/backends/gl_exact_device.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "exact_program.hpp"
+#include "gl_context.hpp"
+#include "gl_enums.hpp"
+#include "gl_functions.hpp"
+#include "recode/backends/exact_proxy.hpp"
+#include "recode/raster/device_checks.hpp"
+#include "recode/raster/fixed_point.hpp"
+
+namespace recode::backends {
+
+namespace {
+
+using raster::PixelRect;
+
+// The depth buffer holds q 2^-24 for the contract's 24-bit q: exact in a 32-bit float, and
+// ordered as q is, so GL's float depth compare is the contract's integer compare.
+constexpr double kDepthUnit = 1.0 / 16777216.0;
+
+std::unique_ptr<detail::GlContext> makeContext(GlPlatform platform, GlPlatform& chosen) {
+  std::string eglFailure;
+  if (platform == GlPlatform::Egl || platform == GlPlatform::Auto) {
+#ifdef RECODE_HAVE_EGL
+    try {
+      chosen = GlPlatform::Egl;
+      return detail::makeEglHeadlessContext();
+    } catch (const std::runtime_error& e) {
+      if (platform == GlPlatform::Egl)
+        throw;
+      eglFailure = e.what();
+    }
+#else
+    if (platform == GlPlatform::Egl)
+      throw std::runtime_error(
+          "GL exact device: this build has no EGL (Debian: apt-get install "
+          "libegl-dev, then reconfigure)");
+#endif
+  }
+#ifdef RECODE_HAVE_OSMESA
+  chosen = GlPlatform::OsMesa;
+  return detail::makeOsMesaCoreContext();
+#else
+  throw std::runtime_error(
+      "GL exact device: this build has no OSMesa (Debian: apt-get install "
+      "libosmesa6-dev, then reconfigure)" +
+      (eglFailure.empty() ? std::string() : "; EGL: " + eglFailure));
+#endif
+}
+
+}  // namespace
+
+std::string_view toString(GlPlatform platform) {
+  switch (platform) {
+    case GlPlatform::Auto:
+      return "auto";
+    case GlPlatform::OsMesa:
+      return "osmesa";
+    case GlPlatform::Egl:
+      return "egl";
+  }
+  return "unknown";
+}
+
+std::optional<GlPlatform> parseGlPlatform(std::string_view name) {
+  for (GlPlatform p : {GlPlatform::Auto, GlPlatform::OsMesa, GlPlatform::Egl}) {
+    if (toString(p) == name)
+      return p;
+  }
+  return std::nullopt;
+}
+
+bool glPlatformBuilt(GlPlatform platform) {
+  switch (platform) {
+    case GlPlatform::OsMesa:
+#ifdef RECODE_HAVE_OSMESA
+      return true;
+#else
+      return false;
+#endif
+    case GlPlatform::Egl:
+#ifdef RECODE_HAVE_EGL
+      return true;
+#else
+      return false;
+#endif
+    case GlPlatform::Auto:
+      return glPlatformBuilt(GlPlatform::OsMesa) || glPlatformBuilt(GlPlatform::Egl);
+  }
+  return false;
+}
+
+// What every device of one platform shares, made once per process: the context (a headless
+// one needs no size), the function table, the compiled program and the proxy input. Shader
+// compilation dominates a device's start-up, and verification creates a device per pair.
+// Deliberately never destroyed: tearing a driver down during static destruction is a known
+// source of crashes at exit.
+struct SharedGl {
+  GlPlatform platform = GlPlatform::Auto;
+  std::unique_ptr<detail::GlContext> context;
+  detail::GlCoreFunctions gl;
+  GLuint program = 0;
+  GLint framebufferSizeUniform = -1;
+  GLuint vertexArray = 0;
+  GLuint proxyBuffer = 0;
+  const void* owner = nullptr;  // the device whose framebuffer and state are bound now
+
+  // A GL error is a bug in this device (every input was validated), so it is reported loudly.
+  void check(const char* what) const {
+    const GLenum error = gl.GetError();
+    if (error != GL_NO_ERROR) {
+      char code[16];
+      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(error));
+      throw std::runtime_error(std::string("GL exact device: GL error ") + code + " in " + what);
+    }
+  }
+
+  // The proxy records as per-instance attributes, in the layout of ProxyTriangle.
+  void createProxyInput() {
+    gl.GenVertexArrays(1, &vertexArray);
+    gl.BindVertexArray(vertexArray);
+    gl.GenBuffers(1, &proxyBuffer);
+    gl.BindBuffer(GL_ARRAY_BUFFER, proxyBuffer);
+    constexpr GLsizei stride = sizeof(ProxyTriangle);
+    const auto offset = [](std::size_t bytes) { return reinterpret_cast<const void*>(bytes); };
+    const auto integers = [&](GLuint location, GLint count, std::size_t at) {
+      gl.VertexAttribIPointer(location, count, GL_INT, stride, offset(at));
+      gl.VertexAttribDivisor(location, 1);
+      gl.EnableVertexAttribArray(location);
+    };
+    integers(0, 4, offsetof(ProxyTriangle, pixelRect));
+    integers(1, 4, offsetof(ProxyTriangle, fixedV0V1));
+    integers(2, 2, offsetof(ProxyTriangle, fixedV2));
+    gl.VertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, stride, offset(offsetof(ProxyTriangle, z)));
+    gl.VertexAttribDivisor(3, 1);
+    gl.EnableVertexAttribArray(3);
+    integers(4, 1, offsetof(ProxyTriangle, frontFacing));
+  }
+
+  // What no device changes: both tests always on ("off" is ALWAYS), culling done on the CPU
+  // where the facing is exact, no colour, the scissor always on, the program bound.
+  void setFixedState() {
+    gl.Enable(GL_DEPTH_TEST);
+    gl.Enable(GL_STENCIL_TEST);
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Disable(GL_CULL_FACE);
+    gl.Disable(GL_DEPTH_CLAMP);
+    gl.Disable(GL_MULTISAMPLE);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.UseProgram(program);
+    framebufferSizeUniform = gl.GetUniformLocation(program, "framebufferSize");
+  }
+
+  explicit SharedGl(GlPlatform requested) {
+    context = makeContext(requested, platform);
+    context->makeCurrent();
+    gl = detail::loadGlCoreFunctions(*context);
+    program = detail::buildExactProgram(gl);
+    createProxyInput();
+    setFixedState();
+    check("setup");
+  }
+
+  // The shared state for a platform (Auto resolves once, to whatever it found first).
+  static SharedGl& of(GlPlatform requested) {
+    static SharedGl* instances[3] = {nullptr, nullptr, nullptr};
+    SharedGl*& slot = instances[static_cast<int>(requested)];
+    if (slot == nullptr)
+      slot = new SharedGl(requested);
+    return *slot;
+  }
+};
+
+struct GlExactDevice::Impl {
+  int width = 0;
+  int height = 0;
+  SharedGl* shared = nullptr;
+  const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
+  GLuint framebuffer = 0;
+  GLuint depthStencil = 0;
+
+  const detail::GlCoreFunctions& gl() const { return shared->gl; }
+
+  // Makes the context current and binds this device's framebuffer and state, unless it is
+  // the one bound already; every public entry point starts here.
+  void use() {
+    shared->context->makeCurrent();
+    if (shared->owner == this)
+      return;
+    const auto& g = gl();
+    g.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    g.Viewport(0, 0, width, height);
+    g.Uniform2f(shared->framebufferSizeUniform, static_cast<GLfloat>(width),
+                static_cast<GLfloat>(height));
+    const raster::PixelRect& r = state->scissor;
+    g.Scissor(r.x0, r.y0, r.width(), r.height());
+    g.DepthFunc(detail::glCompareEnum(state->depthFunc));
+    g.DepthMask(state->depthWrite ? GL_TRUE : GL_FALSE);
+    g.StencilFunc(detail::glCompareEnum(state->stencilFunc), state->stencilRef,
+                  state->stencilValueMask);
+    applyStencilOps(GL_FRONT, state->frontOps);
+    applyStencilOps(GL_BACK, state->backOps);
+    g.StencilMask(state->stencilWriteMask);
+    shared->owner = this;
+  }
+
+  void applyStencilOps(GLenum face, const raster::StencilOps& ops) const {
+    gl().StencilOpSeparate(face, detail::glStencilOpEnum(ops.stencilFail),
+                           detail::glStencilOpEnum(ops.depthFail),
+                           detail::glStencilOpEnum(ops.depthPass));
+  }
+
+  void requireLimits() const {
+    GLint renderbuffer = 0;
+    GLint viewport[2] = {0, 0};
+    gl().GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    gl().GetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    if (renderbuffer < width || renderbuffer < height || viewport[0] < width ||
+        viewport[1] < height) {
+      throw std::runtime_error(
+          "GL exact device: the driver's largest renderbuffer (" + std::to_string(renderbuffer) +
+          ") or viewport (" + std::to_string(viewport[0]) + "x" + std::to_string(viewport[1]) +
+          ") is smaller than " + std::to_string(width) + "x" + std::to_string(height));
+    }
+  }
+
+  // A framebuffer object with one DEPTH32F_STENCIL8 renderbuffer and no colour, cleared as
+  // CpuDevice starts: depth 2^24 - 1 (stored as (2^24 - 1) 2^-24), stencil 0.
+  void createFramebuffer() {
+    const auto& g = gl();
+    g.GenRenderbuffers(1, &depthStencil);
+    g.BindRenderbuffer(GL_RENDERBUFFER, depthStencil);
+    g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH32F_STENCIL8, width, height);
+    g.GenFramebuffers(1, &framebuffer);
+    g.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              depthStencil);
+    g.DrawBuffer(GL_NONE);
+    g.ReadBuffer(GL_NONE);
+    const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+      char code[16];
+      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(status));
+      throw std::runtime_error(std::string("GL exact device: a DEPTH32F_STENCIL8 framebuffer is "
+                                           "incomplete (status ") +
+                               code + ")");
+    }
+    shared->owner = nullptr;
+    use();
+    g.ClearDepth(static_cast<double>(raster::kDepthMax) * kDepthUnit);
+    g.ClearStencil(0);
+    g.Clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  }
+
+  ~Impl() {
+    if (shared == nullptr || framebuffer == 0)
+      return;
+    try {
+      shared->context->makeCurrent();
+      gl().DeleteFramebuffers(1, &framebuffer);
+      gl().DeleteRenderbuffers(1, &depthStencil);
+      if (shared->owner == this)
+        shared->owner = nullptr;
+    } catch (...) {
+      // Nothing sensible to do in a destructor; the objects die with the context.
+    }
+  }
+};
+
+GlPlatform resolveGlPlatform(GlPlatform requested) {
+  return SharedGl::of(requested).platform;
+}
+
+GlExactDevice::GlExactDevice(int width, int height, GlPlatform platform)
+    : RenderStateDevice(width, height), impl_(std::make_unique<Impl>()) {
+  raster::checkFramebufferSize(width, height);
+  Impl& d = *impl_;
+  d.width = width;
+  d.height = height;
+  d.state = &state_;
+  d.shared = &SharedGl::of(platform);
+  d.shared->context->makeCurrent();
+  d.requireLimits();
+  d.createFramebuffer();
+  d.shared->check("device setup");
+}
+
+GlExactDevice::~GlExactDevice() = default;
+
+int GlExactDevice::width() const {
+  return impl_->width;
+}
+
+int GlExactDevice::height() const {
+  return impl_->height;
+}
+
+std::string GlExactDevice::renderer() const {
+  return impl_->shared->context->renderer();
+}
+
+GlPlatform GlExactDevice::platform() const {
+  return impl_->shared->platform;
+}
+
+// RenderStateDevice's setters have stored the change (a device re-applies its whole state when
+// it binds again after another device of the process used the shared context); it is set on
+// GL here. The cull mode is applied on the CPU, where the facing is exact.
+void GlExactDevice::stateChanged(StateChange change, raster::Face face) {
+  if (change == StateChange::CullMode)
+    return;
+  Impl& d = *impl_;
+  d.use();
+  const detail::GlCoreFunctions& g = d.gl();
+  switch (change) {
+    case StateChange::Scissor: {
+      const PixelRect& r = state_.scissor;
+      g.Scissor(r.x0, r.y0, r.width(), r.height());
+      return;
+    }
+    case StateChange::DepthFunc:
+      g.DepthFunc(detail::glCompareEnum(state_.depthFunc));
+      return;
+    case StateChange::DepthWriteMask:
+      g.DepthMask(state_.depthWrite ? GL_TRUE : GL_FALSE);
+      return;
+    case StateChange::StencilFunc:  // one func for both faces, as in the interface
+      g.StencilFunc(detail::glCompareEnum(state_.stencilFunc), state_.stencilRef,
+                    state_.stencilValueMask);
+      return;
+    case StateChange::StencilOps:
+      d.applyStencilOps(detail::glFaceEnum(face),
+                        face == raster::Face::Back ? state_.backOps : state_.frontOps);
+      return;
+    case StateChange::StencilWriteMask:
+      g.StencilMask(state_.stencilWriteMask);
+      return;
+    case StateChange::CullMode:
+      return;
+  }
+}
+
+void GlExactDevice::clearDepth(double depth) {
+  if (!std::isfinite(depth))
+    throw std::invalid_argument("clearDepth: value is not finite");
+  Impl& d = *impl_;
+  d.use();
+  // The contract's quantisation, stored as the shaders store fragment depth. GL applies the
+  // scissor and the depth write mask to the clear.
+  d.gl().ClearDepth(static_cast<double>(raster::quantizeDepth(depth)) * kDepthUnit);
+  d.gl().Clear(GL_DEPTH_BUFFER_BIT);
+}
+
+void GlExactDevice::clearStencil(std::uint8_t value) {
+  Impl& d = *impl_;
+  d.use();
+  d.gl().ClearStencil(value);  // the stencil write mask applies to the clear
+  d.gl().Clear(GL_STENCIL_BUFFER_BIT);
+}
+
+void GlExactDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
+                                  std::span<const std::uint32_t> indices) {
+  Impl& d = *impl_;
+  const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, state_);
+  if (proxies.empty())
+    return;
+  d.use();
+  d.gl().BufferData(GL_ARRAY_BUFFER,
+                    static_cast<GLsizeiptr>(proxies.size() * sizeof(ProxyTriangle)), proxies.data(),
+                    GL_STREAM_DRAW);
+  // Instances are drawn in order and GL keeps primitive order per pixel, so triangles reach
+  // each pixel in index order as the contract requires. The two halves of one proxy rectangle
+  // share an edge, which GL's own fill rule hands to exactly one of them.
+  constexpr std::size_t kMaxInstances = 1u << 30;
+  for (std::size_t first = 0; first < proxies.size(); first += kMaxInstances) {
+    const std::size_t count = std::min(kMaxInstances, proxies.size() - first);
+    if (first > 0) {
+      d.gl().BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(count * sizeof(ProxyTriangle)),
+                        proxies.data() + first, GL_STREAM_DRAW);
+    }
+    d.gl().DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count));
+  }
+  d.shared->check("drawTriangles");
+}
+
+std::vector<std::uint8_t> GlExactDevice::readStencil(const PixelRect& rect) const {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  if (r.empty())
+    return {};
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(r.area()));
+  d.use();
+  // Rows from the bottom (y = r.y0) up, the interface's order; the scissor does not apply.
+  d.gl().ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
+                    out.data());
+  d.shared->check("readStencil");
+  return out;
+}
+
+std::vector<std::uint32_t> GlExactDevice::readDepth(const PixelRect& rect) const {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  if (r.empty())
+    return {};
+  std::vector<float> stored(static_cast<std::size_t>(r.area()));
+  d.use();
+  d.gl().ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_COMPONENT, GL_FLOAT, stored.data());
+  d.shared->check("readDepth");
+  std::vector<std::uint32_t> out(stored.size());
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    // Every stored value is some q 2^-24 (shaders and clears write nothing else); anything else
+    // means the driver converted depth on the way, and is reported rather than rounded.
+    const double q = static_cast<double>(stored[i]) * 16777216.0;
+    if (!(q >= 0.0 && q <= static_cast<double>(raster::kDepthMax)) || q != std::floor(q)) {
+      throw std::runtime_error("GL exact device: the depth buffer holds " +
+                               std::to_string(stored[i]) + ", not a multiple of 2^-24 below 1");
+    }
+    out[i] = static_cast<std::uint32_t>(q);
+  }
+  return out;
+}
+
+}  // namespace recode::backends

@@ -1,0 +1,22 @@
+#include "gl_functions.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace recode::backends::detail {
+
+GlCoreFunctions loadGlCoreFunctions(GlContext& context) {
+  GlCoreFunctions gl;
+  const auto resolve = [&context](const char* name) {
+    GlContext::Proc proc = context.procAddress(name);
+    if (proc == nullptr)
+      throw std::runtime_error(std::string("GL: the context provides no ") + name);
+    return proc;
+  };
+#define RECODE_GL_LOAD(type, name) gl.name = reinterpret_cast<type>(resolve("gl" #name));
+  RECODE_GL_CORE_FUNCTIONS(RECODE_GL_LOAD)
+#undef RECODE_GL_LOAD
+  return gl;
+}
+
+}  // namespace recode::backends::detail

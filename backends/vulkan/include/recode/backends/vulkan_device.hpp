@@ -1,0 +1,53 @@
+#pragma once
+// The exact Vulkan device: Vulkan 1.3, headless, with the exact GL device's technique
+// (docs/backends.md): each triangle is drawn as a proxy rectangle over its candidate pixels and
+// the fragment shader applies the rasterization contract (shared GLSL, compiled to SPIR-V at
+// build time), writing the contract's 24-bit depth q as q 2^-24 into a D32_SFLOAT_S8_UINT
+// attachment. Stencil, the depth compare and the scissor stay fixed-function (dynamic state), so
+// its depth and stencil match raster::CpuDevice bit for bit. No Vulkan type appears here.
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "recode/raster/render_state_device.hpp"
+
+namespace recode::backends {
+
+class VulkanDevice final : public raster::RenderStateDevice {
+ public:
+  // A width x height framebuffer (depth 2^24 - 1, stencil 0, the interface's default state).
+  // Throws std::invalid_argument unless 1 <= width, height <= 16384, and std::runtime_error
+  // when there is no Vulkan driver or no physical device with what the device needs (Vulkan
+  // 1.3, shaderFloat64, shaderInt64, a D32_SFLOAT_S8_UINT depth/stencil attachment), saying
+  // what to install. Every device of the process shares one instance, logical device and
+  // pipeline, made on first use; a device must be used by one thread at a time.
+  VulkanDevice(int width, int height);
+  ~VulkanDevice() override;
+  VulkanDevice(const VulkanDevice&) = delete;
+  VulkanDevice& operator=(const VulkanDevice&) = delete;
+
+  [[nodiscard]] int width() const override;
+  [[nodiscard]] int height() const override;
+
+  // The state setters are RenderStateDevice's.
+  void clearDepth(double depth) override;
+  void clearStencil(std::uint8_t value) override;
+  // Validated exactly as CpuDevice validates, set up on the CPU (backends::buildProxyTriangles)
+  // and drawn as one instanced draw of proxy rectangles.
+  void drawTriangles(std::span<const raster::WindowVertex> vertices,
+                     std::span<const std::uint32_t> indices) override;
+  [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
+  [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override;
+
+  // The physical device's name ("llvmpipe (LLVM 15.0.6, 256 bits)") and its driver's.
+  [[nodiscard]] std::string renderer() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace recode::backends

@@ -1,0 +1,263 @@
+// The shared Vulkan context: a headless instance (no surface, no window-system extension, no
+// layers), the physical device, one graphics queue and the submission helper.
+
+#include "vulkan_context.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "vulkan_pipeline.hpp"
+
+namespace recode::backends::detail {
+
+namespace {
+
+constexpr const char* kInstallHint =
+    "install a Vulkan driver (Debian: apt-get install mesa-vulkan-drivers for lavapipe, "
+    "Mesa's CPU driver; or the GPU vendor's driver)";
+
+// Why a physical device cannot serve, or empty when it can; sets the queue family it would use.
+std::string unsuitable(VkPhysicalDevice physical, std::uint32_t& family) {
+  VkPhysicalDeviceProperties properties{};
+  vkGetPhysicalDeviceProperties(physical, &properties);
+  if (properties.apiVersion < VK_API_VERSION_1_3)
+    return "Vulkan 1.3 is missing";
+  VkPhysicalDeviceFeatures features{};
+  vkGetPhysicalDeviceFeatures(physical, &features);
+  if (!features.shaderFloat64 || !features.shaderInt64)
+    return "shaderFloat64 or shaderInt64 is missing";
+  VkPhysicalDeviceVulkan13Features v13{};
+  v13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
+  VkPhysicalDeviceFeatures2 features2{};
+  features2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  features2.pNext = &v13;
+  vkGetPhysicalDeviceFeatures2(physical, &features2);
+  if (!v13.dynamicRendering)
+    return "dynamicRendering is missing";
+  VkFormatProperties format{};
+  vkGetPhysicalDeviceFormatProperties(physical, kExactDepthStencilFormat, &format);
+  const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                      VK_FORMAT_FEATURE_TRANSFER_SRC_BIT |
+                                      VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+  if ((format.optimalTilingFeatures & needed) != needed)
+    return "D32_SFLOAT_S8_UINT is not a depth/stencil attachment with transfers";
+  if (properties.limits.maxFramebufferWidth < 16384 ||
+      properties.limits.maxFramebufferHeight < 16384)
+    return "16384-pixel framebuffers are not supported";
+  std::uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
+      family = i;
+      return {};
+    }
+  }
+  return "no graphics queue";
+}
+
+// Hardware first: a discrete GPU, then an integrated or virtual one, then a CPU driver.
+int preference(VkPhysicalDevice physical) {
+  VkPhysicalDeviceProperties properties{};
+  vkGetPhysicalDeviceProperties(physical, &properties);
+  switch (properties.deviceType) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 3;
+    default:
+      return 4;
+  }
+}
+
+}  // namespace
+
+void vkCheck(VkResult result, const char* what) {
+  if (result != VK_SUCCESS)
+    throw std::runtime_error(std::string("Vulkan device: ") + what + " failed (VkResult " +
+                             std::to_string(static_cast<int>(result)) + ")");
+}
+
+VulkanContext& VulkanContext::instance() {
+  static VulkanContext* context = new VulkanContext();  // leaked on purpose, see the header
+  return *context;
+}
+
+VulkanContext::VulkanContext() {
+  createInstance();
+  choosePhysicalDevice();
+  createDevice();
+}
+
+void VulkanContext::createInstance() {
+  VkApplicationInfo app{};
+  app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+  app.pApplicationName = "recode";
+  app.apiVersion = VK_API_VERSION_1_3;
+  VkInstanceCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+  info.pApplicationInfo = &app;
+  const VkResult result = vkCreateInstance(&info, nullptr, &instance_);
+  if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
+    throw std::runtime_error(std::string("Vulkan device: no Vulkan driver found; ") + kInstallHint);
+  vkCheck(result, "vkCreateInstance");
+}
+
+void VulkanContext::choosePhysicalDevice() {
+  std::uint32_t count = 0;
+  vkCheck(vkEnumeratePhysicalDevices(instance_, &count, nullptr), "vkEnumeratePhysicalDevices");
+  if (count == 0)
+    throw std::runtime_error(std::string("Vulkan device: no physical device found; ") +
+                             kInstallHint);
+  std::vector<VkPhysicalDevice> physicals(count);
+  vkCheck(vkEnumeratePhysicalDevices(instance_, &count, physicals.data()),
+          "vkEnumeratePhysicalDevices");
+  std::string reasons;
+  int best = std::numeric_limits<int>::max();
+  for (VkPhysicalDevice physical : physicals) {
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(physical, &properties);
+    std::uint32_t family = 0;
+    const std::string why = unsuitable(physical, family);
+    if (!why.empty()) {
+      reasons += std::string("; ") + properties.deviceName + ": " + why;
+      continue;
+    }
+    if (preference(physical) < best) {
+      best = preference(physical);
+      physical_ = physical;
+      queueFamily_ = family;
+      name_ = properties.deviceName;
+    }
+  }
+  if (physical_ == VK_NULL_HANDLE)
+    throw std::runtime_error("Vulkan device: no physical device has what the exact device needs" +
+                             reasons);
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+}
+
+void VulkanContext::createDevice() {
+  const float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue{};
+  queue.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+  queue.queueFamilyIndex = queueFamily_;
+  queue.queueCount = 1;
+  queue.pQueuePriorities = &priority;
+  // The contract's doubles and 64-bit edge functions, and dynamic rendering (no render pass).
+  VkPhysicalDeviceVulkan13Features v13{};
+  v13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
+  v13.dynamicRendering = VK_TRUE;
+  VkPhysicalDeviceFeatures2 features{};
+  features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  features.pNext = &v13;
+  features.features.shaderFloat64 = VK_TRUE;
+  features.features.shaderInt64 = VK_TRUE;
+  VkDeviceCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+  info.pNext = &features;
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queue;
+  vkCheck(vkCreateDevice(physical_, &info, nullptr, &device_), "vkCreateDevice");
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+
+  VkCommandPoolCreateInfo pool{};
+  pool.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool.queueFamilyIndex = queueFamily_;
+  vkCheck(vkCreateCommandPool(device_, &pool, nullptr, &pool_), "vkCreateCommandPool");
+  VkCommandBufferAllocateInfo allocate{};
+  allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  allocate.commandPool = pool_;
+  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocate.commandBufferCount = 1;
+  vkCheck(vkAllocateCommandBuffers(device_, &allocate, &commands_), "vkAllocateCommandBuffers");
+  VkFenceCreateInfo fence{};
+  fence.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  vkCheck(vkCreateFence(device_, &fence, nullptr, &fence_), "vkCreateFence");
+}
+
+VkDeviceMemory VulkanContext::allocate(const VkMemoryRequirements& requirements,
+                                       VkMemoryPropertyFlags properties) const {
+  for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+    if ((requirements.memoryTypeBits & (1u << i)) &&
+        (memory_.memoryTypes[i].propertyFlags & properties) == properties) {
+      VkMemoryAllocateInfo info{};
+      info.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+      info.allocationSize = requirements.size;
+      info.memoryTypeIndex = i;
+      VkDeviceMemory memory = VK_NULL_HANDLE;
+      vkCheck(vkAllocateMemory(device_, &info, nullptr, &memory), "vkAllocateMemory");
+      return memory;
+    }
+  }
+  throw std::runtime_error("Vulkan device: no memory type with the properties needed");
+}
+
+void VulkanContext::reserve(HostBuffer& buffer, VkDeviceSize bytes,
+                            VkBufferUsageFlags usage) const {
+  if (buffer.size >= bytes)
+    return;
+  if (buffer.buffer != VK_NULL_HANDLE) {
+    vkDestroyBuffer(device_, buffer.buffer, nullptr);
+    vkFreeMemory(device_, buffer.memory, nullptr);  // unmaps it too
+    buffer = {};
+  }
+  // Grow geometrically, so a stream of growing draws reallocates only a few times.
+  VkDeviceSize size = 4096;
+  while (size < bytes)
+    size *= 2;
+  VkBufferCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer.buffer), "vkCreateBuffer");
+  VkMemoryRequirements requirements{};
+  vkGetBufferMemoryRequirements(device_, buffer.buffer, &requirements);
+  buffer.memory = allocate(
+      requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  vkCheck(vkBindBufferMemory(device_, buffer.buffer, buffer.memory, 0), "vkBindBufferMemory");
+  vkCheck(vkMapMemory(device_, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped), "vkMapMemory");
+  buffer.size = size;
+}
+
+void VulkanContext::submit(const std::function<void(VkCommandBuffer)>& commands) {
+  vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo begin{};
+  begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkCheck(vkBeginCommandBuffer(commands_, &begin), "vkBeginCommandBuffer");
+  // Simplicity over speed: everything before (the previous submission, host writes to mapped
+  // memory made before this submit) happens-before everything in this one.
+  VkMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+  commands(commands_);
+  // And everything in it is visible to the host once the fence says it is done.
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
+                       1, &barrier, 0, nullptr, 0, nullptr);
+  vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
+  VkSubmitInfo submitInfo{};
+  submitInfo.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  submitInfo.commandBufferCount = 1;
+  submitInfo.pCommandBuffers = &commands_;
+  vkCheck(vkResetFences(device_, 1, &fence_), "vkResetFences");
+  vkCheck(vkQueueSubmit(queue_, 1, &submitInfo, fence_), "vkQueueSubmit");
+  vkCheck(vkWaitForFences(device_, 1, &fence_, VK_TRUE, std::numeric_limits<std::uint64_t>::max()),
+          "vkWaitForFences");
+}
+
+}  // namespace recode::backends::detail

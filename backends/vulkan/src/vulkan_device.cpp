@@ -1,0 +1,339 @@
+// VulkanDevice: the contract on Vulkan 1.3. The CPU validates, snaps and sets up each triangle
+// (exact_proxy.cpp, shared with the GL device); the GPU draws a proxy rectangle per triangle and
+// the shaders (the contract's GLSL as SPIR-V) decide coverage and depth; fixed-function stencil,
+// depth compare and scissor, all dynamic state, do the rest.
+//
+// Coordinates: the interface speaks GL window coordinates (row 0 at the bottom); Vulkan's
+// framebuffer has row 0 at the top. GL row j is framebuffer row height - 1 - j throughout: the
+// viewport has a negative height, scissors and read-back regions are mirrored, read-backs are
+// returned bottom row first, and the fragment shader turns gl_FragCoord back into GL's j.
+
+#include "recode/backends/vulkan_device.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "recode/backends/exact_proxy.hpp"
+#include "recode/raster/device_checks.hpp"
+#include "recode/raster/fixed_point.hpp"
+#include "vulkan_context.hpp"
+#include "vulkan_enums.hpp"
+#include "vulkan_pipeline.hpp"
+
+namespace recode::backends {
+
+namespace {
+
+using detail::vkCheck;
+using raster::PixelRect;
+
+// The depth attachment holds q 2^-24 for the contract's 24-bit q: exact in a 32-bit float, and
+// ordered as q is, so the float depth compare is the contract's integer compare.
+constexpr float kDepthUnit = 1.0f / 16777216.0f;
+
+// The pipelines every device shares, made with the context on first use (never destroyed,
+// like the context).
+const detail::ExactPipelines& sharedPipelines() {
+  static const detail::ExactPipelines* pipelines = new detail::ExactPipelines(
+      detail::createExactPipelines(detail::VulkanContext::instance().device()));
+  return *pipelines;
+}
+
+constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+
+}  // namespace
+
+struct VulkanDevice::Impl {
+  int width = 0;
+  int height = 0;
+  const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
+  detail::VulkanContext* context = nullptr;
+  const detail::ExactPipelines* pipelines = nullptr;
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+
+  VkDevice device() const { return context->device(); }
+
+  // A GL-window rectangle (inside the framebuffer) as a framebuffer rectangle.
+  VkRect2D framebufferRect(const PixelRect& r) const {
+    return {{r.x0, height - r.y1},
+            {static_cast<std::uint32_t>(r.width()), static_cast<std::uint32_t>(r.height())}};
+  }
+
+  // The image lives in GENERAL layout for its whole life, so attachments and transfers need no
+  // layout transitions; the context's barriers order the submissions.
+  void createImage() {
+    VkImageCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = detail::kExactDepthStencilFormat;
+    info.extent = {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    vkCheck(vkCreateImage(device(), &info, nullptr, &image), "vkCreateImage");
+    VkMemoryRequirements requirements{};
+    vkGetImageMemoryRequirements(device(), image, &requirements);
+    memory = context->allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    vkCheck(vkBindImageMemory(device(), image, memory, 0), "vkBindImageMemory");
+    VkImageViewCreateInfo viewInfo{};
+    viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+    viewInfo.image = image;
+    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = detail::kExactDepthStencilFormat;
+    viewInfo.subresourceRange = {kBothAspects, 0, 1, 0, 1};
+    vkCheck(vkCreateImageView(device(), &viewInfo, nullptr, &view), "vkCreateImageView");
+  }
+
+  // GENERAL layout, then the start state of CpuDevice: depth 2^24 - 1 (stored as
+  // (2^24 - 1) 2^-24), stencil 0 everywhere.
+  void initialiseImage() {
+    context->submit([&](VkCommandBuffer cmd) {
+      VkImageMemoryBarrier barrier{};
+      barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+      barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+      barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+      barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+      barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      barrier.image = image;
+      barrier.subresourceRange = {kBothAspects, 0, 1, 0, 1};
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                           0, 0, nullptr, 0, nullptr, 1, &barrier);
+      VkClearDepthStencilValue value{static_cast<float>(raster::kDepthMax) * kDepthUnit, 0};
+      const VkImageSubresourceRange range{kBothAspects, 0, 1, 0, 1};
+      vkCmdClearDepthStencilImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &value, 1, &range);
+    });
+  }
+
+  // Records `body` inside a rendering pass over the whole image with `pipeline` bound, the
+  // viewport (negative height: GL's y up), the scissor and the frame's push constants set.
+  template <typename Body>
+  void render(VkPipeline pipeline, float clearDepth, const Body& body) {
+    context->submit([&](VkCommandBuffer cmd) {
+      VkRenderingAttachmentInfo attachment{};
+      attachment.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+      attachment.imageView = view;
+      attachment.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+      attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+      attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+      VkRenderingInfo rendering{};
+      rendering.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
+      rendering.renderArea = {
+          {0, 0}, {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)}};
+      rendering.layerCount = 1;
+      rendering.pDepthAttachment = &attachment;
+      rendering.pStencilAttachment = &attachment;
+      vkCmdBeginRendering(cmd, &rendering);
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+      const VkViewport viewport{0.0f,
+                                static_cast<float>(height),
+                                static_cast<float>(width),
+                                -static_cast<float>(height),
+                                0.0f,
+                                1.0f};
+      vkCmdSetViewport(cmd, 0, 1, &viewport);
+      const VkRect2D scissor = framebufferRect(state->scissor);
+      vkCmdSetScissor(cmd, 0, 1, &scissor);
+      vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);  // the CPU culls, from the exact facing
+      const detail::FramePushConstants frame{
+          {static_cast<float>(width), static_cast<float>(height)}, clearDepth};
+      vkCmdPushConstants(cmd, pipelines->layout,
+                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof frame,
+                         &frame);
+      body(cmd);
+      vkCmdEndRendering(cmd);
+    });
+  }
+
+  // The interface's depth and stencil state, both faces sharing the compare function, masks
+  // and reference and each face its own ops.
+  void setDrawState(VkCommandBuffer cmd) const {
+    vkCmdSetDepthTestEnable(cmd, VK_TRUE);
+    vkCmdSetDepthWriteEnable(cmd, state->depthWrite ? VK_TRUE : VK_FALSE);
+    vkCmdSetDepthCompareOp(cmd, detail::vkCompareOp(state->depthFunc));
+    vkCmdSetStencilTestEnable(cmd, VK_TRUE);
+    const VkCompareOp compare = detail::vkCompareOp(state->stencilFunc);
+    const auto ops = [&](VkStencilFaceFlags face, const raster::StencilOps& o) {
+      vkCmdSetStencilOp(cmd, face, detail::vkStencilOp(o.stencilFail),
+                        detail::vkStencilOp(o.depthPass), detail::vkStencilOp(o.depthFail),
+                        compare);
+    };
+    ops(VK_STENCIL_FACE_FRONT_BIT, state->frontOps);
+    ops(VK_STENCIL_FACE_BACK_BIT, state->backOps);
+    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilValueMask);
+    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilWriteMask);
+    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilRef);
+  }
+
+  // Copies one aspect of a GL-window rectangle into the read-back buffer and returns its bytes,
+  // `texel` bytes a pixel, rows bottom first (the buffer holds them top first).
+  std::vector<std::uint8_t> readAspect(const PixelRect& r, VkImageAspectFlags aspect,
+                                       std::size_t texel) {
+    const std::size_t rowBytes = static_cast<std::size_t>(r.width()) * texel;
+    const std::size_t bytes = rowBytes * static_cast<std::size_t>(r.height());
+    context->reserve(context->readback, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    const VkRect2D source = framebufferRect(r);
+    context->submit([&](VkCommandBuffer cmd) {
+      VkBufferImageCopy region{};
+      region.imageSubresource = {aspect, 0, 0, 1};
+      region.imageOffset = {source.offset.x, source.offset.y, 0};
+      region.imageExtent = {source.extent.width, source.extent.height, 1};
+      vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_GENERAL, context->readback.buffer, 1,
+                             &region);
+    });
+    std::vector<std::uint8_t> out(bytes);
+    const auto* rows = static_cast<const std::uint8_t*>(context->readback.mapped);
+    const int h = r.height();
+    for (int k = 0; k < h; ++k) {
+      std::memcpy(out.data() + static_cast<std::size_t>(k) * rowBytes,
+                  rows + static_cast<std::size_t>(h - 1 - k) * rowBytes, rowBytes);
+    }
+    return out;
+  }
+
+  ~Impl() {
+    if (context == nullptr)
+      return;
+    vkDestroyImageView(device(), view, nullptr);
+    vkDestroyImage(device(), image, nullptr);
+    vkFreeMemory(device(), memory, nullptr);
+  }
+};
+
+VulkanDevice::VulkanDevice(int width, int height)
+    : RenderStateDevice(width, height), impl_(std::make_unique<Impl>()) {
+  raster::checkFramebufferSize(width, height);
+  Impl& d = *impl_;
+  d.width = width;
+  d.height = height;
+  d.state = &state_;
+  d.pipelines = &sharedPipelines();  // makes the context too
+  d.context = &detail::VulkanContext::instance();
+  d.createImage();
+  d.initialiseImage();
+}
+
+VulkanDevice::~VulkanDevice() = default;
+
+int VulkanDevice::width() const {
+  return impl_->width;
+}
+
+int VulkanDevice::height() const {
+  return impl_->height;
+}
+
+std::string VulkanDevice::renderer() const {
+  return impl_->context->deviceName();
+}
+
+// The state setters are RenderStateDevice's: state_ is set as dynamic state in every command
+// buffer that draws or clears.
+
+void VulkanDevice::clearDepth(double depth) {
+  if (!std::isfinite(depth))
+    throw std::invalid_argument("clearDepth: value is not finite");
+  Impl& d = *impl_;
+  // The depth write mask applies to clears: with it off, a depth clear changes nothing.
+  if (!state_.depthWrite || state_.scissor.empty())
+    return;
+  // The contract's quantisation, stored as the shaders store fragment depth, by a rectangle
+  // that passes the depth test always and leaves stencil alone.
+  const float value = static_cast<float>(raster::quantizeDepth(depth)) * kDepthUnit;
+  d.render(d.pipelines->clear, value, [&](VkCommandBuffer cmd) {
+    vkCmdSetDepthTestEnable(cmd, VK_TRUE);
+    vkCmdSetDepthWriteEnable(cmd, VK_TRUE);
+    vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_ALWAYS);
+    vkCmdSetStencilTestEnable(cmd, VK_FALSE);
+    // Stencil state is dynamic and must be set even when the test is off.
+    vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
+                      VK_STENCIL_OP_KEEP, VK_COMPARE_OP_ALWAYS);
+    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0);
+    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0);
+    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0);
+    vkCmdDraw(cmd, 4, 1, 0, 0);
+  });
+}
+
+void VulkanDevice::clearStencil(std::uint8_t value) {
+  Impl& d = *impl_;
+  if (state_.stencilWriteMask == 0 || state_.scissor.empty())
+    return;
+  // REPLACE with the clear value as reference under the device's write mask gives
+  // s = (value & mask) | (s & ~mask), GL's masked clear; depth is not tested, so not written.
+  d.render(d.pipelines->clear, 0.0f, [&](VkCommandBuffer cmd) {
+    vkCmdSetDepthTestEnable(cmd, VK_FALSE);
+    vkCmdSetDepthWriteEnable(cmd, VK_FALSE);
+    vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_ALWAYS);
+    vkCmdSetStencilTestEnable(cmd, VK_TRUE);
+    vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, VK_STENCIL_OP_REPLACE,
+                      VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_REPLACE, VK_COMPARE_OP_ALWAYS);
+    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0xFF);
+    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state_.stencilWriteMask);
+    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, value);
+    vkCmdDraw(cmd, 4, 1, 0, 0);
+  });
+}
+
+void VulkanDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
+                                 std::span<const std::uint32_t> indices) {
+  Impl& d = *impl_;
+  const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, state_);
+  if (proxies.empty())
+    return;
+  const std::size_t bytes = proxies.size() * sizeof(ProxyTriangle);
+  d.context->reserve(d.context->proxies, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  std::memcpy(d.context->proxies.mapped, proxies.data(), bytes);
+  // Instances are drawn in order and Vulkan keeps primitive order for depth and stencil
+  // (rasterization order), so triangles reach each pixel in index order as the contract
+  // requires. The two halves of a proxy rectangle share an edge, which Vulkan's rasterization
+  // rules hand to exactly one of them.
+  d.render(d.pipelines->exact, 0.0f, [&](VkCommandBuffer cmd) {
+    d.setDrawState(cmd);
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &d.context->proxies.buffer, &offset);
+    vkCmdDraw(cmd, 4, static_cast<std::uint32_t>(proxies.size()), 0, 0);
+  });
+}
+
+std::vector<std::uint8_t> VulkanDevice::readStencil(const PixelRect& rect) const {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  if (r.empty())
+    return {};
+  return d.readAspect(r, VK_IMAGE_ASPECT_STENCIL_BIT, 1);
+}
+
+std::vector<std::uint32_t> VulkanDevice::readDepth(const PixelRect& rect) const {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  if (r.empty())
+    return {};
+  // The depth aspect of D32_SFLOAT_S8_UINT copies out as tightly packed 32-bit floats.
+  const std::vector<std::uint8_t> bytes = d.readAspect(r, VK_IMAGE_ASPECT_DEPTH_BIT, 4);
+  std::vector<std::uint32_t> out(bytes.size() / 4);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    float stored = 0.0f;
+    std::memcpy(&stored, bytes.data() + 4 * i, 4);
+    // Every stored value is some q 2^-24 (shaders and clears write nothing else); anything else
+    // means the driver converted depth on the way, and is reported rather than rounded.
+    const double q = static_cast<double>(stored) * 16777216.0;
+    if (!(q >= 0.0 && q <= static_cast<double>(raster::kDepthMax)) || q != std::floor(q)) {
+      throw std::runtime_error("Vulkan device: the depth buffer holds " + std::to_string(stored) +
+                               ", not a multiple of 2^-24 below 1");
+    }
+    out[i] = static_cast<std::uint32_t>(q);
+  }
+  return out;
+}
+
+}  // namespace recode::backends

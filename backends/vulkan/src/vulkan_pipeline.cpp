@@ -1,0 +1,152 @@
+#include "vulkan_pipeline.hpp"
+
+#include <array>
+#include <cstddef>
+#include <span>
+
+#include "recode/backends/exact_proxy.hpp"
+#include "vulkan_context.hpp"
+#include "vulkan_spirv.hpp"
+
+namespace recode::backends::detail {
+
+namespace {
+
+VkShaderModule createModule(VkDevice device, std::span<const std::uint32_t> words) {
+  VkShaderModuleCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+  info.codeSize = words.size_bytes();
+  info.pCode = words.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  vkCheck(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
+  return module;
+}
+
+// Every piece of state the device interface can change, plus the viewport and scissor, which
+// depend on the device's size.
+constexpr std::array kDynamicStates = {
+    VK_DYNAMIC_STATE_VIEWPORT,
+    VK_DYNAMIC_STATE_SCISSOR,
+    VK_DYNAMIC_STATE_CULL_MODE,
+    VK_DYNAMIC_STATE_DEPTH_TEST_ENABLE,
+    VK_DYNAMIC_STATE_DEPTH_WRITE_ENABLE,
+    VK_DYNAMIC_STATE_DEPTH_COMPARE_OP,
+    VK_DYNAMIC_STATE_STENCIL_TEST_ENABLE,
+    VK_DYNAMIC_STATE_STENCIL_OP,
+    VK_DYNAMIC_STATE_STENCIL_COMPARE_MASK,
+    VK_DYNAMIC_STATE_STENCIL_WRITE_MASK,
+    VK_DYNAMIC_STATE_STENCIL_REFERENCE,
+};
+
+// The proxy records as per-instance attributes, in the layout of ProxyTriangle.
+struct ProxyInput {
+  VkVertexInputBindingDescription binding{0, sizeof(ProxyTriangle), VK_VERTEX_INPUT_RATE_INSTANCE};
+  std::array<VkVertexInputAttributeDescription, 5> attributes{{
+      {0, 0, VK_FORMAT_R32G32B32A32_SINT, offsetof(ProxyTriangle, pixelRect)},
+      {1, 0, VK_FORMAT_R32G32B32A32_SINT, offsetof(ProxyTriangle, fixedV0V1)},
+      {2, 0, VK_FORMAT_R32G32_SINT, offsetof(ProxyTriangle, fixedV2)},
+      {3, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ProxyTriangle, z)},
+      {4, 0, VK_FORMAT_R32_SINT, offsetof(ProxyTriangle, frontFacing)},
+  }};
+};
+
+VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout,
+                          std::span<const std::uint32_t> vertexWords,
+                          std::span<const std::uint32_t> fragmentWords, bool proxyInput) {
+  const VkShaderModule vertex = createModule(device, vertexWords);
+  const VkShaderModule fragment = createModule(device, fragmentWords);
+  std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+  for (auto& stage : stages) {
+    stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    stage.pName = "main";
+  }
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vertex;
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = fragment;
+
+  const ProxyInput proxy;
+  VkPipelineVertexInputStateCreateInfo input{};
+  input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+  if (proxyInput) {
+    input.vertexBindingDescriptionCount = 1;
+    input.pVertexBindingDescriptions = &proxy.binding;
+    input.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(proxy.attributes.size());
+    input.pVertexAttributeDescriptions = proxy.attributes.data();
+  }
+  VkPipelineInputAssemblyStateCreateInfo assembly{};
+  assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+  VkPipelineViewportStateCreateInfo viewport{};
+  viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  // Culling is the CPU's (exact facing), but the cull mode is dynamic state and set to NONE.
+  // The device's viewport has a negative height (GL's y up), which keeps GL's winding, so a
+  // counter-clockwise proxy is front-facing and takes the front stencil ops.
+  VkPipelineRasterizationStateCreateInfo raster{};
+  raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{};
+  multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depthStencil{};  // all of it dynamic
+  depthStencil.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+  depthStencil.maxDepthBounds = 1.0f;
+  VkPipelineColorBlendStateCreateInfo blend{};  // no colour attachment
+  blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+  VkPipelineDynamicStateCreateInfo dynamic{};
+  dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+  dynamic.dynamicStateCount = static_cast<std::uint32_t>(kDynamicStates.size());
+  dynamic.pDynamicStates = kDynamicStates.data();
+  // Dynamic rendering: the attachment formats instead of a render pass.
+  VkPipelineRenderingCreateInfo rendering{};
+  rendering.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO;
+  rendering.depthAttachmentFormat = kExactDepthStencilFormat;
+  rendering.stencilAttachmentFormat = kExactDepthStencilFormat;
+
+  VkGraphicsPipelineCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+  info.pNext = &rendering;
+  info.stageCount = static_cast<std::uint32_t>(stages.size());
+  info.pStages = stages.data();
+  info.pVertexInputState = &input;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depthStencil;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  const VkResult result =
+      vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  vkDestroyShaderModule(device, vertex, nullptr);
+  vkDestroyShaderModule(device, fragment, nullptr);
+  vkCheck(result, "vkCreateGraphicsPipelines");
+  return pipeline;
+}
+
+}  // namespace
+
+ExactPipelines createExactPipelines(VkDevice device) {
+  ExactPipelines out;
+  VkPushConstantRange range{};
+  range.stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  range.size = sizeof(FramePushConstants);
+  VkPipelineLayoutCreateInfo layout{};
+  layout.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  layout.pushConstantRangeCount = 1;
+  layout.pPushConstantRanges = &range;
+  vkCheck(vkCreatePipelineLayout(device, &layout, nullptr, &out.layout), "vkCreatePipelineLayout");
+  const SpirvModules spirv = spirvModules();
+  out.exact = createPipeline(device, out.layout, spirv.exactVertex, spirv.exactFragment, true);
+  out.clear = createPipeline(device, out.layout, spirv.clearVertex, spirv.clearFragment, false);
+  return out;
+}
+
+}  // namespace recode::backends::detail

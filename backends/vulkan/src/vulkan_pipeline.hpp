@@ -1,0 +1,30 @@
+#pragma once
+// The exact Vulkan device's two graphics pipelines, shared by every device: the exact pipeline
+// draws proxy rectangles (per-instance ProxyTriangle records) through the contract's shaders;
+// the clear pipeline draws one rectangle writing the clear depth, so that clears honour the
+// scissor and both write masks. Everything a device changes is dynamic state (Vulkan 1.3), so
+// these two serve every state.
+
+#include <vulkan/vulkan_core.h>
+
+namespace recode::backends::detail {
+
+// The push constants both pipelines read, in the shaders' `Frame` block layout.
+struct FramePushConstants {
+  float framebufferSize[2];  // width, height in pixels
+  float clearDepth;          // q 2^-24, the clear pipeline's depth
+};
+
+struct ExactPipelines {
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline exact = VK_NULL_HANDLE;
+  VkPipeline clear = VK_NULL_HANDLE;
+};
+
+// The depth/stencil attachment format both pipelines render to.
+inline constexpr VkFormat kExactDepthStencilFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
+
+// Made once per logical device; throws std::runtime_error on a Vulkan failure.
+[[nodiscard]] ExactPipelines createExactPipelines(VkDevice device);
+
+}  // namespace recode::backends::detail

@@ -1,0 +1,18 @@
+#include "vulkan_spirv.hpp"
+
+namespace recode::backends::detail {
+
+namespace {
+// glslangValidator --vn writes each module as `const uint32_t k_<stage>[] = {...};`.
+using std::uint32_t;
+#include "clear_vk.frag.h"
+#include "clear_vk.vert.h"
+#include "exact_vk.frag.h"
+#include "exact_vk.vert.h"
+}  // namespace
+
+SpirvModules spirvModules() {
+  return {k_exact_vk_vert, k_exact_vk_frag, k_clear_vk_vert, k_clear_vk_frag};
+}
+
+}  // namespace recode::backends::detail
