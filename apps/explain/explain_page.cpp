@@ -11,6 +11,7 @@
 #include "explain/explain_inspector.hpp"
 #include "explain/explain_palette.hpp"
 #include "explain/explain_text.hpp"
+#include "explain/page_assets.hpp"
 
 namespace recode::app::explain {
 
@@ -27,27 +28,10 @@ nlohmann::json colourJson(Rgb c) {
   return nlohmann::json::array({c.r, c.g, c.b});
 }
 
-// The page's head: its title and the style every section shares.
+// The page's head up to its style sheet (page/page.css, embedded at build time).
 constexpr const char* kPageHead =
     "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-    "<title>RECODE step by step</title><link rel=\"icon\" href=\"data:,\"><style>\n"
-    "body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;"
-    "line-height:1.45;color:#222}\n"
-    "section{border-top:1px solid #ccc;margin-top:2em;padding-top:.5em}\n"
-    "figure{display:inline-block;vertical-align:top;margin:.5em 1.5em .5em 0}\n"
-    "img{image-rendering:pixelated;max-width:100%;height:auto;border:1px solid #888}\n"
-    "figcaption{font-size:.9em;color:#444;max-width:520px}\n"
-    ".sw{display:inline-block;width:1.1em;height:1.1em;border:1px solid #555;"
-    "vertical-align:middle;margin-right:.4em}\n"
-    ".grad{display:inline-block;width:12em;height:1.1em;border:1px solid #555;"
-    "vertical-align:middle;background:linear-gradient(to right,#ffffff,#000000)}\n"
-    "ul.legend{list-style:none;padding-left:0;font-size:.9em}\n"
-    ".axes{font-size:.8em;color:#555;max-width:520px}.scalebar{display:inline-block;"
-    "height:.5em;border:2px solid #222;border-top:none;vertical-align:middle}\n"
-    "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #bbb;"
-    "padding:.2em .5em;text-align:left}tr.hit{background:#fff3d6}\n"
-    ".verdict{font-size:1.3em;font-weight:bold}.verdict.yes{color:#b3261e}"
-    ".verdict.no{color:#1e6b2e}\ncode{background:#f2f2f2;padding:0 .2em}\n";
+    "<title>RECODE step by step</title><link rel=\"icon\" href=\"data:,\"><style>\n";
 
 void writeHowItWorks(std::ostream& h, int scale) {
   h << "<h2>How RECODE works, and how to read the pictures</h2>\n"
@@ -227,7 +211,7 @@ void writeIndexHtml(const fs::path& dir, const Page& page) {
   const core::FrameSpec& f = page.setup.frame;
   const std::string source = escapeHtml(page.setup.source);
   std::ostringstream h;
-  h << kPageHead << inspectorStyle() << "</style></head><body>\n";
+  h << kPageHead << kPageCss << inspectorStyle() << "</style></head><body>\n";
   h << "<h1>RECODE step by step</h1>\n<p>Block A: <b>" << escapeHtml(page.setup.nameA)
     << "</b>, block B: <b>" << escapeHtml(page.setup.nameB) << "</b>, from " << source << ". View "
     << "along the " << core::toString(f.axis) << " axis, " << f.width << " &times; " << f.height

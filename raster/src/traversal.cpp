@@ -150,6 +150,62 @@ std::uint64_t blockMaskInside(int x, int y, const PixelRect& rect) {
   return rowBits * (span & 0x0101010101010101ULL);
 }
 
+namespace {
+
+// One row of 8x8 blocks at y = by inside a tile that testRegion did not reject: the blocks
+// from bx0 (aligned) up to bx1, each tested (unless the tile was accepted whole) and handed to
+// the sink with its coverage.
+void traverseTileRow(const TriangleCoverage& tri, RegionTest tileTest, const PixelRect& area,
+                     int bx0, int bx1, int by, BlockSink& sink, TraversalStats& st) {
+  // Blocks j = 0 .. count - 1 of this row in this tile are at bx0 + 8 j; each meets the area
+  // (bx0 and by are aligned down from it). Those outside [keep.lo, keep.hi] are the ones
+  // testRegion rejects.
+  const std::int64_t count = (bx1 - bx0 + kBlockSize - 1) / kBlockSize;
+  std::int64_t jFirst = 0, jEnd = count;
+  // The span costs three divisions: for a row of a few blocks (a small triangle's) testing each
+  // block is cheaper.
+  constexpr std::int64_t kFewBlocks = 3;
+  if (tileTest == RegionTest::Partial && count > kFewBlocks) {
+    const BlockSpan keep = unrejectedBlocks(tri, by);
+    if (keep.lo > bx0)
+      jFirst = std::min(count, (keep.lo - bx0 + kBlockSize - 1) / kBlockSize);
+    jEnd = keep.hi < bx0 ? 0 : std::min(count, (keep.hi - bx0) / kBlockSize + 1);
+    jEnd = std::max(jEnd, jFirst);
+    st.blocksRejected += static_cast<std::uint64_t>(jFirst + (count - jEnd));
+  }
+  for (std::int64_t j = jFirst; j < jEnd; ++j) {
+    const int bx = bx0 + static_cast<int>(j) * kBlockSize;
+    const std::uint64_t inClip = blockMaskInside(bx, by, area);
+    if (inClip == 0)
+      continue;
+    std::uint64_t mask;
+    if (tileTest == RegionTest::Accept) {
+      mask = inClip;
+    } else {
+      const RegionTest blockTest = testRegion(tri, bx, by, kBlockSize);
+      if (blockTest == RegionTest::Reject) {
+        ++st.blocksRejected;
+        continue;
+      }
+      if (blockTest == RegionTest::Accept) {
+        ++st.blocksAccepted;
+        mask = inClip;
+      } else {
+        ++st.blocksPartial;
+        mask = coverageMask(tri, bx, by, area);
+      }
+    }
+    if (mask == 0)
+      continue;
+    RECODE_INVARIANT(bx % kBlockSize == 0 && by % kBlockSize == 0,
+                     "blocks are aligned to the 8x8 grid");
+    RECODE_INVARIANT((mask & ~inClip) == 0, "a block's coverage lies inside the clip");
+    sink.coveredBlock(bx, by, mask);
+  }
+}
+
+}  // namespace
+
 void traverseTriangle(const TriangleCoverage& tri, const PixelRect& clip, BlockSink& sink,
                       TraversalStats* stats) {
   RECODE_INVARIANT(clip.x0 >= 0 && clip.y0 >= 0 && clip.x1 <= kMaxFramebufferSize &&
@@ -189,53 +245,8 @@ void traverseTriangle(const TriangleCoverage& tri, const PixelRect& clip, BlockS
       const int bx0 = std::max(tx, alignDown(area.x0, kBlockSize));
       const int by1 = std::min(ty + kTileSize, area.y1);
       const int bx1 = std::min(tx + kTileSize, area.x1);
-      for (int by = by0; by < by1; by += kBlockSize) {
-        // Blocks j = 0 .. count - 1 of this row in this tile are at bx0 + 8 j; each meets the
-        // area (bx0 and by0 are aligned down from it). Those outside [keep.lo, keep.hi] are the
-        // ones testRegion rejects.
-        const std::int64_t count = (bx1 - bx0 + kBlockSize - 1) / kBlockSize;
-        std::int64_t jFirst = 0, jEnd = count;
-        // The span costs three divisions: for a row of a few blocks (a small triangle's)
-        // testing each block is cheaper.
-        constexpr std::int64_t kFewBlocks = 3;
-        if (tileTest == RegionTest::Partial && count > kFewBlocks) {
-          const BlockSpan keep = unrejectedBlocks(tri, by);
-          if (keep.lo > bx0)
-            jFirst = std::min(count, (keep.lo - bx0 + kBlockSize - 1) / kBlockSize);
-          jEnd = keep.hi < bx0 ? 0 : std::min(count, (keep.hi - bx0) / kBlockSize + 1);
-          jEnd = std::max(jEnd, jFirst);
-          st.blocksRejected += static_cast<std::uint64_t>(jFirst + (count - jEnd));
-        }
-        for (std::int64_t j = jFirst; j < jEnd; ++j) {
-          const int bx = bx0 + static_cast<int>(j) * kBlockSize;
-          const std::uint64_t inClip = blockMaskInside(bx, by, area);
-          if (inClip == 0)
-            continue;
-          std::uint64_t mask;
-          if (tileTest == RegionTest::Accept) {
-            mask = inClip;
-          } else {
-            const RegionTest blockTest = testRegion(tri, bx, by, kBlockSize);
-            if (blockTest == RegionTest::Reject) {
-              ++st.blocksRejected;
-              continue;
-            }
-            if (blockTest == RegionTest::Accept) {
-              ++st.blocksAccepted;
-              mask = inClip;
-            } else {
-              ++st.blocksPartial;
-              mask = coverageMask(tri, bx, by, area);
-            }
-          }
-          if (mask == 0)
-            continue;
-          RECODE_INVARIANT(bx % kBlockSize == 0 && by % kBlockSize == 0,
-                           "blocks are aligned to the 8x8 grid");
-          RECODE_INVARIANT((mask & ~inClip) == 0, "a block's coverage lies inside the clip");
-          sink.coveredBlock(bx, by, mask);
-        }
-      }
+      for (int by = by0; by < by1; by += kBlockSize)
+        traverseTileRow(tri, tileTest, area, bx0, bx1, by, sink, st);
     }
   }
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The exact devices' GLSL, embedded at build time from backends/exact/shaders and
-// backends/gl/shaders (embed_shaders.cmake).
+// backends/gl/shaders (cmake/embed_text.cmake).
 // Each is a body without a #version line: the device prepends the header its API needs.
 
 namespace recode::backends::detail {
