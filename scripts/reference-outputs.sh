@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Writes the reference outputs whose bytes a speed-up must not change, one file each, into
-# OUTDIR: compare two builds with `cmp` (docs/benchmarks.md says which change was checked so).
+# OUTDIR: compare two builds with `cmp` (docs/benchmarks.md, "How to compare two builds").
 #
 #   scripts/reference-outputs.sh build/apps/recode /tmp/outputs-new
 #   for f in /tmp/outputs-old/*; do cmp -s "$f" "/tmp/outputs-new/${f##*/}" || echo "differs: ${f##*/}"; done
