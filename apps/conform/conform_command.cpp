@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/device_option.hpp"
 #include "recode/backends/device_registry.hpp"
 #include "recode/kit/buffer_diff.hpp"
 #include "recode/raster/golden.hpp"
@@ -134,18 +135,6 @@ int runConform(const ConformOptions& o) {
   return failed == 0 ? 0 : 2;
 }
 
-// The registry's devices for --help: each name, what it is, and what to install when this build
-// lacks it.
-std::string deviceChoices() {
-  std::string text;
-  for (const backends::DeviceInfo& d : backends::deviceRegistry()) {
-    text += (text.empty() ? "" : "; ") + std::string(d.name) + ": " + std::string(d.description);
-    if (!d.built)
-      text += " (not in this build: " + std::string(d.missing) + ")";
-  }
-  return text;
-}
-
 }  // namespace
 
 void addConformCommand(CLI::App& app, int& exitCode) {
@@ -154,7 +143,7 @@ void addConformCommand(CLI::App& app, int& exitCode) {
       "conform",
       "Replay every golden vector under a directory on a device and compare every depth and "
       "stencil value (exit 2 when any vector fails)");
-  cmd->add_option("--device", o->device, "the device: " + deviceChoices())->capture_default_str();
+  addDeviceOption(*cmd, o->device, "the device");
   cmd->add_option("--golden", o->golden, "directory searched recursively for *.json vectors")
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "print one JSON object instead of the report");

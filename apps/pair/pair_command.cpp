@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cli/device_option.hpp"
 #include "cli/frame_options.hpp"
 #include "cli/no_timing.hpp"
 #include "cli/pgm.hpp"
@@ -15,7 +16,6 @@
 #include "pair/pair_report.hpp"
 #include "pair/pair_setup.hpp"
 #include "recode/pair/pair.hpp"
-#include "recode/raster/cpu_device.hpp"
 #include "recode/refine/adaptive.hpp"
 #include "recode/refine/proven_apart.hpp"
 
@@ -36,6 +36,7 @@ struct PairOptions {
   std::string pixel;               // --pixel X,Y; empty: not given
   std::string mode = "reference";  // --mode
   std::string viewAxis = "scene";  // --view-axis
+  std::string device = "cpu";      // --device: a name of the device registry
 };
 
 nlohmann::ordered_json boxJson(const core::Aabb& box) {
@@ -46,7 +47,7 @@ nlohmann::ordered_json boxJson(const core::Aabb& box) {
 
 // The --mode object: what the adaptive, conservative or skip-apart mode decided, beside the
 // reference run's report (which stays as it was).
-nlohmann::ordered_json modeJson(core::PairMode mode, raster::CpuDevice& device,
+nlohmann::ordered_json modeJson(core::PairMode mode, raster::DepthStencilDevice& device,
                                 const PairSetup& setup, const core::PairRequest& request,
                                 const core::PairBlock& a, const core::PairBlock& b,
                                 const core::PairResult& reference) {
@@ -132,7 +133,8 @@ int runPairCommand(const PairOptions& o) {
   request.contact = o.contact;
   request.boxTest = o.boxTest;
   request.normal = o.normal;
-  raster::CpuDevice device(setup.frame.width, setup.frame.height);
+  const std::unique_ptr<raster::DepthStencilDevice> device =
+      makeNamedDevice(o.device, setup.frame.width, setup.frame.height);
   std::optional<PixelProbe> probe;
   if (!o.pixel.empty()) {
     const auto [x, y] = parsePixel(o.pixel, setup.frame);
@@ -143,14 +145,14 @@ int runPairCommand(const PairOptions& o) {
   const core::PairBlock a = core::PairBlock::withHierarchy(setup.a);
   const core::PairBlock b = core::PairBlock::withHierarchy(setup.b);
   const core::PairResult result =
-      core::collidePair(device, a, b, request, probe ? &*probe : nullptr);
+      core::collidePair(*device, a, b, request, probe ? &*probe : nullptr);
   if (!o.dumpCases.empty())
     writePgmBottomUp(o.dumpCases, setup.frame.width, setup.frame.height,
                      frameCaseImage(setup.frame, result));
   const core::PairMode mode = *core::parsePairMode(o.mode);
   std::optional<nlohmann::ordered_json> modeReport;
   if (mode != core::PairMode::Reference)
-    modeReport = modeJson(mode, device, setup, request, a, b, result);
+    modeReport = modeJson(mode, *device, setup, request, a, b, result);
   if (o.json) {
     nlohmann::ordered_json j = pairResultToJson(setup, request, result);
     if (modeReport)
@@ -224,6 +226,10 @@ void addPairCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::IsMember(core::pairModeNames()))
       ->capture_default_str();
   addViewAxisOption(*cmd, o->viewAxis);
+  addDeviceOption(*cmd, o->device,
+                  "the device the pair is drawn on (an exact one gives the same output bytes "
+                  "as cpu, timing aside; the adaptive mode's finer frames are drawn on the CPU "
+                  "device)");
   cmd->callback([o, &exitCode]() { exitCode = runPairCommand(*o); });
 }
 

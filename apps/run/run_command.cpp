@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/atomic_file.hpp"
+#include "cli/device_option.hpp"
 #include "cli/frame_options.hpp"
 #include "cli/no_timing.hpp"
 #include "cli/progress_bar.hpp"
@@ -41,6 +42,7 @@ struct RunOptions {
   long long maxPairTests = core::kDefaultMaxPairTestsPerFrame;
   std::string mode = "reference";  // --mode
   std::string viewAxis = "scene";  // --view-axis
+  std::string device = "cpu";      // --device: a name of the device registry
 };
 
 std::string builtinNames() {
@@ -142,6 +144,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.keepContactPoints = false;                // the report prints counts, area and box only
   options.pairMode = *core::parsePairMode(o.mode);  // CLI11 checked the name
   options.viewAxisRule = viewAxisRule(o.viewAxis);
+  options.deviceFactory = namedDeviceFactory(o.device);
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -243,6 +246,10 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                 "skip the two depth passes that measure each contact region");
   cmd->add_flag("--quiet", o->quiet, "print only the header and the statistics");
   addThreadsOption(*cmd, o->threads);
+  addDeviceOption(*cmd, o->device,
+                  "the device the pairs are drawn on (an exact one gives the same output bytes "
+                  "as cpu, timing aside; a GPU-API device draws from one thread, whatever "
+                  "--threads says)");
   addViewAxisOption(*cmd, o->viewAxis);
   cmd->add_option("--max-pair-tests", o->maxPairTests,
                   "stop with an error when a frame lists more than N pair tests (default " +

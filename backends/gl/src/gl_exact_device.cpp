@@ -62,46 +62,6 @@ std::unique_ptr<detail::GlContext> makeContext(GlPlatform platform, GlPlatform& 
 
 }  // namespace
 
-std::string_view toString(GlPlatform platform) {
-  switch (platform) {
-    case GlPlatform::Auto:
-      return "auto";
-    case GlPlatform::OsMesa:
-      return "osmesa";
-    case GlPlatform::Egl:
-      return "egl";
-  }
-  return "unknown";
-}
-
-std::optional<GlPlatform> parseGlPlatform(std::string_view name) {
-  for (GlPlatform p : {GlPlatform::Auto, GlPlatform::OsMesa, GlPlatform::Egl}) {
-    if (toString(p) == name)
-      return p;
-  }
-  return std::nullopt;
-}
-
-bool glPlatformBuilt(GlPlatform platform) {
-  switch (platform) {
-    case GlPlatform::OsMesa:
-#ifdef RECODE_HAVE_OSMESA
-      return true;
-#else
-      return false;
-#endif
-    case GlPlatform::Egl:
-#ifdef RECODE_HAVE_EGL
-      return true;
-#else
-      return false;
-#endif
-    case GlPlatform::Auto:
-      return glPlatformBuilt(GlPlatform::OsMesa) || glPlatformBuilt(GlPlatform::Egl);
-  }
-  return false;
-}
-
 // What every device of one platform shares, made once per process: the context (a headless
 // one needs no size), the function table, the compiled program and the proxy input. Shader
 // compilation dominates a device's start-up, and verification creates a device per pair.

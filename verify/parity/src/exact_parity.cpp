@@ -5,6 +5,9 @@
 #include <string>
 
 #include "recode/raster/cpu_device.hpp"
+#ifdef RECODE_HAVE_GL_EXACT
+#include "recode/backends/gl_exact_device.hpp"
+#endif
 #ifdef RECODE_HAVE_VULKAN
 #include "recode/backends/vulkan_device.hpp"
 #endif
@@ -119,12 +122,6 @@ ExactParityReport compareOnDeviceWithRenderer(const core::TriangleMesh& a,
 }  // namespace
 
 #ifndef RECODE_HAVE_GL_EXACT
-GlPlatform backends::resolveGlPlatform(backends::GlPlatform) {
-  throw std::runtime_error(
-      "this build has no exact GL device (Debian: apt-get install "
-      "libosmesa6-dev or libegl-dev, then reconfigure)");
-}
-
 ExactParityReport compareOnGlExact(const core::TriangleMesh&, const core::TriangleMesh&,
                                    const core::PairRequest&, backends::GlPlatform) {
   throw std::runtime_error(

@@ -15,23 +15,10 @@
 #include <string_view>
 #include <vector>
 
+#include "recode/backends/gl_platform.hpp"
 #include "recode/raster/render_state_device.hpp"
 
 namespace recode::backends {
-
-// Where the GL context comes from. Auto takes EGL when its headless platform works and falls
-// back to OSMesa, so the same program runs on Mesa's CPU driver and on a real GPU driver.
-enum class GlPlatform : std::uint8_t { Auto, OsMesa, Egl };
-
-[[nodiscard]] std::string_view toString(GlPlatform platform);  // "auto", "osmesa", "egl"
-[[nodiscard]] std::optional<GlPlatform> parseGlPlatform(std::string_view name);
-
-// Which platforms this build can use (OSMesa and EGL are separate build options).
-[[nodiscard]] bool glPlatformBuilt(GlPlatform platform);
-
-// The platform that devices asking for `requested` get: makes the process's shared context for
-// it once (Auto resolves to EGL or OSMesa). Throws as the device's constructor does.
-[[nodiscard]] GlPlatform resolveGlPlatform(GlPlatform requested);
 
 class GlExactDevice final : public raster::RenderStateDevice {
  public:

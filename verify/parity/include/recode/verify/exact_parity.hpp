@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "recode/backends/gl_exact_device.hpp"
+#include "recode/backends/gl_platform.hpp"
 #include "recode/geometry/mesh.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/command_stream.hpp"

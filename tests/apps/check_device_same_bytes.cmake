@@ -1,0 +1,39 @@
+cmake_minimum_required(VERSION 3.25)
+# `recode pair` and `recode run` with --device DEVICE give the CPU device's output bytes, timing
+# aside (--no-timing): the built-in pair in every mode and with --pixel, and two built-in scenes
+# (the cones' first 30 frames, the hands' whole motion). Expects RECODE, DEVICE, OUT.
+
+# Runs `recode ARGS... --device device`; sets <var> to its standard output.
+function(recode_output var device)
+  execute_process(COMMAND ${RECODE} ${ARGN} --device ${device}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "recode ${ARGN} --device ${device} exited ${rc}: ${err}")
+  endif()
+  set(${var} "${out}" PARENT_SCOPE)
+endfunction()
+
+function(expect_same what)
+  recode_output(reference cpu ${ARGN})
+  recode_output(candidate ${DEVICE} ${ARGN})
+  string(MAKE_C_IDENTIFIER "${what}" name)
+  file(WRITE ${OUT}/${name}.cpu.txt "${reference}")
+  file(WRITE ${OUT}/${name}.${DEVICE}.txt "${candidate}")
+  if(NOT reference MATCHES "\"interfering_pixels\": [1-9]|\"pair_tests\": [1-9]")
+    message(FATAL_ERROR "recode ${what}: no pixel interfered and no pair was tested: nothing was compared")
+  endif()
+  if(NOT reference STREQUAL candidate)
+    message(FATAL_ERROR "recode ${what}: --device ${DEVICE} differs from --device cpu "
+                        "(diff ${OUT}/${name}.cpu.txt ${OUT}/${name}.${DEVICE}.txt)")
+  endif()
+  message(STATUS "recode ${what}: ${DEVICE} and cpu give the same bytes")
+endfunction()
+
+file(MAKE_DIRECTORY ${OUT})
+foreach(mode reference adaptive conservative skip-apart)
+  expect_same("pair --mode ${mode}" pair --json --no-timing --mode ${mode})
+endforeach()
+expect_same("pair --pixel 128,128" pair --json --no-timing --pixel 128,128)
+expect_same("run random-cones" run random-cones --frames 30 --json --no-timing)
+# The hands touch the ball from about frame 60 on: the whole motion.
+expect_same("run hand-grasp" run hand-grasp --json --no-timing)
