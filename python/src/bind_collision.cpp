@@ -12,6 +12,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "devices.hpp"
 #include "recode/api/collision.hpp"
 #include "recode/refine/pair_mode.hpp"
 
@@ -338,14 +339,19 @@ void bindCollision(py::module_& m) {
   m.def(
       "collide",
       [](const CollisionObject& a, const CollisionObject& b,
-         const std::optional<CollisionRequest>& request) {
+         const std::optional<CollisionRequest>& request, const std::string& device) {
         CollisionResult result;
-        collide(a, b, request.value_or(CollisionRequest{}), result);
+        if (device == "cpu")
+          collide(a, b, request.value_or(CollisionRequest{}), result);
+        else
+          collide(a, b, request.value_or(CollisionRequest{}), result, devicePool(device));
         return result;
       },
-      py::arg("a"), py::arg("b"), py::arg("request") = py::none(),
+      py::arg("a"), py::arg("b"), py::arg("request") = py::none(), py::kw_only(),
+      py::arg("device") = "cpu",
       "Collides two objects at their current poses; returns a CollisionResult (true when they "
-      "collide).");
+      "collide). device: a name of recode.devices() (an exact one gives the cpu device's "
+      "result, timing aside).");
 }
 
 }  // namespace recode::python

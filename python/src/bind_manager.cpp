@@ -11,6 +11,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "devices.hpp"
 #include "recode/api/manager.hpp"
 
 namespace recode::python {
@@ -42,7 +43,11 @@ void bindManager(py::module_& m) {
   py::class_<CollisionManager>(
       m, "CollisionManager",
       "Many objects: sort and sweep on their world boxes, then collide() on each candidate pair.")
-      .def(py::init<>())
+      .def(py::init([](const std::string& device) {
+             return std::make_unique<CollisionManager>(deviceFactory(device));
+           }),
+           py::kw_only(), py::arg("device") = "cpu",
+           "device: a name of recode.devices(), the device every pair is drawn on.")
       .def("add", &CollisionManager::add, py::arg("object"),
            "Adds an object (shared: moving it moves it here); returns its id. Ids are never "
            "reused.")

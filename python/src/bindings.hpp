@@ -11,5 +11,6 @@ namespace py = pybind11;
 void bindGeometry(py::module_& m);   // ConvexBlock, CollisionGeometry, the primitive solids
 void bindCollision(py::module_& m);  // CollisionObject, CollisionRequest, CollisionResult, collide
 void bindManager(py::module_& m);    // CollisionManager, ObjectContact
+// recode.devices(): devices.hpp
 
 }  // namespace recode::python

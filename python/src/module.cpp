@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
+#include "devices.hpp"
 #include "recode/geometry/mesh_error.hpp"
 
 PYBIND11_MODULE(recode, m) {
@@ -18,4 +19,5 @@ PYBIND11_MODULE(recode, m) {
   recode::python::bindGeometry(m);
   recode::python::bindCollision(m);
   recode::python::bindManager(m);
+  recode::python::bindDevices(m);
 }
