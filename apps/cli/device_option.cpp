@@ -40,10 +40,7 @@ std::unique_ptr<raster::DepthStencilDevice> makeNamedDevice(const std::string& n
 }
 
 core::DeviceFactory namedDeviceFactory(const std::string& name) {
-  const backends::DeviceKind kind = backends::parseDeviceKind(name);
-  if (kind == backends::DeviceKind::Cpu)
-    return {};
-  return backends::warmDeviceFactory(kind);
+  return backends::deviceFactoryFor(backends::parseDeviceKind(name));
 }
 
 }  // namespace recode::app

@@ -25,9 +25,9 @@ CLI::Option* addDeviceOption(CLI::App& cmd, std::string& name, const std::string
 [[nodiscard]] std::unique_ptr<raster::DepthStencilDevice> makeNamedDevice(const std::string& name,
                                                                           int width, int height);
 
-// For core::RunOptions::deviceFactory: empty for "cpu" (the run's own CPU devices, on its
-// threads), else the registry's warmed-up factory (one thread: the GPU-API devices share a
-// context). Throws as makeNamedDevice when this build lacks the device.
+// For core::RunOptions::deviceFactory: backends::deviceFactoryFor the named kind (empty for
+// "cpu", so the run keeps its own CPU devices and threads). Throws as makeNamedDevice when this
+// build lacks the device.
 [[nodiscard]] core::DeviceFactory namedDeviceFactory(const std::string& name);
 
 }  // namespace recode::app

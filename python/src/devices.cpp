@@ -12,10 +12,8 @@ namespace recode::python {
 core::DeviceFactory deviceFactory(const std::string& name) {
 #if RECODE_PYTHON_HAVE_BACKENDS
   const backends::DeviceKind kind = backends::parseDeviceKind(name);
-  if (kind == backends::DeviceKind::Cpu)
-    return {};
   try {
-    return backends::warmDeviceFactory(kind);
+    return backends::deviceFactoryFor(kind);
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
   }

@@ -44,10 +44,16 @@ TEST_CASE("a registered device is made at the size asked, or refused naming what
       const auto warm = backends::warmDeviceFactory(d.kind)(16, 16);
       REQUIRE(warm);
       CHECK(warm->width() == 16);
+      // A run's factory: none for the CPU device (the run makes its own), the warm one else.
+      const core::DeviceFactory forRun = backends::deviceFactoryFor(d.kind);
+      CHECK(static_cast<bool>(forRun) == (d.kind != backends::DeviceKind::Cpu));
+      if (forRun)
+        CHECK(forRun(16, 16)->height() == 16);
     } else {
       CHECK_THROWS_WITH(backends::makeDevice(d.kind, 24, 8),
                         Catch::Contains(std::string(d.missing)));
       CHECK_THROWS_AS(backends::warmDeviceFactory(d.kind), std::runtime_error);
+      CHECK_THROWS_AS(backends::deviceFactoryFor(d.kind), std::runtime_error);
     }
   }
   CHECK_THROWS_AS(backends::makeDevice(backends::DeviceKind::Cpu, 0, 8), std::invalid_argument);

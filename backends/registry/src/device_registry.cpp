@@ -138,4 +138,10 @@ core::DeviceFactory warmDeviceFactory(DeviceKind kind) {
   };
 }
 
+core::DeviceFactory deviceFactoryFor(DeviceKind kind) {
+  if (kind == DeviceKind::Cpu)
+    return {};
+  return warmDeviceFactory(kind);
+}
+
 }  // namespace recode::backends

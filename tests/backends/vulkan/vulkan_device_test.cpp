@@ -56,4 +56,3 @@ TEST_CASE("the Vulkan device keeps GL's bottom-left origin and winding", "[vulka
   // A read-back of a sub-rectangle starts at its bottom row too.
   CHECK(device.readStencil({0, 0, 2, 1}) == std::vector<std::uint8_t>{1, 1});
 }
-

@@ -49,4 +49,9 @@ struct DeviceInfo {
 // frame. Throws as makeDevice when the kind is not in this build.
 [[nodiscard]] core::DeviceFactory warmDeviceFactory(DeviceKind kind);
 
+// What a run or a DevicePool should be given to draw on `kind`: empty for Cpu (the caller's own
+// CPU devices, which a run may use from several threads), else warmDeviceFactory(kind). Throws
+// as makeDevice when the kind is not in this build.
+[[nodiscard]] core::DeviceFactory deviceFactoryFor(DeviceKind kind);
+
 }  // namespace recode::backends
