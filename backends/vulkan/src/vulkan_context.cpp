@@ -201,22 +201,11 @@ VkDeviceMemory VulkanContext::allocate(const VkMemoryRequirements& requirements,
   throw std::runtime_error("Vulkan device: no memory type with the properties needed");
 }
 
-void VulkanContext::reserve(HostBuffer& buffer, VkDeviceSize bytes,
-                            VkBufferUsageFlags usage) const {
-  if (buffer.size >= bytes)
-    return;
-  if (buffer.buffer != VK_NULL_HANDLE) {
-    vkDestroyBuffer(device_, buffer.buffer, nullptr);
-    vkFreeMemory(device_, buffer.memory, nullptr);  // unmaps it too
-    buffer = {};
-  }
-  // Grow geometrically, so a stream of growing draws reallocates only a few times.
-  VkDeviceSize size = 4096;
-  while (size < bytes)
-    size *= 2;
+HostBuffer VulkanContext::createHostBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const {
+  HostBuffer buffer;
   VkBufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-  info.size = size;
+  info.size = bytes;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer.buffer), "vkCreateBuffer");
@@ -226,7 +215,48 @@ void VulkanContext::reserve(HostBuffer& buffer, VkDeviceSize bytes,
       requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
   vkCheck(vkBindBufferMemory(device_, buffer.buffer, buffer.memory, 0), "vkBindBufferMemory");
   vkCheck(vkMapMemory(device_, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped), "vkMapMemory");
-  buffer.size = size;
+  buffer.size = bytes;
+  return buffer;
+}
+
+void VulkanContext::destroyHostBuffer(HostBuffer& buffer) const {
+  if (buffer.buffer == VK_NULL_HANDLE)
+    return;
+  vkDestroyBuffer(device_, buffer.buffer, nullptr);
+  vkFreeMemory(device_, buffer.memory, nullptr);  // unmaps it too
+  buffer = {};
+}
+
+VkCommandPool VulkanContext::createCommandPool() const {
+  VkCommandPoolCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  info.queueFamilyIndex = queueFamily_;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  vkCheck(vkCreateCommandPool(device_, &info, nullptr, &pool), "vkCreateCommandPool");
+  return pool;
+}
+
+VkFence VulkanContext::createFence() const {
+  VkFenceCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  VkFence fence = VK_NULL_HANDLE;
+  vkCheck(vkCreateFence(device_, &info, nullptr, &fence), "vkCreateFence");
+  return fence;
+}
+
+void VulkanContext::submitAndWait(VkCommandBuffer commands, VkFence fence) {
+  VkSubmitInfo submitInfo{};
+  submitInfo.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  submitInfo.commandBufferCount = 1;
+  submitInfo.pCommandBuffers = &commands;
+  {
+    const std::lock_guard<std::mutex> lock(queueLock_);
+    vkCheck(vkQueueSubmit(queue_, 1, &submitInfo, fence), "vkQueueSubmit");
+  }
+  vkCheck(vkWaitForFences(device_, 1, &fence, VK_TRUE, std::numeric_limits<std::uint64_t>::max()),
+          "vkWaitForFences");
+  vkCheck(vkResetFences(device_, 1, &fence), "vkResetFences");
 }
 
 void VulkanContext::submit(const std::function<void(VkCommandBuffer)>& commands) {
@@ -250,14 +280,7 @@ void VulkanContext::submit(const std::function<void(VkCommandBuffer)>& commands)
   vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
                        1, &barrier, 0, nullptr, 0, nullptr);
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
-  VkSubmitInfo submitInfo{};
-  submitInfo.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-  submitInfo.commandBufferCount = 1;
-  submitInfo.pCommandBuffers = &commands_;
-  vkCheck(vkResetFences(device_, 1, &fence_), "vkResetFences");
-  vkCheck(vkQueueSubmit(queue_, 1, &submitInfo, fence_), "vkQueueSubmit");
-  vkCheck(vkWaitForFences(device_, 1, &fence_, VK_TRUE, std::numeric_limits<std::uint64_t>::max()),
-          "vkWaitForFences");
+  submitAndWait(commands_, fence_);
 }
 
 }  // namespace recode::backends::detail

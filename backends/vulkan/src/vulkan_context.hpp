@@ -1,16 +1,17 @@
 #pragma once
 // What every exact Vulkan device of the process shares: the instance, the chosen physical
-// device, a logical device with one graphics queue, one command buffer with its fence, and
-// host-visible buffers for proxy records and read-backs. Made on first use and deliberately
+// device, a logical device with one graphics queue and one command buffer with its fence for
+// one-off submissions (initialising an image). Made on first use and deliberately
 // never destroyed (tearing a driver down during static destruction is a known source of crashes
-// at exit). Single-threaded, like the devices: every operation records the command buffer,
-// submits it and waits.
+// at exit). Each device records into a command buffer of its own (vulkan_recorder.hpp); the
+// queue is shared, under a lock.
 
 #include <vulkan/vulkan_core.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <string>
 
 namespace recode::backends::detail {
@@ -39,17 +40,22 @@ class VulkanContext {
   [[nodiscard]] VkDeviceMemory allocate(const VkMemoryRequirements& requirements,
                                         VkMemoryPropertyFlags properties) const;
 
-  // `buffer` grown (recreated) to hold at least `bytes`, with `usage`. Its old contents are lost.
-  void reserve(HostBuffer& buffer, VkDeviceSize bytes, VkBufferUsageFlags usage) const;
+  // A command pool and a fence of the caller's own (a device records into its own command
+  // buffer), destroyed by the caller.
+  [[nodiscard]] VkCommandPool createCommandPool() const;
+  [[nodiscard]] VkFence createFence() const;
+  // A new host-visible, host-coherent buffer of `bytes`, mapped; destroyHostBuffer frees it.
+  [[nodiscard]] HostBuffer createHostBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const;
+  void destroyHostBuffer(HostBuffer& buffer) const;
+
+  // Submits a recorded command buffer to the queue (shared, so under a lock) and waits for
+  // `fence`, which must be unsignalled.
+  void submitAndWait(VkCommandBuffer commands, VkFence fence);
 
   // Records `commands` into the shared command buffer, submits it and waits for it to finish.
   // Every submission starts with a full memory barrier, so each sees everything the previous
   // ones wrote (attachments, transfers, host writes to the mapped buffers).
   void submit(const std::function<void(VkCommandBuffer)>& commands);
-
-  // The shared buffers: proxy records (vertex input) and read-backs (transfer destination).
-  HostBuffer proxies;
-  HostBuffer readback;
 
  private:
   VulkanContext();
@@ -66,6 +72,7 @@ class VulkanContext {
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  std::mutex queueLock_;
   std::string name_;
 };
 

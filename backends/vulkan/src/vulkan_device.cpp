@@ -7,13 +7,19 @@
 // framebuffer has row 0 at the top. GL row j is framebuffer row height - 1 - j throughout: the
 // viewport has a negative height, scissors and read-back regions are mirrored, read-backs are
 // returned bottom row first, and the fragment shader turns gl_FragCoord back into GL's j.
+//
+// Nothing runs when it is given: every command is recorded (vulkan_recorder.hpp) and run by
+// finish(), or by a read-back that must return its values at once.
 
 #include "recode/backends/vulkan_device.hpp"
 
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "recode/backends/exact_proxy.hpp"
 #include "recode/raster/device_checks.hpp"
@@ -21,6 +27,7 @@
 #include "vulkan_context.hpp"
 #include "vulkan_enums.hpp"
 #include "vulkan_pipeline.hpp"
+#include "vulkan_recorder.hpp"
 
 namespace recode::backends {
 
@@ -43,6 +50,24 @@ const detail::ExactPipelines& sharedPipelines() {
 
 constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
 
+// The contract's 24-bit depths from the stored floats. Every stored value is some q 2^-24
+// (shaders and clears write nothing else); anything else means the driver converted depth on
+// the way, and is reported rather than rounded.
+std::vector<std::uint32_t> depthFromStored(const std::vector<std::uint8_t>& bytes) {
+  std::vector<std::uint32_t> out(bytes.size() / 4);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    float stored = 0.0f;
+    std::memcpy(&stored, bytes.data() + 4 * i, 4);
+    const double q = static_cast<double>(stored) * 16777216.0;
+    if (!(q >= 0.0 && q <= static_cast<double>(raster::kDepthMax)) || q != std::floor(q)) {
+      throw std::runtime_error("Vulkan device: the depth buffer holds " + std::to_string(stored) +
+                               ", not a multiple of 2^-24 below 1");
+    }
+    out[i] = static_cast<std::uint32_t>(q);
+  }
+  return out;
+}
+
 }  // namespace
 
 struct VulkanDevice::Impl {
@@ -51,6 +76,7 @@ struct VulkanDevice::Impl {
   const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
   detail::VulkanContext* context = nullptr;
   const detail::ExactPipelines* pipelines = nullptr;
+  std::unique_ptr<detail::CommandRecorder> recorder;
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
   VkImageView view = VK_NULL_HANDLE;
@@ -64,7 +90,7 @@ struct VulkanDevice::Impl {
   }
 
   // The image lives in GENERAL layout for its whole life, so attachments and transfers need no
-  // layout transitions; the context's barriers order the submissions.
+  // layout transitions; the recorder's barriers order the commands.
   void createImage() {
     VkImageCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
@@ -96,7 +122,7 @@ struct VulkanDevice::Impl {
   // GENERAL layout, then the start state of CpuDevice: depth 2^24 - 1 (stored as
   // (2^24 - 1) 2^-24), stencil 0 everywhere.
   void initialiseImage() {
-    context->submit([&](VkCommandBuffer cmd) {
+    recorder->record([&](VkCommandBuffer cmd) {
       VkImageMemoryBarrier barrier{};
       barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
       barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -118,7 +144,7 @@ struct VulkanDevice::Impl {
   // viewport (negative height: GL's y up), the scissor and the frame's push constants set.
   template <typename Body>
   void render(VkPipeline pipeline, float clearDepth, const Body& body) {
-    context->submit([&](VkCommandBuffer cmd) {
+    recorder->record([&](VkCommandBuffer cmd) {
       VkRenderingAttachmentInfo attachment{};
       attachment.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
       attachment.imageView = view;
@@ -174,35 +200,34 @@ struct VulkanDevice::Impl {
     vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilRef);
   }
 
-  // Copies one aspect of a GL-window rectangle into the read-back buffer and returns its bytes,
-  // `texel` bytes a pixel, rows bottom first (the buffer holds them top first).
-  std::vector<std::uint8_t> readAspect(const PixelRect& r, VkImageAspectFlags aspect,
-                                       std::size_t texel) {
+  // Records a copy of one aspect of a GL-window rectangle; `deliver` gets its bytes, `texel`
+  // bytes a pixel, rows bottom first (the copy holds them top first), when the recording runs.
+  void readAspect(const PixelRect& r, VkImageAspectFlags aspect, std::size_t texel,
+                  std::function<void(std::vector<std::uint8_t>)> deliver) {
     const std::size_t rowBytes = static_cast<std::size_t>(r.width()) * texel;
     const std::size_t bytes = rowBytes * static_cast<std::size_t>(r.height());
-    context->reserve(context->readback, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     const VkRect2D source = framebufferRect(r);
-    context->submit([&](VkCommandBuffer cmd) {
-      VkBufferImageCopy region{};
-      region.imageSubresource = {aspect, 0, 0, 1};
-      region.imageOffset = {source.offset.x, source.offset.y, 0};
-      region.imageExtent = {source.extent.width, source.extent.height, 1};
-      vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_GENERAL, context->readback.buffer, 1,
-                             &region);
-    });
-    std::vector<std::uint8_t> out(bytes);
-    const auto* rows = static_cast<const std::uint8_t*>(context->readback.mapped);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {aspect, 0, 0, 1};
+    region.imageOffset = {source.offset.x, source.offset.y, 0};
+    region.imageExtent = {source.extent.width, source.extent.height, 1};
     const int h = r.height();
-    for (int k = 0; k < h; ++k) {
-      std::memcpy(out.data() + static_cast<std::size_t>(k) * rowBytes,
-                  rows + static_cast<std::size_t>(h - 1 - k) * rowBytes, rowBytes);
-    }
-    return out;
+    recorder->readBack(
+        image, aspect, region, bytes,
+        [rowBytes, bytes, h, deliver = std::move(deliver)](const std::uint8_t* rows) {
+          std::vector<std::uint8_t> out(bytes);
+          for (int k = 0; k < h; ++k) {
+            std::memcpy(out.data() + static_cast<std::size_t>(k) * rowBytes,
+                        rows + static_cast<std::size_t>(h - 1 - k) * rowBytes, rowBytes);
+          }
+          deliver(std::move(out));
+        });
   }
 
   ~Impl() {
     if (context == nullptr)
       return;
+    recorder.reset();  // what was recorded and never asked for is dropped
     vkDestroyImageView(device(), view, nullptr);
     vkDestroyImage(device(), image, nullptr);
     vkFreeMemory(device(), memory, nullptr);
@@ -218,6 +243,7 @@ VulkanDevice::VulkanDevice(int width, int height)
   d.state = &state_;
   d.pipelines = &sharedPipelines();  // makes the context too
   d.context = &detail::VulkanContext::instance();
+  d.recorder = std::make_unique<detail::CommandRecorder>(*d.context);
   d.createImage();
   d.initialiseImage();
 }
@@ -290,50 +316,77 @@ void VulkanDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
   const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, state_);
   if (proxies.empty())
     return;
-  const std::size_t bytes = proxies.size() * sizeof(ProxyTriangle);
-  d.context->reserve(d.context->proxies, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-  std::memcpy(d.context->proxies.mapped, proxies.data(), bytes);
+  const detail::CommandRecorder::Staged staged =
+      d.recorder->stage(proxies.data(), proxies.size() * sizeof(ProxyTriangle));
   // Instances are drawn in order and Vulkan keeps primitive order for depth and stencil
   // (rasterization order), so triangles reach each pixel in index order as the contract
   // requires. The two halves of a proxy rectangle share an edge, which Vulkan's rasterization
   // rules hand to exactly one of them.
   d.render(d.pipelines->exact, 0.0f, [&](VkCommandBuffer cmd) {
     d.setDrawState(cmd);
-    const VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &d.context->proxies.buffer, &offset);
+    vkCmdBindVertexBuffers(cmd, 0, 1, &staged.buffer, &staged.offset);
     vkCmdDraw(cmd, 4, static_cast<std::uint32_t>(proxies.size()), 0, 0);
   });
 }
 
-std::vector<std::uint8_t> VulkanDevice::readStencil(const PixelRect& rect) const {
+void VulkanDevice::drawMesh(const raster::TriangleSource& source) {
+  // As CpuDevice: the triangles left out cover no pixel centre inside the scissor, so they
+  // would give no proxy; a source that cannot tell is drawn whole, so its refusal is the full
+  // draw's.
+  const std::optional<raster::TriangleDraw> near = source.trianglesMeeting(state_.scissor);
+  const raster::TriangleDraw draw = near ? *near : source.allTriangles();
+  drawTriangles(draw.vertices, draw.indices);
+}
+
+raster::PendingRead<std::uint8_t> VulkanDevice::readStencilLater(const PixelRect& rect) {
   Impl& d = *impl_;
   const PixelRect r = rect.intersect({0, 0, d.width, d.height});
   if (r.empty())
-    return {};
-  return d.readAspect(r, VK_IMAGE_ASPECT_STENCIL_BIT, 1);
+    return raster::PendingRead<std::uint8_t>::ready({});
+  raster::PendingRead<std::uint8_t> read = raster::PendingRead<std::uint8_t>::waiting();
+  d.readAspect(r, VK_IMAGE_ASPECT_STENCIL_BIT, 1,
+               [read](std::vector<std::uint8_t> bytes) mutable { read.deliver(std::move(bytes)); });
+  return read;
+}
+
+raster::PendingRead<std::uint32_t> VulkanDevice::readDepthLater(const PixelRect& rect) {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  if (r.empty())
+    return raster::PendingRead<std::uint32_t>::ready({});
+  raster::PendingRead<std::uint32_t> read = raster::PendingRead<std::uint32_t>::waiting();
+  // The depth aspect of D32_SFLOAT_S8_UINT copies out as tightly packed 32-bit floats.
+  d.readAspect(r, VK_IMAGE_ASPECT_DEPTH_BIT, 4, [read](std::vector<std::uint8_t> bytes) mutable {
+    read.deliver(depthFromStored(bytes));
+  });
+  return read;
+}
+
+void VulkanDevice::finish() {
+  impl_->recorder->finish();
+}
+
+bool VulkanDevice::defers() const {
+  return true;
+}
+
+raster::TransferCounters VulkanDevice::transfers() const {
+  return impl_->recorder->counters();
+}
+
+std::vector<std::uint8_t> VulkanDevice::readStencil(const PixelRect& rect) const {
+  // The interface's read-backs are const; running the recording changes no state it shows.
+  auto& self = const_cast<VulkanDevice&>(*this);
+  raster::PendingRead<std::uint8_t> read = self.readStencilLater(rect);
+  self.finish();
+  return read.take();
 }
 
 std::vector<std::uint32_t> VulkanDevice::readDepth(const PixelRect& rect) const {
-  Impl& d = *impl_;
-  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
-  if (r.empty())
-    return {};
-  // The depth aspect of D32_SFLOAT_S8_UINT copies out as tightly packed 32-bit floats.
-  const std::vector<std::uint8_t> bytes = d.readAspect(r, VK_IMAGE_ASPECT_DEPTH_BIT, 4);
-  std::vector<std::uint32_t> out(bytes.size() / 4);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    float stored = 0.0f;
-    std::memcpy(&stored, bytes.data() + 4 * i, 4);
-    // Every stored value is some q 2^-24 (shaders and clears write nothing else); anything else
-    // means the driver converted depth on the way, and is reported rather than rounded.
-    const double q = static_cast<double>(stored) * 16777216.0;
-    if (!(q >= 0.0 && q <= static_cast<double>(raster::kDepthMax)) || q != std::floor(q)) {
-      throw std::runtime_error("Vulkan device: the depth buffer holds " + std::to_string(stored) +
-                               ", not a multiple of 2^-24 below 1");
-    }
-    out[i] = static_cast<std::uint32_t>(q);
-  }
-  return out;
+  auto& self = const_cast<VulkanDevice&>(*this);
+  raster::PendingRead<std::uint32_t> read = self.readDepthLater(rect);
+  self.finish();
+  return read.take();
 }
 
 }  // namespace recode::backends

@@ -14,18 +14,16 @@
 
 #include "block_window_source.hpp"
 #include "pair_passes.hpp"
+#include "pair_stages.hpp"
 
 namespace recode::core {
 
 namespace {
 
+using detail::Clock;
+using detail::microsecondsSince;
 using raster::CullMode;
 using raster::PixelRect;
-using Clock = std::chrono::steady_clock;
-
-double microsecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::micro>(Clock::now() - start).count();
-}
 
 // Quantised depth range of a block's vertices. Every fragment depth of the block lies in it
 // up to rounding of the plane evaluation, hence the one-LSB slack where it is used.
@@ -134,7 +132,7 @@ PixelRect pixelFootprint(std::span<const raster::WindowVertex> vertices, int wid
   return PixelRect{first(xmin), first(ymin), last(xmax), last(ymax)}.intersect(frame);
 }
 
-namespace {
+namespace detail {
 
 void requireDeviceSize(const raster::DepthStencilDevice& device, const FrameSpec& frame) {
   if (device.width() != frame.width || device.height() != frame.height) {
@@ -144,12 +142,6 @@ void requireDeviceSize(const raster::DepthStencilDevice& device, const FrameSpec
     throw std::invalid_argument(m.str());
   }
 }
-
-// Both blocks as the device will draw them.
-struct DrawnPair {
-  const detail::BlockWindowSource& a;
-  const detail::BlockWindowSource& b;
-};
 
 // The rectangle the passes run over (the paper's Table 1). MIN is empty when the footprints do
 // not overlap; MAX only when both blocks lie off the frame.
@@ -229,7 +221,7 @@ void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
   const double depthScale = 1.0 / static_cast<double>(raster::kDepthMax);
   const double worldPerStep = (r.depthMax - r.depthMin) * depthScale;
   r.contact.points.reserve(static_cast<std::size_t>(r.interferingPixels));
-  const PixelRect& rect = nearDepth.rect;
+  const PixelRect& rect = r.contactRect;  // the buffers may cover more (collidePairs)
   // The box, depth and count are kept in locals while the loop runs: the points' stores could
   // alias them through r and would force them through memory at every pixel.
   Aabb box = r.contact.box;
@@ -273,27 +265,6 @@ void measureContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
   r.contact.collapsedPixels = collapsed;
 }
 
-// Runs the algorithm's steps on the device, timing each and showing it to the observer.
-class StepRunner {
- public:
-  StepRunner(raster::DepthStencilDevice& device, PairObserver* observer, PairTiming& timing)
-      : device_(device), observer_(observer), timing_(timing) {}
-
-  template <class Body>
-  void run(PairStep step, Body&& body) {
-    const Clock::time_point t = Clock::now();
-    body();
-    timing_.stepUs[static_cast<std::size_t>(step)] += microsecondsSince(t);
-    if (observer_)
-      observer_->afterStep(step, device_);
-  }
-
- private:
-  raster::DepthStencilDevice& device_;
-  PairObserver* observer_;
-  PairTiming& timing_;
-};
-
 // The box test on the snapped geometry the device will draw: the projected boxes must share a
 // pixel centre and the depth ranges must come within one step of each other. Nothing that
 // fails it can interfere, so skipping the passes then gives the verdict they would. Sets
@@ -311,7 +282,60 @@ bool choosePassRegion(const DrawnPair& drawn, const PairRequest& request, PairRe
   return !(request.mor == MorMode::Min && r.mor.empty());
 }
 
-}  // namespace
+PairResult startPair(const PairBlock& a, const PairBlock& b, const FrameSpec& frame) {
+  PairResult r;
+  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, a.box(), b.box());
+  r.depthMin = depthMin;
+  r.depthMax = depthMax;
+  return r;
+}
+
+OrthoView pairView(const FrameSpec& frame, const PairResult& r) {
+  return OrthoView(frame.axis, frame.window, frame.width, frame.height, r.depthMin, r.depthMax);
+}
+
+void recordStencilPasses(PassRunner& passes, StepRunner& steps, const PixelRect& mor) {
+  steps.run(PairStep::SetZ, [&] { passes.setZ(mor); });
+  steps.run(PairStep::TestZ, [&] { passes.testZ(); });
+  steps.run(PairStep::LoadAmin, [&] { passes.loadAmin(); });
+  steps.run(PairStep::TestAminFront, [&] { passes.testAmin(CullMode::Back, kFrontBehindAminBit); });
+  steps.run(PairStep::TestAminBack, [&] { passes.testAmin(CullMode::Front, kBackBehindAminBit); });
+}
+
+PixelRect concludeStencil(const raster::PixelBuffer<std::uint8_t>& stencil, const OrthoView& view,
+                          PairResult& r) {
+  const Clock::time_point t = Clock::now();
+  r.stencilPixelsRead = r.mor.area();
+  const PixelRect contactRect = classifyStencil(stencil, r);
+  r.collide = r.interferingPixels > 0;
+  r.contact.pixels = r.interferingPixels;
+  r.contact.area =
+      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
+  r.timing.classifyUs += microsecondsSince(t);
+  return contactRect;
+}
+
+void concludeContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
+                     const raster::PixelBuffer<std::uint32_t>& farDepth, const OrthoView& view,
+                     const PairBlock& a, const PairBlock& b, const PairRequest& request,
+                     PairResult& r) {
+  const Clock::time_point t = Clock::now();
+  r.depthPixelsRead = 2 * r.contactRect.area();
+  std::vector<Eigen::Vector3d> ends;
+  measureContact(nearDepth, farDepth, view, r, request.normal ? &ends : nullptr);
+  if (request.normal) {
+    // Half a pixel along the image plane's two world axes, none along the view axis.
+    const Eigen::Vector3d halfPixel =
+        (view.fromPlane({0.5 * view.pixelWidth(), 0.5 * view.pixelHeight(), 0.0}) -
+         view.fromPlane(Eigen::Vector3d::Zero()))
+            .cwiseAbs();
+    r.contact.normal =
+        contactNormal(OverlapSamples{ends, halfPixel}, a.mesh().vertices, b.mesh().vertices);
+  }
+  r.timing.classifyUs += microsecondsSince(t);
+}
+
+}  // namespace detail
 
 PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a,
                        const TriangleMesh& b, const PairRequest& request, PairObserver* observer) {
@@ -320,43 +344,28 @@ PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a
 
 PairResult collidePair(raster::DepthStencilDevice& device, const PairBlock& a, const PairBlock& b,
                        const PairRequest& request, PairObserver* observer) {
+  using namespace detail;
   const Clock::time_point start = Clock::now();
   const FrameSpec& frame = request.frame;
   requireDeviceSize(device, frame);
-  PairResult r;
+  PairResult r = startPair(a, b, frame);
   const auto finish = [&r, start]() -> PairResult {
     r.timing.totalUs = microsecondsSince(start);
     return std::move(r);
   };
-  const auto [depthMin, depthMax] = pairDepthRange(frame.axis, a.box(), b.box());
-  r.depthMin = depthMin;
-  r.depthMax = depthMax;
-  const OrthoView view(frame.axis, frame.window, frame.width, frame.height, depthMin, depthMax);
+  const OrthoView view = pairView(frame, r);
   // A before B, each whole unless it can be drawn culled, so a vertex the view cannot map is
   // refused as it always was: before anything is drawn, A's first.
-  const detail::BlockWindowSource sourceA(a, view), sourceB(b, view);
-  const DrawnPair drawn{sourceA, sourceB};
-  if (!choosePassRegion(drawn, request, r))
+  const BlockWindowSource sourceA(a, view), sourceB(b, view);
+  if (!choosePassRegion(DrawnPair{sourceA, sourceB}, request, r))
     return finish();
 
-  detail::PassRunner passes(device, sourceA, sourceB);
+  PassRunner passes(device, sourceA, sourceB);
   StepRunner steps(device, observer, r.timing);
-  steps.run(PairStep::SetZ, [&] { passes.setZ(r.mor); });
-  steps.run(PairStep::TestZ, [&] { passes.testZ(); });
-  steps.run(PairStep::LoadAmin, [&] { passes.loadAmin(); });
-  steps.run(PairStep::TestAminFront, [&] { passes.testAmin(CullMode::Back, kFrontBehindAminBit); });
-  steps.run(PairStep::TestAminBack, [&] { passes.testAmin(CullMode::Front, kBackBehindAminBit); });
+  recordStencilPasses(passes, steps, r.mor);
   raster::PixelBuffer<std::uint8_t> stencil;
   steps.run(PairStep::ReadStencil, [&] { stencil = raster::readStencilBuffer(device, r.mor); });
-  r.stencilPixelsRead = r.mor.area();
-
-  Clock::time_point t = Clock::now();
-  const PixelRect contactRect = classifyStencil(stencil, r);
-  r.collide = r.interferingPixels > 0;
-  r.contact.pixels = r.interferingPixels;
-  r.contact.area =
-      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
-  r.timing.classifyUs += microsecondsSince(t);
+  const PixelRect contactRect = concludeStencil(stencil, view, r);
   if (!r.collide || !request.contact)
     return finish();
 
@@ -370,21 +379,7 @@ PairResult collidePair(raster::DepthStencilDevice& device, const PairBlock& a, c
     passes.overlapEnd(r.contactRect, false);
     farDepth = raster::readDepthBuffer(device, r.contactRect);
   });
-  r.depthPixelsRead = 2 * r.contactRect.area();
-
-  t = Clock::now();
-  std::vector<Eigen::Vector3d> ends;
-  measureContact(nearDepth, farDepth, view, r, request.normal ? &ends : nullptr);
-  if (request.normal) {
-    // Half a pixel along the image plane's two world axes, none along the view axis.
-    const Eigen::Vector3d halfPixel =
-        (view.fromPlane({0.5 * view.pixelWidth(), 0.5 * view.pixelHeight(), 0.0}) -
-         view.fromPlane(Eigen::Vector3d::Zero()))
-            .cwiseAbs();
-    r.contact.normal =
-        contactNormal(OverlapSamples{ends, halfPixel}, a.mesh().vertices, b.mesh().vertices);
-  }
-  r.timing.classifyUs += microsecondsSince(t);
+  concludeContact(nearDepth, farDepth, view, a, b, request, r);
   return finish();
 }
 

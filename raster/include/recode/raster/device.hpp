@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "recode/raster/pending_read.hpp"
 #include "recode/raster/state.hpp"
 #include "recode/raster/triangle_source.hpp"
 
@@ -17,6 +18,13 @@ namespace recode::raster {
 // A vertex in GL window coordinates: x right, y up, pixel (i, j) has its centre at
 // (i + 0.5, j + 0.5), depth z in [0, 1]. x and y are expected on the 1/256-pixel grid
 // (see snapToSubpixel); a device snaps them to that grid itself with round-half-to-even.
+// What a device has handed to hardware and back since it was made: the cost a GPU pays per
+// frame beyond its drawing. A device that runs on the CPU counts nothing.
+struct TransferCounters {
+  long long submissions = 0;    // command submissions waited on
+  long long readbackBytes = 0;  // bytes copied from device memory to the host
+};
+
 struct WindowVertex {
   float x = 0.0f;  // pixels from the left edge
   float y = 0.0f;  // pixels from the bottom edge
@@ -82,6 +90,25 @@ class DepthStencilDevice {
   [[nodiscard]] virtual std::vector<std::uint8_t> readStencil(const PixelRect& rect) const = 0;
   // The depth values over `rect`, laid out as readStencil's.
   [[nodiscard]] virtual std::vector<std::uint32_t> readDepth(const PixelRect& rect) const = 0;
+
+  // Read-backs that may wait: readStencil(rect) and readDepth(rect) as the buffers are after
+  // the commands given so far, delivered by the time finish() returns. The defaults read at
+  // once. A device that defers() records commands and read-backs and runs them when finish()
+  // is called (or when a plain read-back needs them), so that a batch of pair tests costs one
+  // submission (core::collidePairs).
+  [[nodiscard]] virtual PendingRead<std::uint8_t> readStencilLater(const PixelRect& rect) {
+    return PendingRead<std::uint8_t>::ready(readStencil(rect));
+  }
+  [[nodiscard]] virtual PendingRead<std::uint32_t> readDepthLater(const PixelRect& rect) {
+    return PendingRead<std::uint32_t>::ready(readDepth(rect));
+  }
+  // Runs every command given so far and delivers every pending read-back.
+  virtual void finish() {}
+  // Whether commands wait for finish(): then a read-back that waits costs nothing until then,
+  // and one that does not costs a round trip to the hardware.
+  [[nodiscard]] virtual bool defers() const { return false; }
+  // Submissions and read-back bytes so far (TransferCounters).
+  [[nodiscard]] virtual TransferCounters transfers() const { return {}; }
 };
 
 }  // namespace recode::raster

@@ -47,6 +47,16 @@ class ForwardingDevice : public DepthStencilDevice {
     return inner_->readDepth(rect);
   }
 
+  [[nodiscard]] PendingRead<std::uint8_t> readStencilLater(const PixelRect& rect) override {
+    return inner_->readStencilLater(rect);
+  }
+  [[nodiscard]] PendingRead<std::uint32_t> readDepthLater(const PixelRect& rect) override {
+    return inner_->readDepthLater(rect);
+  }
+  void finish() override { inner_->finish(); }
+  [[nodiscard]] bool defers() const override { return inner_->defers(); }
+  [[nodiscard]] TransferCounters transfers() const override { return inner_->transfers(); }
+
   [[nodiscard]] DepthStencilDevice& inner() { return *inner_; }
   [[nodiscard]] const DepthStencilDevice& inner() const { return *inner_; }
 

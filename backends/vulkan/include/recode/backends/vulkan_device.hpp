@@ -39,8 +39,21 @@ class VulkanDevice final : public raster::RenderStateDevice {
   // and drawn as one instanced draw of proxy rectangles.
   void drawTriangles(std::span<const raster::WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override;
+  // Only the triangles that meet the scissor (TriangleSource::trianglesMeeting), as CpuDevice.
+  void drawMesh(const raster::TriangleSource& source) override;
+  // Each runs everything recorded so far (one submission) and returns the values.
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
   [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override;
+
+  // Commands are recorded into one command buffer and run by finish() (one submission, waited
+  // on), or by readStencil or readDepth; these read-backs are recorded and delivered by finish().
+  [[nodiscard]] raster::PendingRead<std::uint8_t> readStencilLater(
+      const raster::PixelRect& rect) override;
+  [[nodiscard]] raster::PendingRead<std::uint32_t> readDepthLater(
+      const raster::PixelRect& rect) override;
+  void finish() override;
+  [[nodiscard]] bool defers() const override;
+  [[nodiscard]] raster::TransferCounters transfers() const override;
 
   // The physical device's name ("llvmpipe (LLVM 15.0.6, 256 bits)") and its driver's.
   [[nodiscard]] std::string renderer() const;

@@ -1,0 +1,146 @@
+// CommandRecorder: a device's commands recorded into one command buffer, run by finish().
+#include "vulkan_recorder.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <exception>
+#include <utility>
+
+namespace recode::backends::detail {
+
+namespace {
+
+// New chunks are at least this large, so a batch of small draws makes few buffers.
+constexpr VkDeviceSize kChunkBytes = VkDeviceSize{4} << 20;
+// Offsets are kept to this alignment: more than vertex input or a depth/stencil copy asks.
+constexpr VkDeviceSize kAlignment = 64;
+
+// Everything before happens-before everything after, host writes to mapped memory included.
+void fullBarrier(VkCommandBuffer cmd) {
+  VkMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+}  // namespace
+
+CommandRecorder::CommandRecorder(VulkanContext& context) : context_(context) {
+  pool_ = context_.createCommandPool();
+  VkCommandBufferAllocateInfo allocate{};
+  allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  allocate.commandPool = pool_;
+  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocate.commandBufferCount = 1;
+  vkCheck(vkAllocateCommandBuffers(context_.device(), &allocate, &commands_),
+          "vkAllocateCommandBuffers");
+  fence_ = context_.createFence();
+}
+
+CommandRecorder::~CommandRecorder() {
+  if (recording_)
+    vkEndCommandBuffer(commands_);  // never submitted: the device is going away
+  for (Chunks* chunks : {&staging_, &readbacks_})
+    for (HostBuffer& buffer : chunks->buffers)
+      context_.destroyHostBuffer(buffer);
+  vkDestroyFence(context_.device(), fence_, nullptr);
+  vkDestroyCommandPool(context_.device(), pool_, nullptr);  // frees the command buffer too
+}
+
+void CommandRecorder::begin() {
+  if (recording_)
+    return;
+  vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkCheck(vkBeginCommandBuffer(commands_, &info), "vkBeginCommandBuffer");
+  recording_ = true;
+}
+
+void CommandRecorder::record(const std::function<void(VkCommandBuffer)>& commands) {
+  begin();
+  fullBarrier(commands_);
+  commands(commands_);
+}
+
+CommandRecorder::Slot CommandRecorder::allocate(Chunks& chunks, std::size_t bytes,
+                                                VkBufferUsageFlags usage) {
+  const VkDeviceSize size =
+      (static_cast<VkDeviceSize>(bytes) + kAlignment - 1) / kAlignment * kAlignment;
+  while (chunks.current < chunks.buffers.size() &&
+         chunks.used + size > chunks.buffers[chunks.current].size) {
+    ++chunks.current;
+    chunks.used = 0;
+  }
+  if (chunks.current == chunks.buffers.size())
+    chunks.buffers.push_back(context_.createHostBuffer(std::max(size, kChunkBytes), usage));
+  const Slot slot{&chunks.buffers[chunks.current], chunks.used};
+  chunks.used += size;
+  pendingBytes_ += bytes;
+  return slot;
+}
+
+CommandRecorder::Staged CommandRecorder::stage(const void* data, std::size_t bytes) {
+  if (pendingBytes_ + bytes > kFlushBytes)
+    finish();
+  const Slot slot = allocate(staging_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  std::memcpy(static_cast<std::uint8_t*>(slot.buffer->mapped) + slot.offset, data, bytes);
+  return {slot.buffer->buffer, slot.offset};
+}
+
+void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,
+                               const VkBufferImageCopy& region, std::size_t bytes,
+                               std::function<void(const std::uint8_t*)> deliver) {
+  if (pendingBytes_ + bytes > kFlushBytes)
+    finish();
+  const Slot slot = allocate(readbacks_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  VkBufferImageCopy copy = region;
+  copy.bufferOffset = slot.offset;
+  copy.imageSubresource.aspectMask = aspect;
+  record([&](VkCommandBuffer cmd) {
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_GENERAL, slot.buffer->buffer, 1, &copy);
+  });
+  copies_.push_back(
+      {static_cast<const std::uint8_t*>(slot.buffer->mapped) + slot.offset, std::move(deliver)});
+  counters_.readbackBytes += static_cast<long long>(bytes);
+}
+
+void CommandRecorder::finish() {
+  if (!recording_)
+    return;
+  // Everything recorded is visible to the host once the fence says it is done.
+  VkMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
+                       1, &barrier, 0, nullptr, 0, nullptr);
+  recording_ = false;
+  std::vector<PendingCopy> copies = std::move(copies_);
+  copies_.clear();
+  pendingBytes_ = 0;
+  for (Chunks* chunks : {&staging_, &readbacks_}) {
+    chunks->current = 0;
+    chunks->used = 0;
+  }
+  vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
+  context_.submitAndWait(commands_, fence_);
+  ++counters_.submissions;
+  // Every read-back gets its values even when one of them throws; the first error is passed on.
+  std::exception_ptr error;
+  for (PendingCopy& copy : copies) {
+    try {
+      copy.deliver(copy.bytes);
+    } catch (...) {
+      if (!error)
+        error = std::current_exception();
+    }
+  }
+  if (error)
+    std::rethrow_exception(error);
+}
+
+}  // namespace recode::backends::detail

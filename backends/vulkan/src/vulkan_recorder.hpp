@@ -1,0 +1,87 @@
+#pragma once
+// One device's command recording: every clear, draw and read-back is recorded into the
+// device's own command buffer, and finish() submits it once and waits, then hands every
+// read-back its values. So a frame's pair tests cost one submission (core::collidePairs), and a
+// plain read-back, which needs its values now, costs one for everything recorded before it.
+// Consecutive commands are separated by a full memory barrier: each sees what the one before
+// wrote, as when every command was a submission of its own.
+
+#include <vulkan/vulkan_core.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "recode/raster/device.hpp"
+#include "vulkan_context.hpp"
+
+namespace recode::backends::detail {
+
+class CommandRecorder {
+ public:
+  explicit CommandRecorder(VulkanContext& context);
+  ~CommandRecorder();
+  CommandRecorder(const CommandRecorder&) = delete;
+  CommandRecorder& operator=(const CommandRecorder&) = delete;
+
+  // Appends `commands` to the recording (starting one when none is open).
+  void record(const std::function<void(VkCommandBuffer)>& commands);
+
+  // Copies `bytes` of host data into staging memory that lives until the recording has run;
+  // returns the buffer and offset to bind. Runs the recording first when the staged bytes would
+  // pass kFlushBytes, so memory stays bounded however large the batch.
+  struct Staged {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceSize offset = 0;
+  };
+  [[nodiscard]] Staged stage(const void* data, std::size_t bytes);
+
+  // Records a copy of `region` of `aspect` of `image` into host memory; `deliver` gets its
+  // bytes (as the buffer holds them: tightly packed rows, top row first) when the recording
+  // has run.
+  void readBack(VkImage image, VkImageAspectFlags aspect, const VkBufferImageCopy& region,
+                std::size_t bytes, std::function<void(const std::uint8_t*)> deliver);
+
+  // Submits the recording, waits for it and delivers the read-backs; nothing when none is open.
+  void finish();
+
+  [[nodiscard]] bool recording() const { return recording_; }
+  [[nodiscard]] const raster::TransferCounters& counters() const { return counters_; }
+
+  // Staged and read-back bytes after which a recording is run before it grows further.
+  static constexpr std::size_t kFlushBytes = std::size_t{256} << 20;
+
+ private:
+  // A region of `bytes` in the chunks of `chunks` (new chunks of at least kChunkBytes made as
+  // needed), aligned for vertex input and image copies.
+  struct Slot {
+    const HostBuffer* buffer = nullptr;
+    VkDeviceSize offset = 0;
+  };
+  struct Chunks {
+    std::vector<HostBuffer> buffers;
+    std::size_t current = 0;
+    VkDeviceSize used = 0;
+  };
+  Slot allocate(Chunks& chunks, std::size_t bytes, VkBufferUsageFlags usage);
+  void begin();
+
+  struct PendingCopy {
+    const std::uint8_t* bytes = nullptr;
+    std::function<void(const std::uint8_t*)> deliver;
+  };
+
+  VulkanContext& context_;
+  VkCommandPool pool_ = VK_NULL_HANDLE;
+  VkCommandBuffer commands_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  bool recording_ = false;
+  Chunks staging_;
+  Chunks readbacks_;
+  std::size_t pendingBytes_ = 0;
+  std::vector<PendingCopy> copies_;
+  raster::TransferCounters counters_;
+};
+
+}  // namespace recode::backends::detail
