@@ -43,6 +43,7 @@ struct RunOptions {
   std::string mode = "reference";  // --mode
   std::string viewAxis = "scene";  // --view-axis
   std::string device = "cpu";      // --device: a name of the device registry
+  bool perPair = false;            // --per-pair: core::RunOptions::batch off
 };
 
 std::string builtinNames() {
@@ -145,6 +146,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.pairMode = *core::parsePairMode(o.mode);  // CLI11 checked the name
   options.viewAxisRule = viewAxisRule(o.viewAxis);
   options.deviceFactory = namedDeviceFactory(o.device);
+  options.batch = !o.perPair;
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -250,6 +252,10 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                   "the device the pairs are drawn on (an exact one gives the same output bytes "
                   "as cpu, timing aside; a GPU-API device draws from one thread, whatever "
                   "--threads says)");
+  cmd->add_flag("--per-pair", o->perPair,
+                "on a device that defers its commands (vulkan), run each pair test on its own "
+                "instead of a frame's tests as one batch (one submission a frame): the same "
+                "output, for comparing the two");
   addViewAxisOption(*cmd, o->viewAxis);
   cmd->add_option("--max-pair-tests", o->maxPairTests,
                   "stop with an error when a frame lists more than N pair tests (default " +

@@ -140,11 +140,12 @@ struct VulkanDevice::Impl {
     });
   }
 
-  // Records `body` inside a rendering pass over the whole image with `pipeline` bound, the
-  // viewport (negative height: GL's y up), the scissor and the frame's push constants set.
+  // Records `body` as draws of the open rendering over the whole image (vulkan_recorder.hpp),
+  // with `pipeline` bound, the viewport (negative height: GL's y up), the scissor and the
+  // frame's push constants set.
   template <typename Body>
   void render(VkPipeline pipeline, float clearDepth, const Body& body) {
-    recorder->record([&](VkCommandBuffer cmd) {
+    const auto beginRendering = [&](VkCommandBuffer cmd) {
       VkRenderingAttachmentInfo attachment{};
       attachment.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
       attachment.imageView = view;
@@ -159,6 +160,8 @@ struct VulkanDevice::Impl {
       rendering.pDepthAttachment = &attachment;
       rendering.pStencilAttachment = &attachment;
       vkCmdBeginRendering(cmd, &rendering);
+    };
+    recorder->render(beginRendering, [&](VkCommandBuffer cmd) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       const VkViewport viewport{0.0f,
                                 static_cast<float>(height),
@@ -176,7 +179,6 @@ struct VulkanDevice::Impl {
                          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof frame,
                          &frame);
       body(cmd);
-      vkCmdEndRendering(cmd);
     });
   }
 

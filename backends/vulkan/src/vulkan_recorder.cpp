@@ -40,6 +40,7 @@ CommandRecorder::CommandRecorder(VulkanContext& context) : context_(context) {
 }
 
 CommandRecorder::~CommandRecorder() {
+  closeRendering();
   if (recording_)
     vkEndCommandBuffer(commands_);  // never submitted: the device is going away
   for (Chunks* chunks : {&staging_, &readbacks_})
@@ -60,10 +61,27 @@ void CommandRecorder::begin() {
   recording_ = true;
 }
 
+void CommandRecorder::closeRendering() {
+  if (!renderingOpen_)
+    return;
+  vkCmdEndRendering(commands_);
+  renderingOpen_ = false;
+}
+
 void CommandRecorder::record(const std::function<void(VkCommandBuffer)>& commands) {
   begin();
+  closeRendering();
   fullBarrier(commands_);
   commands(commands_);
+}
+
+void CommandRecorder::render(const std::function<void(VkCommandBuffer)>& beginRendering,
+                             const std::function<void(VkCommandBuffer)>& draws) {
+  if (!renderingOpen_) {
+    record(beginRendering);
+    renderingOpen_ = true;
+  }
+  draws(commands_);
 }
 
 CommandRecorder::Slot CommandRecorder::allocate(Chunks& chunks, std::size_t bytes,
@@ -111,6 +129,7 @@ void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,
 void CommandRecorder::finish() {
   if (!recording_)
     return;
+  closeRendering();
   // Everything recorded is visible to the host once the fence says it is done.
   VkMemoryBarrier barrier{};
   barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;

@@ -3,8 +3,9 @@
 // device's own command buffer, and finish() submits it once and waits, then hands every
 // read-back its values. So a frame's pair tests cost one submission (core::collidePairs), and a
 // plain read-back, which needs its values now, costs one for everything recorded before it.
-// Consecutive commands are separated by a full memory barrier: each sees what the one before
-// wrote, as when every command was a submission of its own.
+// Draws (clears are draws too) that follow one another share one rendering, in primitive order;
+// anything else is separated from what came before by a full memory barrier, so each sees what
+// the one before wrote, as when every command was a submission of its own.
 
 #include <vulkan/vulkan_core.h>
 
@@ -25,8 +26,18 @@ class CommandRecorder {
   CommandRecorder(const CommandRecorder&) = delete;
   CommandRecorder& operator=(const CommandRecorder&) = delete;
 
-  // Appends `commands` to the recording (starting one when none is open).
+  // Appends `commands` to the recording (starting one when none is open), after a full memory
+  // barrier and outside any rendering.
   void record(const std::function<void(VkCommandBuffer)>& commands);
+
+  // Appends draws to the rendering that is open, or opens one first with `beginRendering`
+  // (which records vkCmdBeginRendering). Consecutive draws share one rendering and need no
+  // barrier: depth and stencil tests and writes of one rendering happen in primitive order,
+  // draw after draw (the Vulkan specification's rasterization order), which is the order the
+  // contract and GL give. The rendering is closed by the next record, read-back or finish.
+  // Every rendering must be of the same attachments.
+  void render(const std::function<void(VkCommandBuffer)>& beginRendering,
+              const std::function<void(VkCommandBuffer)>& draws);
 
   // Copies `bytes` of host data into staging memory that lives until the recording has run;
   // returns the buffer and offset to bind. Runs the recording first when the staged bytes would
@@ -66,6 +77,7 @@ class CommandRecorder {
   };
   Slot allocate(Chunks& chunks, std::size_t bytes, VkBufferUsageFlags usage);
   void begin();
+  void closeRendering();
 
   struct PendingCopy {
     const std::uint8_t* bytes = nullptr;
@@ -77,6 +89,7 @@ class CommandRecorder {
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   bool recording_ = false;
+  bool renderingOpen_ = false;
   Chunks staging_;
   Chunks readbacks_;
   std::size_t pendingBytes_ = 0;

@@ -1,8 +1,10 @@
-// collidePairs: record every pair's passes, run them once, conclude each pair.
+// collidePairs: record every pair's passes, run them at once, conclude each pair.
 #include "recode/pair/pair_batch.hpp"
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "recode/raster/pending_read.hpp"
@@ -18,14 +20,18 @@ namespace {
 using detail::Clock;
 using detail::microsecondsSince;
 
-// What a recorded pair waits for: its read-backs, and what concluding it needs.
+// A pair of the batch while it waits for its read-backs.
 struct RecordedPair {
+  const PairJob* job = nullptr;
   PairResult result;
   std::optional<OrthoView> view;  // set when the passes were recorded
+  // The blocks as drawn, kept for contact passes recorded after the verdict.
+  std::unique_ptr<detail::BlockWindowSource> a, b;
   raster::PendingRead<std::uint8_t> stencil;
   raster::PendingRead<std::uint32_t> nearDepth;  // waiting only with the contact passes
   raster::PendingRead<std::uint32_t> farDepth;
-  double ownUs = 0.0;  // recording and concluding, without the wait
+  raster::PixelRect depthRect;  // what the depths were read over
+  double ownUs = 0.0;           // recording and concluding, without the waits
 };
 
 void requireBlocks(const PairJob& job, std::size_t index) {
@@ -34,59 +40,88 @@ void requireBlocks(const PairJob& job, std::size_t index) {
                                 (job.a == nullptr ? "A" : "B"));
 }
 
-// Records the pair's passes and read-backs; what collidePair does before its first read-back,
-// then the contact passes over the MOR without waiting for the verdict.
-RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job) {
+// Both contact passes over `rect`, each with its depth read-back recorded.
+void recordContactPasses(raster::DepthStencilDevice& device, RecordedPair& p,
+                         const raster::PixelRect& rect) {
+  detail::PassRunner passes(device, *p.a, *p.b);
+  detail::StepRunner steps(device, nullptr, p.result.timing);
+  p.depthRect = rect;
+  steps.run(PairStep::ContactNear, [&] {
+    passes.overlapEnd(rect, true);
+    p.nearDepth = device.readDepthLater(rect);
+  });
+  steps.run(PairStep::ContactFar, [&] {
+    passes.overlapEnd(rect, false);
+    p.farDepth = device.readDepthLater(rect);
+  });
+}
+
+// What collidePair does before its first read-back, the read-back recorded instead of waited
+// for; with ContactSchedule::Speculative, the contact passes over the MOR too.
+RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job,
+                        ContactSchedule schedule) {
   const Clock::time_point start = Clock::now();
   const FrameSpec& frame = job.request.frame;
   detail::requireDeviceSize(device, frame);
-  RecordedPair p{detail::startPair(*job.a, *job.b, frame), {}, {}, {}, {}, 0.0};
+  RecordedPair p;
+  p.job = &job;
+  p.result = detail::startPair(*job.a, *job.b, frame);
   PairResult& r = p.result;
   const OrthoView view = detail::pairView(frame, r);
-  const detail::BlockWindowSource sourceA(*job.a, view), sourceB(*job.b, view);
-  if (detail::choosePassRegion(detail::DrawnPair{sourceA, sourceB}, job.request, r)) {
+  p.a = std::make_unique<detail::BlockWindowSource>(*job.a, view);
+  p.b = std::make_unique<detail::BlockWindowSource>(*job.b, view);
+  if (detail::choosePassRegion(detail::DrawnPair{*p.a, *p.b}, job.request, r)) {
     p.view = view;
-    detail::PassRunner passes(device, sourceA, sourceB);
+    detail::PassRunner passes(device, *p.a, *p.b);
     detail::StepRunner steps(device, nullptr, r.timing);
     detail::recordStencilPasses(passes, steps, r.mor);
     steps.run(PairStep::ReadStencil, [&] { p.stencil = device.readStencilLater(r.mor); });
-    if (job.request.contact) {
-      steps.run(PairStep::ContactNear, [&] {
-        passes.overlapEnd(r.mor, true);
-        p.nearDepth = device.readDepthLater(r.mor);
-      });
-      steps.run(PairStep::ContactFar, [&] {
-        passes.overlapEnd(r.mor, false);
-        p.farDepth = device.readDepthLater(r.mor);
-      });
-    }
+    if (job.request.contact && schedule == ContactSchedule::Speculative)
+      recordContactPasses(device, p, r.mor);
   }
   p.ownUs = microsecondsSince(start);
   return p;
 }
 
-// The rest of collidePair, from the read-backs.
-PairResult concludePair(RecordedPair& p, const PairJob& job, double waitShareUs) {
+// The verdict from the stencil. Returns whether the pair needs its contact passes' depths.
+bool concludeStencil(RecordedPair& p) {
+  if (!p.view)
+    return false;
   const Clock::time_point start = Clock::now();
   PairResult& r = p.result;
-  if (p.view) {
-    const raster::PixelBuffer<std::uint8_t> stencil{r.mor, p.stencil.take()};
-    const raster::PixelRect contactRect = detail::concludeStencil(stencil, *p.view, r);
-    if (r.collide && job.request.contact) {
-      r.contactRect = contactRect;
-      const raster::PixelBuffer<std::uint32_t> nearDepth{r.mor, p.nearDepth.take()};
-      const raster::PixelBuffer<std::uint32_t> farDepth{r.mor, p.farDepth.take()};
-      detail::concludeContact(nearDepth, farDepth, *p.view, *job.a, *job.b, job.request, r);
-    }
-  }
-  r.timing.totalUs = p.ownUs + waitShareUs + microsecondsSince(start);
-  return std::move(r);
+  const raster::PixelBuffer<std::uint8_t> stencil{r.mor, p.stencil.take()};
+  const raster::PixelRect contactRect = detail::concludeStencil(stencil, *p.view, r);
+  const bool contact = r.collide && p.job->request.contact;
+  if (contact)
+    r.contactRect = contactRect;
+  p.ownUs += microsecondsSince(start);
+  return contact;
+}
+
+void concludeContact(RecordedPair& p) {
+  const Clock::time_point start = Clock::now();
+  const raster::PixelBuffer<std::uint32_t> nearDepth{p.depthRect, p.nearDepth.take()};
+  const raster::PixelBuffer<std::uint32_t> farDepth{p.depthRect, p.farDepth.take()};
+  detail::concludeContact(nearDepth, farDepth, *p.view, *p.job->a, *p.job->b, p.job->request,
+                          p.result);
+  p.ownUs += microsecondsSince(start);
+}
+
+// Runs what is recorded; the wait is shared equally by `sharers` pairs.
+void finishShared(raster::DepthStencilDevice& device, std::vector<RecordedPair*> sharers) {
+  const Clock::time_point wait = Clock::now();
+  device.finish();
+  if (sharers.empty())
+    return;
+  const double share = microsecondsSince(wait) / static_cast<double>(sharers.size());
+  for (RecordedPair* p : sharers)
+    p->ownUs += share;
 }
 
 }  // namespace
 
 std::vector<PairResult> collidePairs(raster::DepthStencilDevice& device,
-                                     std::span<const PairJob> jobs) {
+                                     std::span<const PairJob> jobs, ContactSchedule schedule) {
   for (std::size_t i = 0; i < jobs.size(); ++i)
     requireBlocks(jobs[i], i);
   std::vector<PairResult> results;
@@ -100,19 +135,31 @@ std::vector<PairResult> collidePairs(raster::DepthStencilDevice& device,
   recorded.reserve(jobs.size());
   try {
     for (const PairJob& job : jobs)
-      recorded.push_back(recordPair(device, job));
+      recorded.push_back(recordPair(device, job, schedule));
+    std::vector<RecordedPair*> drawn;
+    for (RecordedPair& p : recorded)
+      if (p.view)
+        drawn.push_back(&p);
+    finishShared(device, drawn);
+    std::vector<RecordedPair*> touching;
+    for (RecordedPair* p : drawn)
+      if (concludeStencil(*p))
+        touching.push_back(p);
+    if (schedule == ContactSchedule::AfterVerdict) {
+      for (RecordedPair* p : touching)
+        recordContactPasses(device, *p, p->result.contactRect);
+      finishShared(device, touching);
+    }
+    for (RecordedPair* p : touching)
+      concludeContact(*p);
   } catch (...) {
     device.finish();  // runs what was recorded, so the device is left with nothing pending
     throw;
   }
-  const Clock::time_point wait = Clock::now();
-  device.finish();
-  std::size_t drawn = 0;
-  for (const RecordedPair& p : recorded)
-    drawn += p.view ? 1 : 0;
-  const double waitShareUs = drawn > 0 ? microsecondsSince(wait) / static_cast<double>(drawn) : 0.0;
-  for (std::size_t i = 0; i < jobs.size(); ++i)
-    results.push_back(concludePair(recorded[i], jobs[i], recorded[i].view ? waitShareUs : 0.0));
+  for (RecordedPair& p : recorded) {
+    p.result.timing.totalUs = p.ownUs;
+    results.push_back(std::move(p.result));
+  }
   return results;
 }
 

@@ -11,6 +11,7 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include "recode/pair/pair_batch.hpp"
 #include "recode/refine/adaptive.hpp"
 
 #include "device_pool.hpp"
@@ -42,19 +43,29 @@ PairResult testPair(raster::DepthStencilDevice& device, const PairTask& task, Pa
   return collidePair(device, *task.blockA, *task.blockB, task.request);
 }
 
+// What the report keeps of a result.
+void keepForReport(const PairTask& task, PairResult& result) {
+  // The report keeps no case map; dropping it here bounds the memory the slots hold.
+  result.caseMap = {};
+  // Swapped with an empty vector: `points = {}` would keep the capacity (9 MB for a pair of
+  // 374,004 interfering pixels).
+  if (!task.keepContactPoints)
+    std::vector<Eigen::Vector3d>().swap(result.contact.points);
+}
+
 void runOne(raster::DepthStencilDevice& device, const PairTask& task, PairOutcome& outcome,
             PairMode mode) {
   try {
     outcome.result = testPair(device, task, mode);
-    // The report keeps no case map; dropping it here bounds the memory the slots hold.
-    outcome.result.caseMap = {};
-    // Swapped with an empty vector: `points = {}` would keep the capacity (9 MB for a pair of
-    // 374,004 interfering pixels).
-    if (!task.keepContactPoints)
-      std::vector<Eigen::Vector3d>().swap(outcome.result.contact.points);
+    keepForReport(task, outcome.result);
   } catch (...) {
     outcome.error = std::current_exception();
   }
+}
+
+// The modes whose pair test is collidePair itself, so a batch of them is collidePairs.
+bool batches(PairMode mode) {
+  return mode == PairMode::Reference || mode == PairMode::SkipApart;
 }
 
 std::pair<int, int> sizeOf(const PairTask& task) {
@@ -97,7 +108,7 @@ class PairTestRunner::Impl {
 };
 
 PairTestRunner::PairTestRunner(const RunOptions& options)
-    : concurrency_(pairTestThreads(options)), mode_(options.pairMode) {
+    : concurrency_(pairTestThreads(options)), mode_(options.pairMode), batch_(options.batch) {
   impl_ = std::make_unique<Impl>(options.deviceFactory, concurrency_);
 }
 
@@ -140,6 +151,8 @@ std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
                                              std::size_t count) {
   std::vector<PairOutcome> outcomes(count);
   DevicePool& pool = impl_->pool;
+  if (!impl_->arena && batch_ && batches(mode_) && runBatches(tasks, count, outcomes))
+    return outcomes;
   if (!impl_->arena) {
     for (std::size_t i = 0; i < count; ++i) {
       const auto [width, height] = sizeOf(tasks[i]);
@@ -174,6 +187,36 @@ std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
     });
   });
   return outcomes;
+}
+
+bool PairTestRunner::runBatches(const std::vector<PairTask>& tasks, std::size_t count,
+                                std::vector<PairOutcome>& outcomes) {
+  std::map<std::pair<int, int>, std::vector<std::size_t>> bySize;
+  for (std::size_t i = 0; i < count; ++i)
+    bySize[sizeOf(tasks[i])].push_back(i);
+  DevicePool& pool = impl_->pool;
+  for (const auto& [size, indices] : bySize)
+    if (!pool.at(size.first, size.second, 0).defers())
+      return false;  // one device runs the tests one by one anyway
+  try {
+    for (const auto& [size, indices] : bySize) {
+      std::vector<PairJob> jobs;
+      jobs.reserve(indices.size());
+      for (const std::size_t i : indices)
+        jobs.push_back({tasks[i].blockA, tasks[i].blockB, tasks[i].request});
+      std::vector<PairResult> results = collidePairs(pool.at(size.first, size.second, 0), jobs);
+      for (std::size_t k = 0; k < indices.size(); ++k) {
+        outcomes[indices[k]].result = std::move(results[k]);
+        keepForReport(tasks[indices[k]], outcomes[indices[k]].result);
+      }
+    }
+  } catch (...) {
+    // Which test threw, and which ran before it, is the sequential path's to say: the frame is
+    // run again test by test (an error is rare; its report must be the sequential one).
+    std::fill(outcomes.begin(), outcomes.end(), PairOutcome{});
+    return false;
+  }
+  return true;
 }
 
 void PairTestRunner::forEach(std::size_t n, const std::function<void(std::size_t)>& body) {

@@ -1,6 +1,7 @@
 #pragma once
 // The pair tests of one frame: the leaf pairs the descent found, each given to collidePair on a
-// device of its frame's size. With more than one thread they run in parallel (oneTBB, in an
+// device of its frame's size (or, on a device that defers its commands, all of a size given to
+// collidePairs as one batch). With more than one thread they run in parallel (oneTBB, in an
 // arena of the run's size), each into its own slot of the answer, so that whatever order they
 // finish in, the caller reads them in the order they were listed and the frame's report is the
 // same bytes as a sequential run's.
@@ -72,10 +73,17 @@ class PairTestRunner {
   static constexpr long long kTestsPerExtraDevice = 32;
 
  private:
+  // On the sequential path, with devices that defer their commands and a mode whose test is
+  // collidePair: each frame size's tests as one collidePairs batch (one submission). Returns
+  // false, leaving the outcomes empty, when the devices do not defer or a batch threw.
+  bool runBatches(const std::vector<PairTask>& tasks, std::size_t count,
+                  std::vector<PairOutcome>& outcomes);
+
   class Impl;
   std::unique_ptr<Impl> impl_;
   int concurrency_ = 1;
   PairMode mode_ = PairMode::Reference;
+  bool batch_ = true;                         // RunOptions::batch
   std::map<std::pair<int, int>, int> lanes_;  // devices per frame size this frame
 };
 

@@ -3,7 +3,8 @@
 // reference) the batch is collidePair on each pair in turn. On a device that defers its
 // commands (raster::DepthStencilDevice::defers: the Vulkan device) every pair's passes and
 // read-backs are recorded first and run in one submission, then each pair is concluded from
-// its read-backs: the GPU waits for the host once a batch instead of three times a pair.
+// its read-backs: the host waits for the GPU once or twice a batch (ContactSchedule) instead of
+// up to three times a pair.
 
 #include <span>
 #include <vector>
@@ -20,17 +21,25 @@ struct PairJob {
   PairRequest request;
 };
 
+// When a batch on a deferring device runs its contact passes.
+enum class ContactSchedule {
+  // In the one submission, over each drawn pair's MOR, before anyone knows whether the pair
+  // interferes: a pixel's depth after a pass does not depend on the scissor the pass ran under,
+  // so the contact rectangle's depths read from the MOR are those collidePair reads, and pairs
+  // found apart ignore theirs. One submission a batch; every drawn pair pays both passes.
+  Speculative,
+  // In a second submission, over the contact rectangle of the pairs that interfere only, as
+  // collidePair draws them. Two submissions a batch with contact; no pass is wasted.
+  AfterVerdict,
+};
+
 // Result i is collidePair(device, *jobs[i].a, *jobs[i].b, jobs[i].request), field for field
-// but for the timing. On a deferring device the contact passes run, over the MOR, for every
-// pair whose passes run and whose request asks for contact, before anyone knows whether the
-// pair interferes: a pixel's depth after a pass does not depend on the scissor the pass ran
-// under, so the contact rectangle's depths read from the MOR are the ones collidePair reads,
-// and pairs found apart simply ignore theirs. The timing on a deferring device: the steps
-// are the recording of each pass, and totalUs adds to the pair's own recording and
-// conclusion an equal share of the wait for the submission. Throws what collidePair throws;
-// on a deferring device nothing is run before every job has been checked and recorded, and an
-// error leaves the device finished (no commands pending).
-[[nodiscard]] std::vector<PairResult> collidePairs(raster::DepthStencilDevice& device,
-                                                   std::span<const PairJob> jobs);
+// but for the timing. On a deferring device the timing's steps are the recording of each pass,
+// and totalUs adds to the pair's own recording and concluding an equal share of each wait it
+// took part in. Throws what collidePair throws, and std::invalid_argument for a job without a
+// block; on a deferring device an error leaves the device finished (nothing pending).
+[[nodiscard]] std::vector<PairResult> collidePairs(
+    raster::DepthStencilDevice& device, std::span<const PairJob> jobs,
+    ContactSchedule schedule = ContactSchedule::AfterVerdict);
 
 }  // namespace recode::core

@@ -84,6 +84,12 @@ struct RunOptions {
   // leaves' world AABBs and OBBs, at the run's pixel size. Composes with every pairMode; not
   // with drawOnScreen, whose screen has the scene's axis.
   ViewAxisRule viewAxisRule = ViewAxisRule::Scene;
+  // Give a frame's pair tests to a device that defers its commands (the Vulkan device) as one
+  // collidePairs batch per frame size: one submission a frame instead of three a pair test.
+  // Off, each test is collidePair on its own (`recode run --per-pair`, the bench's
+  // per-pair column). The reports are the same bytes either way; the reference and skip-apart
+  // modes batch, the conservative and adaptive modes run pair by pair.
+  bool batch = true;
 };
 
 // A leaf pair whose blocks interfere at this frame.
