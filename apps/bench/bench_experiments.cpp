@@ -11,7 +11,8 @@ namespace {
 
 using Kind = AlgorithmSpec::Kind;
 
-// RECODE on every device (MIN MOR, as `recode run` defaults), its adaptive, conservative and
+// RECODE on every device (MIN MOR, as `recode run` defaults; Vulkan also test by test instead of
+// a frame's tests in one batch), its adaptive, conservative and
 // skip-apart modes and its adaptive view axis (`--view-axis adaptive`) on the CPU device, and
 // the three peers.
 std::vector<AlgorithmSpec> recodeAndPeers() {
@@ -27,6 +28,9 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec viewAxis{"recode-view-axis", Kind::Recode, backends::DeviceKind::Cpu,
                          core::MorMode::Min};
   viewAxis.viewAxisRule = core::ViewAxisRule::ThinOverlap;
+  AlgorithmSpec vulkanPerPair{"recode-vulkan-per-pair", Kind::Recode, backends::DeviceKind::Vulkan,
+                              core::MorMode::Min};
+  vulkanPerPair.batch = false;
   return {
       {"recode-cpu", Kind::Recode, backends::DeviceKind::Cpu, core::MorMode::Min},
       adaptive,
@@ -36,6 +40,7 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
       {"recode-gl", Kind::Recode, backends::DeviceKind::Gl, core::MorMode::Min},
       {"recode-gl-exact", Kind::Recode, backends::DeviceKind::GlExact, core::MorMode::Min},
       {"recode-vulkan", Kind::Recode, backends::DeviceKind::Vulkan, core::MorMode::Min},
+      vulkanPerPair,
       {"fcl-gjk", Kind::FclGjk},
       {"fcl-obbrss", Kind::FclObbrss},
       {"bullet", Kind::Bullet},

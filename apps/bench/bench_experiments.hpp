@@ -26,6 +26,8 @@ struct AlgorithmSpec {
   core::PairMode mode = core::PairMode::Reference;
   // Recode only: core::RunOptions::viewAxisRule (recode-view-axis)
   core::ViewAxisRule viewAxisRule = core::ViewAxisRule::Scene;
+  // Recode only: core::RunOptions::batch (off for recode-vulkan-per-pair)
+  bool batch = true;
 };
 
 struct Experiment {

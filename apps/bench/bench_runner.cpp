@@ -26,6 +26,7 @@ std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
       options.threads = threads;
       options.pairMode = spec.mode;
       options.viewAxisRule = spec.viewAxisRule;
+      options.batch = spec.batch;
       return std::make_unique<verify::RecodeDetector>(scene, options, spec.device, spec.name);
     }
     case AlgorithmSpec::Kind::FclGjk:
@@ -55,6 +56,8 @@ void addCounters(RecodeCounters& sum, const core::FrameReport& r) {
   sum.pairTests += r.pairTests;
   sum.stencilPixelsRead += r.stencilPixelsRead;
   sum.depthPixelsRead += r.depthPixelsRead;
+  sum.submissions += r.submissions;
+  sum.readbackBytes += r.readbackBytes;
 }
 
 // What every detector of one case shares: the scene and its object trees, which each run poses

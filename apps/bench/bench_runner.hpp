@@ -19,6 +19,8 @@ struct RecodeCounters {
   long long pairTests = 0;
   long long stencilPixelsRead = 0;
   long long depthPixelsRead = 0;
+  long long submissions = 0;    // FrameReport::submissions: 0 on the CPU device
+  long long readbackBytes = 0;  // FrameReport::readbackBytes
 };
 
 struct BenchRow {

@@ -11,6 +11,8 @@
 //   and RECODE finds the same pairs on the CPU and the GL device;
 // - recode-view-axis tests the same node and leaf pairs as recode-cpu (only the drawing axis
 //   of a leaf pair changes);
+// - recode-vulkan batches a frame's pair tests into at most 2 submissions, reading back what
+//   recode-vulkan-per-pair reads; the CPU device counts no submission;
 // - summary.md has the FULL/MIN ratio and every plot is a PNG.
 //
 // Usage: recode_check_bench DIR
@@ -43,7 +45,8 @@ void fail(const std::string& message) {
 const char* const kHeader =
     "experiment,scene,triangles_per_block,triangles,algorithm,frames,judged_frames,total_ms,"
     "mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
-    "stencil_pixels_read,depth_pixels_read,seen_finer";
+    "stencil_pixels_read,depth_pixels_read,seen_finer,submissions_per_frame,"
+    "readback_bytes_per_frame";
 
 struct Row {
   std::map<std::string, std::string> field;
@@ -83,6 +86,7 @@ std::vector<Expected> expectations() {
                                         "recode-gl",
                                         "recode-gl-exact",
                                         "recode-vulkan",
+                                        "recode-vulkan-per-pair",
                                         "fcl-gjk",
                                         "fcl-obbrss",
                                         "bullet"};
@@ -128,7 +132,8 @@ void checkRow(const Row& r) {
       std::abs(total - mean * static_cast<double>(frames)) > 1e-3 * static_cast<double>(frames))
     fail(id + ": total " + r.text("total_ms") + " ms is not mean x frames");
   const bool recode = r.text("algorithm").rfind("recode-", 0) == 0;
-  for (const char* key : {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read"})
+  for (const char* key : {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
+                          "submissions_per_frame", "readback_bytes_per_frame"})
     if (r.text(key).empty() == recode)
       fail(id + ": " + key + (recode ? " missing" : " given for a peer"));
   if (recode && r.count("pair_tests") < r.count("contacts"))
@@ -235,8 +240,27 @@ int main(int argc, char** argv) {
         // Every device runs the same algorithm on the same frames: the same pairs, and (being
         // exact, or agreeing on coverage) the same pixels read.
         for (const char* key : {"contacts", "missed", "extra", "stencil_pixels_read"})
-          for (const char* device : {"recode-gl", "recode-gl-exact", "recode-vulkan"})
+          for (const char* device :
+               {"recode-gl", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair"})
             same("recode-cpu", device, key);
+        // A frame's pair tests on Vulkan: one submission for the stencil passes of all and one
+        // for the contact passes of those that interfere (docs/architecture.md); test by test,
+        // up to three each. Both read back the same rectangles.
+        same("recode-vulkan", "recode-vulkan-per-pair", "readback_bytes_per_frame");
+        const auto vulkan = rows.find(prefix + "recode-vulkan");
+        const auto perPair = rows.find(prefix + "recode-vulkan-per-pair");
+        if (vulkan != rows.end() && vulkan->second.number("submissions_per_frame") > 2.0)
+          fail(prefix + "recode-vulkan: " + vulkan->second.text("submissions_per_frame") +
+               " submissions per frame, more than 2");
+        if (vulkan != rows.end() && perPair != rows.end() &&
+            perPair->second.number("submissions_per_frame") <
+                vulkan->second.number("submissions_per_frame"))
+          fail(prefix + "recode-vulkan-per-pair: fewer submissions than the batch");
+        // The CPU device hands nothing to hardware.
+        const auto cpuRow = rows.find(prefix + "recode-cpu");
+        if (cpuRow != rows.end() && (cpuRow->second.number("submissions_per_frame") != 0.0 ||
+                                     cpuRow->second.number("readback_bytes_per_frame") != 0.0))
+          fail(prefix + "recode-cpu: submissions or read-back bytes counted on the CPU device");
         // The view-axis rule only redraws a leaf pair along another axis: the tree descent
         // and the leaf pairs drawn are recode-cpu's.
         for (const char* key : {"box_tests", "pair_tests"})

@@ -4,7 +4,8 @@ cmake_minimum_required(VERSION 3.25)
 # - miscounted: one bullet row's `missed` raised by one (found - extra + missed != truth);
 # - no-gl: without the recode-gl rows;
 # - view-axis: one recode-view-axis row's `pair_tests` raised by one (not recode-cpu's);
-# - skip-apart: one recode-skip-apart row's `contacts` raised by one (not recode-cpu's).
+# - skip-apart: one recode-skip-apart row's `contacts` raised by one (not recode-cpu's);
+# - batch: one recode-vulkan row's `submissions_per_frame` set to 3 (more than a batch takes).
 # Expects IN, OUT and KIND.
 file(REMOVE_RECURSE ${OUT})
 file(COPY ${IN}/ DESTINATION ${OUT})
@@ -18,8 +19,13 @@ elseif(KIND STREQUAL "view-axis")
 elseif(KIND STREQUAL "skip-apart")
   set(target "^comb,comb-rotate-offset,.*,recode-skip-apart,")
   set(column 10)  # contacts
+elseif(KIND STREQUAL "batch")
+  set(target "^comb,comb-rotate-aligned,.*,recode-vulkan,")
+  set(column 20)  # submissions_per_frame
+  set(replacement 3.00)
 elseif(NOT KIND STREQUAL "no-gl")
-  message(FATAL_ERROR "KIND must be miscounted, no-gl, view-axis or skip-apart, not '${KIND}'")
+  message(FATAL_ERROR
+          "KIND must be miscounted, no-gl, view-axis, skip-apart or batch, not '${KIND}'")
 endif()
 set(out "")
 set(done OFF)
@@ -30,7 +36,11 @@ foreach(line IN LISTS lines)
   if(DEFINED target AND NOT done AND line MATCHES "${target}")
     string(REPLACE "," ";" fields "${line}")
     list(GET fields ${column} value)
-    math(EXPR value "${value} + 1")
+    if(DEFINED replacement)
+      set(value ${replacement})
+    else()
+      math(EXPR value "${value} + 1")
+    endif()
     list(REMOVE_AT fields ${column})
     list(INSERT fields ${column} ${value})
     list(JOIN fields "," line)

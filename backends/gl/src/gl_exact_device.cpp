@@ -9,8 +9,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "exact_program.hpp"
 #include "gl_context.hpp"
@@ -143,6 +149,28 @@ struct SharedGl {
   }
 };
 
+namespace {
+
+// The contract's 24-bit depths from the stored floats. Every stored value is some q 2^-24
+// (shaders and clears write nothing else); anything else means the driver converted depth on
+// the way, and is reported rather than rounded.
+std::vector<std::uint32_t> depthFromStored(const std::vector<std::uint8_t>& bytes) {
+  std::vector<std::uint32_t> out(bytes.size() / 4);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    float stored = 0.0f;
+    std::memcpy(&stored, bytes.data() + 4 * i, 4);
+    const double q = static_cast<double>(stored) * 16777216.0;
+    if (!(q >= 0.0 && q <= static_cast<double>(raster::kDepthMax)) || q != std::floor(q)) {
+      throw std::runtime_error("GL exact device: the depth buffer holds " + std::to_string(stored) +
+                               ", not a multiple of 2^-24 below 1");
+    }
+    out[i] = static_cast<std::uint32_t>(q);
+  }
+  return out;
+}
+
+}  // namespace
+
 struct GlExactDevice::Impl {
   int width = 0;
   int height = 0;
@@ -150,6 +178,15 @@ struct GlExactDevice::Impl {
   const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
   GLuint framebuffer = 0;
   GLuint depthStencil = 0;
+  // Read-backs into pixel-pack buffers, waited for by finish(): glReadPixels into a buffer
+  // returns at once, and the first glGetBufferSubData waits for everything before it.
+  struct PendingCopy {
+    GLuint buffer = 0;
+    std::size_t bytes = 0;
+    std::function<void(std::vector<std::uint8_t>)> deliver;
+  };
+  std::vector<PendingCopy> pending;
+  raster::TransferCounters transfers;
 
   const detail::GlCoreFunctions& gl() const { return shared->gl; }
 
@@ -224,11 +261,63 @@ struct GlExactDevice::Impl {
     g.Clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   }
 
+  // Records a read of `r` in `format`/`type` (`texel` bytes a pixel) into a new pack buffer.
+  void readLater(const raster::PixelRect& r, GLenum format, GLenum type, std::size_t texel,
+                 std::function<void(std::vector<std::uint8_t>)> deliver) {
+    use();
+    PendingCopy copy;
+    copy.bytes = static_cast<std::size_t>(r.area()) * texel;
+    copy.deliver = std::move(deliver);
+    const auto& g = gl();
+    g.GenBuffers(1, &copy.buffer);
+    g.BindBuffer(GL_PIXEL_PACK_BUFFER, copy.buffer);
+    g.BufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(copy.bytes), nullptr,
+                 GL_STREAM_READ);
+    // Rows from the bottom (y = r.y0) up, the interface's order; the scissor does not apply.
+    g.ReadPixels(r.x0, r.y0, r.width(), r.height(), format, type, nullptr);
+    g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    pending.push_back(std::move(copy));
+    transfers.readbackBytes += static_cast<long long>(copy.bytes);
+    shared->check("read-back");
+  }
+
+  // Waits for the pending read-backs and delivers them, each its own buffer deleted; the first
+  // error is passed on once every buffer is gone.
+  void finish() {
+    if (pending.empty())
+      return;
+    use();
+    std::vector<PendingCopy> copies = std::move(pending);
+    pending.clear();
+    ++transfers.submissions;
+    std::exception_ptr error;
+    const auto& g = gl();
+    for (PendingCopy& copy : copies) {
+      std::vector<std::uint8_t> bytes(copy.bytes);
+      g.BindBuffer(GL_PIXEL_PACK_BUFFER, copy.buffer);
+      g.GetBufferSubData(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(copy.bytes),
+                         bytes.data());
+      g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+      g.DeleteBuffers(1, &copy.buffer);
+      try {
+        shared->check("finish");
+        copy.deliver(std::move(bytes));
+      } catch (...) {
+        if (!error)
+          error = std::current_exception();
+      }
+    }
+    if (error)
+      std::rethrow_exception(error);
+  }
+
   ~Impl() {
     if (shared == nullptr || framebuffer == 0)
       return;
     try {
       shared->context->makeCurrent();
+      for (const PendingCopy& copy : pending)
+        gl().DeleteBuffers(1, &copy.buffer);
       gl().DeleteFramebuffers(1, &framebuffer);
       gl().DeleteRenderbuffers(1, &depthStencil);
       if (shared->owner == this)
@@ -355,41 +444,64 @@ void GlExactDevice::drawTriangles(std::span<const raster::WindowVertex> vertices
   d.shared->check("drawTriangles");
 }
 
-std::vector<std::uint8_t> GlExactDevice::readStencil(const PixelRect& rect) const {
+void GlExactDevice::drawMesh(const raster::TriangleSource& source) {
+  // As CpuDevice: the triangles left out cover no pixel centre inside the scissor, so they
+  // would give no proxy; a source that cannot tell is drawn whole, so its refusal is the full
+  // draw's.
+  const std::optional<raster::TriangleDraw> near = source.trianglesMeeting(state_.scissor);
+  const raster::TriangleDraw draw = near ? *near : source.allTriangles();
+  drawTriangles(draw.vertices, draw.indices);
+}
+
+raster::PendingRead<std::uint8_t> GlExactDevice::readStencilLater(const PixelRect& rect) {
   Impl& d = *impl_;
   const PixelRect r = rect.intersect({0, 0, d.width, d.height});
   if (r.empty())
-    return {};
-  std::vector<std::uint8_t> out(static_cast<std::size_t>(r.area()));
-  d.use();
-  // Rows from the bottom (y = r.y0) up, the interface's order; the scissor does not apply.
-  d.gl().ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
-                    out.data());
-  d.shared->check("readStencil");
-  return out;
+    return raster::PendingRead<std::uint8_t>::ready({});
+  raster::PendingRead<std::uint8_t> read = raster::PendingRead<std::uint8_t>::waiting();
+  d.readLater(r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, 1,
+              [read](std::vector<std::uint8_t> bytes) mutable { read.deliver(std::move(bytes)); });
+  return read;
+}
+
+raster::PendingRead<std::uint32_t> GlExactDevice::readDepthLater(const PixelRect& rect) {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  if (r.empty())
+    return raster::PendingRead<std::uint32_t>::ready({});
+  raster::PendingRead<std::uint32_t> read = raster::PendingRead<std::uint32_t>::waiting();
+  d.readLater(r, GL_DEPTH_COMPONENT, GL_FLOAT, 4, [read](std::vector<std::uint8_t> bytes) mutable {
+    read.deliver(depthFromStored(bytes));
+  });
+  return read;
+}
+
+void GlExactDevice::finish() {
+  impl_->finish();
+}
+
+bool GlExactDevice::defers() const {
+  return true;
+}
+
+raster::TransferCounters GlExactDevice::transfers() const {
+  return impl_->transfers;
+}
+
+std::vector<std::uint8_t> GlExactDevice::readStencil(const PixelRect& rect) const {
+  // The interface's read-backs are const; waiting for the queued commands changes no state it
+  // shows.
+  auto& self = const_cast<GlExactDevice&>(*this);
+  raster::PendingRead<std::uint8_t> read = self.readStencilLater(rect);
+  self.finish();
+  return read.take();
 }
 
 std::vector<std::uint32_t> GlExactDevice::readDepth(const PixelRect& rect) const {
-  Impl& d = *impl_;
-  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
-  if (r.empty())
-    return {};
-  std::vector<float> stored(static_cast<std::size_t>(r.area()));
-  d.use();
-  d.gl().ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_COMPONENT, GL_FLOAT, stored.data());
-  d.shared->check("readDepth");
-  std::vector<std::uint32_t> out(stored.size());
-  for (std::size_t i = 0; i < stored.size(); ++i) {
-    // Every stored value is some q 2^-24 (shaders and clears write nothing else); anything else
-    // means the driver converted depth on the way, and is reported rather than rounded.
-    const double q = static_cast<double>(stored[i]) * 16777216.0;
-    if (!(q >= 0.0 && q <= static_cast<double>(raster::kDepthMax)) || q != std::floor(q)) {
-      throw std::runtime_error("GL exact device: the depth buffer holds " +
-                               std::to_string(stored[i]) + ", not a multiple of 2^-24 below 1");
-    }
-    out[i] = static_cast<std::uint32_t>(q);
-  }
-  return out;
+  auto& self = const_cast<GlExactDevice&>(*this);
+  raster::PendingRead<std::uint32_t> read = self.readDepthLater(rect);
+  self.finish();
+  return read.take();
 }
 
 }  // namespace recode::backends

@@ -63,6 +63,7 @@ namespace recode::backends::detail {
   X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                     \
   X(PFNGLBINDBUFFERPROC, BindBuffer)                           \
   X(PFNGLBUFFERDATAPROC, BufferData)                           \
+  X(PFNGLGETBUFFERSUBDATAPROC, GetBufferSubData)               \
   X(PFNGLVERTEXATTRIBIPOINTERPROC, VertexAttribIPointer)       \
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)         \
   X(PFNGLVERTEXATTRIBDIVISORPROC, VertexAttribDivisor)         \

@@ -76,7 +76,25 @@ struct VulkanDevice::Impl {
   const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
   detail::VulkanContext* context = nullptr;
   const detail::ExactPipelines* pipelines = nullptr;
-  std::unique_ptr<detail::CommandRecorder> recorder;
+  detail::CommandRecorder* recorder = nullptr;  // sharedRecorder()
+  raster::TransferCounters transfers;           // what this device's calls made the recorder do
+
+  // Runs `call` on the recorder and counts the submissions and read-back bytes it caused as
+  // this device's, so that the counters of a process's devices add up to the recorder's.
+  template <typename Call>
+  decltype(auto) counted(Call&& call) {
+    const raster::TransferCounters before = recorder->counters();
+    struct Count {
+      Impl& d;
+      const raster::TransferCounters& before;
+      ~Count() {
+        const raster::TransferCounters after = d.recorder->counters();
+        d.transfers.submissions += after.submissions - before.submissions;
+        d.transfers.readbackBytes += after.readbackBytes - before.readbackBytes;
+      }
+    } count{*this, before};
+    return call();
+  }
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
   VkImageView view = VK_NULL_HANDLE;
@@ -161,7 +179,7 @@ struct VulkanDevice::Impl {
       rendering.pStencilAttachment = &attachment;
       vkCmdBeginRendering(cmd, &rendering);
     };
-    recorder->render(beginRendering, [&](VkCommandBuffer cmd) {
+    recorder->render(view, beginRendering, [&](VkCommandBuffer cmd) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       const VkViewport viewport{0.0f,
                                 static_cast<float>(height),
@@ -214,22 +232,29 @@ struct VulkanDevice::Impl {
     region.imageOffset = {source.offset.x, source.offset.y, 0};
     region.imageExtent = {source.extent.width, source.extent.height, 1};
     const int h = r.height();
-    recorder->readBack(
-        image, aspect, region, bytes,
-        [rowBytes, bytes, h, deliver = std::move(deliver)](const std::uint8_t* rows) {
-          std::vector<std::uint8_t> out(bytes);
-          for (int k = 0; k < h; ++k) {
-            std::memcpy(out.data() + static_cast<std::size_t>(k) * rowBytes,
-                        rows + static_cast<std::size_t>(h - 1 - k) * rowBytes, rowBytes);
-          }
-          deliver(std::move(out));
-        });
+    counted([&] {
+      recorder->readBack(
+          image, aspect, region, bytes,
+          [rowBytes, bytes, h, deliver = std::move(deliver)](const std::uint8_t* rows) {
+            std::vector<std::uint8_t> out(bytes);
+            for (int k = 0; k < h; ++k) {
+              std::memcpy(out.data() + static_cast<std::size_t>(k) * rowBytes,
+                          rows + static_cast<std::size_t>(h - 1 - k) * rowBytes, rowBytes);
+            }
+            deliver(std::move(out));
+          });
+    });
   }
 
   ~Impl() {
     if (context == nullptr)
       return;
-    recorder.reset();  // what was recorded and never asked for is dropped
+    // Commands recorded for this image must run before it goes: they are in the shared
+    // recording, beside other devices' commands.
+    try {
+      recorder->finish();
+    } catch (...) {  // NOLINT(bugprone-empty-catch): a destructor must not throw
+    }
     vkDestroyImageView(device(), view, nullptr);
     vkDestroyImage(device(), image, nullptr);
     vkFreeMemory(device(), memory, nullptr);
@@ -245,7 +270,7 @@ VulkanDevice::VulkanDevice(int width, int height)
   d.state = &state_;
   d.pipelines = &sharedPipelines();  // makes the context too
   d.context = &detail::VulkanContext::instance();
-  d.recorder = std::make_unique<detail::CommandRecorder>(*d.context);
+  d.recorder = &detail::sharedRecorder();
   d.createImage();
   d.initialiseImage();
 }
@@ -318,8 +343,8 @@ void VulkanDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
   const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, state_);
   if (proxies.empty())
     return;
-  const detail::CommandRecorder::Staged staged =
-      d.recorder->stage(proxies.data(), proxies.size() * sizeof(ProxyTriangle));
+  const detail::CommandRecorder::Staged staged = d.counted(
+      [&] { return d.recorder->stage(proxies.data(), proxies.size() * sizeof(ProxyTriangle)); });
   // Instances are drawn in order and Vulkan keeps primitive order for depth and stencil
   // (rasterization order), so triangles reach each pixel in index order as the contract
   // requires. The two halves of a proxy rectangle share an edge, which Vulkan's rasterization
@@ -365,7 +390,7 @@ raster::PendingRead<std::uint32_t> VulkanDevice::readDepthLater(const PixelRect&
 }
 
 void VulkanDevice::finish() {
-  impl_->recorder->finish();
+  impl_->counted([&] { impl_->recorder->finish(); });
 }
 
 bool VulkanDevice::defers() const {
@@ -373,7 +398,7 @@ bool VulkanDevice::defers() const {
 }
 
 raster::TransferCounters VulkanDevice::transfers() const {
-  return impl_->recorder->counters();
+  return impl_->transfers;
 }
 
 std::vector<std::uint8_t> VulkanDevice::readStencil(const PixelRect& rect) const {

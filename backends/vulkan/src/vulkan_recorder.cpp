@@ -69,17 +69,21 @@ void CommandRecorder::closeRendering() {
 }
 
 void CommandRecorder::record(const std::function<void(VkCommandBuffer)>& commands) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
   begin();
   closeRendering();
   fullBarrier(commands_);
   commands(commands_);
 }
 
-void CommandRecorder::render(const std::function<void(VkCommandBuffer)>& beginRendering,
+void CommandRecorder::render(VkImageView target,
+                             const std::function<void(VkCommandBuffer)>& beginRendering,
                              const std::function<void(VkCommandBuffer)>& draws) {
-  if (!renderingOpen_) {
-    record(beginRendering);
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  if (!renderingOpen_ || renderingTarget_ != target) {
+    record(beginRendering);  // closes the open rendering first
     renderingOpen_ = true;
+    renderingTarget_ = target;
   }
   draws(commands_);
 }
@@ -102,6 +106,7 @@ CommandRecorder::Slot CommandRecorder::allocate(Chunks& chunks, std::size_t byte
 }
 
 CommandRecorder::Staged CommandRecorder::stage(const void* data, std::size_t bytes) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
   if (pendingBytes_ + bytes > kFlushBytes)
     finish();
   const Slot slot = allocate(staging_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
@@ -112,6 +117,7 @@ CommandRecorder::Staged CommandRecorder::stage(const void* data, std::size_t byt
 void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,
                                const VkBufferImageCopy& region, std::size_t bytes,
                                std::function<void(const std::uint8_t*)> deliver) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
   if (pendingBytes_ + bytes > kFlushBytes)
     finish();
   const Slot slot = allocate(readbacks_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -127,6 +133,7 @@ void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,
 }
 
 void CommandRecorder::finish() {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
   if (!recording_)
     return;
   closeRendering();
@@ -160,6 +167,16 @@ void CommandRecorder::finish() {
   }
   if (error)
     std::rethrow_exception(error);
+}
+
+raster::TransferCounters CommandRecorder::counters() const {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  return counters_;
+}
+
+CommandRecorder& sharedRecorder() {
+  static CommandRecorder* recorder = new CommandRecorder(VulkanContext::instance());  // leaked
+  return *recorder;
 }
 
 }  // namespace recode::backends::detail

@@ -1,8 +1,11 @@
 #pragma once
-// One device's command recording: every clear, draw and read-back is recorded into the
-// device's own command buffer, and finish() submits it once and waits, then hands every
-// read-back its values. So a frame's pair tests cost one submission (core::collidePairs), and a
-// plain read-back, which needs its values now, costs one for everything recorded before it.
+// The command recording every Vulkan device of the process shares (sharedRecorder()): every
+// clear, draw and read-back of any device is recorded into one command buffer, and finish()
+// submits it once and waits, then hands every read-back its values. So a frame's pair tests
+// cost one submission whatever the sizes of their devices (core::collidePairs), and a plain
+// read-back, which needs its values now, costs one for everything recorded before it. Every
+// operation holds the recorder's lock, so devices on different threads may share it (each
+// command is recorded whole; which thread's finish() runs it does not matter).
 // Draws (clears are draws too) that follow one another share one rendering, in primitive order;
 // anything else is separated from what came before by a full memory barrier, so each sees what
 // the one before wrote, as when every command was a submission of its own.
@@ -12,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <vector>
 
 #include "recode/raster/device.hpp"
@@ -34,9 +38,10 @@ class CommandRecorder {
   // (which records vkCmdBeginRendering). Consecutive draws share one rendering and need no
   // barrier: depth and stencil tests and writes of one rendering happen in primitive order,
   // draw after draw (the Vulkan specification's rasterization order), which is the order the
-  // contract and GL give. The rendering is closed by the next record, read-back or finish.
-  // Every rendering must be of the same attachments.
-  void render(const std::function<void(VkCommandBuffer)>& beginRendering,
+  // contract and GL give. The rendering is closed by the next record, read-back or finish, and
+  // by draws to another `target` (the attachment's view: devices share the recorder, and one
+  // device's draws must never land in another's rendering).
+  void render(VkImageView target, const std::function<void(VkCommandBuffer)>& beginRendering,
               const std::function<void(VkCommandBuffer)>& draws);
 
   // Copies `bytes` of host data into staging memory that lives until the recording has run;
@@ -57,8 +62,8 @@ class CommandRecorder {
   // Submits the recording, waits for it and delivers the read-backs; nothing when none is open.
   void finish();
 
-  [[nodiscard]] bool recording() const { return recording_; }
-  [[nodiscard]] const raster::TransferCounters& counters() const { return counters_; }
+  // Submissions and read-back bytes of every device so far.
+  [[nodiscard]] raster::TransferCounters counters() const;
 
   // Staged and read-back bytes after which a recording is run before it grows further.
   static constexpr std::size_t kFlushBytes = std::size_t{256} << 20;
@@ -84,17 +89,23 @@ class CommandRecorder {
     std::function<void(const std::uint8_t*)> deliver;
   };
 
+  mutable std::recursive_mutex lock_;  // recursive: finish() is called from stage and readBack
   VulkanContext& context_;
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   bool recording_ = false;
   bool renderingOpen_ = false;
+  VkImageView renderingTarget_ = VK_NULL_HANDLE;  // of the open rendering
   Chunks staging_;
   Chunks readbacks_;
   std::size_t pendingBytes_ = 0;
   std::vector<PendingCopy> copies_;
   raster::TransferCounters counters_;
 };
+
+// The process's recorder, made with the context on first use and never destroyed (as the
+// context).
+[[nodiscard]] CommandRecorder& sharedRecorder();
 
 }  // namespace recode::backends::detail

@@ -1,6 +1,7 @@
 // collidePairs: record every pair's passes, run them at once, conclude each pair.
 #include "recode/pair/pair_batch.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -23,6 +24,7 @@ using detail::microsecondsSince;
 // A pair of the batch while it waits for its read-backs.
 struct RecordedPair {
   const PairJob* job = nullptr;
+  raster::DepthStencilDevice* device = nullptr;
   PairResult result;
   std::optional<OrthoView> view;  // set when the passes were recorded
   // The blocks as drawn, kept for contact passes recorded after the verdict.
@@ -65,6 +67,7 @@ RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job,
   detail::requireDeviceSize(device, frame);
   RecordedPair p;
   p.job = &job;
+  p.device = &device;
   p.result = detail::startPair(*job.a, *job.b, frame);
   PairResult& r = p.result;
   const OrthoView view = detail::pairView(frame, r);
@@ -107,10 +110,23 @@ void concludeContact(RecordedPair& p) {
   p.ownUs += microsecondsSince(start);
 }
 
+// Finishes every device of the batch, each once, in the order the jobs first used them (devices
+// that share one recording, as the Vulkan devices of a process do, run it all at the first).
+void finishAll(std::span<raster::DepthStencilDevice* const> devices) {
+  std::vector<raster::DepthStencilDevice*> finished;
+  for (raster::DepthStencilDevice* device : devices) {
+    if (std::find(finished.begin(), finished.end(), device) != finished.end())
+      continue;
+    device->finish();
+    finished.push_back(device);
+  }
+}
+
 // Runs what is recorded; the wait is shared equally by `sharers` pairs.
-void finishShared(raster::DepthStencilDevice& device, std::vector<RecordedPair*> sharers) {
+void finishShared(std::span<raster::DepthStencilDevice* const> devices,
+                  std::vector<RecordedPair*> sharers) {
   const Clock::time_point wait = Clock::now();
-  device.finish();
+  finishAll(devices);
   if (sharers.empty())
     return;
   const double share = microsecondsSince(wait) / static_cast<double>(sharers.size());
@@ -122,38 +138,52 @@ void finishShared(raster::DepthStencilDevice& device, std::vector<RecordedPair*>
 
 std::vector<PairResult> collidePairs(raster::DepthStencilDevice& device,
                                      std::span<const PairJob> jobs, ContactSchedule schedule) {
-  for (std::size_t i = 0; i < jobs.size(); ++i)
+  const std::vector<raster::DepthStencilDevice*> devices(jobs.size(), &device);
+  return collidePairs(devices, jobs, schedule);
+}
+
+std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const> devices,
+                                     std::span<const PairJob> jobs, ContactSchedule schedule) {
+  if (devices.size() != jobs.size())
+    throw std::invalid_argument("collidePairs: " + std::to_string(jobs.size()) + " jobs but " +
+                                std::to_string(devices.size()) + " devices");
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
     requireBlocks(jobs[i], i);
+    if (devices[i] == nullptr)
+      throw std::invalid_argument("collidePairs: job " + std::to_string(i) + " has no device");
+  }
   std::vector<PairResult> results;
   results.reserve(jobs.size());
-  if (!device.defers()) {
-    for (const PairJob& job : jobs)
-      results.push_back(collidePair(device, *job.a, *job.b, job.request));
+  const bool defer = std::all_of(devices.begin(), devices.end(),
+                                 [](const raster::DepthStencilDevice* d) { return d->defers(); });
+  if (!defer) {
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+      results.push_back(collidePair(*devices[i], *jobs[i].a, *jobs[i].b, jobs[i].request));
     return results;
   }
   std::vector<RecordedPair> recorded;
   recorded.reserve(jobs.size());
   try {
-    for (const PairJob& job : jobs)
-      recorded.push_back(recordPair(device, job, schedule));
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+      recorded.push_back(recordPair(*devices[i], jobs[i], schedule));
     std::vector<RecordedPair*> drawn;
     for (RecordedPair& p : recorded)
       if (p.view)
         drawn.push_back(&p);
-    finishShared(device, drawn);
+    finishShared(devices, drawn);
     std::vector<RecordedPair*> touching;
     for (RecordedPair* p : drawn)
       if (concludeStencil(*p))
         touching.push_back(p);
     if (schedule == ContactSchedule::AfterVerdict) {
       for (RecordedPair* p : touching)
-        recordContactPasses(device, *p, p->result.contactRect);
-      finishShared(device, touching);
+        recordContactPasses(*p->device, *p, p->result.contactRect);
+      finishShared(devices, touching);
     }
     for (RecordedPair* p : touching)
       concludeContact(*p);
   } catch (...) {
-    device.finish();  // runs what was recorded, so the device is left with nothing pending
+    finishAll(devices);  // runs what was recorded, so no device is left with anything pending
     throw;
   }
   for (RecordedPair& p : recorded) {

@@ -87,4 +87,16 @@ raster::DepthStencilDevice& DevicePool::at(int width, int height, int index) {
   return *bySize_.at({width, height}).made.at(static_cast<std::size_t>(index));
 }
 
+raster::TransferCounters DevicePool::transfers() const {
+  raster::TransferCounters sum;
+  for (const auto& [size, devices] : bySize_) {
+    for (const std::unique_ptr<raster::DepthStencilDevice>& device : devices.made) {
+      const raster::TransferCounters t = device->transfers();
+      sum.submissions += t.submissions;
+      sum.readbackBytes += t.readbackBytes;
+    }
+  }
+  return sum;
+}
+
 }  // namespace recode::core

@@ -36,6 +36,9 @@ class DevicePool {
   // and making a device maps its buffers' pages anew, which costs far more than clearing them.
   double reserve(int width, int height, int count);
 
+  // What the devices held now have handed to hardware and back since they were made.
+  [[nodiscard]] raster::TransferCounters transfers() const;
+
   // Device `index` (below reserve's count) of this size.
   [[nodiscard]] raster::DepthStencilDevice& at(int width, int height, int index);
 

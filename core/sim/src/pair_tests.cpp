@@ -189,26 +189,29 @@ std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
   return outcomes;
 }
 
+raster::TransferCounters PairTestRunner::transfers() const {
+  return impl_->pool.transfers();
+}
+
 bool PairTestRunner::runBatches(const std::vector<PairTask>& tasks, std::size_t count,
                                 std::vector<PairOutcome>& outcomes) {
-  std::map<std::pair<int, int>, std::vector<std::size_t>> bySize;
-  for (std::size_t i = 0; i < count; ++i)
-    bySize[sizeOf(tasks[i])].push_back(i);
   DevicePool& pool = impl_->pool;
-  for (const auto& [size, indices] : bySize)
-    if (!pool.at(size.first, size.second, 0).defers())
+  std::vector<raster::DepthStencilDevice*> devices;
+  std::vector<PairJob> jobs;
+  devices.reserve(count);
+  jobs.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto [width, height] = sizeOf(tasks[i]);
+    devices.push_back(&pool.at(width, height, 0));
+    if (!devices.back()->defers())
       return false;  // one device runs the tests one by one anyway
+    jobs.push_back({tasks[i].blockA, tasks[i].blockB, tasks[i].request});
+  }
   try {
-    for (const auto& [size, indices] : bySize) {
-      std::vector<PairJob> jobs;
-      jobs.reserve(indices.size());
-      for (const std::size_t i : indices)
-        jobs.push_back({tasks[i].blockA, tasks[i].blockB, tasks[i].request});
-      std::vector<PairResult> results = collidePairs(pool.at(size.first, size.second, 0), jobs);
-      for (std::size_t k = 0; k < indices.size(); ++k) {
-        outcomes[indices[k]].result = std::move(results[k]);
-        keepForReport(tasks[indices[k]], outcomes[indices[k]].result);
-      }
+    std::vector<PairResult> results = collidePairs(devices, jobs);
+    for (std::size_t i = 0; i < count; ++i) {
+      outcomes[i].result = std::move(results[i]);
+      keepForReport(tasks[i], outcomes[i].result);
     }
   } catch (...) {
     // Which test threw, and which ran before it, is the sequential path's to say: the frame is

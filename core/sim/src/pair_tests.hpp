@@ -1,6 +1,6 @@
 #pragma once
 // The pair tests of one frame: the leaf pairs the descent found, each given to collidePair on a
-// device of its frame's size (or, on a device that defers its commands, all of a size given to
+// device of its frame's size (or, on devices that defer their commands, all given to
 // collidePairs as one batch). With more than one thread they run in parallel (oneTBB, in an
 // arena of the run's size), each into its own slot of the answer, so that whatever order they
 // finish in, the caller reads them in the order they were listed and the frame's report is the
@@ -72,9 +72,12 @@ class PairTestRunner {
 
   static constexpr long long kTestsPerExtraDevice = 32;
 
+  // What the runner's devices held now have handed to hardware and back since they were made.
+  [[nodiscard]] raster::TransferCounters transfers() const;
+
  private:
   // On the sequential path, with devices that defer their commands and a mode whose test is
-  // collidePair: each frame size's tests as one collidePairs batch (one submission). Returns
+  // collidePair: the frame's tests as one collidePairs batch, each on its size's device. Returns
   // false, leaving the outcomes empty, when the devices do not defer or a batch threw.
   bool runBatches(const std::vector<PairTask>& tasks, std::size_t count,
                   std::vector<PairOutcome>& outcomes);

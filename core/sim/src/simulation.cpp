@@ -303,7 +303,11 @@ FrameReport Simulation::runFrame(int frame) {
 
   const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(drawn);
   report.deviceSetupUs = setup.us;
+  const raster::TransferCounters before = pairTests_->transfers();
   std::vector<PairOutcome> outcomes = pairTests_->run(drawn, setup.usable);
+  const raster::TransferCounters after = pairTests_->transfers();
+  report.submissions = after.submissions - before.submissions;
+  report.readbackBytes = after.readbackBytes - before.readbackBytes;
   collectOutcomes(objects_, frame, tasks, skipped, outcomes, report);
   if (setup.error) {
     try {

@@ -18,6 +18,12 @@ namespace recode::raster {
 // A vertex in GL window coordinates: x right, y up, pixel (i, j) has its centre at
 // (i + 0.5, j + 0.5), depth z in [0, 1]. x and y are expected on the 1/256-pixel grid
 // (see snapToSubpixel); a device snaps them to that grid itself with round-half-to-even.
+struct WindowVertex {
+  float x = 0.0f;  // pixels from the left edge
+  float y = 0.0f;  // pixels from the bottom edge
+  float z = 0.0f;  // depth, 0 nearest and 1 farthest
+};
+
 // What a device has handed to hardware and back since it was made: the cost a GPU pays per
 // frame beyond its drawing. A device that runs on the CPU counts nothing.
 struct TransferCounters {
@@ -25,15 +31,9 @@ struct TransferCounters {
   long long readbackBytes = 0;  // bytes copied from device memory to the host
 };
 
-struct WindowVertex {
-  float x = 0.0f;  // pixels from the left edge
-  float y = 0.0f;  // pixels from the bottom edge
-  float z = 0.0f;  // depth, 0 nearest and 1 farthest
-};
-
 // A framebuffer of width() x height() pixels with a 24-bit depth and an 8-bit stencil value
 // per pixel, and the commands RECODE draws with. Implementations: raster::CpuDevice (the
-// bit-exact reference) and the GL and Vulkan devices of verify/; a DevicePool's factory makes
+// bit-exact reference) and the GL and Vulkan devices of backends/; a DevicePool's factory makes
 // them for the collision API.
 class DepthStencilDevice {
  public:
@@ -99,6 +99,7 @@ class DepthStencilDevice {
   [[nodiscard]] virtual PendingRead<std::uint8_t> readStencilLater(const PixelRect& rect) {
     return PendingRead<std::uint8_t>::ready(readStencil(rect));
   }
+  // The depth values over `rect` as they are after the commands so far (readDepth's layout).
   [[nodiscard]] virtual PendingRead<std::uint32_t> readDepthLater(const PixelRect& rect) {
     return PendingRead<std::uint32_t>::ready(readDepth(rect));
   }

@@ -45,8 +45,21 @@ class GlExactDevice final : public raster::RenderStateDevice {
   // pixels) on the CPU, and drawn as one instanced draw of proxy rectangles.
   void drawTriangles(std::span<const raster::WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override;
+  // Only the triangles that meet the scissor (TriangleSource::trianglesMeeting), as CpuDevice.
+  void drawMesh(const raster::TriangleSource& source) override;
+  // Each waits for the commands before it (and the pending read-backs) and returns the values.
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
   [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override;
+
+  // Read-backs into pixel-pack buffers, which GL fills without the host waiting; finish() waits
+  // once for all of them (counted as one submission) and delivers them.
+  [[nodiscard]] raster::PendingRead<std::uint8_t> readStencilLater(
+      const raster::PixelRect& rect) override;
+  [[nodiscard]] raster::PendingRead<std::uint32_t> readDepthLater(
+      const raster::PixelRect& rect) override;
+  void finish() override;
+  [[nodiscard]] bool defers() const override;
+  [[nodiscard]] raster::TransferCounters transfers() const override;
 
   // GL_RENDERER of the context ("llvmpipe (LLVM 15.0.6, 256 bits)") and the platform it came
   // from (never Auto).

@@ -42,4 +42,13 @@ enum class ContactSchedule {
     raster::DepthStencilDevice& device, std::span<const PairJob> jobs,
     ContactSchedule schedule = ContactSchedule::AfterVerdict);
 
+// The same with job i on *devices[i] (a frame's pairs differ in frame size, and each size has
+// its device). The batch defers when every device defers; each device is finished once per
+// submission round, in the order the jobs first use them, so devices that share one recording
+// (the Vulkan devices of a process) run the whole batch at once. Throws std::invalid_argument
+// unless there is one device, not null, per job.
+[[nodiscard]] std::vector<PairResult> collidePairs(
+    std::span<raster::DepthStencilDevice* const> devices, std::span<const PairJob> jobs,
+    ContactSchedule schedule = ContactSchedule::AfterVerdict);
+
 }  // namespace recode::core

@@ -117,6 +117,11 @@ struct FrameReport {
   // microseconds on the CPU, milliseconds for a GL context), left out of frameUs and
   // collisionUs so that times measure collision detection, not start-up.
   double deviceSetupUs = 0.0;
+  // What the frame's pair tests handed to the device's hardware and back
+  // (raster::TransferCounters): command submissions waited on and bytes read back. Both 0 on
+  // the CPU device. Not in `recode run`'s output, which is the same on every exact device.
+  long long submissions = 0;
+  long long readbackBytes = 0;
 };
 
 class Simulation {
