@@ -13,6 +13,9 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <memory>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -20,6 +23,8 @@
 
 #include "exact_test_streams.hpp"
 #include "recode/backends/device_registry.hpp"
+#include "recode/pair/pair_batch.hpp"
+#include "recode/pair/pair_result_compare.hpp"
 #include "recode/raster/command_stream.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/golden.hpp"
@@ -147,6 +152,52 @@ TEST_CASE("the generated pair suite is bit-identical on every conforming device"
     }
     CHECK(compared > 250);
     CHECK(total.different == 0);
+  }
+}
+
+TEST_CASE("a batch of the generated pair suite gives collidePair's results on every device",
+          "[conformance][suite][batch]") {
+  const auto suite = verify::generatePairSuite();
+  std::vector<core::PairBlock> blocks;
+  blocks.reserve(2 * suite.size());
+  std::vector<core::PairJob> jobs;
+  std::vector<core::PairResult> expected;
+  int colliding = 0;
+  for (std::size_t i = 0; i < suite.size(); ++i) {
+    const verify::SuitePair& pair = suite[i];
+    blocks.emplace_back(pair.a);
+    blocks.emplace_back(pair.b);
+    core::PairRequest request;
+    request.frame = pair.frame;
+    request.normal = i % 4 == 0;
+    request.mor = i % 5 == 0 ? core::MorMode::Max : core::MorMode::Min;
+    jobs.push_back({&blocks[2 * i], &blocks[2 * i + 1], request});
+    raster::CpuDevice reference(pair.frame.width, pair.frame.height);
+    expected.push_back(core::collidePair(reference, pair.a, pair.b, request));
+    colliding += expected.back().collide ? 1 : 0;
+  }
+  REQUIRE(colliding > 100);
+  for (const ConformingDevice& d : conformingDevices()) {
+    INFO("device " << d.label);
+    // One device per frame size, as the frame loop holds them.
+    std::map<std::pair<int, int>, std::unique_ptr<raster::DepthStencilDevice>> bySize;
+    std::vector<raster::DepthStencilDevice*> devices;
+    for (const core::PairJob& job : jobs) {
+      auto& device = bySize[{job.request.frame.width, job.request.frame.height}];
+      if (!device)
+        device = d.make(job.request.frame.width, job.request.frame.height);
+      devices.push_back(device.get());
+    }
+    const std::vector<core::PairResult> got = core::collidePairs(devices, jobs);
+    REQUIRE(got.size() == expected.size());
+    int different = 0;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      const std::optional<std::string> difference = core::firstDifference(got[i], expected[i]);
+      INFO(suite[i].label << ": " << difference.value_or("same"));
+      CHECK(!difference);
+      different += difference ? 1 : 0;
+    }
+    CHECK(different == 0);
   }
 }
 
