@@ -1,10 +1,14 @@
-// The manager: objects by id, the broad phase over their world boxes, collide() per candidate.
+// The manager: objects by id, the broad phase over their world boxes, every candidate's block
+// pairs decided as one batch.
 #include "recode/api/manager.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "block_pairs.hpp"
 
 namespace recode {
 
@@ -42,19 +46,41 @@ CollisionObject& CollisionManager::object(ObjectId id) {
 void CollisionManager::collide(
     const CollisionRequest& request,
     const std::function<void(ObjectId, ObjectId, const CollisionResult&)>& onContact) {
+  using Clock = std::chrono::steady_clock;
   stats_ = {};
   std::vector<core::Aabb> boxes;
   boxes.reserve(entries_.size());
   for (const Entry& e : entries_)
     boxes.push_back(e.object->worldBox());
-  CollisionResult result;
-  for (const auto& [i, j] : broadPhase_.update(boxes)) {
+  // Every candidate pair's block pairs are planned first and decided as one batch (one
+  // submission round on a deferring GPU device), then each pair's result is merged and reported
+  // in the broad phase's order: the same results as collide() on each pair in turn.
+  const Clock::time_point start = Clock::now();
+  const double setupBefore = devices_.setupUs();
+  const std::vector<std::pair<int, int>> candidates = broadPhase_.update(boxes);
+  std::vector<CollisionResult> results(candidates.size());
+  detail::BlockPairPlan plan;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
     ++stats_.candidatePairs;
-    const Entry& a = entries_[static_cast<std::size_t>(i)];
-    const Entry& b = entries_[static_cast<std::size_t>(j)];
-    if (recode::collide(*a.object, *b.object, request, result, devices_)) {
+    plan.add(*entries_[static_cast<std::size_t>(candidates[k].first)].object,
+             *entries_[static_cast<std::size_t>(candidates[k].second)].object, request, results[k]);
+  }
+  std::vector<detail::BlockPairAnswer> answers = plan.decide(request.mode, devices_);
+  const double setupUs = devices_.setupUs() - setupBefore;
+  // Each pair's share of the call's time, by its block pairs (each pair at least one share).
+  const double callUs =
+      std::chrono::duration<double, std::micro>(Clock::now() - start).count() - setupUs;
+  const double shares = static_cast<double>(plan.blockPairs() + candidates.size());
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    CollisionResult& result = results[k];
+    plan.merge(k, answers, result);
+    const double share = static_cast<double>(result.blockPairsDrawn + 1) / shares;
+    result.collisionUs = callUs * share;
+    result.deviceSetupUs = setupUs * share;
+    if (result.collide) {
       ++stats_.pairsInContact;
-      onContact(a.id, b.id, result);
+      onContact(entries_[static_cast<std::size_t>(candidates[k].first)].id,
+                entries_[static_cast<std::size_t>(candidates[k].second)].id, result);
     }
   }
 }

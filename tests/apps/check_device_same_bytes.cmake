@@ -1,7 +1,7 @@
 cmake_minimum_required(VERSION 3.25)
 # `recode pair` and `recode run` with --device DEVICE give the CPU device's output bytes, timing
-# aside (--no-timing): the built-in pair in every mode and with --pixel, and two built-in scenes
-# (the cones' first 30 frames, the hands' whole motion). Expects RECODE, DEVICE, OUT.
+# aside (--no-timing): the built-in pair in every mode and with --pixel, and every built-in scene
+# (batched, and the hands also pair by pair). Expects RECODE, DEVICE, OUT.
 
 # Runs `recode ARGS... --device device`; sets <var> to its standard output.
 function(recode_output var device)
@@ -34,6 +34,11 @@ foreach(mode reference adaptive conservative skip-apart)
   expect_same("pair --mode ${mode}" pair --json --no-timing --mode ${mode})
 endforeach()
 expect_same("pair --pixel 128,128" pair --json --no-timing --pixel 128,128)
-expect_same("run random-cones" run random-cones --frames 30 --json --no-timing)
-# The hands touch the ball from about frame 60 on: the whole motion.
-expect_same("run hand-grasp" run hand-grasp --json --no-timing)
+# Every built-in scene, whole: a frame's pair tests run as one batch on a device that defers
+# its commands, so every frame size and contact schedule of the scenes is compared.
+foreach(scene comb-translate-aligned comb-translate-offset comb-rotate-aligned comb-rotate-offset
+              random-cones random-shapes hand-grasp hierarchy-9)
+  expect_same("run ${scene}" run ${scene} --json --no-timing)
+endforeach()
+# Pair by pair instead (the path the bench's per-pair column times): the same bytes too.
+expect_same("run hand-grasp --per-pair" run hand-grasp --json --no-timing --per-pair)

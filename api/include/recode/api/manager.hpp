@@ -2,8 +2,10 @@
 // Many objects at once (FCL's broad-phase manager, docs/api.md): objects are added and removed
 // by id, moved through their own setTransform (the manager holds shared pointers and reads the
 // current poses), and collide() finds every pair in contact: the sort-and-sweep broad phase of
-// `recode run` (core::SweepAndPrune) on the objects' world boxes, then recode::collide on each
-// candidate pair, all drawn on the manager's DevicePool.
+// `recode run` (core::SweepAndPrune) on the objects' world boxes, then what recode::collide does
+// for each candidate pair, all drawn on the manager's DevicePool: every candidate's block pairs
+// are decided as one batch (core::collidePairs; one submission round on a GPU device that defers
+// its commands), with the results of recode::collide on each pair in turn, timing aside.
 
 #include <functional>
 #include <memory>
@@ -49,7 +51,9 @@ class CollisionManager {
 
   // Every pair in contact at the objects' current poses, ordered by (a, b).
   [[nodiscard]] std::vector<ObjectContact> collide(const CollisionRequest& request);
-  // The same, handing each pair in contact to `onContact` as it is found.
+  // The same, handing each pair in contact to `onContact` once all are decided, in the broad
+  // phase's order. Each result's collisionUs and deviceSetupUs are its share of the call's, by
+  // block pairs drawn.
   void collide(const CollisionRequest& request,
                const std::function<void(ObjectId, ObjectId, const CollisionResult&)>& onContact);
 

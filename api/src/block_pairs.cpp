@@ -1,0 +1,151 @@
+// Planning, deciding and merging the block pairs of collide() and the manager.
+#include "block_pairs.hpp"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include "recode/pair/pair_batch.hpp"
+#include "recode/refine/adaptive.hpp"
+#include "recode/refine/proven_apart.hpp"
+
+namespace recode::detail {
+
+namespace {
+
+// Adds one block pair's contact region to the object pair's.
+void mergeContact(core::ContactRegion& into, const core::ContactRegion& from) {
+  into.points.insert(into.points.end(), from.points.begin(), from.points.end());
+  into.box.extend(from.box);
+  into.pixels += from.pixels;
+  into.area += from.area;
+  into.maxDepth = std::max(into.maxDepth, from.maxDepth);
+  into.collapsedPixels += from.collapsedPixels;
+}
+
+// One block pair in a mode that is not a plain collidePair.
+BlockPairAnswer decideOne(raster::DepthStencilDevice& device, const PlannedBlockPair& p,
+                          core::PairMode mode) {
+  BlockPairAnswer out;
+  out.frame = p.request.frame;
+  if (mode == core::PairMode::Conservative) {
+    out.pair =
+        core::collideConservative(device, p.blockA.block.mesh(), p.blockB.block.mesh(), p.request)
+            .pair;
+    return out;
+  }
+  thread_local core::AdaptivePairTester tester;
+  core::AdaptiveResult r = tester.collide(device, p.blockA.block, p.blockB.block, p.request);
+  out.atLimit = r.verdict == core::PairVerdict::ApartAtLimit;
+  if (r.contact) {
+    out.pair = std::move(*r.contact);
+    out.frame = r.contactFrame;
+    out.level = r.contactLevel;
+  } else if (r.reference) {
+    out.pair = std::move(*r.reference);
+  }
+  out.pair.collide = r.verdict == core::PairVerdict::Collide;
+  return out;
+}
+
+// The pool holds at most this many sizes at once (a new size past it empties the pool), so a
+// batch asks it for at most this many: every device of a batch stays alive until it is done.
+constexpr std::size_t kSizesPerBatch = 16;
+
+}  // namespace
+
+PlannedBlockPair::PlannedBlockPair(const CollisionObject& a, const CollisionObject& b, int leafA,
+                                   int leafB, core::PairRequest pairRequest)
+    : blockA(a.tree(), leafA),
+      blockB(b.tree(), leafB),
+      request(std::move(pairRequest)),
+      objectBlockA(static_cast<std::size_t>(a.geometry().blockOfNode(leafA))),
+      objectBlockB(static_cast<std::size_t>(b.geometry().blockOfNode(leafB))) {}
+
+std::size_t BlockPairPlan::add(const CollisionObject& a, const CollisionObject& b,
+                               const CollisionRequest& request, CollisionResult& result) {
+  result.clear();
+  firstOfObjectPair_.push_back(pairs_.size());
+  std::vector<core::LeafPair> leafPairs;
+  result.boxTests = core::descendPair(a.tree(), b.tree(), leafPairs);
+  for (const core::LeafPair& lp : leafPairs) {
+    const core::HierarchyNode& na = a.tree().nodes()[static_cast<std::size_t>(lp.leafA)];
+    const core::HierarchyNode& nb = b.tree().nodes()[static_cast<std::size_t>(lp.leafB)];
+    core::PairRequest pair;
+    pair.frame = chooseFrame(na.worldAabb, nb.worldAabb, request);
+    pair.mor = request.mor;
+    pair.contact = request.contact;
+    pair.normal = request.normal;
+    // Proven apart from the leaves' own meshes and poses: no world mesh is made for a skipped
+    // pair.
+    if (request.mode == core::PairMode::SkipApart &&
+        core::provenApart(core::PosedBlock{na.localMesh, na.world, na.worldAabb, na.localExtent},
+                          core::PosedBlock{nb.localMesh, nb.world, nb.worldAabb, nb.localExtent},
+                          pair.frame)) {
+      ++result.blockPairsSkipped;
+      continue;
+    }
+    pairs_.emplace_back(a, b, lp.leafA, lp.leafB, std::move(pair));
+  }
+  return firstOfObjectPair_.size() - 1;
+}
+
+std::vector<BlockPairAnswer> BlockPairPlan::decide(core::PairMode mode, DevicePool& devices) const {
+  std::vector<BlockPairAnswer> answers(pairs_.size());
+  const bool batched = mode == core::PairMode::Reference || mode == core::PairMode::SkipApart;
+  if (!batched) {
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      const core::FrameSpec& f = pairs_[i].request.frame;
+      answers[i] = decideOne(devices.device(f.width, f.height), pairs_[i], mode);
+    }
+    return answers;
+  }
+  // Batches of at most kSizesPerBatch frame sizes, in plan order.
+  for (std::size_t first = 0; first < pairs_.size();) {
+    std::map<std::pair<int, int>, raster::DepthStencilDevice*> sizes;
+    std::vector<core::PairJob> jobs;
+    std::vector<raster::DepthStencilDevice*> batchDevices;
+    std::size_t end = first;
+    for (; end < pairs_.size(); ++end) {
+      const PlannedBlockPair& p = pairs_[end];
+      const std::pair<int, int> size{p.request.frame.width, p.request.frame.height};
+      auto found = sizes.find(size);
+      if (found == sizes.end()) {
+        if (sizes.size() == kSizesPerBatch)
+          break;
+        found = sizes.emplace(size, &devices.device(size.first, size.second)).first;
+      }
+      jobs.push_back({&p.blockA.block, &p.blockB.block, p.request});
+      batchDevices.push_back(found->second);
+    }
+    std::vector<core::PairResult> results = core::collidePairs(batchDevices, jobs);
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      answers[first + k].pair = std::move(results[k]);
+      answers[first + k].frame = pairs_[first + k].request.frame;
+    }
+    first = end;
+  }
+  return answers;
+}
+
+void BlockPairPlan::merge(std::size_t index, std::vector<BlockPairAnswer>& answers,
+                          CollisionResult& result) const {
+  const std::size_t first = firstOfObjectPair_.at(index);
+  const std::size_t end =
+      index + 1 < firstOfObjectPair_.size() ? firstOfObjectPair_[index + 1] : pairs_.size();
+  for (std::size_t i = first; i < end; ++i) {
+    BlockPairAnswer& answer = answers[i];
+    core::PairResult& r = answer.pair;
+    ++result.blockPairsDrawn;
+    result.apartAtLimit += answer.atLimit ? 1 : 0;
+    if (!r.collide)
+      continue;
+    result.collide = true;
+    result.interferingPixels += r.interferingPixels;
+    mergeContact(result.contact, r.contact);
+    result.contacts.push_back(
+        {pairs_[i].objectBlockA, pairs_[i].objectBlockB, answer.frame, std::move(r), answer.level});
+  }
+}
+
+}  // namespace recode::detail
