@@ -11,6 +11,8 @@
 #include "cli/view_axis_option.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/scene/builtin_scenes.hpp"
+#include "recode/verify/exact_parity.hpp"
+#include "verify/verify_batch.hpp"
 #include "verify/verify_pairs.hpp"
 #include "verify/verify_report.hpp"
 
@@ -85,6 +87,23 @@ void addViewAxisCost(VerifyRun::ViewAxisTotals& v, const core::PairResult& chose
   v.sceneRecodeUs += scene.timing.totalUs;
 }
 
+// With --gl-exact or --vulkan, every pair again as one batch on that device, against the
+// reference results the oracles judged.
+void checkBatches(VerifyRun& run, const VerifyPairs& input,
+                  const std::vector<core::PairRequest>& requests) {
+  if (!run.oracles.glExact && !run.oracles.vulkan)
+    return;
+  std::vector<BatchPair> batch;
+  for (std::size_t i = 0; i < run.pairs.size(); ++i) {
+    const PairToVerify& p = input.pairs[i];
+    batch.push_back({&p.label, p.a.get(), p.b.get(), requests[i], &run.pairs[i].result});
+  }
+  if (run.oracles.glExact)
+    run.glExactBatch = checkBatch(batch, verify::glExactDeviceFactory(run.glPlatform));
+  if (run.oracles.vulkan)
+    run.vulkanBatch = checkBatch(batch, verify::vulkanDeviceFactory());
+}
+
 int runVerifyCommand(const VerifyOptions& o) {
   VerifyRun run;
   run.oracles = selectedOracles(o);
@@ -101,6 +120,7 @@ int runVerifyCommand(const VerifyOptions& o) {
   const core::ViewAxisRule axisRule = viewAxisRule(o.viewAxis);
   if (axisRule != core::ViewAxisRule::Scene)
     run.viewAxis.emplace().rule = axisRule;
+  std::vector<core::PairRequest> requests;  // each pair's, for the batches
   for (PairToVerify& p : input.pairs) {
     core::PairRequest request;
     request.mor = o.frameOptions.mor();
@@ -122,6 +142,7 @@ int runVerifyCommand(const VerifyOptions& o) {
       throw std::invalid_argument(input.source + ": blocks \"" + p.label + "\": " + e.what());
     }
     run.totals.add(run.pairs.back());
+    requests.push_back(request);
     if (run.viewAxis)
       addViewAxisCost(*run.viewAxis, run.pairs.back().result, *p.a, *p.b, request, sceneFrame);
     if (run.modes) {
@@ -130,6 +151,7 @@ int runVerifyCommand(const VerifyOptions& o) {
       run.modes->add(run.modeChecks.back());
     }
   }
+  checkBatches(run, input, requests);
   if (o.json) {
     nlohmann::ordered_json j = verifyRunToJson(run);
     if (o.noTiming)

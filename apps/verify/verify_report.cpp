@@ -137,6 +137,11 @@ std::string failures(const VerifyRun& run) {
         ", extras beyond the bound " + std::to_string(m.conservativeExtrasBeyondBound) +
         "; adaptive definite apart on intersecting pairs " + std::to_string(m.adaptive.missed));
   }
+  for (const auto& [name, batch] :
+       {std::pair{"gl-exact", &run.glExactBatch}, std::pair{"vulkan", &run.vulkanBatch}})
+    if (*batch && !(*batch)->passed())
+      parts.push_back(std::to_string((*batch)->different) + " pairs batched on " + name +
+                      " differ from the reference (first: " + (*batch)->firstDifferent + ")");
   std::string out;
   for (const std::string& p : parts)
     out += (out.empty() ? "" : "; ") + p;
@@ -185,7 +190,9 @@ ordered_json modesJson(const verify::ModeCounts& m) {
 }
 
 bool verifyRunPassed(const VerifyRun& run) {
-  return run.totals.passed() && (!run.modes || run.modes->promisesHold());
+  return run.totals.passed() && (!run.modes || run.modes->promisesHold()) &&
+         (!run.glExactBatch || run.glExactBatch->passed()) &&
+         (!run.vulkanBatch || run.vulkanBatch->passed());
 }
 
 void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) {
@@ -218,6 +225,13 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
         << ", " << t.glExactSeconds << " s)\n";
   if (run.oracles.vulkan)
     out << "  vulkan  " << glExactLine(t.vulkan) << "  (" << t.vulkanSeconds << " s)\n";
+  for (const auto& [name, batch] :
+       {std::pair{"gl-exact", &run.glExactBatch}, std::pair{"vulkan", &run.vulkanBatch}})
+    if (*batch)
+      out << "  " << name << " batched: " << (*batch)->pairs << " pairs in one batch, "
+          << (*batch)->different << " different from the reference; " << (*batch)->submissions
+          << " submissions, " << (*batch)->readbackBytes << " bytes read back  ("
+          << (*batch)->seconds << " s)\n";
   if (run.modes)
     printModes(out, *run.modes);
   if (run.viewAxis) {
@@ -277,6 +291,18 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
     j["vulkan"] = glExactJson(t.vulkan);
     j["vulkan"]["seconds"] = t.vulkanSeconds;
   }
+  const auto batchJson = [](const BatchCheck& b) {
+    return ordered_json{{"pairs", b.pairs},
+                        {"different", b.different},
+                        {"first_different", b.firstDifferent},
+                        {"submissions", b.submissions},
+                        {"readback_bytes", b.readbackBytes},
+                        {"seconds", b.seconds}};
+  };
+  if (run.glExactBatch)
+    j["gl_exact"]["batch"] = batchJson(*run.glExactBatch);
+  if (run.vulkanBatch)
+    j["vulkan"]["batch"] = batchJson(*run.vulkanBatch);
   if (run.modes)
     j["modes"] = modesJson(*run.modes);
   if (run.viewAxis) {

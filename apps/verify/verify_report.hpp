@@ -12,6 +12,7 @@
 #include "recode/refine/view_axis_choice.hpp"
 #include "recode/verify/mode_check.hpp"
 #include "recode/verify/verify_pair.hpp"
+#include "verify/verify_batch.hpp"
 
 namespace recode::app {
 
@@ -38,6 +39,9 @@ struct VerifyRun {
     double recodeUs = 0.0, sceneRecodeUs = 0.0;
   };
   std::optional<ViewAxisTotals> viewAxis;
+  // --gl-exact, --vulkan: every pair again as one batch on that device (verify_batch.hpp).
+  std::optional<BatchCheck> glExactBatch;
+  std::optional<BatchCheck> vulkanBatch;
 };
 
 // The run's verdict, which the report prints and the exit status gives: every pair passed its

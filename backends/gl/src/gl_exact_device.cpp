@@ -82,6 +82,15 @@ struct SharedGl {
   GLuint vertexArray = 0;
   GLuint proxyBuffer = 0;
   const void* owner = nullptr;  // the device whose framebuffer and state are bound now
+  // Read-backs into pixel-pack buffers of every device on this context, waited for by the next
+  // finish() of any of them: glReadPixels into a buffer returns at once, and the first
+  // glGetBufferSubData waits for everything before it.
+  struct PendingCopy {
+    GLuint buffer = 0;
+    std::size_t bytes = 0;
+    std::function<void(std::vector<std::uint8_t>)> deliver;
+  };
+  std::vector<PendingCopy> pending;
 
   // A GL error is a bug in this device (every input was validated), so it is reported loudly.
   void check(const char* what) const {
@@ -178,15 +187,7 @@ struct GlExactDevice::Impl {
   const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
   GLuint framebuffer = 0;
   GLuint depthStencil = 0;
-  // Read-backs into pixel-pack buffers, waited for by finish(): glReadPixels into a buffer
-  // returns at once, and the first glGetBufferSubData waits for everything before it.
-  struct PendingCopy {
-    GLuint buffer = 0;
-    std::size_t bytes = 0;
-    std::function<void(std::vector<std::uint8_t>)> deliver;
-  };
-  std::vector<PendingCopy> pending;
-  raster::TransferCounters transfers;
+  raster::TransferCounters transfers;  // what this device's calls waited for and read
 
   const detail::GlCoreFunctions& gl() const { return shared->gl; }
 
@@ -265,7 +266,7 @@ struct GlExactDevice::Impl {
   void readLater(const raster::PixelRect& r, GLenum format, GLenum type, std::size_t texel,
                  std::function<void(std::vector<std::uint8_t>)> deliver) {
     use();
-    PendingCopy copy;
+    SharedGl::PendingCopy copy;
     copy.bytes = static_cast<std::size_t>(r.area()) * texel;
     copy.deliver = std::move(deliver);
     const auto& g = gl();
@@ -276,23 +277,23 @@ struct GlExactDevice::Impl {
     // Rows from the bottom (y = r.y0) up, the interface's order; the scissor does not apply.
     g.ReadPixels(r.x0, r.y0, r.width(), r.height(), format, type, nullptr);
     g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    pending.push_back(std::move(copy));
     transfers.readbackBytes += static_cast<long long>(copy.bytes);
+    shared->pending.push_back(std::move(copy));
     shared->check("read-back");
   }
 
-  // Waits for the pending read-backs and delivers them, each its own buffer deleted; the first
-  // error is passed on once every buffer is gone.
+  // Waits for the pending read-backs of every device on the context and delivers them, each
+  // its own buffer deleted; the first error is passed on once every buffer is gone.
   void finish() {
-    if (pending.empty())
+    if (shared->pending.empty())
       return;
     use();
-    std::vector<PendingCopy> copies = std::move(pending);
-    pending.clear();
+    std::vector<SharedGl::PendingCopy> copies = std::move(shared->pending);
+    shared->pending.clear();
     ++transfers.submissions;
     std::exception_ptr error;
     const auto& g = gl();
-    for (PendingCopy& copy : copies) {
+    for (SharedGl::PendingCopy& copy : copies) {
       std::vector<std::uint8_t> bytes(copy.bytes);
       g.BindBuffer(GL_PIXEL_PACK_BUFFER, copy.buffer);
       g.GetBufferSubData(GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(copy.bytes),
@@ -316,8 +317,7 @@ struct GlExactDevice::Impl {
       return;
     try {
       shared->context->makeCurrent();
-      for (const PendingCopy& copy : pending)
-        gl().DeleteBuffers(1, &copy.buffer);
+      finish();  // other devices' read-backs may be pending beside this one's
       gl().DeleteFramebuffers(1, &framebuffer);
       gl().DeleteRenderbuffers(1, &depthStencil);
       if (shared->owner == this)

@@ -128,11 +128,25 @@ ExactParityReport compareOnGlExact(const core::TriangleMesh&, const core::Triang
       "this build has no exact GL device (Debian: apt-get install "
       "libosmesa6-dev or libegl-dev, then reconfigure)");
 }
+
+core::DeviceFactory glExactDeviceFactory(backends::GlPlatform) {
+  return [](int, int) -> std::unique_ptr<raster::DepthStencilDevice> {
+    throw std::runtime_error(
+        "this build has no exact GL device (Debian: apt-get install "
+        "libosmesa6-dev or libegl-dev, then reconfigure)");
+  };
+}
 #else
 ExactParityReport compareOnGlExact(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                    const core::PairRequest& request,
                                    backends::GlPlatform platform) {
   return compareOnDeviceWithRenderer<backends::GlExactDevice>(a, b, request, platform);
+}
+
+core::DeviceFactory glExactDeviceFactory(backends::GlPlatform platform) {
+  return [platform](int width, int height) -> std::unique_ptr<raster::DepthStencilDevice> {
+    return std::make_unique<backends::GlExactDevice>(width, height, platform);
+  };
 }
 #endif
 
@@ -143,10 +157,24 @@ ExactParityReport compareOnVulkan(const core::TriangleMesh&, const core::Triangl
       "this build has no Vulkan device (Debian: apt-get install libvulkan-dev glslang-tools "
       "mesa-vulkan-drivers, then reconfigure)");
 }
+
+core::DeviceFactory vulkanDeviceFactory() {
+  return [](int, int) -> std::unique_ptr<raster::DepthStencilDevice> {
+    throw std::runtime_error(
+        "this build has no Vulkan device (Debian: apt-get install libvulkan-dev glslang-tools "
+        "mesa-vulkan-drivers, then reconfigure)");
+  };
+}
 #else
 ExactParityReport compareOnVulkan(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                   const core::PairRequest& request) {
   return compareOnDeviceWithRenderer<backends::VulkanDevice>(a, b, request);
+}
+
+core::DeviceFactory vulkanDeviceFactory() {
+  return [](int width, int height) -> std::unique_ptr<raster::DepthStencilDevice> {
+    return std::make_unique<backends::VulkanDevice>(width, height);
+  };
 }
 #endif
 

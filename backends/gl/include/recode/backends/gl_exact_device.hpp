@@ -51,8 +51,9 @@ class GlExactDevice final : public raster::RenderStateDevice {
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
   [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override;
 
-  // Read-backs into pixel-pack buffers, which GL fills without the host waiting; finish() waits
-  // once for all of them (counted as one submission) and delivers them.
+  // Read-backs into pixel-pack buffers, which GL fills without the host waiting; finish() of
+  // any exact GL device on the same context waits once for all of them (counted as one
+  // submission, by the device whose finish() waited) and delivers them.
   [[nodiscard]] raster::PendingRead<std::uint8_t> readStencilLater(
       const raster::PixelRect& rect) override;
   [[nodiscard]] raster::PendingRead<std::uint32_t> readDepthLater(
