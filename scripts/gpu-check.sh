@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# The GPU check: on a machine with a GPU driver (a Vulkan ICD and an EGL vendor library), are the
+# exact devices still the reference bit for bit, and how fast are they? Runs
+#   1. recode conform on the exact Vulkan and GL devices (every committed golden vector),
+#   2. recode verify --suite at 800 pixels on both (per-command parity of 504 pairs, then the
+#      same pairs as one batch against the reference),
+#   3. recode bench table2 figure8 with the GPU columns (the CGAL judge, recode-cpu, the exact
+#      devices batched and Vulkan pair by pair, FCL GJK, Bullet),
+# and prints a summary. Exit status 0 when every correctness check passed (the bench's times are
+# reported, never judged).
+#
+# Usage: scripts/gpu-check.sh [OUT]          (default OUT: gpu-check)
+# Environment: RECODE   the recode binary (default build/apps/recode)
+#              QUICK=1  the bench's smallest levels only (--quick), to try the script on
+#                       lavapipe and Mesa's EGL first
+# On a lent machine without the loaders, see docs/backends.md ("Running on a GPU").
+set -uo pipefail
+
+recode=${RECODE:-build/apps/recode}
+out=${1:-gpu-check}
+quick=${QUICK:+--quick}
+mkdir -p "$out"
+[[ -x $recode ]] || { echo "gpu-check: no recode binary at $recode (set RECODE)" >&2; exit 2; }
+
+failed=()
+step() {  # step NAME LOG COMMAND...: runs it, keeps its output, records a failure
+  local name=$1 log=$2
+  shift 2
+  local start=$SECONDS
+  if "$@" >"$out/$log" 2>&1; then
+    printf '%-34s passed  (%d s)\n' "$name" $((SECONDS - start))
+  else
+    printf '%-34s FAILED  (%d s; see %s)\n' "$name" $((SECONDS - start)) "$out/$log"
+    failed+=("$name")
+  fi
+}
+
+echo "gpu-check: $recode, writing into $out"
+step "conform --device vulkan" conform-vulkan.json "$recode" conform --device vulkan --json
+step "conform --device gl-exact" conform-gl-exact.json "$recode" conform --device gl-exact --json
+step "verify --suite --width 800" verify-800.json \
+  "$recode" verify --suite --width 800 --vulkan --gl-exact --gl-platform egl --json
+step "bench table2 figure8" bench.log \
+  "$recode" bench table2 figure8 $quick --out "$out/bench" \
+  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,fcl-gjk,bullet
+
+echo
+python3 - "$out" <<'PY'
+import csv, json, os, sys
+out = sys.argv[1]
+
+def load(name):
+    try:
+        with open(os.path.join(out, name)) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+for device in ("vulkan", "gl-exact"):
+    c = load(f"conform-{device}.json")
+    if c:
+        print(f"conform {device}: {c.get('passed', '?')} of {c.get('vectors', '?')} vectors passed")
+v = load("verify-800.json")
+if v:
+    for key in ("vulkan", "gl_exact"):
+        d = v.get(key, {})
+        b = d.get("batch", {})
+        print(f"verify {key}: {d.get('pixels', 0):,} pixels, {d.get('different', '?')} different;"
+              f" batched {b.get('pairs', 0)} pairs, {b.get('different', '?')} different,"
+              f" {b.get('submissions', '?')} submissions")
+path = os.path.join(out, "bench", "bench.csv")
+if os.path.exists(path):
+    rows = list(csv.DictReader(open(path)))
+    columns = ["recode-cpu", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair", "fcl-gjk"]
+    print("\nmean ms a frame (submissions a frame):")
+    print("| scene | triangles | " + " | ".join(columns) + " |")
+    keys = sorted({(r["experiment"], r["scene"], int(r["triangles"])) for r in rows})
+    for e, s, t in keys:
+        cells = []
+        for c in columns:
+            r = next((r for r in rows if (r["experiment"], r["scene"], int(r["triangles"]),
+                                          r["algorithm"]) == (e, s, t, c)), None)
+            if r is None:
+                cells.append("-")
+            elif r["submissions_per_frame"] and float(r["submissions_per_frame"]) > 0:
+                cells.append(f"{float(r['mean_ms']):.3f} ({float(r['submissions_per_frame']):.1f})")
+            else:
+                cells.append(f"{float(r['mean_ms']):.3f}")
+        print(f"| {s} | {t:,} | " + " | ".join(cells) + " |")
+PY
+
+if ((${#failed[@]})); then
+  echo "gpu-check: FAILED: ${failed[*]}"
+  exit 1
+fi
+echo "gpu-check: every correctness check passed"
