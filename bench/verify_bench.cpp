@@ -134,7 +134,7 @@ BENCHMARK(pairsOnDevice<raster::CpuDevice>)
     ->Arg(512)
     ->ArgName("width")
     ->Unit(benchmark::kMillisecond);
-#ifdef RECODE_HAVE_OSMESA
+#ifdef RECODE_HAVE_GL_DEVICE
 BENCHMARK(pairsOnDevice<backends::GlDevice>)
     ->Arg(64)
     ->Arg(512)

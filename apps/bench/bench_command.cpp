@@ -113,9 +113,9 @@ void requireEverything(const std::vector<Experiment>& experiments) {
 #if !RECODE_HAVE_CGAL
   missing.emplace_back("the CGAL judge (RECODE_WITH_CGAL; libcgal-dev)");
 #endif
-#if !RECODE_HAVE_OSMESA
+#if !RECODE_HAVE_GL_DEVICE
   if (glDevice)
-    missing.emplace_back("the GL device (RECODE_WITH_OSMESA; libosmesa6-dev)");
+    missing.emplace_back("the GL device (RECODE_WITH_OSMESA or RECODE_WITH_EGL; libosmesa6-dev)");
 #endif
   if (missing.empty())
     return;

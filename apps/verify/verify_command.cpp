@@ -195,13 +195,15 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   CLI::Option* cgalFlag =
       cmd->add_flag("--cgal", o->cgal,
                     "per pair: CGAL exact intersection (naming no oracle runs --embree --cgal)");
-  cmd->add_flag("--gl", o->gl, "replay every pair's commands on OSMesa and compare the buffers");
+  cmd->add_flag("--gl", o->gl,
+                "replay every pair's commands on fixed-function OpenGL (OSMesa or EGL: "
+                "--gl-platform) and compare the buffers");
   cmd->add_flag("--gl-exact", o->glExact,
                 "replay every pair's commands on the exact GL device (shaders, OpenGL 4.5) and "
                 "require bit-identical depth and stencil after every command");
   cmd->add_option("--gl-platform", o->glPlatform,
-                  "where the exact GL device's context comes from: auto (EGL, else OSMesa), "
-                  "osmesa, egl")
+                  "where the GL devices' contexts come from: osmesa, egl, or auto (--gl-exact: "
+                  "EGL, else OSMesa; --gl: OSMesa, else EGL)")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
       ->capture_default_str();
   cmd->add_flag("--vulkan", o->vulkan,

@@ -1,7 +1,8 @@
-// A headless EGL context for the exact GL device: Mesa's surfaceless platform here (llvmpipe
-// without any window system), or the first EGL device on drivers that offer the device platform
-// instead (NVIDIA). The context has no surface at all; the device renders into its own
-// framebuffer object.
+// A headless EGL context for the GL devices: Mesa's surfaceless platform here (llvmpipe without
+// any window system), or the first EGL device on drivers that offer the device platform instead
+// (NVIDIA). The context has no surface at all; a device renders into its own framebuffer object.
+// OpenGL 4.5, core profile for the exact device, compatibility profile for the fixed-function
+// one.
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -77,25 +78,22 @@ EGLDisplay headlessDisplay() {
 
 class EglContext final : public GlContext {
  public:
-  EglContext() {
+  explicit EglContext(bool compatibility) : compatibility_(compatibility) {
     display_ = headlessDisplay();
     EGLint major = 0, minor = 0;
     if (eglInitialize(display_, &major, &minor) != EGL_TRUE)
       throw std::runtime_error("EGL: eglInitialize failed (" + eglErrorName(eglGetError()) + ")");
-    try {
-      createContext();
-    } catch (...) {
-      eglTerminate(display_);
-      throw;
-    }
+    createContext();
   }
 
+  // The display stays initialized: every context of the process lives on the same headless
+  // display, and eglTerminate would end the others' too (the fixed-function devices each have a
+  // context of their own, made and destroyed while others draw).
   ~EglContext() override {
     forget();
     if (eglGetCurrentContext() == context_)
       eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
-    eglTerminate(display_);
   }
 
   void bind() override {
@@ -133,16 +131,19 @@ class EglContext final : public GlContext {
                                  EGL_CONTEXT_MINOR_VERSION,
                                  5,
                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 compatibility_ ? EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT
+                                                : EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                  EGL_NONE};
     context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context_ == EGL_NO_CONTEXT) {
-      throw std::runtime_error("EGL: no OpenGL 4.5 core-profile context (" +
+      throw std::runtime_error(std::string("EGL: no OpenGL 4.5 ") +
+                               (compatibility_ ? "compatibility" : "core") + "-profile context (" +
                                eglErrorName(eglGetError()) + ")");
     }
     makeCurrent();
   }
 
+  bool compatibility_ = false;
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };
@@ -150,7 +151,11 @@ class EglContext final : public GlContext {
 }  // namespace
 
 std::unique_ptr<GlContext> makeEglHeadlessContext() {
-  return std::make_unique<EglContext>();
+  return std::make_unique<EglContext>(false);
+}
+
+std::unique_ptr<GlContext> makeEglCompatibilityContext() {
+  return std::make_unique<EglContext>(true);
 }
 
 }  // namespace recode::backends::detail

@@ -64,4 +64,8 @@ class GlContext {
 // what is missing. Defined only when the build has EGL (RECODE_HAVE_EGL).
 [[nodiscard]] std::unique_ptr<GlContext> makeEglHeadlessContext();
 
+// The same with an OpenGL 4.5 compatibility-profile context (the fixed-function GlDevice, which
+// draws into its own framebuffer object there). Defined only with EGL.
+[[nodiscard]] std::unique_ptr<GlContext> makeEglCompatibilityContext();
+
 }  // namespace recode::backends::detail

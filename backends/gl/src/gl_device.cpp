@@ -1,12 +1,11 @@
 // GlDevice: the device interface mapped one to one onto OpenGL 4.5 compatibility-profile state.
 // How window coordinates reach GL unchanged, and why depth goes through glClipControl, is in
-// docs/verification.md (the GL device section).
+// docs/verification.md (the GL device section). Every GL call goes through function pointers the
+// context resolves (gl_functions.hpp), so the device runs on OSMesa, whose library exports them,
+// and on EGL, whose library exports none: on EGL it draws into a framebuffer object of its own
+// with a DEPTH24_STENCIL8 renderbuffer, as OSMesa's default framebuffer is.
 
 #include "recode/backends/gl_device.hpp"
-
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
 
 #include <algorithm>
 #include <climits>
@@ -17,6 +16,7 @@
 
 #include "gl_context.hpp"
 #include "gl_enums.hpp"
+#include "gl_functions.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 
@@ -26,6 +26,12 @@ namespace {
 
 using raster::CompareFunc;
 using raster::PixelRect;
+
+// The entry points the device calls, resolved through its context.
+struct GlFunctions {
+  detail::GlCoreFunctions core;
+  detail::GlLegacyFunctions legacy;
+};
 
 // One axis of the viewport: the largest power of two GL allows, centred on the framebuffer
 // (the origin kept within GL_VIEWPORT_BOUNDS_RANGE).
@@ -55,11 +61,11 @@ struct WindowViewport {
 // (about 8,000 for small frames). Vertices inside it are drawn exactly as given: with c the
 // viewport's centre, x_ndc = (x - c) * 2/P and x_w = x_ndc * P/2 + c are exact in float for
 // every x on the 1/256 grid within +-32768 (x - c has at most 24 significant bits).
-WindowViewport placeUnclippedViewport(int width, int height) {
+WindowViewport placeUnclippedViewport(const GlFunctions& gl, int width, int height) {
   GLint maxViewport[2] = {0, 0};
   GLint bounds[2] = {0, 0};
-  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
-  glGetIntegerv(GL_VIEWPORT_BOUNDS_RANGE, bounds);
+  gl.core.GetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+  gl.core.GetIntegerv(GL_VIEWPORT_BOUNDS_RANGE, bounds);
   const Viewport vx = viewportFor(width, maxViewport[0], bounds[0]);
   const Viewport vy = viewportFor(height, maxViewport[1], bounds[0]);
   if (vx.size < width || vy.size < height) {
@@ -67,26 +73,22 @@ WindowViewport placeUnclippedViewport(int width, int height) {
                              "x" + std::to_string(maxViewport[1]) + " is smaller than the " +
                              std::to_string(width) + "x" + std::to_string(height) + " framebuffer");
   }
-  glViewport(vx.origin, vy.origin, vx.size, vy.size);
+  gl.core.Viewport(vx.origin, vy.origin, vx.size, vy.size);
   return {vx, vy};
 }
 
 // Depth: with glClipControl's ZERO_TO_ONE convention window z = z_ndc, so a projection that
 // passes z through leaves it unchanged. (GL's default -1..1 convention needs z_ndc = 2z - 1,
 // which loses low bits of small z before the rasterizer sees them.)
-void passDepthThrough(detail::GlContext& context) {
-  const auto clipControl =
-      reinterpret_cast<PFNGLCLIPCONTROLPROC>(context.procAddress("glClipControl"));
-  if (clipControl == nullptr)
-    throw std::runtime_error("GlDevice: the GL implementation has no glClipControl (GL 4.5)");
-  clipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  glDepthRange(0.0, 1.0);
+void passDepthThrough(const GlFunctions& gl) {
+  gl.legacy.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  gl.legacy.DepthRange(0.0, 1.0);
 }
 
 // The projection that undoes the viewport transform, so that window coordinates come out as
 // they went in. Column-major: x_clip = (x - cx) * 2/P, y_clip = (y - cy) * 2/Q, z_clip = z,
 // w = 1.
-void loadWindowProjection(const WindowViewport& viewport) {
+void loadWindowProjection(const GlFunctions& gl, const WindowViewport& viewport) {
   const Viewport& vx = viewport.x;
   const Viewport& vy = viewport.y;
   const GLfloat sx = 2.0f / static_cast<GLfloat>(vx.size);
@@ -107,47 +109,51 @@ void loadWindowProjection(const WindowViewport& viewport) {
                                   -static_cast<GLfloat>(vy.centre()) * sy,
                                   0.0f,
                                   1.0f};
-  glMatrixMode(GL_PROJECTION);
-  glLoadMatrixf(projection);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
+  gl.legacy.MatrixMode(detail::kGlProjection);
+  gl.legacy.LoadMatrixf(projection);
+  gl.legacy.MatrixMode(detail::kGlModelview);
+  gl.legacy.LoadIdentity();
 }
 
 // The tests are always on; "off" is ALWAYS, as docs/rasterization.md section 6 says. No
 // colour is written, and nothing else in the fragment pipeline may change a fragment.
-void setFixedFragmentState(int width, int height) {
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_STENCIL_TEST);
-  glEnable(GL_SCISSOR_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_DEPTH_CLAMP);
-  glDisable(GL_POLYGON_OFFSET_FILL);
-  glDisable(GL_MULTISAMPLE);
-  glDisable(GL_DITHER);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glFrontFace(GL_CCW);
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glStencilFunc(GL_ALWAYS, 0, 0xFF);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  glStencilMask(0xFF);
-  glScissor(0, 0, width, height);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glEnableClientState(GL_VERTEX_ARRAY);
+void setFixedFragmentState(const GlFunctions& gl, int width, int height) {
+  gl.core.Enable(GL_DEPTH_TEST);
+  gl.core.Enable(GL_STENCIL_TEST);
+  gl.core.Enable(GL_SCISSOR_TEST);
+  gl.core.Disable(GL_CULL_FACE);
+  gl.core.Disable(GL_DEPTH_CLAMP);
+  gl.core.Disable(GL_POLYGON_OFFSET_FILL);
+  gl.core.Disable(GL_MULTISAMPLE);
+  gl.core.Disable(GL_DITHER);
+  gl.legacy.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  gl.legacy.FrontFace(GL_CCW);
+  gl.legacy.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  gl.core.DepthFunc(GL_LESS);
+  gl.core.DepthMask(GL_TRUE);
+  gl.core.StencilFunc(GL_ALWAYS, 0, 0xFF);
+  gl.legacy.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  gl.core.StencilMask(0xFF);
+  gl.core.Scissor(0, 0, width, height);
+  gl.core.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.legacy.EnableClientState(detail::kGlVertexArray);
 }
 
 // Start as CpuDevice starts: depth 1.0, stencil 0 (OSMesa's buffers start undefined).
-void clearAsCpuDeviceStarts() {
-  glClearDepth(1.0);
-  glClearStencil(0);
-  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+void clearAsCpuDeviceStarts(const GlFunctions& gl) {
+  gl.core.ClearDepth(1.0);
+  gl.core.ClearStencil(0);
+  gl.core.Clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
 }  // namespace
 
 struct GlDevice::Impl {
   std::unique_ptr<detail::GlContext> context;
+  GlPlatform platform = GlPlatform::OsMesa;
+  GlFunctions gl;
+  GLuint framebuffer = 0;  // on EGL: the device's own; on OSMesa 0, the context's
+  GLuint depthStencil = 0;
   std::vector<GLfloat> vertexScratch;  // snapped x, y, z per vertex, reused between draws
 
   // Makes the context current; every public entry point starts here.
@@ -155,30 +161,99 @@ struct GlDevice::Impl {
 
   // A GL error here is a bug in this file (every input was validated), so it is reported
   // loudly rather than ignored.
-  static void check(const char* what) {
-    const GLenum error = glGetError();
+  void check(const char* what) const {
+    const GLenum error = gl.core.GetError();
     if (error != GL_NO_ERROR) {
       char code[16];
       std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(error));
       throw std::runtime_error(std::string("GlDevice: GL error ") + code + " in " + what);
     }
   }
+
+  // The context of the platform asked for: OSMesa's with its own width x height framebuffer,
+  // or EGL's (compatibility profile) with none; auto takes OSMesa when built, else EGL.
+  void makeContext(GlPlatform requested, int width, int height) {
+#ifdef RECODE_HAVE_OSMESA
+    if (requested != GlPlatform::Egl) {
+      context = detail::makeOsMesaContext(width, height);
+      platform = GlPlatform::OsMesa;
+      return;
+    }
+#else
+    if (requested == GlPlatform::OsMesa)
+      throw std::runtime_error(
+          "GlDevice: this build has no OSMesa (Debian: apt-get install libosmesa6-dev, then "
+          "reconfigure)");
+#endif
+#ifdef RECODE_HAVE_EGL
+    context = detail::makeEglCompatibilityContext();
+    platform = GlPlatform::Egl;
+#else
+    (void)width;
+    (void)height;
+    throw std::runtime_error(
+        "GlDevice: this build has no EGL (Debian: apt-get install libegl-dev, then "
+        "reconfigure)");
+#endif
+  }
+
+  // On EGL: a framebuffer object with a DEPTH24_STENCIL8 renderbuffer and no colour, the
+  // depth and stencil OSMesa's default framebuffer has.
+  void createFramebuffer(int width, int height) {
+    const detail::GlCoreFunctions& g = gl.core;
+    g.GenRenderbuffers(1, &depthStencil);
+    g.BindRenderbuffer(GL_RENDERBUFFER, depthStencil);
+    g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    g.GenFramebuffers(1, &framebuffer);
+    g.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              depthStencil);
+    g.DrawBuffer(GL_NONE);
+    g.ReadBuffer(GL_NONE);
+    const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+      char code[16];
+      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(status));
+      throw std::runtime_error(
+          std::string("GlDevice: a DEPTH24_STENCIL8 framebuffer is incomplete (status ") + code +
+          ")");
+    }
+  }
+
+  ~Impl() {
+    if (!context || framebuffer == 0)
+      return;
+    try {
+      use();
+      gl.core.DeleteFramebuffers(1, &framebuffer);
+      gl.core.DeleteRenderbuffers(1, &depthStencil);
+    } catch (...) {  // NOLINT(bugprone-empty-catch): the objects die with the context
+    }
+  }
 };
 
-GlDevice::GlDevice(int width, int height)
+GlDevice::GlDevice(int width, int height, GlPlatform platform)
     : RenderStateDevice(width, height), width_(width), height_(height) {
   raster::checkFramebufferSize(width, height);
   impl_ = std::make_unique<Impl>();
-  impl_->context = detail::makeOsMesaContext(width, height);
-  impl_->use();
+  Impl& d = *impl_;
+  d.makeContext(platform, width, height);
+  d.use();
+  d.gl = {detail::loadGlCoreFunctions(*d.context), detail::loadGlLegacyFunctions(*d.context)};
+  if (d.platform == GlPlatform::Egl)
+    d.createFramebuffer(width, height);
   // Each step below sets GL state the device relies on from here on; none is changed again
   // except through the device interface.
-  const WindowViewport viewport = placeUnclippedViewport(width, height);
-  passDepthThrough(*impl_->context);
-  loadWindowProjection(viewport);
-  setFixedFragmentState(width, height);
-  clearAsCpuDeviceStarts();
-  impl_->check("GlDevice setup");
+  const WindowViewport viewport = placeUnclippedViewport(d.gl, width, height);
+  passDepthThrough(d.gl);
+  loadWindowProjection(d.gl, viewport);
+  setFixedFragmentState(d.gl, width, height);
+  clearAsCpuDeviceStarts(d.gl);
+  d.check("GlDevice setup");
+}
+
+GlPlatform GlDevice::platform() const {
+  return impl_->platform;
 }
 
 GlDevice::~GlDevice() = default;
@@ -190,31 +265,32 @@ std::string GlDevice::renderer() const {
 // RenderStateDevice's setters have checked and stored the change; it is set on GL here.
 void GlDevice::stateChanged(StateChange change, raster::Face face) {
   impl_->use();
+  const GlFunctions& gl = impl_->gl;
   switch (change) {
     case StateChange::Scissor: {  // clamped to the framebuffer; empty is a zero-sized scissor
       const PixelRect& r = state_.scissor;
-      glScissor(r.x0, r.y0, r.width(), r.height());
+      gl.core.Scissor(r.x0, r.y0, r.width(), r.height());
       return;
     }
     case StateChange::DepthFunc:
-      glDepthFunc(detail::glCompareEnum(state_.depthFunc));
+      gl.core.DepthFunc(detail::glCompareEnum(state_.depthFunc));
       return;
     case StateChange::DepthWriteMask:
-      glDepthMask(state_.depthWrite ? GL_TRUE : GL_FALSE);
+      gl.core.DepthMask(state_.depthWrite ? GL_TRUE : GL_FALSE);
       return;
     case StateChange::StencilFunc:  // one func for both faces, as in the device interface
-      glStencilFunc(detail::glCompareEnum(state_.stencilFunc), state_.stencilRef,
-                    state_.stencilValueMask);
+      gl.core.StencilFunc(detail::glCompareEnum(state_.stencilFunc), state_.stencilRef,
+                          state_.stencilValueMask);
       return;
     case StateChange::StencilOps: {
       const raster::StencilOps& ops = face == raster::Face::Back ? state_.backOps : state_.frontOps;
-      glStencilOpSeparate(detail::glFaceEnum(face), detail::glStencilOpEnum(ops.stencilFail),
-                          detail::glStencilOpEnum(ops.depthFail),
-                          detail::glStencilOpEnum(ops.depthPass));
+      gl.core.StencilOpSeparate(detail::glFaceEnum(face), detail::glStencilOpEnum(ops.stencilFail),
+                                detail::glStencilOpEnum(ops.depthFail),
+                                detail::glStencilOpEnum(ops.depthPass));
       return;
     }
     case StateChange::StencilWriteMask:
-      glStencilMask(state_.stencilWriteMask);
+      gl.core.StencilMask(state_.stencilWriteMask);
       return;
     case StateChange::CullMode:
       applyCullMode(state_.cull);
@@ -226,28 +302,31 @@ void GlDevice::clearDepth(double depth) {
   if (!std::isfinite(depth))
     throw std::invalid_argument("clearDepth: value is not finite");
   impl_->use();
-  glClearDepth(depth);  // GL clamps to [0, 1]; the depth write mask applies to the clear
-  glClear(GL_DEPTH_BUFFER_BIT);
+  const GlFunctions& gl = impl_->gl;
+  gl.core.ClearDepth(depth);  // GL clamps to [0, 1]; the depth write mask applies to the clear
+  gl.core.Clear(GL_DEPTH_BUFFER_BIT);
 }
 
 void GlDevice::clearStencil(std::uint8_t value) {
   impl_->use();
-  glClearStencil(value);  // the stencil write mask applies to the clear
-  glClear(GL_STENCIL_BUFFER_BIT);
+  const GlFunctions& gl = impl_->gl;
+  gl.core.ClearStencil(value);  // the stencil write mask applies to the clear
+  gl.core.Clear(GL_STENCIL_BUFFER_BIT);
 }
 
 void GlDevice::applyCullMode(raster::CullMode mode) {
+  const GlFunctions& gl = impl_->gl;
   switch (mode) {
     case raster::CullMode::None:
-      glDisable(GL_CULL_FACE);
+      gl.core.Disable(GL_CULL_FACE);
       return;
     case raster::CullMode::Front:
-      glEnable(GL_CULL_FACE);
-      glCullFace(GL_FRONT);
+      gl.core.Enable(GL_CULL_FACE);
+      gl.legacy.CullFace(GL_FRONT);
       return;
     case raster::CullMode::Back:
-      glEnable(GL_CULL_FACE);
-      glCullFace(GL_BACK);
+      gl.core.Enable(GL_CULL_FACE);
+      gl.legacy.CullFace(GL_BACK);
       return;
   }
 }
@@ -265,13 +344,14 @@ void GlDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
     xyz[3 * k + 2] = vertices[k].z;
   }
   impl_->use();
-  glVertexPointer(3, GL_FLOAT, 0, xyz.data());
+  const GlFunctions& gl = impl_->gl;
+  gl.legacy.VertexPointer(3, GL_FLOAT, 0, xyz.data());
   // glDrawElements counts in GLsizei; split a (huge) draw into whole triangles that fit.
   constexpr std::size_t kChunk = static_cast<std::size_t>(INT_MAX / 3) * 3;
   for (std::size_t first = 0; first < indices.size(); first += kChunk) {
     const std::size_t count = std::min(kChunk, indices.size() - first);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
-                   indices.data() + first);
+    gl.legacy.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+                           indices.data() + first);
   }
   impl_->check("drawTriangles");
 }
@@ -282,9 +362,11 @@ std::vector<std::uint8_t> GlDevice::readStencil(const PixelRect& rect) const {
     return {};
   std::vector<std::uint8_t> out(static_cast<std::size_t>(r.area()));
   impl_->use();
+  const GlFunctions& gl = impl_->gl;
   // glReadPixels returns rows from the bottom (y = r.y0) up, the interface's order; neither
   // the scissor nor the write masks affect it.
-  glReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, out.data());
+  gl.core.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
+                     out.data());
   impl_->check("readStencil");
   return out;
 }
@@ -295,10 +377,11 @@ std::vector<std::uint32_t> GlDevice::readDepth(const PixelRect& rect) const {
     return {};
   std::vector<std::uint32_t> out(static_cast<std::size_t>(r.area()));
   impl_->use();
+  const GlFunctions& gl = impl_->gl;
   // GL_UNSIGNED_INT_24_8 hands back the stored 24-bit depth unconverted in the top 24 bits
   // (GL_DEPTH_COMPONENT as GL_UNSIGNED_INT would rescale it to 32 bits and round).
-  glReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
-               out.data());
+  gl.core.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+                     out.data());
   impl_->check("readDepth");
   for (std::uint32_t& word : out)
     word >>= 8;

@@ -70,6 +70,40 @@ namespace recode::backends::detail {
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray) \
   X(PFNGLDRAWARRAYSINSTANCEDPROC, DrawArraysInstanced)
 
+// The compatibility-profile entry points the fixed-function GlDevice needs beyond the core ones:
+// the matrix stack, client vertex arrays, and the fixed state it sets once. glcorearb.h declares
+// no type for the first five.
+using RecodeGlMatrixModeProc = void(APIENTRYP)(GLenum mode);
+using RecodeGlLoadMatrixfProc = void(APIENTRYP)(const GLfloat* m);
+using RecodeGlLoadIdentityProc = void(APIENTRYP)();
+using RecodeGlEnableClientStateProc = void(APIENTRYP)(GLenum array);
+using RecodeGlVertexPointerProc = void(APIENTRYP)(GLint size, GLenum type, GLsizei stride,
+                                                  const void* pointer);
+inline constexpr GLenum kGlModelview = 0x1700;    // GL_MODELVIEW
+inline constexpr GLenum kGlProjection = 0x1701;   // GL_PROJECTION
+inline constexpr GLenum kGlVertexArray = 0x8074;  // GL_VERTEX_ARRAY
+
+#define RECODE_GL_LEGACY_FUNCTIONS(X)                 \
+  X(PFNGLDEPTHRANGEPROC, DepthRange)                  \
+  X(RecodeGlMatrixModeProc, MatrixMode)               \
+  X(RecodeGlLoadMatrixfProc, LoadMatrixf)             \
+  X(RecodeGlLoadIdentityProc, LoadIdentity)           \
+  X(PFNGLPOLYGONMODEPROC, PolygonMode)                \
+  X(PFNGLFRONTFACEPROC, FrontFace)                    \
+  X(PFNGLCOLORMASKPROC, ColorMask)                    \
+  X(PFNGLSTENCILOPPROC, StencilOp)                    \
+  X(RecodeGlEnableClientStateProc, EnableClientState) \
+  X(PFNGLCULLFACEPROC, CullFace)                      \
+  X(RecodeGlVertexPointerProc, VertexPointer)         \
+  X(PFNGLDRAWELEMENTSPROC, DrawElements)              \
+  X(PFNGLCLIPCONTROLPROC, ClipControl)
+
+struct GlLegacyFunctions {
+#define RECODE_GL_MEMBER(type, name) type name = nullptr;
+  RECODE_GL_LEGACY_FUNCTIONS(RECODE_GL_MEMBER)
+#undef RECODE_GL_MEMBER
+};
+
 struct GlCoreFunctions {
 #define RECODE_GL_MEMBER(type, name) type name = nullptr;
   RECODE_GL_CORE_FUNCTIONS(RECODE_GL_MEMBER)
@@ -79,5 +113,7 @@ struct GlCoreFunctions {
 // Resolves every function through the context, which must be current. Throws
 // std::runtime_error naming the first function the context does not provide.
 [[nodiscard]] GlCoreFunctions loadGlCoreFunctions(GlContext& context);
+// The same for the compatibility-profile entry points (the context must be a compatibility one).
+[[nodiscard]] GlLegacyFunctions loadGlLegacyFunctions(GlContext& context);
 
 }  // namespace recode::backends::detail

@@ -7,7 +7,7 @@
 #include "recode/geometry/generators.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
-#if RECODE_HAVE_OSMESA
+#if RECODE_HAVE_GL_DEVICE
 #include "recode/backends/gl_device.hpp"
 #endif
 #if RECODE_HAVE_GL_EXACT
@@ -21,7 +21,7 @@ namespace recode::backends {
 
 namespace {
 
-#if RECODE_HAVE_OSMESA
+#if RECODE_HAVE_GL_DEVICE
 constexpr bool kGlBuilt = true;
 #else
 constexpr bool kGlBuilt = false;
@@ -41,8 +41,9 @@ constexpr std::array<DeviceInfo, 4> kDevices = {{
     {DeviceKind::Cpu, "cpu", "the CPU reference (raster::CpuDevice): the contract's bits", true,
      true, ""},
     {DeviceKind::Gl, "gl",
-     "fixed-function OpenGL on OSMesa (GlDevice): the same commands, the driver's float depth",
-     false, kGlBuilt, "install libosmesa6-dev and configure with -DRECODE_WITH_OSMESA=ON"},
+     "fixed-function OpenGL on OSMesa or EGL (GlDevice): the same commands, the driver's float "
+     "depth",
+     false, kGlBuilt, "install libosmesa6-dev or libegl-dev and reconfigure"},
     {DeviceKind::GlExact, "gl-exact",
      "OpenGL 4.5 shaders that apply the contract (GlExactDevice), on EGL or OSMesa", true,
      kGlExactBuilt, "install libegl-dev or libosmesa6-dev and reconfigure"},
@@ -110,7 +111,7 @@ std::unique_ptr<raster::DepthStencilDevice> makeDevice(DeviceKind kind, int widt
   switch (kind) {
     case DeviceKind::Cpu:
       return std::make_unique<raster::CpuDevice>(width, height);
-#if RECODE_HAVE_OSMESA
+#if RECODE_HAVE_GL_DEVICE
     case DeviceKind::Gl:
       return std::make_unique<GlDevice>(width, height);
 #endif

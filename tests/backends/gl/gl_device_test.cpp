@@ -1,6 +1,7 @@
-// GlDevice on its own (OSMesa, llvmpipe): every piece of state, the read-back orientation, the
-// errors. Expected values are worked out by hand from GL's rules (docs/rasterization.md,
-// section 6), with constant-depth quads so that no depth rounding is involved.
+// GlDevice on its own: every piece of state, the read-back orientation, the errors. Expected
+// values are worked out by hand from GL's rules (docs/rasterization.md, section 6), with
+// constant-depth quads so that no depth rounding is involved. Built once per context platform
+// (RECODE_TEST_GL_PLATFORM: OsMesa, or Egl with its framebuffer object), test names alike.
 
 #include <catch2/catch.hpp>
 
@@ -17,7 +18,13 @@ using namespace recode::raster;
 using recode::backends::GlDevice;
 namespace backends = recode::backends;
 
+#ifndef RECODE_TEST_GL_PLATFORM
+#define RECODE_TEST_GL_PLATFORM OsMesa
+#endif
+
 namespace {
+
+constexpr backends::GlPlatform kPlatform = backends::GlPlatform::RECODE_TEST_GL_PLATFORM;
 
 // A rectangle [x0, x1) x [y0, y1) drawn as two counter-clockwise triangles at depth z. Edges
 // on pixel boundaries, so exactly the pixels inside are covered.
@@ -58,7 +65,7 @@ constexpr std::uint32_t kThreeQuarters = 12582911;
 }  // namespace
 
 TEST_CASE("GL device starts cleared to depth 1 and stencil 0", "[gl]") {
-  GlDevice dev(7, 5);
+  GlDevice dev(7, 5, kPlatform);
   CHECK(dev.width() == 7);
   CHECK(dev.height() == 5);
   CHECK(dev.renderer().find("llvmpipe") != std::string::npos);
@@ -73,7 +80,7 @@ TEST_CASE("GL device starts cleared to depth 1 and stencil 0", "[gl]") {
 }
 
 TEST_CASE("GL read-backs are row-major from the bottom row up", "[gl]") {
-  GlDevice dev(16, 8);
+  GlDevice dev(16, 8, kPlatform);
   passOp(dev, StencilOp::Replace, 1);
   // A triangle in the bottom-left corner: pixel centres (i + 0.5, j + 0.5) with
   // x / 4 + y / 2 < 1 are (0,0), (1,0), (2,0) and (0,1); none lies on an edge.
@@ -112,7 +119,7 @@ TEST_CASE("GL depth functions compare incoming with stored depth", "[gl]") {
   };
   for (const Row& row : rows) {
     INFO("depth func " << toString(row.func));
-    GlDevice dev(6, 2);
+    GlDevice dev(6, 2, kPlatform);
     dev.clearDepth(0.5);
     dev.setDepthFunc(row.func);
     dev.setStencilFunc(CompareFunc::Always, 1, 0xFF);
@@ -134,7 +141,7 @@ TEST_CASE("GL depth functions compare incoming with stored depth", "[gl]") {
 }
 
 TEST_CASE("GL depth write mask keeps the depth of passing fragments", "[gl]") {
-  GlDevice dev(4, 4);
+  GlDevice dev(4, 4, kPlatform);
   dev.setDepthFunc(CompareFunc::Less);
   dev.setDepthWriteMask(false);
   passOp(dev, StencilOp::Replace, 3);
@@ -160,7 +167,7 @@ TEST_CASE("GL stencil ops, saturating and wrapping", "[gl]") {
   };
   for (const Row& row : rows) {
     INFO("stencil op " << toString(row.op));
-    GlDevice dev(3, 1);
+    GlDevice dev(3, 1, kPlatform);
     // Stored values per column: 0, 255, 0x5A.
     dev.setScissor({1, 0, 2, 1});
     dev.clearStencil(255);
@@ -175,7 +182,7 @@ TEST_CASE("GL stencil ops, saturating and wrapping", "[gl]") {
 }
 
 TEST_CASE("GL stencil fail, depth fail and depth pass take their own ops", "[gl]") {
-  GlDevice dev(3, 1);
+  GlDevice dev(3, 1, kPlatform);
   dev.clearDepth(0.5);
   dev.clearStencil(10);
   // Column 0: the stencil test fails (ref 10 LESS stored 10 is false). Column 1: the stencil
@@ -192,7 +199,7 @@ TEST_CASE("GL stencil fail, depth fail and depth pass take their own ops", "[gl]
 }
 
 TEST_CASE("GL stencil value mask and write mask", "[gl]") {
-  GlDevice dev(2, 1);
+  GlDevice dev(2, 1, kPlatform);
   dev.setScissor({0, 0, 1, 1});
   dev.clearStencil(0xAF);
   dev.setScissor({1, 0, 2, 1});
@@ -224,7 +231,7 @@ TEST_CASE("GL per-face stencil ops and culling of either winding", "[gl]") {
       {CullMode::None, 1, 0xFF}, {CullMode::Front, 0, 0xFF}, {CullMode::Back, 1, 0}};
   for (const Row& row : rows) {
     INFO("cull " << toString(row.mode));
-    GlDevice dev(4, 2);
+    GlDevice dev(4, 2, kPlatform);
     passOp(dev, StencilOp::Keep);
     dev.setStencilOps(Face::Front, {StencilOp::Keep, StencilOp::Keep, StencilOp::Incr});
     dev.setStencilOps(Face::Back, {StencilOp::Keep, StencilOp::Keep, StencilOp::Invert});
@@ -240,7 +247,7 @@ TEST_CASE("GL per-face stencil ops and culling of either winding", "[gl]") {
 }
 
 TEST_CASE("GL scissor limits draws and clears and is clamped to the framebuffer", "[gl]") {
-  GlDevice dev(8, 8);
+  GlDevice dev(8, 8, kPlatform);
   dev.setScissor({2, 1, 5, 3});
   dev.clearStencil(7);
   dev.clearDepth(0.0);
@@ -273,7 +280,7 @@ TEST_CASE("GL scissor limits draws and clears and is clamped to the framebuffer"
 }
 
 TEST_CASE("GL clears honour the write masks", "[gl]") {
-  GlDevice dev(4, 4);
+  GlDevice dev(4, 4, kPlatform);
   dev.clearStencil(0x50);
   dev.setStencilWriteMask(0x0F);
   dev.clearStencil(0xFF);
@@ -295,7 +302,7 @@ TEST_CASE("GL device snaps vertices to the 1/256 grid itself", "[gl]") {
   // The fill_square example of docs/rasterization.md section 4 with every corner 0.001 pixel
   // off the grid: 0.001 * 256 = 0.256 rounds to 0, so the square is the one with corners
   // on pixel centres 2.5 and 6.5, covering pixels 2..5 in each direction, 16 in all.
-  GlDevice dev(10, 10);
+  GlDevice dev(10, 10, kPlatform);
   passOp(dev, StencilOp::IncrWrap);
   const float lo = 2.5f + 0.001f, hi = 6.5f + 0.001f;
   const WindowVertex v[4] = {{lo, lo, 0.5f}, {hi, lo, 0.5f}, {hi, hi, 0.5f}, {lo, hi, 0.5f}};
@@ -311,11 +318,11 @@ TEST_CASE("GL device snaps vertices to the 1/256 grid itself", "[gl]") {
 }
 
 TEST_CASE("GL device rejects what the CPU device rejects", "[gl][errors]") {
-  CHECK_THROWS_AS(GlDevice(0, 4), std::invalid_argument);
-  CHECK_THROWS_AS(GlDevice(4, -1), std::invalid_argument);
-  CHECK_THROWS_AS(GlDevice(kMaxFramebufferSize + 1, 1), std::invalid_argument);
+  CHECK_THROWS_AS(GlDevice(0, 4, kPlatform), std::invalid_argument);
+  CHECK_THROWS_AS(GlDevice(4, -1, kPlatform), std::invalid_argument);
+  CHECK_THROWS_AS(GlDevice(kMaxFramebufferSize + 1, 1, kPlatform), std::invalid_argument);
 
-  GlDevice dev(4, 4);
+  GlDevice dev(4, 4, kPlatform);
   passOp(dev, StencilOp::IncrWrap);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const WindowVertex good[3] = {{0, 0, 0.5f}, {4, 0, 0.5f}, {0, 4, 0.5f}};
@@ -351,8 +358,8 @@ TEST_CASE("GL device rejects what the CPU device rejects", "[gl][errors]") {
 }
 
 TEST_CASE("several GL devices live side by side, each with its own buffers and state", "[gl]") {
-  GlDevice a(8, 8);
-  GlDevice b(5, 3);
+  GlDevice a(8, 8, kPlatform);
+  GlDevice b(5, 3, kPlatform);
   passOp(a, StencilOp::Replace, 4);
   b.setStencilFunc(CompareFunc::Always, 9, 0xFF);
   b.setStencilOps(Face::Both, {StencilOp::Keep, StencilOp::Keep, StencilOp::Replace});
@@ -367,7 +374,7 @@ TEST_CASE("several GL devices live side by side, each with its own buffers and s
   CHECK(b.readStencil({0, 0, 5, 3}) == std::vector<std::uint8_t>(15, 9));
   CHECK(depthAt(b, 4, 2) == kQuarter);
   {
-    GlDevice c(2, 2);  // created and destroyed between uses of a and b
+    GlDevice c(2, 2, kPlatform);  // created and destroyed between uses of a and b
     drawRect(c, 0, 0, 2, 2, 0.5f);
     CHECK(depthAt(c, 0, 0) == kHalf);
   }

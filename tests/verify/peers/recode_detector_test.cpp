@@ -44,7 +44,7 @@ TEST_CASE("RecodeDetector reports the simulation's contacts as sorted leaf pairs
   CHECK(pairs > 0);
 }
 
-#if RECODE_HAVE_OSMESA
+#if RECODE_HAVE_GL_DEVICE
 TEST_CASE("RECODE on the GL device finds the CPU reference's pairs on whole motions",
           "[bench][recode][gl]") {
   const auto name = GENERATE("comb-translate-aligned", "hierarchy-9");

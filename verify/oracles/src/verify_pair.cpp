@@ -20,7 +20,8 @@ std::string howToBuild(Oracle oracle) {
     case Oracle::Cgal:
       return "install libcgal-dev and configure with -DRECODE_WITH_CGAL=ON";
     case Oracle::Gl:
-      return "install libosmesa6-dev and configure with -DRECODE_WITH_OSMESA=ON";
+      return "install libosmesa6-dev or libegl-dev and configure with -DRECODE_WITH_OSMESA=ON "
+             "or -DRECODE_WITH_EGL=ON";
     case Oracle::GlExact:
       return "install libosmesa6-dev or libegl-dev and configure with -DRECODE_WITH_OSMESA=ON "
              "or -DRECODE_WITH_EGL=ON";
@@ -70,7 +71,7 @@ bool oracleBuilt(Oracle oracle) {
       return false;
 #endif
     case Oracle::Gl:
-#ifdef RECODE_HAVE_OSMESA
+#ifdef RECODE_HAVE_GL_DEVICE
       return true;
 #else
       return false;
@@ -176,10 +177,12 @@ PairVerification PairVerifier::verify(std::string label, const core::TriangleMes
     out.cgalSeconds = secondsSince(start);
   }
 #endif
-#ifdef RECODE_HAVE_OSMESA
+#ifdef RECODE_HAVE_GL_DEVICE
   if (selection_.gl) {
     const auto start = std::chrono::steady_clock::now();
-    out.gl = compareOnGl(a, b, request);
+    GlParityOptions options;
+    options.platform = selection_.glPlatform;
+    out.gl = compareOnGl(a, b, request, options);
     out.glSeconds = secondsSince(start);
   }
 #endif

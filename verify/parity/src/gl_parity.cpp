@@ -336,7 +336,7 @@ GlParityReport compareStreamOnDevices(const raster::CommandStream& stream,
 GlParityReport compareStreamOnGl(const raster::CommandStream& stream,
                                  const GlParityOptions& options) {
   raster::CpuDevice reference(stream.width, stream.height);
-  backends::GlDevice candidate(stream.width, stream.height);
+  backends::GlDevice candidate(stream.width, stream.height, options.platform);
   GlParityReport report = compareStreamOnDevices(stream, reference, candidate, options);
   report.renderer = candidate.renderer();
   return report;

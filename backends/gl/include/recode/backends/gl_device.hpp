@@ -1,8 +1,9 @@
 #pragma once
-// The depth/stencil device on real OpenGL: Mesa's llvmpipe through OSMesa, off screen. It takes
-// the same command stream as raster::CpuDevice, so replaying one stream on both compares the
-// reference with a real GL implementation (recode/verify/gl_parity.hpp). No GL type appears here:
-// the context lives behind a pointer, so moving to EGL on a GPU is a new context class.
+// The depth/stencil device on real OpenGL's fixed-function pipeline, off screen: through OSMesa
+// (Mesa's llvmpipe) or a headless EGL context (Mesa's surfaceless platform, or a GPU driver's EGL
+// device). It takes the same command stream as raster::CpuDevice, so replaying one stream on both
+// compares the reference with a real GL implementation's own depth arithmetic
+// (recode/verify/gl_parity.hpp). No GL type appears here.
 
 #include <cstdint>
 #include <memory>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "recode/backends/gl_platform.hpp"
 #include "recode/raster/render_state_device.hpp"
 
 namespace recode::backends {
@@ -28,7 +30,10 @@ class GlDevice final : public raster::RenderStateDevice {
   // Each device owns its own context and makes it current on the calling thread before every
   // GL call, so several devices may live in one process and be used in turns. A device must be
   // used by one thread at a time (a GL context is current on one thread).
-  GlDevice(int width, int height);
+  // `platform`: OsMesa, Egl (a compatibility-profile context; the device draws into a
+  // framebuffer object of its own), or Auto (OSMesa when this build has it, else EGL). A platform
+  // this build lacks is a std::runtime_error naming what to install.
+  GlDevice(int width, int height, GlPlatform platform = GlPlatform::Auto);
   ~GlDevice() override;
   GlDevice(const GlDevice&) = delete;
   GlDevice& operator=(const GlDevice&) = delete;
@@ -49,10 +54,12 @@ class GlDevice final : public raster::RenderStateDevice {
 
   // GL_RENDERER of the context, e.g. "llvmpipe (LLVM 15, 256 bits)".
   [[nodiscard]] std::string renderer() const;
+  // The platform the context came from (OsMesa or Egl).
+  [[nodiscard]] GlPlatform platform() const;
 
  private:
   void stateChanged(StateChange change, raster::Face face) override;
-  static void applyCullMode(raster::CullMode mode);
+  void applyCullMode(raster::CullMode mode);
 
   struct Impl;
   int width_;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "recode/backends/gl_platform.hpp"
 #include "recode/geometry/mesh.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/command_stream.hpp"
@@ -79,6 +80,9 @@ struct GlParityOptions {
   // every fragment is held to depthTolerance alone.
   bool planeErrorBound = true;
   int maxExamples = 8;
+  // Where the fixed-function device's context comes from (backends::GlDevice): OSMesa, EGL, or
+  // auto (OSMesa when built, else EGL).
+  backends::GlPlatform platform = backends::GlPlatform::Auto;
 };
 
 // Replays `stream` on `reference` and `candidate` (both fresh: depth 1, stencil 0, default
