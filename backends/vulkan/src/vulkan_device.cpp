@@ -200,6 +200,17 @@ struct VulkanDevice::Impl {
     });
   }
 
+  // Clears `aspect` over the scissor's rectangle inside the open rendering (vkCmdClearAttachments:
+  // rasterization order with the draws, no pipeline state, no fragment shading).
+  void clearAttachment(VkCommandBuffer cmd, VkImageAspectFlags aspect,
+                       VkClearDepthStencilValue value) const {
+    VkClearAttachment attachment{};
+    attachment.aspectMask = aspect;
+    attachment.clearValue.depthStencil = value;
+    const VkClearRect rect{framebufferRect(state->scissor), 0, 1};
+    vkCmdClearAttachments(cmd, 1, &attachment, 1, &rect);
+  }
+
   // The interface's depth and stencil state, both faces sharing the compare function, masks
   // and reference and each face its own ops.
   void setDrawState(VkCommandBuffer cmd) const {
@@ -299,21 +310,13 @@ void VulkanDevice::clearDepth(double depth) {
   // The depth write mask applies to clears: with it off, a depth clear changes nothing.
   if (!state_.depthWrite || state_.scissor.empty())
     return;
-  // The contract's quantisation, stored as the shaders store fragment depth, by a rectangle
-  // that passes the depth test always and leaves stencil alone.
+  // The contract's quantisation, stored as the shaders store fragment depth. A clear of the
+  // open rendering: it happens in rasterization order with the draws around it, writes the
+  // depth aspect alone over the scissor's rectangle, and costs no fragment shading (the depth
+  // mask is all or nothing, so no masked clear is needed).
   const float value = static_cast<float>(raster::quantizeDepth(depth)) * kDepthUnit;
   d.render(d.pipelines->clear, value, [&](VkCommandBuffer cmd) {
-    vkCmdSetDepthTestEnable(cmd, VK_TRUE);
-    vkCmdSetDepthWriteEnable(cmd, VK_TRUE);
-    vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_ALWAYS);
-    vkCmdSetStencilTestEnable(cmd, VK_FALSE);
-    // Stencil state is dynamic and must be set even when the test is off.
-    vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
-                      VK_STENCIL_OP_KEEP, VK_COMPARE_OP_ALWAYS);
-    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0);
-    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0);
-    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0);
-    vkCmdDraw(cmd, 4, 1, 0, 0);
+    d.clearAttachment(cmd, VK_IMAGE_ASPECT_DEPTH_BIT, {value, 0});
   });
 }
 
@@ -321,7 +324,14 @@ void VulkanDevice::clearStencil(std::uint8_t value) {
   Impl& d = *impl_;
   if (state_.stencilWriteMask == 0 || state_.scissor.empty())
     return;
-  // REPLACE with the clear value as reference under the device's write mask gives
+  if (state_.stencilWriteMask == 0xFF) {  // every bit written: a clear of the open rendering
+    d.render(d.pipelines->clear, 0.0f, [&](VkCommandBuffer cmd) {
+      d.clearAttachment(cmd, VK_IMAGE_ASPECT_STENCIL_BIT, {0.0f, value});
+    });
+    return;
+  }
+  // vkCmdClearAttachments ignores write masks. REPLACE with the clear value as reference under
+  // the device's write mask gives
   // s = (value & mask) | (s & ~mask), GL's masked clear; depth is not tested, so not written.
   d.render(d.pipelines->clear, 0.0f, [&](VkCommandBuffer cmd) {
     vkCmdSetDepthTestEnable(cmd, VK_FALSE);

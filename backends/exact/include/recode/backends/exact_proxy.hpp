@@ -1,9 +1,11 @@
 #pragma once
 // The CPU half of every exact GPU device (GL and Vulkan): a draw's triangles, validated,
-// snapped and set up as the contract says, become one proxy record per triangle that can touch
-// a pixel. The GPU draws each record as a rectangle over the triangle's candidate pixels and
-// decides coverage and depth itself in the fragment shader (shaders/exact_contract.glsl); the
-// CPU only decides what needs no per-pixel work: facing, culling and zero area.
+// snapped and set up as the contract says, become proxy records, one per triangle that can
+// touch a pixel, or one per band of 4 rows when the triangle's rectangle is tall and much larger
+// than the triangle (a sliver's). The GPU draws each record as a rectangle over candidate pixels
+// and decides coverage and depth itself in the fragment shader (shaders/exact_contract.glsl);
+// the CPU only decides what needs no per-pixel work: facing, culling, zero area, and which
+// columns of a band the triangle can reach.
 
 #include <cstdint>
 #include <span>
@@ -25,10 +27,11 @@ struct ProxyTriangle {
 };
 static_assert(sizeof(ProxyTriangle) == 56, "the shaders read 14 packed 32-bit fields");
 
-// The proxies of one draw in index order, which is the order the GPU must draw them in. Throws
-// std::invalid_argument exactly as CpuDevice does for an invalid draw (raster::checkDraw).
-// Triangles of zero snapped area, culled by state.cull, or whose candidate pixels all lie
-// outside state.scissor give no proxy.
+// The proxies of one draw in index order, which is the order the GPU must draw them in (a
+// triangle's bands are consecutive, bottom up, and share no pixel, so each pixel still meets the
+// triangles in index order, each once). Throws std::invalid_argument exactly as CpuDevice does
+// for an invalid draw (raster::checkDraw). Triangles of zero snapped area, culled by state.cull,
+// or whose candidate pixels all lie outside state.scissor give no proxy.
 [[nodiscard]] std::vector<ProxyTriangle> buildProxyTriangles(
     std::span<const raster::WindowVertex> vertices, std::span<const std::uint32_t> indices,
     const raster::RenderState& state);
