@@ -13,9 +13,11 @@
 
 #include "recode/backends/vulkan_device.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -49,6 +51,71 @@ const detail::ExactPipelines& sharedPipelines() {
 }
 
 constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+
+// A depth/stencil image with its memory and view, of a capacity at least the device's size: the
+// device draws in its first width x height texels (framebuffer rows 0 to height - 1 hold GL rows
+// height - 1 to 0) and never reads or writes beyond them.
+struct ImageSlot {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  int capacityWidth = 0;
+  int capacityHeight = 0;
+};
+
+// Images of devices that are gone, for the next devices: a run's pair frames change size as
+// blocks move, and a new image costs its allocation and the first touch of every page (on
+// lavapipe most of a small pair test's time), where taking a kept one costs a clear.
+class ImageCache {
+ public:
+  // The smallest kept image that holds width x height, if any.
+  std::optional<ImageSlot> take(int width, int height) {
+    const std::lock_guard<std::mutex> hold(lock_);
+    auto best = slots_.end();
+    for (auto it = slots_.begin(); it != slots_.end(); ++it) {
+      if (it->capacityWidth < width || it->capacityHeight < height)
+        continue;
+      if (best == slots_.end() || area(*it) < area(*best))
+        best = it;
+    }
+    if (best == slots_.end())
+      return std::nullopt;
+    const ImageSlot slot = *best;
+    slots_.erase(best);
+    return slot;
+  }
+
+  // Keeps the image, unless kMaxKept are kept or it is larger than kMaxKeptPixels: then
+  // returns it, for the caller to destroy.
+  std::optional<ImageSlot> give(const ImageSlot& slot) {
+    const std::lock_guard<std::mutex> hold(lock_);
+    if (slots_.size() >= kMaxKept || area(slot) > kMaxKeptPixels)
+      return slot;
+    slots_.push_back(slot);
+    return std::nullopt;
+  }
+
+  static constexpr std::size_t kMaxKept = 16;
+  static constexpr long long kMaxKeptPixels = 4096LL * 4096LL;
+
+ private:
+  static long long area(const ImageSlot& s) {
+    return static_cast<long long>(s.capacityWidth) * s.capacityHeight;
+  }
+  std::mutex lock_;
+  std::vector<ImageSlot> slots_;
+};
+
+ImageCache& imageCache() {
+  static ImageCache* cache = new ImageCache();  // never destroyed, as the context
+  return *cache;
+}
+
+// New images are made a little larger than asked for, so that the next sizes fit them.
+int capacityFor(int size) {
+  constexpr int kStep = 64;
+  return std::min((size + kStep - 1) / kStep * kStep, raster::kMaxFramebufferSize);
+}
 
 // The contract's 24-bit depths from the stored floats. Every stored value is some q 2^-24
 // (shaders and clears write nothing else); anything else means the driver converted depth on
@@ -95,9 +162,10 @@ struct VulkanDevice::Impl {
     } count{*this, before};
     return call();
   }
-  VkImage image = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
+  ImageSlot slot;
+  VkImage image = VK_NULL_HANDLE;  // slot's, named for the many uses
   VkImageView view = VK_NULL_HANDLE;
+  bool reused = false;  // the slot came from imageCache(): in GENERAL layout already
 
   VkDevice device() const { return context->device(); }
 
@@ -110,11 +178,26 @@ struct VulkanDevice::Impl {
   // The image lives in GENERAL layout for its whole life, so attachments and transfers need no
   // layout transitions; the recorder's barriers order the commands.
   void createImage() {
+    if (std::optional<ImageSlot> kept = imageCache().take(width, height)) {
+      slot = *kept;
+      reused = true;
+    } else {
+      slot = makeImage(capacityFor(width), capacityFor(height));
+    }
+    image = slot.image;
+    view = slot.view;
+  }
+
+  ImageSlot makeImage(int capacityWidth, int capacityHeight) const {
+    ImageSlot made;
+    made.capacityWidth = capacityWidth;
+    made.capacityHeight = capacityHeight;
     VkImageCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = detail::kExactDepthStencilFormat;
-    info.extent = {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height), 1};
+    info.extent = {static_cast<std::uint32_t>(capacityWidth),
+                   static_cast<std::uint32_t>(capacityHeight), 1};
     info.mipLevels = 1;
     info.arrayLayers = 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -123,24 +206,29 @@ struct VulkanDevice::Impl {
                  VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    vkCheck(vkCreateImage(device(), &info, nullptr, &image), "vkCreateImage");
+    vkCheck(vkCreateImage(device(), &info, nullptr, &made.image), "vkCreateImage");
     VkMemoryRequirements requirements{};
-    vkGetImageMemoryRequirements(device(), image, &requirements);
-    memory = context->allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    vkCheck(vkBindImageMemory(device(), image, memory, 0), "vkBindImageMemory");
+    vkGetImageMemoryRequirements(device(), made.image, &requirements);
+    made.memory = context->allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    vkCheck(vkBindImageMemory(device(), made.image, made.memory, 0), "vkBindImageMemory");
     VkImageViewCreateInfo viewInfo{};
     viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-    viewInfo.image = image;
+    viewInfo.image = made.image;
     viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = detail::kExactDepthStencilFormat;
     viewInfo.subresourceRange = {kBothAspects, 0, 1, 0, 1};
-    vkCheck(vkCreateImageView(device(), &viewInfo, nullptr, &view), "vkCreateImageView");
+    vkCheck(vkCreateImageView(device(), &viewInfo, nullptr, &made.view), "vkCreateImageView");
+    return made;
   }
 
-  // GENERAL layout, then the start state of CpuDevice: depth 2^24 - 1 (stored as
-  // (2^24 - 1) 2^-24), stencil 0 everywhere.
+  // GENERAL layout (a kept image is in it already), then the start state of CpuDevice: depth
+  // 2^24 - 1 (stored as (2^24 - 1) 2^-24), stencil 0 everywhere.
   void initialiseImage() {
     recorder->record([&](VkCommandBuffer cmd) {
+      if (reused) {
+        clearWholeImage(cmd);
+        return;
+      }
       VkImageMemoryBarrier barrier{};
       barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
       barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -152,10 +240,14 @@ struct VulkanDevice::Impl {
       barrier.subresourceRange = {kBothAspects, 0, 1, 0, 1};
       vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                            0, 0, nullptr, 0, nullptr, 1, &barrier);
-      VkClearDepthStencilValue value{static_cast<float>(raster::kDepthMax) * kDepthUnit, 0};
-      const VkImageSubresourceRange range{kBothAspects, 0, 1, 0, 1};
-      vkCmdClearDepthStencilImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &value, 1, &range);
+      clearWholeImage(cmd);
     });
+  }
+
+  void clearWholeImage(VkCommandBuffer cmd) const {
+    const VkClearDepthStencilValue value{static_cast<float>(raster::kDepthMax) * kDepthUnit, 0};
+    const VkImageSubresourceRange range{kBothAspects, 0, 1, 0, 1};
+    vkCmdClearDepthStencilImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &value, 1, &range);
   }
 
   // Records `body` as draws of the open rendering over the whole image (vulkan_recorder.hpp),
@@ -266,9 +358,11 @@ struct VulkanDevice::Impl {
       recorder->finish();
     } catch (...) {  // NOLINT(bugprone-empty-catch): a destructor must not throw
     }
-    vkDestroyImageView(device(), view, nullptr);
-    vkDestroyImage(device(), image, nullptr);
-    vkFreeMemory(device(), memory, nullptr);
+    if (std::optional<ImageSlot> unkept = imageCache().give(slot)) {
+      vkDestroyImageView(device(), unkept->view, nullptr);
+      vkDestroyImage(device(), unkept->image, nullptr);
+      vkFreeMemory(device(), unkept->memory, nullptr);
+    }
   }
 };
 
