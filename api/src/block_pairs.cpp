@@ -2,8 +2,15 @@
 #include "block_pairs.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <utility>
+
+#include <oneapi/tbb/info.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
 
 #include "recode/pair/pair_batch.hpp"
 #include "recode/refine/adaptive.hpp"
@@ -23,11 +30,15 @@ void mergeContact(core::ContactRegion& into, const core::ContactRegion& from) {
   into.collapsedPixels += from.collapsedPixels;
 }
 
-// One block pair in a mode that is not a plain collidePair.
+// One block pair in the request's mode.
 BlockPairAnswer decideOne(raster::DepthStencilDevice& device, const PlannedBlockPair& p,
                           core::PairMode mode) {
   BlockPairAnswer out;
   out.frame = p.request.frame;
+  if (mode == core::PairMode::Reference || mode == core::PairMode::SkipApart) {
+    out.pair = core::collidePair(device, p.blockA.block, p.blockB.block, p.request);
+    return out;
+  }
   if (mode == core::PairMode::Conservative) {
     out.pair =
         core::collideConservative(device, p.blockA.block.mesh(), p.blockB.block.mesh(), p.request)
@@ -65,6 +76,10 @@ PlannedBlockPair::PlannedBlockPair(const CollisionObject& a, const CollisionObje
 std::size_t BlockPairPlan::add(const CollisionObject& a, const CollisionObject& b,
                                const CollisionRequest& request, CollisionResult& result) {
   result.clear();
+  if (request.threads < 0)
+    throw std::invalid_argument("CollisionRequest::threads is " + std::to_string(request.threads) +
+                                ": give 1 (the caller's thread), 0 (every hardware thread) or "
+                                "a count");
   firstOfObjectPair_.push_back(pairs_.size());
   std::vector<core::LeafPair> leafPairs;
   result.boxTests = core::descendPair(a.tree(), b.tree(), leafPairs);
@@ -90,8 +105,22 @@ std::size_t BlockPairPlan::add(const CollisionObject& a, const CollisionObject& 
   return firstOfObjectPair_.size() - 1;
 }
 
-std::vector<BlockPairAnswer> BlockPairPlan::decide(core::PairMode mode, DevicePool& devices) const {
+std::vector<BlockPairAnswer> BlockPairPlan::decide(core::PairMode mode, DevicePool& devices,
+                                                   int threads, double* setupUs) const {
   std::vector<BlockPairAnswer> answers(pairs_.size());
+  if (devices.makesCpuDevices() && threads != 1 && pairs_.size() > 1) {
+    decideOnThreads(mode, threads, answers, setupUs);
+    return answers;
+  }
+  const struct AddSetup {
+    const DevicePool& pool;
+    double before;
+    double* sum;
+    ~AddSetup() {
+      if (sum)
+        *sum += pool.setupUs() - before;
+    }
+  } addSetup{devices, devices.setupUs(), setupUs};
   const bool batched = mode == core::PairMode::Reference || mode == core::PairMode::SkipApart;
   if (!batched) {
     for (std::size_t i = 0; i < pairs_.size(); ++i) {
@@ -126,6 +155,37 @@ std::vector<BlockPairAnswer> BlockPairPlan::decide(core::PairMode mode, DevicePo
     first = end;
   }
   return answers;
+}
+
+void BlockPairPlan::decideOnThreads(core::PairMode mode, int threads,
+                                    std::vector<BlockPairAnswer>& answers, double* setupUs) const {
+  const int concurrency = threads > 0 ? std::min(threads, tbb::info::default_concurrency())
+                                      : tbb::info::default_concurrency();
+  std::vector<std::exception_ptr> errors(pairs_.size());
+  std::vector<double> setup(pairs_.size(), 0.0);
+  tbb::task_arena arena(concurrency);
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, pairs_.size(), [&](std::size_t i) {
+      // CPU devices of this thread's own (a device is used by one thread at a time); which
+      // device of a size decides a pair changes nothing in its answer.
+      thread_local DevicePool cpuDevices;
+      try {
+        const core::FrameSpec& f = pairs_[i].request.frame;
+        const double before = cpuDevices.setupUs();
+        raster::DepthStencilDevice& device = cpuDevices.device(f.width, f.height);
+        setup[i] = cpuDevices.setupUs() - before;
+        answers[i] = decideOne(device, pairs_[i], mode);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    });
+  });
+  for (const std::exception_ptr& error : errors)  // the first in plan order, as in turn
+    if (error)
+      std::rethrow_exception(error);
+  if (setupUs)
+    for (const double us : setup)
+      *setupUs += us;
 }
 
 void BlockPairPlan::merge(std::size_t index, std::vector<BlockPairAnswer>& answers,

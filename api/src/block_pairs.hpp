@@ -43,8 +43,12 @@ class BlockPairPlan {
   std::size_t add(const CollisionObject& a, const CollisionObject& b,
                   const CollisionRequest& request, CollisionResult& result);
 
-  // Decides every planned block pair on the pool's devices; answers in plan order.
-  [[nodiscard]] std::vector<BlockPairAnswer> decide(core::PairMode mode, DevicePool& devices) const;
+  // Decides every planned block pair on the pool's devices; answers in plan order. With CPU
+  // devices and `threads` other than 1 (CollisionRequest::threads), the pairs are decided on
+  // that many oneTBB threads, each with CPU devices of its own, into their slots; the answers
+  // are the same. Adds the time spent making devices to *setupUs.
+  [[nodiscard]] std::vector<BlockPairAnswer> decide(core::PairMode mode, DevicePool& devices,
+                                                    int threads, double* setupUs) const;
 
   // Merges object pair `index`'s answers (from decide) into its result.
   void merge(std::size_t index, std::vector<BlockPairAnswer>& answers,
@@ -53,6 +57,9 @@ class BlockPairPlan {
   [[nodiscard]] std::size_t blockPairs() const { return pairs_.size(); }
 
  private:
+  void decideOnThreads(core::PairMode mode, int threads, std::vector<BlockPairAnswer>& answers,
+                       double* setupUs) const;
+
   std::deque<PlannedBlockPair> pairs_;
   std::vector<std::size_t> firstOfObjectPair_;  // index into pairs_, one per add, then the end
 };

@@ -12,12 +12,13 @@ bool collide(const CollisionObject& a, const CollisionObject& b, const Collision
              CollisionResult& result, DevicePool& devices) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
-  const double setupBefore = devices.setupUs();
   detail::BlockPairPlan plan;
   const std::size_t index = plan.add(a, b, request, result);
-  std::vector<detail::BlockPairAnswer> answers = plan.decide(request.mode, devices);
+  double setupUs = 0.0;
+  std::vector<detail::BlockPairAnswer> answers =
+      plan.decide(request.mode, devices, request.threads, &setupUs);
   plan.merge(index, answers, result);
-  result.deviceSetupUs = devices.setupUs() - setupBefore;
+  result.deviceSetupUs = setupUs;
   result.collisionUs = std::chrono::duration<double, std::micro>(Clock::now() - start).count() -
                        result.deviceSetupUs;
   return result.collide;

@@ -56,7 +56,6 @@ void CollisionManager::collide(
   // submission round on a deferring GPU device), then each pair's result is merged and reported
   // in the broad phase's order: the same results as collide() on each pair in turn.
   const Clock::time_point start = Clock::now();
-  const double setupBefore = devices_.setupUs();
   const std::vector<std::pair<int, int>> candidates = broadPhase_.update(boxes);
   std::vector<CollisionResult> results(candidates.size());
   detail::BlockPairPlan plan;
@@ -65,8 +64,9 @@ void CollisionManager::collide(
     plan.add(*entries_[static_cast<std::size_t>(candidates[k].first)].object,
              *entries_[static_cast<std::size_t>(candidates[k].second)].object, request, results[k]);
   }
-  std::vector<detail::BlockPairAnswer> answers = plan.decide(request.mode, devices_);
-  const double setupUs = devices_.setupUs() - setupBefore;
+  double setupUs = 0.0;
+  std::vector<detail::BlockPairAnswer> answers =
+      plan.decide(request.mode, devices_, request.threads, &setupUs);
   // Each pair's share of the call's time, by its block pairs (each pair at least one share).
   const double callUs =
       std::chrono::duration<double, std::micro>(Clock::now() - start).count() - setupUs;

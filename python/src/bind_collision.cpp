@@ -109,13 +109,20 @@ int resolutionFrom(int resolution) {
   return resolution;
 }
 
+int threadsFrom(int threads) {
+  if (threads < 0)
+    throw py::value_error("threads is " + std::to_string(threads) +
+                          ": give 1 (the caller's thread), 0 (every hardware thread) or a count");
+  return threads;
+}
+
 std::string repr(const CollisionRequest& r) {
   return "CollisionRequest(pixel_size=" +
          (r.pixelSize ? py::str(py::float_(*r.pixelSize)).cast<std::string>() : "None") +
          ", resolution=" + std::to_string(r.resolution) + ", mor='" + morName(r.mor) + "', axis='" +
          axisName(r.axis) + "', contact=" + (r.contact ? "True" : "False") +
          ", normal=" + (r.normal ? "True" : "False") + ", mode='" +
-         std::string(core::toString(r.mode)) + "')";
+         std::string(core::toString(r.mode)) + "', threads=" + std::to_string(r.threads) + ")";
 }
 
 // The case map of the result's one block pair in contact; None without contact.
@@ -167,22 +174,23 @@ void bindCollision(py::module_& m) {
 
   py::class_<CollisionRequest>(m, "CollisionRequest",
                                "What collide() measures and how finely (docs/api.md).")
-      .def(
-          py::init([](std::optional<double> pixelSize, int resolution, const std::string& mor,
-                      const std::string& axis, bool contact, bool normal, const std::string& mode) {
-            CollisionRequest r;
-            r.pixelSize = pixelSizeFrom(pixelSize);
-            r.resolution = resolutionFrom(resolution);
-            r.mor = morFrom(mor);
-            r.axis = axisFrom(axis);
-            r.contact = contact;
-            r.normal = normal;
-            r.mode = modeFrom(mode);
-            return r;
-          }),
-          py::kw_only(), py::arg("pixel_size") = py::none(), py::arg("resolution") = 256,
-          py::arg("mor") = "min", py::arg("axis") = "auto", py::arg("contact") = true,
-          py::arg("normal") = false, py::arg("mode") = "reference")
+      .def(py::init([](std::optional<double> pixelSize, int resolution, const std::string& mor,
+                       const std::string& axis, bool contact, bool normal, const std::string& mode,
+                       int threads) {
+             CollisionRequest r;
+             r.pixelSize = pixelSizeFrom(pixelSize);
+             r.resolution = resolutionFrom(resolution);
+             r.mor = morFrom(mor);
+             r.axis = axisFrom(axis);
+             r.contact = contact;
+             r.normal = normal;
+             r.mode = modeFrom(mode);
+             r.threads = threadsFrom(threads);
+             return r;
+           }),
+           py::kw_only(), py::arg("pixel_size") = py::none(), py::arg("resolution") = 256,
+           py::arg("mor") = "min", py::arg("axis") = "auto", py::arg("contact") = true,
+           py::arg("normal") = false, py::arg("mode") = "reference", py::arg("threads") = 1)
       .def_property(
           "pixel_size", [](const CollisionRequest& r) { return r.pixelSize; },
           [](CollisionRequest& r, std::optional<double> s) { r.pixelSize = pixelSizeFrom(s); },
@@ -209,6 +217,11 @@ void bindCollision(py::module_& m) {
           [](CollisionRequest& r, const std::string& s) { r.mode = modeFrom(s); },
           "'reference' (default, the paper's algorithm), 'adaptive', 'conservative' or "
           "'skip-apart' (the reference's answer; block pairs proven apart are not drawn).")
+      .def_property(
+          "threads", [](const CollisionRequest& r) { return r.threads; },
+          [](CollisionRequest& r, int n) { r.threads = threadsFrom(n); },
+          "Threads a call's block pairs may be decided on, on the CPU device: 1 (default) the "
+          "caller's, 0 every hardware thread, N at most N; the results are the same.")
       .def("__repr__", &repr);
 
   py::class_<core::FrameSpec>(m, "Frame", "The frame a block pair was drawn in.")

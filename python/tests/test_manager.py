@@ -58,3 +58,21 @@ def test_removed_ids_are_not_reused():
     assert manager.collide(REQUEST) == []
     assert manager.add(objects[1]) == 3
     assert pairs(manager.collide(REQUEST)) == [(0, 3), (2, 3)]
+
+
+def test_threads_change_nothing_but_the_time():
+    manager, objects, ids = row_of_boxes()
+    in_turn = manager.collide(recode.CollisionRequest(pixel_size=0.05))
+    on_threads = manager.collide(recode.CollisionRequest(pixel_size=0.05, threads=0))
+    assert pairs(in_turn) == pairs(on_threads)
+    for a, b in zip(in_turn, on_threads):
+        assert a.result.interfering_pixels == b.result.interfering_pixels
+        assert np.array_equal(a.result.contact.points, b.result.contact.points)
+    request = recode.CollisionRequest(threads=4)
+    assert request.threads == 4 and "threads=4" in repr(request)
+    try:
+        recode.CollisionRequest(threads=-1)
+    except ValueError as e:
+        assert "threads is -1" in str(e)
+    else:
+        raise AssertionError("threads=-1 was accepted")

@@ -5,6 +5,7 @@
 
 #include "recode/api/manager.hpp"
 #include "recode/geometry/generators.hpp"
+#include "recode/pair/pair_result_compare.hpp"
 
 namespace {
 
@@ -58,4 +59,48 @@ TEST_CASE("the manager finds the pairs in contact with collide()'s results") {
     CHECK(r.collide);
   });
   CHECK(calls == 4);  // (0,1), (3,4), (0,6), (1,6)
+}
+
+TEST_CASE("the manager's block pairs on threads give the answers decided in turn") {
+  // Two rows of spheres, neighbours overlapping, several block pairs per call; every mode.
+  std::vector<std::shared_ptr<CollisionObject>> objects;
+  for (int i = 0; i < 8; ++i)
+    objects.push_back(sphereAt(0.8 * (i % 4), 0.7 * (i / 4)));
+  for (const core::PairMode mode : {core::PairMode::Reference, core::PairMode::Conservative,
+                                    core::PairMode::Adaptive, core::PairMode::SkipApart}) {
+    INFO("mode " << core::toString(mode));
+    CollisionRequest request;
+    request.pixelSize = 0.02;
+    request.mode = mode;
+    request.normal = true;
+    CollisionManager inTurn, onThreads;
+    for (const auto& object : objects) {
+      (void)inTurn.add(object);
+      (void)onThreads.add(object);
+    }
+    const std::vector<ObjectContact> expected = inTurn.collide(request);
+    request.threads = 0;
+    const std::vector<ObjectContact> got = onThreads.collide(request);
+    REQUIRE(expected.size() >= 8);
+    REQUIRE(got.size() == expected.size());
+    for (std::size_t k = 0; k < got.size(); ++k) {
+      CHECK(got[k].a == expected[k].a);
+      CHECK(got[k].b == expected[k].b);
+      REQUIRE(got[k].result.contacts.size() == expected[k].result.contacts.size());
+      for (std::size_t c = 0; c < got[k].result.contacts.size(); ++c)
+        CHECK(core::firstDifference(got[k].result.contacts[c].pair,
+                                    expected[k].result.contacts[c].pair)
+                  .value_or("") == "");
+      CHECK(got[k].result.contact.points == expected[k].result.contact.points);
+    }
+  }
+}
+
+TEST_CASE("a negative thread count is refused") {
+  CollisionRequest request;
+  request.threads = -2;
+  CollisionResult result;
+  CHECK_THROWS_WITH(collide(*sphereAt(0, 0), *sphereAt(0.5, 0), request, result),
+                    "CollisionRequest::threads is -2: give 1 (the caller's thread), 0 (every "
+                    "hardware thread) or a count");
 }

@@ -86,6 +86,12 @@ struct CollisionRequest {
   // Conservative, both blocks grown by a pixel across and 4 depth steps along the view, so no
   // contact is missed (the `pair` is that of the grown blocks).
   core::PairMode mode = core::PairMode::Reference;
+  // Threads the block pairs of a call may be decided on when they are drawn on CPU devices (a
+  // DevicePool without a factory; oneTBB, as `recode run --threads`): 1, the default, decides
+  // them in turn on the caller's thread; 0 on every hardware thread; N on at most N. The results
+  // are the same whatever the count; only times differ. A pool with a factory (a GPU device)
+  // draws on the caller's thread.
+  int threads = 1;
 };
 
 // One pair of blocks whose pixels interfere.

@@ -34,6 +34,8 @@ class DevicePool {
   [[nodiscard]] double setupUs() const { return setupUs_; }
   // The number of devices made: one per frame size seen.
   [[nodiscard]] std::size_t size() const { return devices_.size(); }
+  // Whether the pool makes raster::CpuDevices (it was given no factory).
+  [[nodiscard]] bool makesCpuDevices() const { return !factory_; }
 
  private:
   // Without a factory: the spare CpuDevice best reshaped to this size, else a new one.
