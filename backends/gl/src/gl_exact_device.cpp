@@ -122,6 +122,10 @@ struct SharedGl {
     gl.VertexAttribDivisor(3, 1);
     gl.EnableVertexAttribArray(3);
     integers(4, 1, offsetof(ProxyTriangle, frontFacing));
+    gl.VertexAttribIPointer(5, 4, GL_UNSIGNED_INT, stride,
+                            offset(offsetof(ProxyTriangle, slopeBits)));
+    gl.VertexAttribDivisor(5, 1);
+    gl.EnableVertexAttribArray(5);
   }
 
   // What no device changes: both tests always on ("off" is ALWAYS), culling done on the CPU

@@ -14,6 +14,7 @@ layout(location = 1) in ivec4 fixedV0V1;  // snapped (X0, Y0, X1, Y1), 24.8 fixe
 layout(location = 2) in ivec2 fixedV2;    // snapped (X2, Y2)
 layout(location = 3) in vec3 vertexZ;     // z0, z1, z2 as submitted
 layout(location = 4) in int frontFacing;  // sign of the snapped area: 1 front, 0 back
+layout(location = 5) in uvec4 slopeBits;  // dzdx, dzdy as set up on the CPU, low words first
 
 layout(push_constant) uniform Frame {
   vec2 framebufferSize;
@@ -37,12 +38,11 @@ void main() {
   vec2 corner = vec2(right ? pixelRect.z : pixelRect.x, top ? pixelRect.w : pixelRect.y);
   gl_Position = vec4(corner / frame.framebufferSize * 2.0 - 1.0, 0.0, 1.0);
 
-  i64vec2 v0 = i64vec2(fixedV0V1.xy);
-  i64vec2 v1 = i64vec2(fixedV0V1.zw);
-  i64vec2 v2 = i64vec2(fixedV2);
   triV0V1 = fixedV0V1;
   triV2 = fixedV2;
   triFront = frontFacing;
   planeZ0 = double(vertexZ.x);
-  planeSlopes = depthSlopes(v0, v1, v2, vertexZ);
+  // The slopes come set up (backends::buildProxyTriangles, the contract's operation order and
+  // correctly rounded division): passed on bit for bit.
+  planeSlopes = dvec2(packDouble2x32(slopeBits.xy), packDouble2x32(slopeBits.zw));
 }

@@ -41,12 +41,13 @@ constexpr std::array kDynamicStates = {
 // The proxy records as per-instance attributes, in the layout of ProxyTriangle.
 struct ProxyInput {
   VkVertexInputBindingDescription binding{0, sizeof(ProxyTriangle), VK_VERTEX_INPUT_RATE_INSTANCE};
-  std::array<VkVertexInputAttributeDescription, 5> attributes{{
+  std::array<VkVertexInputAttributeDescription, 6> attributes{{
       {0, 0, VK_FORMAT_R32G32B32A32_SINT, offsetof(ProxyTriangle, pixelRect)},
       {1, 0, VK_FORMAT_R32G32B32A32_SINT, offsetof(ProxyTriangle, fixedV0V1)},
       {2, 0, VK_FORMAT_R32G32_SINT, offsetof(ProxyTriangle, fixedV2)},
       {3, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ProxyTriangle, z)},
       {4, 0, VK_FORMAT_R32_SINT, offsetof(ProxyTriangle, frontFacing)},
+      {5, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(ProxyTriangle, slopeBits)},
   }};
 };
 

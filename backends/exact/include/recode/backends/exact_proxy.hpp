@@ -24,8 +24,12 @@ struct ProxyTriangle {
   std::int32_t fixedV2[2];    // snapped X2, Y2
   float z[3];                 // z0, z1, z2 as submitted, in submitted order
   std::int32_t frontFacing;   // 1 when the snapped area is positive, else 0
+  // The depth plane's slopes dzdx, dzdy (per sub-pixel unit, anchored at the first submitted
+  // vertex), set up on the CPU exactly as raster::setupTriangle sets them up: each double's
+  // bits as two 32-bit words, low word first (GLSL's packDouble2x32).
+  std::uint32_t slopeBits[4];
 };
-static_assert(sizeof(ProxyTriangle) == 56, "the shaders read 14 packed 32-bit fields");
+static_assert(sizeof(ProxyTriangle) == 72, "the shaders read 18 packed 32-bit fields");
 
 // The proxies of one draw in index order, which is the order the GPU must draw them in (a
 // triangle's bands are consecutive, bottom up, and share no pixel, so each pixel still meets the
