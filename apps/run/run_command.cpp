@@ -253,9 +253,9 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                   "as cpu, timing aside; a GPU-API device draws from one thread, whatever "
                   "--threads says)");
   cmd->add_flag("--per-pair", o->perPair,
-                "on a device that defers its commands (vulkan), run each pair test on its own "
-                "instead of a frame's tests as one batch (one submission a frame): the same "
-                "output, for comparing the two");
+                "on a device that defers its commands (vulkan, gl-exact), run each pair test on "
+                "its own instead of a frame's tests as one batch (one or two submissions a "
+                "frame): the same output, for comparing the two");
   addViewAxisOption(*cmd, o->viewAxis);
   cmd->add_option("--max-pair-tests", o->maxPairTests,
                   "stop with an error when a frame lists more than N pair tests (default " +
