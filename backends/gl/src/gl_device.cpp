@@ -155,6 +155,8 @@ struct GlDevice::Impl {
   GLuint framebuffer = 0;  // on EGL: the device's own; on OSMesa 0, the context's
   GLuint depthStencil = 0;
   std::vector<GLfloat> vertexScratch;  // snapped x, y, z per vertex, reused between draws
+  // Each read-back waits for every command before it (glReadPixels into client memory).
+  raster::TransferCounters transfers;
 
   // Makes the context current; every public entry point starts here.
   void use() { context->makeCurrent(); }
@@ -368,6 +370,8 @@ std::vector<std::uint8_t> GlDevice::readStencil(const PixelRect& rect) const {
   gl.core.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
                      out.data());
   impl_->check("readStencil");
+  ++impl_->transfers.submissions;
+  impl_->transfers.readbackBytes += static_cast<long long>(out.size());
   return out;
 }
 
@@ -383,9 +387,15 @@ std::vector<std::uint32_t> GlDevice::readDepth(const PixelRect& rect) const {
   gl.core.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
                      out.data());
   impl_->check("readDepth");
+  ++impl_->transfers.submissions;
+  impl_->transfers.readbackBytes += static_cast<long long>(4 * out.size());
   for (std::uint32_t& word : out)
     word >>= 8;
   return out;
+}
+
+raster::TransferCounters GlDevice::transfers() const {
+  return impl_->transfers;
 }
 
 }  // namespace recode::backends

@@ -51,6 +51,8 @@ class GlDevice final : public raster::RenderStateDevice {
                      std::span<const std::uint32_t> indices) override;
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
   [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override;
+  // Each read-back is a wait for the commands before it: one submission, and its bytes.
+  [[nodiscard]] raster::TransferCounters transfers() const override;
 
   // GL_RENDERER of the context, e.g. "llvmpipe (LLVM 15, 256 bits)".
   [[nodiscard]] std::string renderer() const;
