@@ -28,6 +28,7 @@
 #include "recode/raster/fixed_point.hpp"
 #include "vulkan_context.hpp"
 #include "vulkan_enums.hpp"
+#include "vulkan_image_cache.hpp"
 #include "vulkan_pipeline.hpp"
 #include "vulkan_recorder.hpp"
 
@@ -51,71 +52,6 @@ const detail::ExactPipelines& sharedPipelines() {
 }
 
 constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
-
-// A depth/stencil image with its memory and view, of a capacity at least the device's size: the
-// device draws in its first width x height texels (framebuffer rows 0 to height - 1 hold GL rows
-// height - 1 to 0) and never reads or writes beyond them.
-struct ImageSlot {
-  VkImage image = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VkImageView view = VK_NULL_HANDLE;
-  int capacityWidth = 0;
-  int capacityHeight = 0;
-};
-
-// Images of devices that are gone, for the next devices: a run's pair frames change size as
-// blocks move, and a new image costs its allocation and the first touch of every page (on
-// lavapipe most of a small pair test's time), where taking a kept one costs a clear.
-class ImageCache {
- public:
-  // The smallest kept image that holds width x height, if any.
-  std::optional<ImageSlot> take(int width, int height) {
-    const std::lock_guard<std::mutex> hold(lock_);
-    auto best = slots_.end();
-    for (auto it = slots_.begin(); it != slots_.end(); ++it) {
-      if (it->capacityWidth < width || it->capacityHeight < height)
-        continue;
-      if (best == slots_.end() || area(*it) < area(*best))
-        best = it;
-    }
-    if (best == slots_.end())
-      return std::nullopt;
-    const ImageSlot slot = *best;
-    slots_.erase(best);
-    return slot;
-  }
-
-  // Keeps the image, unless kMaxKept are kept or it is larger than kMaxKeptPixels: then
-  // returns it, for the caller to destroy.
-  std::optional<ImageSlot> give(const ImageSlot& slot) {
-    const std::lock_guard<std::mutex> hold(lock_);
-    if (slots_.size() >= kMaxKept || area(slot) > kMaxKeptPixels)
-      return slot;
-    slots_.push_back(slot);
-    return std::nullopt;
-  }
-
-  static constexpr std::size_t kMaxKept = 16;
-  static constexpr long long kMaxKeptPixels = 4096LL * 4096LL;
-
- private:
-  static long long area(const ImageSlot& s) {
-    return static_cast<long long>(s.capacityWidth) * s.capacityHeight;
-  }
-  std::mutex lock_;
-  std::vector<ImageSlot> slots_;
-};
-
-ImageCache& imageCache() {
-  static ImageCache* cache = new ImageCache();  // never destroyed, as the context
-  return *cache;
-}
-
-// New images are made a little larger than asked for, so that the next sizes fit them.
-int capacityFor(int size) {
-  constexpr int kStep = 64;
-  return std::min((size + kStep - 1) / kStep * kStep, raster::kMaxFramebufferSize);
-}
 
 // The contract's 24-bit depths from the stored floats. Every stored value is some q 2^-24
 // (shaders and clears write nothing else); anything else means the driver converted depth on
@@ -162,10 +98,10 @@ struct VulkanDevice::Impl {
     } count{*this, before};
     return call();
   }
-  ImageSlot slot;
+  detail::ImageSlot slot;
   VkImage image = VK_NULL_HANDLE;  // slot's, named for the many uses
   VkImageView view = VK_NULL_HANDLE;
-  bool reused = false;  // the slot came from imageCache(): in GENERAL layout already
+  bool reused = false;  // the slot came from detail::imageCache(): in GENERAL layout already
 
   VkDevice device() const { return context->device(); }
 
@@ -178,18 +114,18 @@ struct VulkanDevice::Impl {
   // The image lives in GENERAL layout for its whole life, so attachments and transfers need no
   // layout transitions; the recorder's barriers order the commands.
   void createImage() {
-    if (std::optional<ImageSlot> kept = imageCache().take(width, height)) {
+    if (std::optional<detail::ImageSlot> kept = detail::imageCache().take(width, height)) {
       slot = *kept;
       reused = true;
     } else {
-      slot = makeImage(capacityFor(width), capacityFor(height));
+      slot = makeImage(detail::capacityFor(width), detail::capacityFor(height));
     }
     image = slot.image;
     view = slot.view;
   }
 
-  ImageSlot makeImage(int capacityWidth, int capacityHeight) const {
-    ImageSlot made;
+  detail::ImageSlot makeImage(int capacityWidth, int capacityHeight) const {
+    detail::ImageSlot made;
     made.capacityWidth = capacityWidth;
     made.capacityHeight = capacityHeight;
     VkImageCreateInfo info{};
@@ -358,7 +294,7 @@ struct VulkanDevice::Impl {
       recorder->finish();
     } catch (...) {  // NOLINT(bugprone-empty-catch): a destructor must not throw
     }
-    if (std::optional<ImageSlot> unkept = imageCache().give(slot)) {
+    if (std::optional<detail::ImageSlot> unkept = detail::imageCache().give(slot)) {
       vkDestroyImageView(device(), unkept->view, nullptr);
       vkDestroyImage(device(), unkept->image, nullptr);
       vkFreeMemory(device(), unkept->memory, nullptr);
