@@ -13,7 +13,6 @@
 
 #include "recode/backends/vulkan_device.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
