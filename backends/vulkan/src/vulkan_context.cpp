@@ -167,21 +167,6 @@ void VulkanContext::createDevice() {
   info.pQueueCreateInfos = &queue;
   vkCheck(vkCreateDevice(physical_, &info, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
-
-  VkCommandPoolCreateInfo pool{};
-  pool.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-  pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  pool.queueFamilyIndex = queueFamily_;
-  vkCheck(vkCreateCommandPool(device_, &pool, nullptr, &pool_), "vkCreateCommandPool");
-  VkCommandBufferAllocateInfo allocate{};
-  allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-  allocate.commandPool = pool_;
-  allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocate.commandBufferCount = 1;
-  vkCheck(vkAllocateCommandBuffers(device_, &allocate, &commands_), "vkAllocateCommandBuffers");
-  VkFenceCreateInfo fence{};
-  fence.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-  vkCheck(vkCreateFence(device_, &fence, nullptr, &fence_), "vkCreateFence");
 }
 
 VkDeviceMemory VulkanContext::allocate(const VkMemoryRequirements& requirements,
@@ -257,30 +242,6 @@ void VulkanContext::submitAndWait(VkCommandBuffer commands, VkFence fence) {
   vkCheck(vkWaitForFences(device_, 1, &fence, VK_TRUE, std::numeric_limits<std::uint64_t>::max()),
           "vkWaitForFences");
   vkCheck(vkResetFences(device_, 1, &fence), "vkResetFences");
-}
-
-void VulkanContext::submit(const std::function<void(VkCommandBuffer)>& commands) {
-  vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
-  VkCommandBufferBeginInfo begin{};
-  begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vkCheck(vkBeginCommandBuffer(commands_, &begin), "vkBeginCommandBuffer");
-  // Simplicity over speed: everything before (the previous submission, host writes to mapped
-  // memory made before this submit) happens-before everything in this one.
-  VkMemoryBarrier barrier{};
-  barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-  vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT,
-                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
-  commands(commands_);
-  // And everything in it is visible to the host once the fence says it is done.
-  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
-                       1, &barrier, 0, nullptr, 0, nullptr);
-  vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
-  submitAndWait(commands_, fence_);
 }
 
 }  // namespace recode::backends::detail

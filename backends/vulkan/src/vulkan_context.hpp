@@ -1,16 +1,14 @@
 #pragma once
 // What every exact Vulkan device of the process shares: the instance, the chosen physical
-// device, a logical device with one graphics queue and one command buffer with its fence for
-// one-off submissions (initialising an image). Made on first use and deliberately
-// never destroyed (tearing a driver down during static destruction is a known source of crashes
-// at exit). Each device records into a command buffer of its own (vulkan_recorder.hpp); the
-// queue is shared, under a lock.
+// device, a logical device with one graphics queue (under a lock), and the making of command
+// pools, fences and host buffers for the recording (vulkan_recorder.hpp). Made on first use and
+// deliberately never destroyed (tearing a driver down during static destruction is a known
+// source of crashes at exit).
 
 #include <vulkan/vulkan_core.h>
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <mutex>
 #include <string>
 
@@ -40,8 +38,7 @@ class VulkanContext {
   [[nodiscard]] VkDeviceMemory allocate(const VkMemoryRequirements& requirements,
                                         VkMemoryPropertyFlags properties) const;
 
-  // A command pool and a fence of the caller's own (a device records into its own command
-  // buffer), destroyed by the caller.
+  // A command pool and a fence of the caller's own (the recording's), destroyed by the caller.
   [[nodiscard]] VkCommandPool createCommandPool() const;
   [[nodiscard]] VkFence createFence() const;
   // A new host-visible, host-coherent buffer of `bytes`, mapped; destroyHostBuffer frees it.
@@ -51,11 +48,6 @@ class VulkanContext {
   // Submits a recorded command buffer to the queue (shared, so under a lock) and waits for
   // `fence`, which must be unsignalled.
   void submitAndWait(VkCommandBuffer commands, VkFence fence);
-
-  // Records `commands` into the shared command buffer, submits it and waits for it to finish.
-  // Every submission starts with a full memory barrier, so each sees everything the previous
-  // ones wrote (attachments, transfers, host writes to the mapped buffers).
-  void submit(const std::function<void(VkCommandBuffer)>& commands);
 
  private:
   VulkanContext();
@@ -69,9 +61,6 @@ class VulkanContext {
   std::uint32_t queueFamily_ = 0;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
-  VkCommandPool pool_ = VK_NULL_HANDLE;
-  VkCommandBuffer commands_ = VK_NULL_HANDLE;
-  VkFence fence_ = VK_NULL_HANDLE;
   std::mutex queueLock_;
   std::string name_;
 };
