@@ -187,11 +187,7 @@ void CpuDevice::drawMesh(const TriangleSource& source) {
   for (const DrawRecording& recording : recordings_)
     if (recording.serves(key, state_.scissor))
       return replay(recording);
-  // Triangles that cover no pixel centre in the scissor write nothing, so leaving them out
-  // changes no bit; a source that cannot tell (or whose full draw would be refused) is drawn
-  // whole, so its refusal is the full draw's.
-  const std::optional<TriangleDraw> near = source.trianglesMeeting(state_.scissor);
-  const TriangleDraw draw = near ? *near : source.allTriangles();
+  const TriangleDraw draw = trianglesToDraw(source, state_.scissor);
   // Only a draw that culls nothing holds every triangle a later draw may need.
   if (key == 0 || state_.cull != CullMode::None)
     return rasterize(draw.vertices, draw.indices, nullptr);

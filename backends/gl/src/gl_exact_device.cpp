@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <functional>
 #include <optional>
@@ -22,6 +21,7 @@
 #include "gl_context.hpp"
 #include "gl_enums.hpp"
 #include "gl_functions.hpp"
+#include "recode/backends/exact_depth.hpp"
 #include "recode/backends/exact_proxy.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
@@ -161,28 +161,6 @@ struct SharedGl {
     return *slot;
   }
 };
-
-namespace {
-
-// The contract's 24-bit depths from the stored floats. Every stored value is some q 2^-24
-// (shaders and clears write nothing else); anything else means the driver converted depth on
-// the way, and is reported rather than rounded.
-std::vector<std::uint32_t> depthFromStored(const std::vector<std::uint8_t>& bytes) {
-  std::vector<std::uint32_t> out(bytes.size() / 4);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    float stored = 0.0f;
-    std::memcpy(&stored, bytes.data() + 4 * i, 4);
-    const double q = static_cast<double>(stored) * 16777216.0;
-    if (!(q >= 0.0 && q <= static_cast<double>(raster::kDepthMax)) || q != std::floor(q)) {
-      throw std::runtime_error("GL exact device: the depth buffer holds " + std::to_string(stored) +
-                               ", not a multiple of 2^-24 below 1");
-    }
-    out[i] = static_cast<std::uint32_t>(q);
-  }
-  return out;
-}
-
-}  // namespace
 
 struct GlExactDevice::Impl {
   int width = 0;
@@ -449,11 +427,8 @@ void GlExactDevice::drawTriangles(std::span<const raster::WindowVertex> vertices
 }
 
 void GlExactDevice::drawMesh(const raster::TriangleSource& source) {
-  // As CpuDevice: the triangles left out cover no pixel centre inside the scissor, so they
-  // would give no proxy; a source that cannot tell is drawn whole, so its refusal is the full
-  // draw's.
-  const std::optional<raster::TriangleDraw> near = source.trianglesMeeting(state_.scissor);
-  const raster::TriangleDraw draw = near ? *near : source.allTriangles();
+  // As CpuDevice: the triangles left out would give no proxy.
+  const raster::TriangleDraw draw = raster::trianglesToDraw(source, state_.scissor);
   drawTriangles(draw.vertices, draw.indices);
 }
 
@@ -475,7 +450,7 @@ raster::PendingRead<std::uint32_t> GlExactDevice::readDepthLater(const PixelRect
     return raster::PendingRead<std::uint32_t>::ready({});
   raster::PendingRead<std::uint32_t> read = raster::PendingRead<std::uint32_t>::waiting();
   d.readLater(r, GL_DEPTH_COMPONENT, GL_FLOAT, 4, [read](std::vector<std::uint8_t> bytes) mutable {
-    read.deliver(depthFromStored(bytes));
+    read.deliver(depthFromStoredFloats(bytes, "GL exact device"));
   });
   return read;
 }

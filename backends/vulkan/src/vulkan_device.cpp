@@ -21,6 +21,7 @@
 #include <string>
 #include <utility>
 
+#include "recode/backends/exact_depth.hpp"
 #include "recode/backends/exact_proxy.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
@@ -50,24 +51,6 @@ const detail::ExactPipelines& sharedPipelines() {
 }
 
 constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
-
-// The contract's 24-bit depths from the stored floats. Every stored value is some q 2^-24
-// (shaders and clears write nothing else); anything else means the driver converted depth on
-// the way, and is reported rather than rounded.
-std::vector<std::uint32_t> depthFromStored(const std::vector<std::uint8_t>& bytes) {
-  std::vector<std::uint32_t> out(bytes.size() / 4);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    float stored = 0.0f;
-    std::memcpy(&stored, bytes.data() + 4 * i, 4);
-    const double q = static_cast<double>(stored) * 16777216.0;
-    if (!(q >= 0.0 && q <= static_cast<double>(raster::kDepthMax)) || q != std::floor(q)) {
-      throw std::runtime_error("Vulkan device: the depth buffer holds " + std::to_string(stored) +
-                               ", not a multiple of 2^-24 below 1");
-    }
-    out[i] = static_cast<std::uint32_t>(q);
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -395,11 +378,8 @@ void VulkanDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
 }
 
 void VulkanDevice::drawMesh(const raster::TriangleSource& source) {
-  // As CpuDevice: the triangles left out cover no pixel centre inside the scissor, so they
-  // would give no proxy; a source that cannot tell is drawn whole, so its refusal is the full
-  // draw's.
-  const std::optional<raster::TriangleDraw> near = source.trianglesMeeting(state_.scissor);
-  const raster::TriangleDraw draw = near ? *near : source.allTriangles();
+  // As CpuDevice: the triangles left out would give no proxy.
+  const raster::TriangleDraw draw = raster::trianglesToDraw(source, state_.scissor);
   drawTriangles(draw.vertices, draw.indices);
 }
 
@@ -422,7 +402,7 @@ raster::PendingRead<std::uint32_t> VulkanDevice::readDepthLater(const PixelRect&
   raster::PendingRead<std::uint32_t> read = raster::PendingRead<std::uint32_t>::waiting();
   // The depth aspect of D32_SFLOAT_S8_UINT copies out as tightly packed 32-bit floats.
   d.readAspect(r, VK_IMAGE_ASPECT_DEPTH_BIT, 4, [read](std::vector<std::uint8_t> bytes) mutable {
-    read.deliver(depthFromStored(bytes));
+    read.deliver(depthFromStoredFloats(bytes, "Vulkan device"));
   });
   return read;
 }

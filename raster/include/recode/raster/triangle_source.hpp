@@ -48,6 +48,17 @@ class TriangleSource {
   [[nodiscard]] virtual std::uint64_t contentKey() const { return 0; }
 };
 
+// What a device that draws only what meets its scissor draws of `source`:
+// trianglesMeeting(scissor) when the source can tell, else allTriangles(). The triangles left
+// out cover no pixel centre inside the scissor, so the bits are those of the whole draw; a source
+// that cannot tell (or whose full draw would be refused) is drawn whole, so its refusal is the
+// full draw's.
+[[nodiscard]] inline TriangleDraw trianglesToDraw(const TriangleSource& source,
+                                                  const PixelRect& scissor) {
+  const std::optional<TriangleDraw> near = source.trianglesMeeting(scissor);
+  return near ? *near : source.allTriangles();
+}
+
 // A key no other call in this process returns (never 0), for TriangleSource::contentKey.
 [[nodiscard]] std::uint64_t newTriangleSourceKey();
 
