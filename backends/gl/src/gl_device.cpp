@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -163,14 +162,7 @@ struct GlDevice::Impl {
 
   // A GL error here is a bug in this file (every input was validated), so it is reported
   // loudly rather than ignored.
-  void check(const char* what) const {
-    const GLenum error = gl.core.GetError();
-    if (error != GL_NO_ERROR) {
-      char code[16];
-      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(error));
-      throw std::runtime_error(std::string("GlDevice: GL error ") + code + " in " + what);
-    }
-  }
+  void check(const char* what) const { detail::throwOnGlError(gl.core, "GlDevice", what); }
 
   // The context of the platform asked for: OSMesa's with its own width x height framebuffer,
   // or EGL's (compatibility profile) with none; auto takes OSMesa when built, else EGL.
@@ -202,24 +194,10 @@ struct GlDevice::Impl {
   // On EGL: a framebuffer object with a DEPTH24_STENCIL8 renderbuffer and no colour, the
   // depth and stencil OSMesa's default framebuffer has.
   void createFramebuffer(int width, int height) {
-    const detail::GlCoreFunctions& g = gl.core;
-    g.GenRenderbuffers(1, &depthStencil);
-    g.BindRenderbuffer(GL_RENDERBUFFER, depthStencil);
-    g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-    g.GenFramebuffers(1, &framebuffer);
-    g.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              depthStencil);
-    g.DrawBuffer(GL_NONE);
-    g.ReadBuffer(GL_NONE);
-    const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-      char code[16];
-      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(status));
-      throw std::runtime_error(
-          std::string("GlDevice: a DEPTH24_STENCIL8 framebuffer is incomplete (status ") + code +
-          ")");
-    }
+    const detail::DepthStencilFramebuffer made = detail::createDepthStencilFramebuffer(
+        gl.core, GL_DEPTH24_STENCIL8, "DEPTH24_STENCIL8", width, height, "GlDevice");
+    framebuffer = made.framebuffer;
+    depthStencil = made.renderbuffer;
   }
 
   ~Impl() {

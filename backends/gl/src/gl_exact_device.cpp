@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <exception>
 #include <functional>
 #include <optional>
@@ -93,14 +92,7 @@ struct SharedGl {
   std::vector<PendingCopy> pending;
 
   // A GL error is a bug in this device (every input was validated), so it is reported loudly.
-  void check(const char* what) const {
-    const GLenum error = gl.GetError();
-    if (error != GL_NO_ERROR) {
-      char code[16];
-      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(error));
-      throw std::runtime_error(std::string("GL exact device: GL error ") + code + " in " + what);
-    }
-  }
+  void check(const char* what) const { detail::throwOnGlError(gl, "GL exact device", what); }
 
   // The proxy records as per-instance attributes, in the layout of ProxyTriangle.
   void createProxyInput() {
@@ -220,23 +212,10 @@ struct GlExactDevice::Impl {
   // CpuDevice starts: depth 2^24 - 1 (stored as (2^24 - 1) 2^-24), stencil 0.
   void createFramebuffer() {
     const auto& g = gl();
-    g.GenRenderbuffers(1, &depthStencil);
-    g.BindRenderbuffer(GL_RENDERBUFFER, depthStencil);
-    g.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH32F_STENCIL8, width, height);
-    g.GenFramebuffers(1, &framebuffer);
-    g.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    g.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              depthStencil);
-    g.DrawBuffer(GL_NONE);
-    g.ReadBuffer(GL_NONE);
-    const GLenum status = g.CheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-      char code[16];
-      std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(status));
-      throw std::runtime_error(std::string("GL exact device: a DEPTH32F_STENCIL8 framebuffer is "
-                                           "incomplete (status ") +
-                               code + ")");
-    }
+    const detail::DepthStencilFramebuffer made = detail::createDepthStencilFramebuffer(
+        g, GL_DEPTH32F_STENCIL8, "DEPTH32F_STENCIL8", width, height, "GL exact device");
+    framebuffer = made.framebuffer;
+    depthStencil = made.renderbuffer;
     shared->owner = nullptr;
     use();
     g.ClearDepth(static_cast<double>(raster::kDepthMax) * kDepthUnit);

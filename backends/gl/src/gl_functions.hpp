@@ -113,6 +113,23 @@ struct GlCoreFunctions {
 // Resolves every function through the context, which must be current. Throws
 // std::runtime_error naming the first function the context does not provide.
 [[nodiscard]] GlCoreFunctions loadGlCoreFunctions(GlContext& context);
+// A GL error is a bug in the device that met it (every input was validated), so it is reported
+// loudly: throws std::runtime_error "DEVICE: GL error 0x.... in WHAT" when glGetError has one.
+void throwOnGlError(const GlCoreFunctions& gl, const char* device, const char* what);
+
+// A framebuffer object with one depth/stencil renderbuffer of `format` (named `formatName` in
+// errors) and no colour, left bound. Throws std::runtime_error "DEVICE: a FORMAT framebuffer is
+// incomplete (status 0x....)" when the driver refuses it.
+struct DepthStencilFramebuffer {
+  GLuint framebuffer = 0;
+  GLuint renderbuffer = 0;
+};
+[[nodiscard]] DepthStencilFramebuffer createDepthStencilFramebuffer(const GlCoreFunctions& gl,
+                                                                    GLenum format,
+                                                                    const char* formatName,
+                                                                    int width, int height,
+                                                                    const char* device);
+
 // The same for the compatibility-profile entry points (the context must be a compatibility one).
 [[nodiscard]] GlLegacyFunctions loadGlLegacyFunctions(GlContext& context);
 
