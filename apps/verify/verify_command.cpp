@@ -9,6 +9,7 @@
 #include "cli/frame_options.hpp"
 #include "cli/no_timing.hpp"
 #include "cli/view_axis_option.hpp"
+#include "recode/backends/device_registry.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/scene/builtin_scenes.hpp"
 #include "recode/verify/exact_parity.hpp"
@@ -101,7 +102,9 @@ void checkBatches(VerifyRun& run, const VerifyPairs& input,
   if (run.oracles.glExact)
     run.glExactBatch = checkBatch(batch, verify::glExactDeviceFactory(run.glPlatform));
   if (run.oracles.vulkan)
-    run.vulkanBatch = checkBatch(batch, verify::vulkanDeviceFactory());
+    run.vulkanBatch = checkBatch(batch, [](int width, int height) {
+      return backends::makeDevice(backends::DeviceKind::Vulkan, width, height);
+    });
 }
 
 int runVerifyCommand(const VerifyOptions& o) {

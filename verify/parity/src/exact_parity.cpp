@@ -157,24 +157,10 @@ ExactParityReport compareOnVulkan(const core::TriangleMesh&, const core::Triangl
       "this build has no Vulkan device (Debian: apt-get install libvulkan-dev glslang-tools "
       "mesa-vulkan-drivers, then reconfigure)");
 }
-
-core::DeviceFactory vulkanDeviceFactory() {
-  return [](int, int) -> std::unique_ptr<raster::DepthStencilDevice> {
-    throw std::runtime_error(
-        "this build has no Vulkan device (Debian: apt-get install libvulkan-dev glslang-tools "
-        "mesa-vulkan-drivers, then reconfigure)");
-  };
-}
 #else
 ExactParityReport compareOnVulkan(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                   const core::PairRequest& request) {
   return compareOnDeviceWithRenderer<backends::VulkanDevice>(a, b, request);
-}
-
-core::DeviceFactory vulkanDeviceFactory() {
-  return [](int width, int height) -> std::unique_ptr<raster::DepthStencilDevice> {
-    return std::make_unique<backends::VulkanDevice>(width, height);
-  };
 }
 #endif
 

@@ -69,10 +69,10 @@ struct ExactParityReport {
                                                 const core::TriangleMesh& b,
                                                 const core::PairRequest& request);
 
-// The exact devices as verify makes them, for what runs on many devices (a batch): each factory
-// throws what the compareOn function above throws when its device is missing.
+// The exact GL device on `platform` as verify makes it, for what runs on many devices (a batch;
+// the registry's factories take no platform): throws what compareOnGlExact throws when the
+// device is missing.
 [[nodiscard]] core::DeviceFactory glExactDeviceFactory(
     backends::GlPlatform platform = backends::GlPlatform::Auto);
-[[nodiscard]] core::DeviceFactory vulkanDeviceFactory();
 
 }  // namespace recode::verify
