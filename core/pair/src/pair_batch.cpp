@@ -27,7 +27,7 @@ struct RecordedPair {
   raster::DepthStencilDevice* device = nullptr;
   PairResult result;
   std::optional<OrthoView> view;  // set when the passes were recorded
-  // The blocks as drawn, kept for contact passes recorded after the verdict.
+  // The blocks as drawn, kept only while contact passes may still be recorded after the verdict.
   std::unique_ptr<detail::BlockWindowSource> a, b;
   raster::PendingRead<std::uint8_t> stencil;
   raster::PendingRead<std::uint32_t> nearDepth;  // waiting only with the contact passes
@@ -81,6 +81,11 @@ RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job,
     steps.run(PairStep::ReadStencil, [&] { p.stencil = device.readStencilLater(r.mor); });
     if (job.request.contact && schedule == ContactSchedule::Speculative)
       recordContactPasses(device, p, r.mor);
+  }
+  // Only contact passes recorded after the verdict draw the blocks again.
+  if (!(p.view && job.request.contact && schedule == ContactSchedule::AfterVerdict)) {
+    p.a.reset();
+    p.b.reset();
   }
   p.ownUs = microsecondsSince(start);
   return p;
@@ -172,9 +177,14 @@ std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const
         drawn.push_back(&p);
     finishShared(devices, drawn);
     std::vector<RecordedPair*> touching;
-    for (RecordedPair* p : drawn)
-      if (concludeStencil(*p))
+    for (RecordedPair* p : drawn) {
+      if (concludeStencil(*p)) {
         touching.push_back(p);
+      } else {
+        p->a.reset();  // drawn no more
+        p->b.reset();
+      }
+    }
     if (schedule == ContactSchedule::AfterVerdict) {
       for (RecordedPair* p : touching)
         recordContactPasses(*p->device, *p, p->result.contactRect);
