@@ -1,19 +1,17 @@
 #pragma once
 // Internal helpers for building error messages (not installed, not public API).
 
-#include <array>
-#include <charconv>
 #include <string>
 
 #include <Eigen/Core>
+
+#include "recode/io/double_text.hpp"
 
 namespace recode::core::detail {
 
 // Shortest text that reads back as the same double ("0.1", "-2", "1e-300", "nan", "inf").
 inline std::string formatDouble(double value) {
-  std::array<char, 64> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
+  return io::shortestText(value);
 }
 
 // "(x, y, z)" with formatDouble for each coordinate.

@@ -21,6 +21,7 @@
 #include "recode/geometry/mesh.hpp"
 #include "recode/geometry/mesh_error.hpp"
 #include "recode/geometry/mesh_io.hpp"
+#include "recode/io/double_text.hpp"
 
 namespace recode::core::detail {
 
@@ -81,9 +82,8 @@ inline std::optional<double> parseDouble(std::string_view token) {
   if (token.size() > 1 && token[0] == '+' && token[1] != '-') {
     token.remove_prefix(1);
   }
-  double value = 0.0;
   const char* end = token.data() + token.size();
-  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  const auto [ptr, ec, value] = io::readDoubleText(token.data(), end);
   if (ptr != end) {
     return std::nullopt;
   }
