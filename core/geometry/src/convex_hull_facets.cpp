@@ -92,7 +92,11 @@ std::vector<Triangle> cornerTriangulation(std::span<const Eigen::Vector3d> point
       continue;
     const auto& next = boundary.at(t);
     loop.clear();
-    const VertexIndex first = next.begin()->first;
+    // From the face's smallest vertex: a hash map's order is the standard library's own
+    // (libc++ and libstdc++ differ), and the corners' order makes the face's triangles.
+    VertexIndex first = next.begin()->first;
+    for (const auto& edge : next)
+      first = std::min(first, edge.first);
     VertexIndex v = first;
     do {
       loop.push_back(v);

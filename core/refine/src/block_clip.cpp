@@ -87,7 +87,11 @@ class Clipper {
       }
     while (!next.empty()) {
       std::vector<VertexIndex> loop;
+      // Each loop from its smallest vertex: a hash map's order is the standard library's own
+      // (libc++ and libstdc++ differ), and the cap's centre is summed in loop order.
       VertexIndex v = next.begin()->first;
+      for (const auto& edge : next)
+        v = std::min(v, edge.first);
       while (true) {
         const auto it = next.find(v);
         if (it == next.end())
