@@ -11,7 +11,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers glslang-tools
   clang-14 libfuzzer-14-dev
   libfcl-dev libbullet-dev gnuplot-nox
-  chromium python3-websocket
+  chromium python3-websocket emscripten
   pybind11-dev python3-dev python3-numpy python3-pytest doxygen
 )
 

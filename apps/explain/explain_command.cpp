@@ -19,7 +19,9 @@
 #include "explain/explain_pictures.hpp"
 #include "explain/explain_rays.hpp"
 #include "explain/explain_recorder.hpp"
+#include "explain/explain_sections.hpp"
 #include "explain/explain_text.hpp"
+#include "explain/interactive_page.hpp"
 #include "pair/pair_setup.hpp"
 #include "recode/pair/frame.hpp"
 #include "recode/pair/pair.hpp"
@@ -32,7 +34,6 @@ namespace recode::app {
 namespace {
 
 namespace fs = std::filesystem;
-using core::PairStep;
 
 struct ExplainOptions {
   std::string scene;  // empty: the built-in pair
@@ -41,109 +42,10 @@ struct ExplainOptions {
   std::string resolution;
   bool boxTest = true;
   bool gallery = false;
-  std::string pair;  // --pair NAME_A:NAME_B; empty: the scene's first two objects
-  int frame = 0;     // --frame K, with --pair
+  bool interactive = false;  // --interactive: the page that runs the reference in the browser
+  std::string pair;          // --pair NAME_A:NAME_B; empty: the scene's first two objects
+  int frame = 0;             // --frame K, with --pair
 };
-
-// Which buffers a step is about (a buffer that changed is pictured as well).
-bool stepWritesDepth(PairStep s) {
-  return s == PairStep::SetZ || s == PairStep::LoadAmin || s == PairStep::ContactNear ||
-         s == PairStep::ContactFar;
-}
-bool stepWritesStencil(PairStep s) {
-  return s == PairStep::SetZ || s == PairStep::TestZ || s == PairStep::TestAminFront ||
-         s == PairStep::TestAminBack;
-}
-
-// The depth a step clears to inside its rectangle (docs/algorithm.md section 3), -1 for none.
-double clearDepthOf(PairStep s) {
-  switch (s) {
-    case PairStep::SetZ:
-    case PairStep::ContactNear:
-      return 0.0;
-    case PairStep::LoadAmin:
-    case PairStep::ContactFar:
-      return 1.0;
-    default:
-      return -1.0;
-  }
-}
-
-void append(std::vector<explain::Picture>& to, std::vector<explain::Picture> pictures) {
-  for (explain::Picture& p : pictures)
-    to.push_back(std::move(p));
-}
-
-// The section of one step: its explanation, and pictures of the buffers it is about or
-// changed (the case map after the read-back).
-explain::Section stepSection(const explain::StepSnapshot& snap,
-                             const raster::PixelBuffer<std::uint8_t>& prevStencil,
-                             const raster::PixelBuffer<std::uint32_t>& prevDepth,
-                             const core::PairResult& result, explain::PictureWriter& pictures,
-                             int number) {
-  explain::Section s;
-  s.id = std::string(core::toString(snap.step));
-  s.step = s.id;
-  s.title = explain::stepTitle(snap.step);
-  s.text = explain::originText(snap.step) + explain::stepText(snap.step);
-  if (snap.state && snap.step != PairStep::ReadStencil)
-    s.text += explain::stateText(*snap.state, clearDepthOf(snap.step));
-  if (snap.step == PairStep::ReadStencil) {
-    s.text += explain::caseTableHtml(result);
-    append(s.pictures, pictures.cases(number));
-  } else {
-    if (stepWritesDepth(snap.step) || snap.depth != prevDepth)
-      append(s.pictures, pictures.depth(snap, number));
-    if (stepWritesStencil(snap.step) || snap.stencil != prevStencil) {
-      append(s.pictures, pictures.stencil(snap, number));
-      append(s.pictures, pictures.changes(snap, prevStencil, number));
-    }
-  }
-  return s;
-}
-
-// The page's sections in order, writing their pictures on the way: the silhouettes, one
-// section per step and, when the blocks collide, the contact region.
-std::vector<explain::Section> buildSections(const core::PairResult& result,
-                                            const std::vector<explain::StepSnapshot>& snapshots,
-                                            core::MorMode mor, bool boxTest,
-                                            explain::PictureWriter& pictures,
-                                            const std::string& descentHtml) {
-  std::vector<explain::Section> sections;
-  const auto next = [&sections] { return static_cast<int>(sections.size()) + 1; };
-  const raster::PixelRect frame = pictures.frame();
-  explain::Section first;
-  first.id = "silhouettes";
-  first.title = explain::kSilhouettesTitle;
-  first.text = explain::silhouettesText(result, mor, boxTest, frame);
-  first.pictures = pictures.silhouettes(next());
-  sections.push_back(std::move(first));
-  if (!descentHtml.empty()) {
-    explain::Section descent;
-    descent.id = "descent";
-    descent.title = "The box descent: how recode run came to this pair";
-    descent.text = descentHtml;
-    sections.push_back(std::move(descent));
-  }
-  const raster::PixelBuffer<std::uint8_t> noStencil(frame, std::uint8_t{0});
-  const raster::PixelBuffer<std::uint32_t> farDepth(frame, raster::kDepthMax);
-  const raster::PixelBuffer<std::uint8_t>* prevStencil = &noStencil;
-  const raster::PixelBuffer<std::uint32_t>* prevDepth = &farDepth;
-  for (const explain::StepSnapshot& snap : snapshots) {
-    sections.push_back(stepSection(snap, *prevStencil, *prevDepth, result, pictures, next()));
-    prevStencil = &snap.stencil;
-    prevDepth = &snap.depth;
-  }
-  if (result.collide) {
-    explain::Section contact;
-    contact.id = "contact";
-    contact.title = explain::kContactTitle;
-    contact.text = explain::contactText(result.contact);
-    contact.pictures = pictures.contact(next());
-    sections.push_back(std::move(contact));
-  }
-  return sections;
-}
 
 }  // namespace
 
@@ -172,8 +74,8 @@ ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morNam
       explain::blockCoverage(setup, range[0], range[1]);
 
   explain::PictureWriter pictures(dir, setup, result, coverage);
-  const std::vector<explain::Section> sections =
-      buildSections(result, recorder.snapshots(), request.mor, boxTest, pictures, descentHtml);
+  const std::vector<explain::Section> sections = explain::buildSections(
+      result, recorder.snapshots(), request.mor, boxTest, pictures, descentHtml);
 
   const explain::FaceDepths facesA = explain::faceDepths(setup, setup.a, range[0], range[1]);
   const explain::FaceDepths facesB = explain::faceDepths(setup, setup.b, range[0], range[1]);
@@ -199,6 +101,16 @@ ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morNam
 namespace {
 
 int runExplain(const ExplainOptions& options) {
+  if (options.interactive) {
+    const fs::path dir(options.out);
+    // Removed again if the page cannot be written (a build without the module included).
+    CreatedDirectory created(dir, "--out " + options.out);
+    explain::writeInteractivePage(dir);
+    created.keep();
+    std::cout << "recode explain --interactive: wrote " << (dir / "index.html").string()
+              << " (open it in a browser; it runs the reference in WebAssembly)\n";
+    return 0;
+  }
   if (options.gallery) {
     if (!options.scene.empty())
       throw std::invalid_argument("--gallery runs its own pairs; leave out the scene " +
@@ -280,6 +192,15 @@ void addExplainCommand(CLI::App& app, int& exitCode) {
                 "write one page per case 1-8 from small built-in pairs, and a pair that is "
                 "apart, with an index.html linking them (no scene; --mor and --no-box-test "
                 "are chosen per pair)");
+  cmd->add_flag("--interactive", opts->interactive,
+                "write one self-contained page (index.html) on which two blocks can be shaped, "
+                "dragged and turned, every step recomputed in the browser by the reference "
+                "compiled to WebAssembly (docs/wasm.md)")
+      ->excludes(cmd->get_option("scene"))
+      ->excludes(cmd->get_option("--pair"))
+      ->excludes(cmd->get_option("--gallery"))
+      ->excludes(cmd->get_option("--resolution"))
+      ->excludes(cmd->get_option("--no-box-test"));
   cmd->callback([opts, &exitCode]() { exitCode = runExplain(*opts); });
 }
 

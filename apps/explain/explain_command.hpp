@@ -8,14 +8,13 @@
 #include <filesystem>
 #include <string>
 
+#include "explain/explain_recorder.hpp"
 #include "pair/pair_setup.hpp"
 #include "recode/pair/pair.hpp"
 
 namespace recode::app {
 
-// Every step is kept as a full-frame copy of both buffers, so the frame is limited to keep
-// that (and one picture pixel per framebuffer pixel) reasonable.
-inline constexpr int kMaxExplainSide = 2048;
+using explain::kMaxExplainSide;
 
 struct ExplainSummary {
   core::PairResult result;

@@ -8,9 +8,6 @@
 
 namespace recode::app::explain {
 
-namespace {
-
-// JSON inside <script> must not contain "</" (a name could close the element early).
 std::string scriptSafe(const std::string& json) {
   std::string out;
   out.reserve(json.size());
@@ -22,21 +19,23 @@ std::string scriptSafe(const std::string& json) {
   return out;
 }
 
-}  // namespace
-
 std::string_view inspectorStyle() {
   return kInspectorCss;
 }
 
+std::string inspectorPanelHtml() {
+  return "<aside id=\"inspector\" aria-live=\"polite\"><div id=\"steps\"><label "
+         "for=\"step-slider\">"
+         "step</label><input type=\"range\" id=\"step-slider\" min=\"0\" max=\"0\" step=\"1\" "
+         "value=\"0\"><span id=\"step-name\"></span></div><div id=\"steps-help\">&larr;/&rarr; "
+         "or the slider: step; click a picture: pin a pixel (Esc: follow the pointer again)</div>"
+         "<div id=\"inspector-body\"><h3 id=\"inspector-title\">Ray inspector</h3><p>Move the "
+         "pointer over any picture, or click it, to follow that pixel's ray through every "
+         "step.</p></div></aside>\n";
+}
+
 std::string inspectorHtml(const nlohmann::json& rayData) {
-  std::string h =
-      "<aside id=\"inspector\" aria-live=\"polite\"><div id=\"steps\"><label for=\"step-slider\">"
-      "step</label><input type=\"range\" id=\"step-slider\" min=\"0\" max=\"0\" step=\"1\" "
-      "value=\"0\"><span id=\"step-name\"></span></div><div id=\"steps-help\">&larr;/&rarr; "
-      "or the slider: step; click a picture: pin a pixel (Esc: follow the pointer again)</div>"
-      "<div id=\"inspector-body\"><h3 id=\"inspector-title\">Ray inspector</h3><p>Move the "
-      "pointer over any picture, or click it, to follow that pixel's ray through every "
-      "step.</p></div></aside>\n<script type=\"application/json\" id=\"ray-data\">";
+  std::string h = inspectorPanelHtml() + "<script type=\"application/json\" id=\"ray-data\">";
   h += scriptSafe(rayData.dump());
   h += "</script>\n<script>";
   h += kInspectorJs;

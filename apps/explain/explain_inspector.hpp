@@ -15,4 +15,11 @@ namespace recode::app::explain {
 // nothing beside it but its pictures) and the script. `rayData` is rayDataJson()'s object.
 [[nodiscard]] std::string inspectorHtml(const nlohmann::json& rayData);
 
+// The panel and the step slider alone, for a page that hands the script its ray data itself
+// (window.recodeInspector.attach, the interactive page).
+[[nodiscard]] std::string inspectorPanelHtml();
+
+// JSON made safe inside <script>: no "</" that could close the element early.
+[[nodiscard]] std::string scriptSafe(const std::string& json);
+
 }  // namespace recode::app::explain

@@ -207,11 +207,10 @@ void addSectionsJson(nlohmann::json& j, const std::vector<Section>& sectionList)
 
 }  // namespace
 
-void writeIndexHtml(const fs::path& dir, const Page& page) {
+std::string pageBodyHtml(const Page& page) {
   const core::FrameSpec& f = page.setup.frame;
   const std::string source = escapeHtml(page.setup.source);
   std::ostringstream h;
-  h << kPageHead << kPageCss << inspectorStyle() << "</style></head><body>\n";
   h << "<h1>RECODE step by step</h1>\n<p>Block A: <b>" << escapeHtml(page.setup.nameA)
     << "</b>, block B: <b>" << escapeHtml(page.setup.nameB) << "</b>, from " << source << ". View "
     << "along the " << core::toString(f.axis) << " axis, " << f.width << " &times; " << f.height
@@ -224,8 +223,14 @@ void writeIndexHtml(const fs::path& dir, const Page& page) {
       writeFigure(h, p, f);
     h << "</section>\n";
   }
-  h << "<section id=\"verdict\"><h2>Verdict</h2>" << verdictHtml(page.result) << "</section>\n"
-    << inspectorHtml(page.rayData) << "</body></html>\n";
+  h << "<section id=\"verdict\"><h2>Verdict</h2>" << verdictHtml(page.result) << "</section>\n";
+  return h.str();
+}
+
+void writeIndexHtml(const fs::path& dir, const Page& page) {
+  std::ostringstream h;
+  h << kPageHead << kPageCss << inspectorStyle() << "</style></head><body>\n"
+    << pageBodyHtml(page) << inspectorHtml(page.rayData) << "</body></html>\n";
   writeText(dir / "index.html", h.str());
 }
 

@@ -31,6 +31,10 @@ struct Page {
   const nlohmann::json& rayData;  // the inspector's data (explain_rays.hpp)
 };
 
+// The page's body without the ray inspector: the run, how RECODE works, every section with its
+// pictures (<img> by file name) and legends, and the verdict.
+[[nodiscard]] std::string pageBodyHtml(const Page& page);
+
 // dir/index.html: the run, how RECODE works, every section with its pictures and legends,
 // and the verdict. Throws std::runtime_error naming the file on failure.
 void writeIndexHtml(const std::filesystem::path& dir, const Page& page);

@@ -108,16 +108,18 @@ void Painter::hatchOutside(RgbImage& image, const PixelRect& active) const {
 
 PictureWriter::PictureWriter(std::filesystem::path dir, const PairSetup& setup,
                              const core::PairResult& result,
-                             const raster::PixelBuffer<std::uint8_t>& coverage)
+                             const raster::PixelBuffer<std::uint8_t>& coverage,
+                             std::vector<KeptPicture>* kept)
     : dir_(std::move(dir)),
+      kept_(kept),
       setup_(setup),
       result_(result),
       coverage_(coverage),
       frame_{0, 0, setup.frame.width, setup.frame.height},
       view_(viewRegion(result.mor, frame_)),
-      painter_(view_, 512),
-      overview_(frame_, 160),
-      zoom_(zoomPainter()) {}
+      painter_(view_, kept ? 1 : 512),
+      overview_(frame_, kept ? 1 : 160),
+      zoom_(kept ? std::nullopt : zoomPainter()) {}
 
 // The MOR with a margin when that is at most half the frame (the rest of the frame is never
 // drawn in, so showing it would only shrink what matters), else the whole frame.
@@ -260,7 +262,10 @@ Picture PictureWriter::makePicture(const Painter& painter, const std::string& st
                                    std::string kind, const RgbImage& image) {
   Picture p;
   p.file = stem + ".png";
-  writePng(dir_ / p.file, image);
+  if (kept_)
+    kept_->push_back({p.file, image});
+  else
+    writePng(dir_ / p.file, image);
   p.kind = std::move(kind);
   p.zoom = isZoom(painter);
   p.region = painter.region();

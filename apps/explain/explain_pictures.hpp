@@ -70,13 +70,23 @@ class Painter {
   int scale_;
 };
 
+// A picture kept in memory instead of written as a PNG file: the interactive page (wasm/)
+// draws it on a canvas, enlarged by the browser.
+struct KeptPicture {
+  std::string file;  // the name the page refers to it by (as Picture::file)
+  RgbImage image;
+};
+
 // Writes the pictures of one run into `dir` and describes each for the page. Each function
 // writes the whole-frame picture and then, where there is one, its close-up of where both
 // blocks are; `section` numbers the files. setup, result and coverage must outlive it.
+// With `kept`, the pictures go there instead, one picture pixel per framebuffer pixel and
+// without close-ups (the page enlarges them on screen, so a close-up would repeat them).
 class PictureWriter {
  public:
   PictureWriter(std::filesystem::path dir, const PairSetup& setup, const core::PairResult& result,
-                const raster::PixelBuffer<std::uint8_t>& coverage);
+                const raster::PixelBuffer<std::uint8_t>& coverage,
+                std::vector<KeptPicture>* kept = nullptr);
 
   // The whole frame, and picture pixels per framebuffer pixel in the whole-frame pictures.
   [[nodiscard]] const raster::PixelRect& frame() const { return frame_; }
@@ -118,6 +128,7 @@ class PictureWriter {
   Picture contactPicture(const Painter& painter, int number);
 
   std::filesystem::path dir_;
+  std::vector<KeptPicture>* kept_;
   const PairSetup& setup_;
   const core::PairResult& result_;
   const raster::PixelBuffer<std::uint8_t>& coverage_;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "recode/pair/pair_cases.hpp"
 
@@ -17,8 +18,9 @@ nlohmann::json rectJson(const PixelRect& r) {
 }
 
 template <class T>
-nlohmann::json cropped(const raster::PixelBuffer<T>& buffer, const PixelRect& crop) {
-  nlohmann::json values = nlohmann::json::array();
+std::vector<std::uint32_t> cropped(const raster::PixelBuffer<T>& buffer, const PixelRect& crop) {
+  std::vector<std::uint32_t> values;
+  values.reserve(static_cast<std::size_t>(crop.area()));
   for (int y = crop.y0; y < crop.y1; ++y)
     for (int x = crop.x0; x < crop.x1; ++x)
       values.push_back(buffer.at(x, y));
@@ -60,8 +62,9 @@ PixelRect rayCrop(const RayInputs& in, const PixelRect& frame) {
   return {x0, y0, x0 + w, y0 + h};
 }
 
-nlohmann::json rayDataJson(const RayInputs& in, const PixelRect& frame, const PixelRect& crop) {
-  nlohmann::json j;
+RayArrays rayArrays(const RayInputs& in, const PixelRect& frame, const PixelRect& crop) {
+  RayArrays r;
+  nlohmann::json& j = r.scalars;
   j["frame"] = rectJson(frame);
   j["crop"] = rectJson(crop);
   j["capped"] = crop != morWithMargin(in.result.mor, frame);
@@ -71,33 +74,41 @@ nlohmann::json rayDataJson(const RayInputs& in, const PixelRect& frame, const Pi
   j["depth_max"] = raster::kDepthMax;
   j["depth_range"] = {in.depthMin, in.depthMax};
   nlohmann::json steps = nlohmann::json::array();
-  nlohmann::json depth = nlohmann::json::array();
-  nlohmann::json stencil = nlohmann::json::array();
   for (const StepSnapshot& s : in.snapshots) {
     steps.push_back({{"id", std::string(core::toString(s.step))}});
-    depth.push_back(cropped(s.depth, crop));
-    stencil.push_back(cropped(s.stencil, crop));
+    r.depth.push_back(cropped(s.depth, crop));
+    r.stencil.push_back(cropped(s.stencil, crop));
   }
   j["steps"] = steps;
-  j["depth"] = depth;
-  j["stencil"] = stencil;
-  j["a_front"] = cropped(in.a.front, crop);
-  j["a_back"] = cropped(in.a.back, crop);
-  j["b_front"] = cropped(in.b.front, crop);
-  j["b_back"] = cropped(in.b.back, crop);
-  j["coverage"] = cropped(in.coverage, crop);
-  nlohmann::json cases = nlohmann::json::array();
+  r.aFront = cropped(in.a.front, crop);
+  r.aBack = cropped(in.a.back, crop);
+  r.bFront = cropped(in.b.front, crop);
+  r.bBack = cropped(in.b.back, crop);
+  r.coverage = cropped(in.coverage, crop);
   const PixelRect& m = in.result.mor;
   for (int y = crop.y0; y < crop.y1; ++y)
     for (int x = crop.x0; x < crop.x1; ++x) {
       const bool inMor = x >= m.x0 && x < m.x1 && y >= m.y0 && y < m.y1;
-      cases.push_back(inMor ? int{in.result.caseMap.at(x, y)} : -1);
+      r.cases.push_back(inMor ? int{in.result.caseMap.at(x, y)} : -1);
     }
-  j["case"] = cases;
   nlohmann::json names = nlohmann::json::array();
   for (int c = 0; c < core::kCaseCount; ++c)
     names.push_back(std::string(core::caseName(c)));
   j["case_names"] = names;
+  return r;
+}
+
+nlohmann::json rayDataJson(const RayInputs& in, const PixelRect& frame, const PixelRect& crop) {
+  RayArrays r = rayArrays(in, frame, crop);
+  nlohmann::json j = std::move(r.scalars);
+  j["depth"] = r.depth;
+  j["stencil"] = r.stencil;
+  j["a_front"] = r.aFront;
+  j["a_back"] = r.aBack;
+  j["b_front"] = r.bFront;
+  j["b_back"] = r.bBack;
+  j["coverage"] = r.coverage;
+  j["case"] = r.cases;
   return j;
 }
 

@@ -2,6 +2,7 @@
 // The per-pixel data of the ray inspector: depth and stencil after every step, both blocks'
 // face depths and the case, over the MOR plus a margin, embedded in index.html as JSON.
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -33,9 +34,20 @@ struct RayInputs {
 // the pixels both blocks cover. Empty when there is no MOR.
 [[nodiscard]] raster::PixelRect rayCrop(const RayInputs& in, const raster::PixelRect& frame);
 
+// The inspector's data with its per-pixel arrays apart from the rest: each array row by row,
+// bottom row first, over the crop, crop.area() values.
+struct RayArrays {
+  nlohmann::json scalars;  // "frame", "crop", "capped", "steps": [{"id"}], "mor", ...
+  std::vector<std::vector<std::uint32_t>> depth;    // after each step
+  std::vector<std::vector<std::uint32_t>> stencil;  // after each step
+  std::vector<std::uint32_t> aFront, aBack, bFront, bBack, coverage;
+  std::vector<std::int32_t> cases;  // -1 outside the MOR
+};
+[[nodiscard]] RayArrays rayArrays(const RayInputs& in, const raster::PixelRect& frame,
+                                  const raster::PixelRect& crop);
+
 // {"crop", "capped", "steps": [{"id"}], "depth": [[...]], "stencil": [[...]], "a_front",
-// "a_back", "b_front", "b_back", "coverage", "case", ...}: arrays row by row, bottom row first,
-// over `crop`.
+// "a_back", "b_front", "b_back", "coverage", "case", ...}: rayArrays as one JSON object.
 [[nodiscard]] nlohmann::json rayDataJson(const RayInputs& in, const raster::PixelRect& frame,
                                          const raster::PixelRect& crop);
 

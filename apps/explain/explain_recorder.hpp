@@ -12,6 +12,10 @@
 
 namespace recode::app::explain {
 
+// Every step is kept as a full-frame copy of both buffers, so the frame is limited to keep
+// that (and one picture pixel per framebuffer pixel) reasonable.
+inline constexpr int kMaxExplainSide = 2048;
+
 // Both buffers over the whole frame after one step.
 struct StepSnapshot {
   core::PairStep step;

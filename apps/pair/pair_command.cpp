@@ -1,11 +1,7 @@
 #include "pair/pair_command.hpp"
 
-#include <array>
 #include <iostream>
 #include <memory>
-#include <optional>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 
 #include "cli/device_option.hpp"
@@ -13,11 +9,7 @@
 #include "cli/no_timing.hpp"
 #include "cli/pgm.hpp"
 #include "cli/view_axis_option.hpp"
-#include "pair/pair_report.hpp"
-#include "pair/pair_setup.hpp"
-#include "recode/pair/pair.hpp"
-#include "recode/refine/adaptive.hpp"
-#include "recode/refine/proven_apart.hpp"
+#include "pair/pair_run.hpp"
 
 namespace recode::app {
 
@@ -39,141 +31,27 @@ struct PairOptions {
   std::string device = "cpu";      // --device: a name of the device registry
 };
 
-nlohmann::ordered_json boxJson(const core::Aabb& box) {
-  if (box.isEmpty())
-    return nullptr;
-  return {{box.min.x(), box.min.y(), box.min.z()}, {box.max.x(), box.max.y(), box.max.z()}};
-}
-
-// The --mode object: what the adaptive, conservative or skip-apart mode decided, beside the
-// reference run's report (which stays as it was).
-nlohmann::ordered_json modeJson(core::PairMode mode, raster::DepthStencilDevice& device,
-                                const PairSetup& setup, const core::PairRequest& request,
-                                const core::PairBlock& a, const core::PairBlock& b,
-                                const core::PairResult& reference) {
-  nlohmann::ordered_json j;
-  j["name"] = core::toString(mode);
-  if (mode == core::PairMode::SkipApart) {
-    // Proven apart: nothing drawn. Otherwise the skip-apart mode's answer is the reference run's.
-    const bool apart = core::provenApart(a, b, request.frame);
-    j["verdict"] = apart || !reference.collide ? "apart" : "collide";
-    j["proven_apart"] = apart;
-    j["interfering_pixels"] = apart ? 0 : reference.interferingPixels;
-    return j;
-  }
-  if (mode == core::PairMode::Conservative) {
-    const core::ConservativeResult r = core::collideConservative(device, setup.a, setup.b, request);
-    j["verdict"] = r.pair.collide ? "collide" : "apart";
-    j["growth"] = {r.growth.x(), r.growth.y(), r.growth.z()};
-    j["interfering_pixels"] = r.pair.interferingPixels;
-    j["contact_box"] = boxJson(r.pair.contact.box);
-    return j;
-  }
-  core::AdaptivePairTester tester;
-  const core::AdaptiveResult r = tester.collide(device, setup.a, setup.b, request);
-  j["verdict"] = core::toString(r.verdict);
-  j["runs"] = r.runs;
-  j["deepest_level"] = r.deepestLevel;
-  j["finest_pixel"] = r.finestPixel;
-  if (r.contact) {
-    const core::FrameSpec& f = r.contactFrame;
-    j["contact_frame"] = {{"width", f.width},
-                          {"height", f.height},
-                          {"window", {f.window.umin, f.window.vmin, f.window.umax, f.window.vmax}}};
-    j["interfering_pixels"] = r.contact->interferingPixels;
-    j["contact_box"] = boxJson(r.contact->contact.box);
-    j["contact_area"] = r.contact->contact.area;
-  }
-  if (r.verdict == core::PairVerdict::ApartAtLimit)
-    j["unresolved_box"] = boxJson(r.unresolved);
-  return j;
-}
-
-void printMode(std::ostream& out, const nlohmann::ordered_json& j) {
-  out << "mode " << j["name"].get<std::string>() << ": " << j["verdict"].get<std::string>();
-  for (const char* key :
-       {"runs", "deepest_level", "finest_pixel", "interfering_pixels", "proven_apart"})
-    if (j.contains(key))
-      out << ", " << key << " " << j[key].dump();
-  out << '\n';
-}
-
-// "X,Y" inside the frame, or std::invalid_argument naming the option, the value and the rule.
-std::array<int, 2> parsePixel(const std::string& text, const core::FrameSpec& frame) {
-  int x = -1, y = -1;
-  char comma = 0;
-  std::istringstream in(text);
-  const auto bad = [&](const std::string& rule) {
-    return std::invalid_argument("--pixel " + text + ": " + rule);
-  };
-  if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof())
-    throw bad("expected X,Y (two whole numbers)");
-  if (x < 0 || y < 0 || x >= frame.width || y >= frame.height)
-    throw bad("outside the " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
-              " frame (x from the left, y from the bottom, from 0)");
-  return {x, y};
-}
-
 int runPairCommand(const PairOptions& o) {
-  PairSetup setup = loadPairSetup(
-      o.scene.empty() ? std::nullopt : std::optional<std::string>(o.scene), o.frame.overrides());
-  // Another axis than the scene's: the frame is rebuilt along it at the same pixel size.
-  const core::ViewAxisRule axisRule = viewAxisRule(o.viewAxis);
-  if (axisRule != core::ViewAxisRule::Scene) {
-    core::Aabb bounds = core::boundingBox(setup.a);
-    bounds.extend(core::boundingBox(setup.b));
-    const core::ViewAxis axis = core::chooseViewAxis(
-        axisRule, setup.frame.axis,
-        core::axisChoiceInput(setup.a, setup.b, core::framePixelSize(setup.frame)));
-    setup.frame = core::frameAlongAxis(setup.frame, axis, bounds);
-  }
-  core::PairRequest request;
-  request.frame = setup.frame;
-  request.mor = o.frame.mor();
-  request.contact = o.contact;
-  request.boxTest = o.boxTest;
-  request.normal = o.normal;
-  const std::unique_ptr<raster::DepthStencilDevice> device =
-      makeNamedDevice(o.device, setup.frame.width, setup.frame.height);
-  std::optional<PixelProbe> probe;
-  if (!o.pixel.empty()) {
-    const auto [x, y] = parsePixel(o.pixel, setup.frame);
-    probe.emplace(x, y);
-  }
-  // Each block with its triangle hierarchy, as a run's leaves have theirs: the pair's time
-  // (timing_us) then follows what the MOR covers; building them is not part of it.
-  const core::PairBlock a = core::PairBlock::withHierarchy(setup.a);
-  const core::PairBlock b = core::PairBlock::withHierarchy(setup.b);
-  const core::PairResult result =
-      core::collidePair(*device, a, b, request, probe ? &*probe : nullptr);
+  PairRunOptions options;
+  if (!o.scene.empty())
+    options.scene = o.scene;
+  options.overrides = o.frame.overrides();
+  options.mor = o.frame.mor();
+  options.contact = o.contact;
+  options.boxTest = o.boxTest;
+  options.normal = o.normal;
+  options.pixel = o.pixel;
+  options.mode = *core::parsePairMode(o.mode);  // CLI11 checked the name
+  options.axisRule = viewAxisRule(o.viewAxis);
+  const PairRun run = runPair(
+      options, [&](int width, int height) { return makeNamedDevice(o.device, width, height); });
   if (!o.dumpCases.empty())
-    writePgmBottomUp(o.dumpCases, setup.frame.width, setup.frame.height,
-                     frameCaseImage(setup.frame, result));
-  const core::PairMode mode = *core::parsePairMode(o.mode);
-  std::optional<nlohmann::ordered_json> modeReport;
-  if (mode != core::PairMode::Reference)
-    modeReport = modeJson(mode, *device, setup, request, a, b, result);
-  if (o.json) {
-    nlohmann::ordered_json j = pairResultToJson(setup, request, result);
-    if (modeReport)
-      j["mode"] = *modeReport;
-    if (axisRule != core::ViewAxisRule::Scene) {
-      j["view_axis_rule"] = core::toString(axisRule);
-      j["view_axis"] = core::toString(setup.frame.axis);
-    }
-    if (o.noTiming)
-      removeTimingFields(j);
-    if (probe)
-      j["pixel"] = probe->toJson(result);
-    std::cout << j.dump(2) << '\n';
-  } else {
-    if (axisRule != core::ViewAxisRule::Scene)
-      std::cout << "view axis " << core::toString(setup.frame.axis) << " (rule "
-                << core::toString(axisRule) << ")\n";
-    printPairReport(std::cout, setup, request, result, o.picture);
-    if (modeReport)
-      printMode(std::cout, *modeReport);
-  }
+    writePgmBottomUp(o.dumpCases, run.setup.frame.width, run.setup.frame.height,
+                     frameCaseImage(run.setup.frame, run.result));
+  if (o.json)
+    std::cout << pairRunJson(run, o.noTiming).dump(2) << '\n';
+  else
+    printPairRun(std::cout, run, o.picture);
   return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "recode/raster/cpu_device.hpp"
 #include "recode/scene/builtin_scenes.hpp"
 #include "recode/verify/exact_parity.hpp"
+#include "verify/suite_scenes.hpp"
 #include "verify/verify_batch.hpp"
 #include "verify/verify_pairs.hpp"
 #include "verify/verify_report.hpp"
@@ -27,6 +28,7 @@ struct VerifyOptions {
   int count = 504;
   unsigned seed = 20261122;
   int width = 64;
+  std::string saveScenes;  // --save-scenes DIR: write the suite's pairs as scenes, check nothing
   bool embree = false;
   bool cgal = false;
   bool gl = false;
@@ -108,6 +110,12 @@ void checkBatches(VerifyRun& run, const VerifyPairs& input,
 }
 
 int runVerifyCommand(const VerifyOptions& o) {
+  if (!o.saveScenes.empty()) {
+    const std::size_t written = saveSuiteScenes(pairsToVerify(o), o.saveScenes);
+    std::cout << "recode verify --save-scenes: wrote " << written << " scenes (pair-000.json "
+              << "...) to " << o.saveScenes << '\n';
+    return 0;
+  }
   VerifyRun run;
   run.oracles = selectedOracles(o);
   VerifyPairs input = pairsToVerify(o);        // the input's errors first, whatever the build
@@ -192,6 +200,10 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--width", o->width, "frame width in pixels of the generated suite's pairs")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str()
+      ->needs(suite);
+  cmd->add_option("--save-scenes", o->saveScenes,
+                  "write each pair of the suite as a scene file that recode pair reads "
+                  "(DIR/pair-NNN.json, its blocks as OFF files beside it) and check nothing")
       ->needs(suite);
   cmd->add_flag("--embree", o->embree,
                 "per pixel: Embree ray casts (naming no oracle runs --embree --cgal)");

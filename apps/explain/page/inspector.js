@@ -1,22 +1,23 @@
-// The explain page's ray inspector. It reads the inline JSON, follows the pointer over every
-// picture (each <img> carries the frame rectangle it shows and its magnification), and
-// describes each step at the pixel from the recorded buffers: the depth and stencil after the
-// step are the recorded values; which test passed and which stencil operation ran are read off
-// the step's state (docs/algorithm.md section 3) and the recorded values before and after.
-(function () {
+// The explain page's ray inspector. It reads the ray data (the inline JSON of `recode explain`'s
+// page, or what the interactive page hands it after every change), follows the pointer over
+// every picture (each <img> or <canvas> carries the frame rectangle it shows in data-region),
+// and describes each step at the pixel from the recorded buffers: the depth and stencil after
+// the step are the recorded values; which test passed and which stencil operation ran are read
+// off the step's state (docs/algorithm.md section 3) and the recorded values before and after.
+window.recodeInspector = (function () {
   'use strict';
-  const data = JSON.parse(document.getElementById('ray-data').textContent);
-  const D = data.depth_max;
+  let data = {steps: []};
+  let D = 1;
   const panel = document.getElementById('inspector-body');
   const slider = document.getElementById('step-slider');
   const stepName = document.getElementById('step-name');
-  const ids = data.steps.map(function (s) { return s.id; });
+  let ids = [];
   const TITLES = {set_z: '1 SetZ', test_z: '2 TestZ', load_amin: '3 Load Amin',
     test_amin_front: '4 B front vs Amin', test_amin_back: '5 B back vs Amin',
     read_stencil: '6 Read stencil', contact_near: '7 Contact near', contact_far: '8 Contact far'};
   let pixel = null;
   let pinned = false;
-  let step = ids.length > 0 ? ids.length - 1 : 0;
+  let step = 0;
 
   function inRect(r, x, y) { return x >= r[0] && x < r[2] && y >= r[1] && y < r[3]; }
   function index(x, y) {
@@ -180,7 +181,7 @@
 
   function markAll() {
     document.querySelectorAll('.pic').forEach(function (w) {
-      const img = w.querySelector('img');
+      const img = w.querySelector('[data-region]');
       const m = w.querySelector('.mark');
       const r = img.dataset.region.split(',').map(Number);
       if (!pixel || !inRect(r, pixel[0], pixel[1])) { m.style.display = 'none'; return; }
@@ -202,28 +203,47 @@
     return [Math.min(r[2] - 1, Math.max(r[0], x)), Math.min(r[3] - 1, Math.max(r[1], y))];
   }
 
-  document.querySelectorAll('img[data-region]').forEach(function (img) {
-    const w = document.createElement('span');
-    w.className = 'pic';
-    img.parentNode.insertBefore(w, img);
-    w.appendChild(img);
-    const m = document.createElement('div');
-    m.className = 'mark';
-    w.appendChild(m);
-    img.addEventListener('mousemove', function (ev) {
-      if (pinned) return;
-      pixel = pixelOf(ev, img); show(); markAll();
+  // Wraps every picture not wrapped yet with its pixel mark and follows the pointer over it.
+  function bindPictures() {
+    document.querySelectorAll('[data-region]').forEach(function (img) {
+      if (img.parentNode.classList.contains('pic')) return;
+      const w = document.createElement('span');
+      w.className = 'pic';
+      img.parentNode.insertBefore(w, img);
+      w.appendChild(img);
+      const m = document.createElement('div');
+      m.className = 'mark';
+      w.appendChild(m);
+      img.addEventListener('mousemove', function (ev) {
+        if (pinned || ev.buttons) return;
+        pixel = pixelOf(ev, img); show(); markAll();
+      });
+      img.addEventListener('click', function (ev) {
+        if (ev.defaultPrevented) return;  // the end of a drag, not a click on a pixel
+        pixel = pixelOf(ev, img); pinned = true; show(); markAll();
+      });
     });
-    img.addEventListener('click', function (ev) {
-      pixel = pixelOf(ev, img); pinned = true; show(); markAll();
-    });
-  });
+  }
 
-  slider.max = String(Math.max(0, ids.length - 1));
-  slider.value = String(step);
+  // New ray data and pictures (the interactive page after every change): the step and a pixel
+  // still inside the frame are kept, so that one ray can be watched while a block moves.
+  function attach(newData) {
+    const atLast = step >= ids.length - 1;
+    data = newData;
+    D = data.depth_max;
+    ids = data.steps.map(function (s) { return s.id; });
+    step = ids.length === 0 ? 0 : (atLast ? ids.length - 1 : Math.min(step, ids.length - 1));
+    slider.max = String(Math.max(0, ids.length - 1));
+    slider.value = String(step);
+    bindPictures();
+    markAll();
+    showStep();
+  }
+
   slider.addEventListener('input', function () { step = Number(slider.value); showStep(); });
   document.addEventListener('keydown', function (ev) {
     if (ev.target && ev.target.tagName === 'INPUT' && ev.target !== slider) return;
+    if (ev.target && (ev.target.tagName === 'SELECT' || ev.target.tagName === 'TEXTAREA')) return;
     if (ev.key === 'Escape') { pinned = false; return; }
     if (ev.target === slider) return;  // the slider moves itself
     let d = 0;
@@ -235,5 +255,7 @@
     slider.value = String(step);
     showStep();
   });
-  showStep();
+  const inline = document.getElementById('ray-data');
+  if (inline) attach(JSON.parse(inline.textContent));
+  return {attach: attach};
 })();

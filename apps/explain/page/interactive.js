@@ -1,0 +1,407 @@
+// The interactive explain page (`recode explain --interactive`): two blocks a student shapes,
+// drags and turns, and on every change the pair runs again in the reference compiled to
+// WebAssembly (wasm/, recode_page), which answers with `recode pair --json`'s object, the explain
+// page's sections for this run (the same text, legends and pictures as `recode explain`), and
+// the ray inspector's data. The scene the page runs is a scene file (docs/scenes.md), shown and
+// exported as such, so that `recode pair` on the exported file gives the page's answer.
+(function () {
+  'use strict';
+  const SHAPES = {
+    cone: {radius: 1, height: 2},
+    cylinder: {radius: 1, height: 2},
+    capped_cone: {radius0: 0.6, radius1: 0.3, height: 2},
+    sphere: {radius: 1},
+    ellipsoid: {radii: [1, 0.6, 0.4]},
+    box: {size: [1, 1, 1]},
+    obj: {},  // a dropped OBJ file: the convex hull of its vertices
+  };
+  const PLANE = {x: ['y', 'z'], y: ['z', 'x'], z: ['x', 'y']};  // image plane (u, v) per view axis
+  const AXES = ['x', 'y', 'z'];
+  const state = {
+    blocks: [
+      {name: 'A', shape: 'cone', sizes: {radius: 1, height: 2}, position: [0, 0, 0],
+       rotation: [0, 0, 0], obj: null},
+      {name: 'B', shape: 'cone', sizes: {radius: 1, height: 2}, position: [0, 0, 3.75],
+       rotation: [180, 0, 0], obj: null},
+    ],
+    axis: 'x', resolution: 256, mor: 'min', drag: 1, sweepAxis: 'z', sweep: 0, sweepRange: 1.5,
+  };
+  const $ = function (id) { return document.getElementById(id); };
+  let module = null, runPage = null, lastError = null;
+  let dirty = true, playing = false, playDirection = 1;
+  const page = window.recodePage = {ready: false, updates: 0, lastMs: 0, moduleMs: 0, times: [],
+    error: null, pair: null, sceneText: sceneText, state: state, update: update,
+    pending: function () { return dirty || drag !== null || playing; }};
+
+  function number(v) { return Math.round(v * 1e6) / 1e6; }
+
+  // The block's node of the scene file, at its position plus the sweep for the swept block.
+  function objectOf(b, index) {
+    const o = {name: b.name};
+    if (b.shape === 'obj') {
+      o.mesh = b.name + '.obj';
+      o.hull = true;
+    } else {
+      o.shape = Object.assign({type: b.shape}, b.sizes);
+    }
+    const p = b.position.slice();
+    if (index === 1) p[AXES.indexOf(state.sweepAxis)] += state.sweep * state.sweepRange;
+    o.position = p.map(number);
+    if (b.rotation.some(function (r) { return r !== 0; })) o.rotation_deg = b.rotation.map(number);
+    return o;
+  }
+
+  function sceneText() {
+    const scene = {view: {axis: state.axis, resolution: [state.resolution, state.resolution]},
+      objects: state.blocks.map(objectOf)};
+    return JSON.stringify(scene, null, 2) + '\n';
+  }
+
+  // Runs the pair on the current scene; paints what the module answers.
+  function update() {
+    dirty = false;
+    if (!module) return;
+    const started = performance.now();
+    const text = sceneText();
+    module.FS.writeFile('/page/scene.json', text);
+    state.blocks.forEach(function (b) {
+      if (b.shape === 'obj' && b.obj) module.FS.writeFile('/page/' + b.name + '.obj', b.obj);
+    });
+    const request = JSON.stringify({scene: '/page/scene.json', mor: state.mor});
+    const answer = runPage(request);
+    const moduleMs = performance.now() - started;
+    $('scene-text').value = text;
+    if (!answer) {
+      page.error = lastError();
+      $('live-error').textContent = page.error;
+      $('live-error').hidden = false;
+      return;
+    }
+    $('live-error').hidden = true;
+    page.error = null;
+    const result = JSON.parse(module.UTF8ToString(answer));
+    // Parsed in a template, whose pictures do not load: each <img> names a picture that is not
+    // a file but a canvas painted from the module's memory.
+    const parsed = document.createElement('template');
+    parsed.innerHTML = result.body;
+    paintPictures(parsed.content, result.pictures);
+    $('live-result').replaceChildren(parsed.content);
+    window.recodeInspector.attach(rayData(result));
+    page.pair = result.pair;
+    showSummary(result.pair);
+    const ms = performance.now() - started;
+    page.updates += 1;
+    page.lastMs = ms;
+    page.moduleMs = moduleMs;
+    page.times.push({resolution: state.resolution, ms: ms, module_ms: moduleMs});
+    $('update-ms').textContent = ms.toFixed(1) + ' ms (the pair and its pictures in WebAssembly: ' +
+      moduleMs.toFixed(1) + ' ms)';
+  }
+
+  // The inspector's data: the module's JSON and its per-pixel arrays, copied out of the
+  // module's memory as typed arrays (read like the static page's JSON arrays).
+  function rayData(result) {
+    const d = result.ray_data;
+    const n = result.ray_arrays.pixels, steps = d.steps.length;
+    const all = new Int32Array(module.HEAPU8.buffer, result.ray_arrays.offset,
+      n * (2 * steps + 6)).slice();
+    let at = 0;
+    const next = function () { at += n; return all.subarray(at - n, at); };
+    d.depth = [];
+    d.stencil = [];
+    for (let k = 0; k < steps; ++k) d.depth.push(next());
+    for (let k = 0; k < steps; ++k) d.stencil.push(next());
+    d.a_front = next();
+    d.a_back = next();
+    d.b_front = next();
+    d.b_back = next();
+    d.coverage = next();
+    d['case'] = next();
+    return d;
+  }
+
+  // Each <img> of the module's body becomes a canvas holding the kept picture (RGB rows from
+  // the top, in the module's memory until the next update), enlarged by the browser.
+  function paintPictures(root, pictures) {
+    const heap = module.HEAPU8;
+    pictures.forEach(function (p) {
+      const img = root.querySelector('img[src="' + p.file + '"]');
+      if (!img) return;
+      const canvas = document.createElement('canvas');
+      canvas.width = p.width;
+      canvas.height = p.height;
+      const image = new ImageData(p.width, p.height);
+      const rgba = image.data;
+      for (let i = 0, j = p.offset, n = p.width * p.height; i < n; ++i, j += 3) {
+        rgba[4 * i] = heap[j];
+        rgba[4 * i + 1] = heap[j + 1];
+        rgba[4 * i + 2] = heap[j + 2];
+        rgba[4 * i + 3] = 255;
+      }
+      canvas.getContext('2d').putImageData(image, 0, 0);
+      const scale = Math.max(1, Math.floor(384 / Math.max(p.width, p.height)));
+      canvas.style.width = (p.width * scale) + 'px';
+      canvas.dataset.region = img.dataset.region;
+      canvas.className = 'live-picture';
+      canvas.title = img.alt + ': drag to move block ' + state.blocks[state.drag].name +
+        ', shift-drag to turn it';
+      img.replaceWith(canvas);
+    });
+  }
+
+  function showSummary(pair) {
+    $('live-verdict').textContent = pair.collide ? 'collide' : 'apart';
+    $('live-verdict').className = 'verdict ' + (pair.collide ? 'yes' : 'no');
+    let row = '<tr><th>case</th>';
+    let counts = '<tr><th>pixels</th>';
+    for (let c = 0; c <= 8; ++c) {
+      row += '<th>' + c + '</th>';
+      counts += '<td data-case="' + c + '">' + pair.case_counts[String(c)] + '</td>';
+    }
+    $('case-counts').innerHTML = row + '</tr>' + counts + '</tr>';
+    $('live-interfering').textContent = pair.interfering_pixels + ' interfering pixels, frame ' +
+      pair.frame.resolution.join(' x ') + ' along ' + pair.frame.axis;
+  }
+
+  // --- the controls --------------------------------------------------------------------------
+
+  function field(label, input) {
+    const l = document.createElement('label');
+    l.textContent = label + ' ';
+    l.appendChild(input);
+    return l;
+  }
+
+  function numberInput(value, step, onChange, id) {
+    const i = document.createElement('input');
+    i.type = 'number';
+    i.step = String(step);
+    i.value = String(value);
+    if (id) i.id = id;
+    i.addEventListener('change', function () {
+      const v = Number(i.value);
+      if (Number.isFinite(v)) { onChange(v); changed(); }
+    });
+    return i;
+  }
+
+  function select(options, value, onChange, id) {
+    const s = document.createElement('select');
+    options.forEach(function (o) {
+      const e = document.createElement('option');
+      e.value = String(o);
+      e.textContent = String(o);
+      s.appendChild(e);
+    });
+    s.value = String(value);
+    if (id) s.id = id;
+    s.addEventListener('change', function () { onChange(s.value); changed(); });
+    return s;
+  }
+
+  function vectorInputs(vector, step, idPrefix) {
+    const span = document.createElement('span');
+    vector.forEach(function (v, k) {
+      span.appendChild(numberInput(v, step, function (x) { vector[k] = x; }, idPrefix + AXES[k]));
+    });
+    return span;
+  }
+
+  function blockControls(b, index) {
+    const box = document.createElement('fieldset');
+    box.id = 'block-' + b.name;
+    const legend = document.createElement('legend');
+    legend.textContent = 'Block ' + b.name;
+    box.appendChild(legend);
+    box.appendChild(field('shape', select(Object.keys(SHAPES), b.shape, function (v) {
+      b.shape = v;
+      b.sizes = JSON.parse(JSON.stringify(SHAPES[v]));
+      buildControls();
+    }, 'shape-' + b.name)));
+    const sizes = document.createElement('div');
+    Object.keys(b.sizes).forEach(function (key) {
+      const v = b.sizes[key];
+      sizes.appendChild(field(key, Array.isArray(v)
+        ? vectorInputs(v, 0.1, 'size-' + b.name + '-' + key + '-')
+        : numberInput(v, 0.1, function (x) { b.sizes[key] = x; }, 'size-' + b.name + '-' + key)));
+    });
+    if (b.shape === 'obj') {
+      const file = document.createElement('input');
+      file.type = 'file';
+      file.accept = '.obj';
+      file.addEventListener('change', function () {
+        if (file.files.length) readObj(b, file.files[0]);
+      });
+      sizes.appendChild(field(b.obj ? 'OBJ loaded; another' : 'OBJ file (or drop one here)', file));
+    }
+    box.appendChild(sizes);
+    box.appendChild(field('position', vectorInputs(b.position, 0.05, 'pos-' + b.name + '-')));
+    box.appendChild(field('rotation (degrees)',
+      vectorInputs(b.rotation, 5, 'rot-' + b.name + '-')));
+    box.addEventListener('dragover', function (ev) { ev.preventDefault(); });
+    box.addEventListener('drop', function (ev) {
+      ev.preventDefault();
+      if (ev.dataTransfer.files.length) readObj(b, ev.dataTransfer.files[0]);
+    });
+    return box;
+  }
+
+  function readObj(b, file) {
+    file.text().then(function (text) {
+      b.shape = 'obj';
+      b.sizes = {};
+      b.obj = text;
+      buildControls();
+      changed();
+    });
+  }
+
+  function viewControls() {
+    const box = document.createElement('fieldset');
+    const legend = document.createElement('legend');
+    legend.textContent = 'View and passes';
+    box.appendChild(legend);
+    box.appendChild(field('view axis', select(AXES, state.axis, function (v) { state.axis = v; },
+      'view-axis')));
+    box.appendChild(field('resolution', select([64, 128, 256, 512], state.resolution,
+      function (v) { state.resolution = Number(v); }, 'resolution')));
+    box.appendChild(field('MOR', select(['min', 'max', 'full'], state.mor,
+      function (v) { state.mor = v; }, 'mor')));
+    box.appendChild(field('drag moves block', select(['A', 'B'], state.blocks[state.drag].name,
+      function (v) { state.drag = v === 'A' ? 0 : 1; }, 'drag-block')));
+    const sweep = document.createElement('input');
+    sweep.type = 'range';
+    sweep.id = 'sweep';
+    sweep.min = '-1';
+    sweep.max = '1';
+    sweep.step = '0.01';
+    sweep.value = String(state.sweep);
+    sweep.addEventListener('input', function () { state.sweep = Number(sweep.value); changed(); });
+    const through = document.createElement('div');
+    through.appendChild(field('move B along', select(AXES, state.sweepAxis,
+      function (v) { state.sweepAxis = v; }, 'sweep-axis')));
+    through.appendChild(field('by \u00b1', numberInput(state.sweepRange, 0.1,
+      function (v) { state.sweepRange = Math.abs(v); }, 'sweep-range')));
+    through.appendChild(sweep);
+    const play = document.createElement('button');
+    play.id = 'play';
+    play.textContent = playing ? 'Stop' : 'Play';
+    play.addEventListener('click', function () {
+      playing = !playing;
+      play.textContent = playing ? 'Stop' : 'Play';
+    });
+    through.appendChild(play);
+    box.appendChild(through);
+    return box;
+  }
+
+  function buildControls() {
+    const c = $('live-controls');
+    c.innerHTML = '';
+    state.blocks.forEach(function (b, i) { c.appendChild(blockControls(b, i)); });
+    c.appendChild(viewControls());
+  }
+
+  function changed() { dirty = true; }
+
+  // --- dragging a block over any picture ----------------------------------------------------
+
+  let drag = null;
+  document.addEventListener('pointerdown', function (ev) {
+    const canvas = ev.target.closest && ev.target.closest('#live-result canvas[data-region]');
+    if (!canvas || !page.pair || ev.button !== 0) return;
+    const r = canvas.dataset.region.split(',').map(Number);
+    const frame = page.pair.frame;
+    const bounds = canvas.getBoundingClientRect();
+    const b = state.blocks[state.drag];
+    drag = {x: ev.clientX, y: ev.clientY, moved: false, turn: ev.shiftKey, block: b,
+      position: b.position.slice(), rotation: b.rotation.slice(), axis: frame.axis,
+      // world units per CSS pixel, along the picture's width and height
+      du: (frame.window[2] - frame.window[0]) / frame.resolution[0] * (r[2] - r[0]) / bounds.width,
+      dv: (frame.window[3] - frame.window[1]) / frame.resolution[1] * (r[3] - r[1]) / bounds.height};
+    ev.preventDefault();
+  });
+  window.addEventListener('pointermove', function (ev) {
+    if (!drag) return;
+    const dx = ev.clientX - drag.x, dy = ev.clientY - drag.y;
+    if (Math.abs(dx) + Math.abs(dy) > 2) drag.moved = true;
+    if (!drag.moved) return;
+    const b = drag.block;
+    if (drag.turn) {  // about the view axis: the angle of that axis
+      const k = AXES.indexOf(drag.axis);
+      b.rotation[k] = number(drag.rotation[k] - dx * 0.5);
+    } else {
+      const plane = PLANE[drag.axis];
+      b.position = drag.position.slice();
+      b.position[AXES.indexOf(plane[0])] = number(drag.position[AXES.indexOf(plane[0])] + dx * drag.du);
+      b.position[AXES.indexOf(plane[1])] = number(drag.position[AXES.indexOf(plane[1])] - dy * drag.dv);
+    }
+    changed();
+  });
+  window.addEventListener('pointerup', function () {
+    if (!drag) return;
+    const moved = drag.moved;
+    drag = null;
+    if (!moved) return;
+    buildControls();  // the inputs show the new pose
+    // The click that ends a drag does not pin a pixel in the inspector.
+    const swallow = function (ev) { ev.preventDefault(); };
+    document.addEventListener('click', swallow, true);
+    setTimeout(function () { document.removeEventListener('click', swallow, true); }, 50);
+  });
+
+  // --- export ----------------------------------------------------------------------------------
+
+  function download(name, text) {
+    const a = document.createElement('a');
+    a.href = URL.createObjectURL(new Blob([text], {type: 'application/json'}));
+    a.download = name;
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+  }
+
+  $('export').addEventListener('click', function () {
+    download('scene.json', sceneText());
+    state.blocks.forEach(function (b) {
+      if (b.shape === 'obj' && b.obj) download(b.name + '.obj', b.obj);
+    });
+  });
+
+  // --- the loop ----------------------------------------------------------------------------------
+
+  function frame() {
+    if (playing) {
+      let s = state.sweep + 0.01 * playDirection;
+      if (s > 1 || s < -1) { playDirection = -playDirection; s = Math.max(-1, Math.min(1, s)); }
+      state.sweep = number(s);
+      const slider = $('sweep');
+      if (slider) slider.value = String(state.sweep);
+      dirty = true;
+    }
+    if (dirty) {
+      try {
+        update();
+      } catch (e) {
+        page.error = String(e);
+        console.error(e);
+      }
+    }
+    requestAnimationFrame(frame);
+  }
+
+  buildControls();
+  createRecodeModule().then(function (m) {
+    module = m;
+    module.FS.mkdirTree('/page');
+    runPage = module.cwrap('recode_page', 'number', ['string']);
+    lastError = module.cwrap('recode_error', 'string', []);
+    update();
+    page.ready = true;
+    $('live-status').textContent = 'ready: change anything, drag a picture';
+    requestAnimationFrame(frame);
+  }, function (e) {
+    $('live-status').textContent = 'the WebAssembly module did not load: ' + e;
+    console.error(e);
+  });
+})();

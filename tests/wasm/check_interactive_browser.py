@@ -1,0 +1,203 @@
+#!/usr/bin/python3
+"""Checks `recode explain --interactive`'s page in a real browser (headless Chromium, DevTools).
+
+Loads the page from file:// with no console error, waits for the WebAssembly module's first
+answer, drags a picture (moving block B), exports the scene with the page's button, and requires
+the page's verdict, case counts and whole `recode pair` object to equal the native `recode pair
+--json` on the exported file. Then a second pose through the page's controls (B's position and
+the MOR mode), checked the same way. Saves screenshots, and reports the time of one update at
+256 and 512 pixels as the page measures it (reported, not judged).
+
+Usage: check_interactive_browser.py RECODE WORKDIR
+Exit status 0: passed; 1: failed; 77: skipped because no Chromium is installed.
+"""
+
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "apps"))
+from check_explain_browser import DevTools, fail, find_chromium, start_chromium  # noqa: E402
+
+TIMEOUT_S = 60
+TIMING_KEYS = {"timing_us", "timing_steps_us"}
+
+
+def strip(j):
+    """The pair object without its wall-clock fields and its source (a path on either side)."""
+    if isinstance(j, dict):
+        return {k: strip(v) for k, v in j.items() if k not in TIMING_KEYS and k != "source"}
+    if isinstance(j, list):
+        return [strip(v) for v in j]
+    return j
+
+
+def settle(dt, updates_before):
+    """Waits until the page has run an update after `updates_before` and has nothing pending."""
+    deadline = time.time() + TIMEOUT_S
+    while time.time() < deadline:
+        s = dt.evaluate("({u: recodePage.updates, p: recodePage.pending(), e: recodePage.error})")
+        if s["e"]:
+            fail("the page reports an error: " + s["e"])
+        if s["u"] > updates_before and not s["p"]:
+            return s["u"]
+        time.sleep(0.05)
+    fail("the page did not update within %d s" % TIMEOUT_S)
+
+
+SHOWN_JS = """
+(function () {
+  const counts = {};
+  document.querySelectorAll('#case-counts td[data-case]').forEach(function (td) {
+    counts[td.dataset.case] = Number(td.textContent);
+  });
+  return {verdict: document.getElementById('live-verdict').textContent, counts: counts,
+          pair: recodePage.pair, mor: document.getElementById('mor').value};
+})()
+"""
+
+
+def export_scene(dt, downloads, name):
+    """Clicks Export and returns the path of the scene file the browser saved."""
+    for f in os.listdir(downloads):
+        os.remove(os.path.join(downloads, f))
+    dt.evaluate("document.getElementById('export').click()")
+    target = os.path.join(downloads, "scene.json")
+    deadline = time.time() + TIMEOUT_S
+    while time.time() < deadline:
+        if os.path.exists(target) and not any(f.endswith(".crdownload") for f in os.listdir(downloads)):
+            kept = os.path.join(os.path.dirname(downloads), name)
+            shutil.copy(target, kept)
+            return kept
+        time.sleep(0.05)
+    fail("the Export button saved no scene.json within %d s" % TIMEOUT_S)
+
+
+def compare_with_native(recode, dt, scene, what):
+    shown = dt.evaluate(SHOWN_JS)
+    r = subprocess.run([recode, "pair", scene, "--mor", shown["mor"], "--json", "--no-timing"],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        fail("recode pair %s: %s" % (scene, r.stderr.strip()))
+    native = json.loads(r.stdout)
+    errors = []
+    want_verdict = "collide" if native["collide"] else "apart"
+    if shown["verdict"] != want_verdict:
+        errors.append("verdict %r, recode pair says %r" % (shown["verdict"], want_verdict))
+    want_counts = {k: int(v) for k, v in native["case_counts"].items()}
+    if shown["counts"] != want_counts:
+        errors.append("case counts %s, recode pair says %s" % (shown["counts"], want_counts))
+    if strip(shown["pair"]) != strip(native):
+        errors.append("the page's pair object differs from recode pair --json")
+    if errors:
+        fail(what + ": " + "; ".join(errors))
+    print("%s: %s, case counts %s, the page equals recode pair on %s"
+          % (what, shown["verdict"], " ".join("%s:%d" % kv for kv in sorted(want_counts.items())),
+             os.path.basename(scene)))
+    return native
+
+
+def timing(dt, resolution, runs=7):
+    dt.evaluate("(function () { const s = document.getElementById('resolution'); s.value = '%d';"
+                " s.dispatchEvent(new Event('change')); })()" % resolution)
+    settle(dt, dt.evaluate("recodePage.updates") - 1)
+    ms, module_ms = [], []
+    for _ in range(runs):
+        dt.evaluate("recodePage.update()")
+        ms.append(dt.evaluate("recodePage.lastMs"))
+        module_ms.append(dt.evaluate("recodePage.moduleMs"))
+    return statistics.median(ms), statistics.median(module_ms)
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__)
+        return 2
+    recode, work = sys.argv[1], os.path.abspath(sys.argv[2])
+    chromium = find_chromium()
+    if chromium is None:
+        print("SKIP: no chromium on PATH (scripts/setup.sh installs it); the page was not checked")
+        return 77
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    page_dir = os.path.join(work, "page")
+    downloads = os.path.join(work, "downloads")
+    os.makedirs(downloads)
+    r = subprocess.run([recode, "explain", "--interactive", "--out", page_dir],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        fail("recode explain --interactive: " + r.stderr.strip())
+    size = os.path.getsize(os.path.join(page_dir, "index.html"))
+
+    profile = tempfile.mkdtemp(prefix="recode-chromium-")
+    proc, ws_url = start_chromium(chromium, profile)
+    try:
+        dt = DevTools(ws_url)
+        for domain in ("Runtime", "Log", "Network", "Page"):
+            dt.call(domain + ".enable")
+        dt.call("Page.setDownloadBehavior", behavior="allow", downloadPath=downloads)
+        dt.call("Page.navigate", url="file://" + os.path.join(page_dir, "index.html"))
+        dt.wait_event("Page.loadEventFired")
+        deadline = time.time() + TIMEOUT_S
+        while not dt.evaluate("!!(window.recodePage && recodePage.ready)"):
+            if time.time() > deadline:
+                fail("the page's module did not answer within %d s" % TIMEOUT_S)
+            time.sleep(0.1)
+        updates = settle(dt, 0)
+        if dt.problems():
+            fail("on load: " + "; ".join(dt.problems()))
+        dt.screenshot(os.path.join(work, "loaded.png"))
+        first = compare_with_native(recode, dt, export_scene(dt, downloads, "pose-0.json"),
+                                    "as loaded")
+
+        # Drag the first picture 40 CSS pixels right and 30 down: block B moves in the image plane.
+        box = dt.evaluate("(function () { const c = document.querySelector('#live-result canvas');"
+                          " c.scrollIntoView({block: 'center'}); const b = c.getBoundingClientRect();"
+                          " return {x: b.left + b.width / 2, y: b.top + b.height / 2}; })()")
+        x, y = box["x"], box["y"]
+        dt.call("Input.dispatchMouseEvent", type="mousePressed", x=x, y=y, button="left",
+                buttons=1, clickCount=1)
+        for k in range(1, 11):
+            dt.call("Input.dispatchMouseEvent", type="mouseMoved", x=x + 4 * k, y=y + 3 * k,
+                    button="left", buttons=1)
+            time.sleep(0.03)
+        dt.call("Input.dispatchMouseEvent", type="mouseReleased", x=x + 40, y=y + 30,
+                button="left", buttons=0, clickCount=1)
+        updates = settle(dt, updates)
+        dt.screenshot(os.path.join(work, "dragged.png"))
+        dragged_scene = export_scene(dt, downloads, "pose-1-dragged.json")
+        if json.load(open(dragged_scene)) == json.load(open(os.path.join(work, "pose-0.json"))):
+            fail("the drag did not move a block: the exported scene is the one as loaded")
+        second = compare_with_native(recode, dt, dragged_scene, "after the drag")
+
+        # A second pose through the controls: B's position along z and the MOR mode.
+        dt.evaluate("(function () { const z = document.getElementById('pos-B-z'); z.value = '3.5';"
+                    " z.dispatchEvent(new Event('change')); const m = document.getElementById('mor');"
+                    " m.value = 'max'; m.dispatchEvent(new Event('change')); })()")
+        updates = settle(dt, updates)
+        dt.screenshot(os.path.join(work, "controls.png"))
+        third = compare_with_native(recode, dt, export_scene(dt, downloads, "pose-2-controls.json"),
+                                    "after the controls")
+        if first == second or second == third:
+            fail("two poses gave the same answer: the poses did not change what the page ran")
+        if dt.problems():
+            fail("console errors: " + "; ".join(dt.problems()))
+
+        t256 = timing(dt, 256)
+        t512 = timing(dt, 512)
+        print("update time (median of 7, in the page): 256 px %.1f ms (module %.1f ms), "
+              "512 px %.1f ms (module %.1f ms); page %d bytes" % (t256 + t512 + (size,)))
+    finally:
+        proc.kill()
+        shutil.rmtree(profile, ignore_errors=True)
+    print("interactive page OK: 3 poses equal recode pair, screenshots in " + work)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

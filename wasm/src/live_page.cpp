@@ -1,0 +1,84 @@
+#include "live_page.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "explain/explain_page.hpp"
+#include "explain/explain_rays.hpp"
+#include "explain/explain_recorder.hpp"
+#include "explain/explain_sections.hpp"
+#include "recode/raster/cpu_device.hpp"
+
+namespace recode::wasm {
+
+LivePage livePage(const PairRequestText& request) {
+  app::explain::StepRecorder recorder;
+  const app::PairRun run = app::runPair(
+      request.options,
+      [](int width, int height) {
+        if (width > app::explain::kMaxExplainSide || height > app::explain::kMaxExplainSide)
+          throw std::invalid_argument("the frame is " + std::to_string(width) + "x" +
+                                      std::to_string(height) + "; the page draws at most " +
+                                      std::to_string(app::explain::kMaxExplainSide) +
+                                      " pixels a side (choose a smaller resolution)");
+        return std::make_unique<raster::CpuDevice>(width, height);
+      },
+      &recorder);
+  const app::PairSetup& setup = run.setup;
+  const core::FrameSpec& f = setup.frame;
+  const auto range =
+      core::pairDepthRange(f.axis, core::boundingBox(setup.a), core::boundingBox(setup.b));
+  const raster::PixelBuffer<std::uint8_t> coverage =
+      app::explain::blockCoverage(setup, range[0], range[1]);
+
+  LivePage page;
+  app::explain::PictureWriter pictures({}, setup, run.result, coverage, &page.pictures);
+  const std::vector<app::explain::Section> sections = app::explain::buildSections(
+      run.result, recorder.snapshots(), run.request.mor, run.request.boxTest, pictures, {});
+  const app::explain::FaceDepths facesA =
+      app::explain::faceDepths(setup, setup.a, range[0], range[1]);
+  const app::explain::FaceDepths facesB =
+      app::explain::faceDepths(setup, setup.b, range[0], range[1]);
+  const app::explain::RayInputs rays{
+      run.result, recorder.snapshots(), coverage, facesA, facesB, range[0], range[1]};
+  const raster::PixelRect frameRect{0, 0, f.width, f.height};
+  const raster::PixelRect crop = app::explain::rayCrop(rays, frameRect);
+  app::explain::RayArrays arrays = app::explain::rayArrays(rays, frameRect, crop);
+  // One block of numbers, in the order of "ray_arrays" below: the page makes typed arrays of
+  // it instead of reading hundreds of thousands of numbers as JSON.
+  for (const auto& step : arrays.depth)
+    page.rays.insert(page.rays.end(), step.begin(), step.end());
+  for (const auto& step : arrays.stencil)
+    page.rays.insert(page.rays.end(), step.begin(), step.end());
+  for (const auto* a :
+       {&arrays.aFront, &arrays.aBack, &arrays.bFront, &arrays.bBack, &arrays.coverage})
+    page.rays.insert(page.rays.end(), a->begin(), a->end());
+  page.rays.insert(page.rays.end(), arrays.cases.begin(), arrays.cases.end());
+  const app::explain::Page explained{setup,           std::string(core::toString(run.request.mor)),
+                                     run.result,      pictures.scale(),
+                                     pictures.view(), sections,
+                                     arrays.scalars};
+
+  nlohmann::ordered_json j;
+  j["pair"] = app::pairRunJson(run, !request.timing);
+  j["body"] = app::explain::pageBodyHtml(explained);
+  j["ray_data"] = arrays.scalars;
+  j["ray_arrays"] = {{"offset", reinterpret_cast<std::uintptr_t>(page.rays.data())},
+                     {"pixels", crop.area()},
+                     {"order",
+                      "depth after each step, stencil after each step, a_front, "
+                      "a_back, b_front, b_back, coverage, case"}};
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const app::explain::KeptPicture& p : page.pictures)
+    list.push_back({{"file", p.file},
+                    {"width", p.image.width()},
+                    {"height", p.image.height()},
+                    {"offset", reinterpret_cast<std::uintptr_t>(p.image.bytes().data())}});
+  j["pictures"] = list;
+  page.json = j.dump();
+  return page;
+}
+
+}  // namespace recode::wasm

@@ -1,0 +1,21 @@
+#pragma once
+// The module's request: a JSON object naming the options of `recode pair` (docs/wasm.md), read
+// into the command's own options so that both run the same code.
+
+#include <string>
+
+#include "pair/pair_run.hpp"
+
+namespace recode::wasm {
+
+struct PairRequestText {
+  app::PairRunOptions options;
+  bool timing = true;  // false: the JSON without its wall-clock fields (--no-timing)
+};
+
+// Reads {"scene", "resolution", "pixel_size", "mor", "contact", "box_test", "normal",
+// "pixel", "mode", "view_axis", "timing"}, every key optional. Throws std::invalid_argument
+// naming the key, the value and the rule (an unknown key included).
+[[nodiscard]] PairRequestText readPairRequest(const std::string& json);
+
+}  // namespace recode::wasm
