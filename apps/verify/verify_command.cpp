@@ -13,7 +13,7 @@
 #include "recode/raster/cpu_device.hpp"
 #include "recode/scene/builtin_scenes.hpp"
 #include "recode/verify/exact_parity.hpp"
-#include "verify/suite_scenes.hpp"
+#include "verify/pair_scenes.hpp"
 #include "verify/verify_batch.hpp"
 #include "verify/verify_pairs.hpp"
 #include "verify/verify_report.hpp"
@@ -28,7 +28,7 @@ struct VerifyOptions {
   int count = 504;
   unsigned seed = 20261122;
   int width = 64;
-  std::string saveScenes;  // --save-scenes DIR: write the suite's pairs as scenes, check nothing
+  std::string saveScenes;  // --save-scenes DIR: write the pairs as scenes, check nothing
   bool embree = false;
   bool cgal = false;
   bool gl = false;
@@ -111,7 +111,7 @@ void checkBatches(VerifyRun& run, const VerifyPairs& input,
 
 int runVerifyCommand(const VerifyOptions& o) {
   if (!o.saveScenes.empty()) {
-    const std::size_t written = saveSuiteScenes(pairsToVerify(o), o.saveScenes);
+    const std::size_t written = savePairScenes(pairsToVerify(o), o.saveScenes);
     std::cout << "recode verify --save-scenes: wrote " << written << " scenes (pair-000.json "
               << "...) to " << o.saveScenes << '\n';
     return 0;
@@ -202,9 +202,9 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str()
       ->needs(suite);
   cmd->add_option("--save-scenes", o->saveScenes,
-                  "write each pair of the suite as a scene file that recode pair reads "
-                  "(DIR/pair-NNN.json, its blocks as OFF files beside it) and check nothing")
-      ->needs(suite);
+                  "write each pair it would check (the suite's, or the scene's block pairs) as "
+                  "a scene file that recode pair reads (DIR/pair-NNN.json, its blocks as OFF "
+                  "files beside it) and check nothing");
   cmd->add_flag("--embree", o->embree,
                 "per pixel: Embree ray casts (naming no oracle runs --embree --cgal)");
   CLI::Option* cgalFlag =

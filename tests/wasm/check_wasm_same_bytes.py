@@ -4,7 +4,8 @@
 Under Node, the module (wasm/, scripts/build-wasm.sh) replays every committed golden vector
 (data/golden) and must match each expected buffer exactly; and it runs `recode pair` on the
 built-in pair in every mode and option, on the first two objects of every scene of data/scenes,
-and on the generated pair suite (written as scenes by `recode verify --suite --save-scenes`),
+on block pairs of the built-in scenes and on the generated pair suite (both written as scenes
+by `recode verify --save-scenes`),
 and each answer must be byte for byte what the native `recode pair --json --no-timing` prints.
 
 Usage: check_wasm_same_bytes.py RECODE MODULE.js WORKDIR [SUITE_COUNT]
@@ -20,6 +21,12 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.normpath(os.path.join(HERE, "..", "..", "data"))
+
+# `recode run`'s built-in experiments (data/scenes), whose objects are mostly groups of blocks.
+BUILTIN_SCENES = ["comb-translate-aligned", "comb-translate-offset", "comb-rotate-aligned",
+                  "comb-rotate-offset", "random-cones", "random-shapes", "hand-grasp",
+                  "hierarchy-9"]
+BLOCK_PAIRS_PER_SCENE = 12
 
 # The built-in pair: every mode and option `recode pair` has that the module takes.
 BUILTIN_CASES = [
@@ -82,8 +89,20 @@ def main():
     subprocess.run([recode, "verify", "--suite", "--count", str(suite_count), "--width", "64",
                     "--save-scenes", suite], check=True, stdout=subprocess.DEVNULL)
 
+    # The built-in scenes' block pairs at frame 0, as `recode verify SCENE` checks them: up to
+    # BLOCK_PAIRS_PER_SCENE of each, evenly spaced.
+    block_pairs = []
+    for name in BUILTIN_SCENES:
+        out = os.path.join(work, "scene-" + name)
+        subprocess.run([recode, "verify", os.path.join(DATA, "scenes", name + ".json"),
+                        "--save-scenes", out], check=True, stdout=subprocess.DEVNULL)
+        written = sorted(glob.glob(os.path.join(out, "pair-*.json")))
+        step = max(1, len(written) // BLOCK_PAIRS_PER_SCENE)
+        block_pairs += written[::step][:BLOCK_PAIRS_PER_SCENE]
+
     pair_cases = [dict(c) for c in BUILTIN_CASES]
     pair_cases += [{"scene": p} for p in sorted(glob.glob(os.path.join(DATA, "scenes", "*.json")))]
+    pair_cases += [{"scene": p} for p in block_pairs]
     suite_scenes = sorted(glob.glob(os.path.join(suite, "pair-*.json")))
     pair_cases += [{"scene": p} for p in suite_scenes]
     # The adaptive mode's finer frames on every eighth suite pair.
@@ -117,7 +136,7 @@ def main():
                       "out": os.path.join(work, "golden-%04d.wasm.json" % i)})
     spec = os.path.join(work, "cases.json")
     with open(spec, "w") as f:
-        json.dump({"mounts": [DATA, suite], "cases": cases}, f)
+        json.dump({"mounts": [DATA, work], "cases": cases}, f)
     run = subprocess.run([node, os.path.join(HERE, "wasm_runner.cjs"), module, spec],
                          capture_output=True, text=True)
     print(run.stdout.strip())
@@ -143,12 +162,13 @@ def main():
     if different or golden_failed:
         fail("%d of %d pair outputs differ, %d of %d golden vectors fail"
              % (len(different), len(pair_cases), len(golden_failed), len(goldens)))
+    scene_files = len(pair_cases) - len(BUILTIN_CASES) - len(block_pairs) - len(suite_scenes) \
+        - len(suite_scenes[::8])
     print("wasm same bytes OK: %d pair outputs identical (%d built-in pair, %d scene files, "
-          "%d suite pairs, %d in the adaptive mode; %d of them the same refusal); %d golden "
-          "vectors pass"
-          % (len(pair_cases), len(BUILTIN_CASES), len(pair_cases) - len(BUILTIN_CASES)
-             - len(suite_scenes) - len(suite_scenes[::8]), len(suite_scenes),
-             len(suite_scenes[::8]), len(refused), len(goldens)))
+          "%d block pairs of the built-in scenes, %d suite pairs, %d in the adaptive mode; %d "
+          "of them the same refusal); %d golden vectors pass"
+          % (len(pair_cases), len(BUILTIN_CASES), scene_files, len(block_pairs),
+             len(suite_scenes), len(suite_scenes[::8]), len(refused), len(goldens)))
     return 0
 
 

