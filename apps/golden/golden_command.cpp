@@ -13,7 +13,7 @@ namespace recode::app {
 namespace {
 
 struct GenerateOptions {
-  int count = 240;
+  int count = 300;
   std::uint64_t seed = 1;
   std::string out;
 };

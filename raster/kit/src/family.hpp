@@ -68,6 +68,15 @@ raster::cmd::StencilOpsCmd opsFor(raster::Face face, raster::StencilOp sfail,
 // (family_tie_plane.cpp gives the construction).
 raster::cmd::Draw tiePlane(Rng& rng, int width, int height, bool alongY, bool halfAnchor);
 
+// A triangle covering a width x height frame through a plane sloped along both axes whose
+// exact value is a quantisation tie at every sample, k even or odd, its three depths distinct
+// (family_sloped_tie_plane.cpp gives the construction).
+raster::cmd::Draw slopedTiePlane(Rng& rng, int width, int height);
+
+// Adds a steep sliver through sample points of the w x h frame at a tie, near one or at random
+// depths, its vertices near or far, submitted from any vertex (family_steep_slivers.cpp).
+void addSteepSliver(Rng& rng, int w, int h, raster::cmd::Draw& d);
+
 // The families (one file each).
 Candidate slivers(Rng& rng, int index);
 Candidate fans(Rng& rng, int index);
@@ -81,5 +90,6 @@ Candidate compareOps(Rng& rng, int index);
 Candidate culling(Rng& rng, int index);
 Candidate scissorClears(Rng& rng, int index);
 Candidate wideFrames(Rng& rng, int index);
+Candidate depthArithmetic(Rng& rng, int index);
 
 }  // namespace recode::kit::detail

@@ -4,9 +4,12 @@
 // the samples on the line the exact depth is 0.5, whose 0.5 * 16777215 = 8388607.5 is a tie,
 // and z0 + tx + ty cancels terms up to 2^25: the sign of the rounding error decides between
 // 8388607 and 8388608. The contract (anchored at the first submitted vertex, separately rounded
-// double) and any other anchor, sorting of the vertices, fused multiply-add, evaluation from the
-// origin or from pixel (0, 0), or float arithmetic err differently, and about half of the
-// samples come out other. Each vector is kept only when its target variant's bits differ.
+// double) and its target variants (another anchor, sorting of the vertices, fused
+// multiply-adds, evaluation from the origin or from pixel (0, 0), float arithmetic) err
+// differently, and about half of the samples come out other. Each vector is kept only when its
+// target variant's bits differ. The first vertex is always one on the line at 0.5, so one depth
+// difference is zero and z0 + tx is exact: the order of the sum and a single fused numerator
+// do not show here (the depth_arithmetic family aims at those).
 #include <algorithm>
 #include <cmath>
 #include <utility>

@@ -5,9 +5,11 @@
 //   z0 = 0,   z1 = m / 256, m odd:               m * odd / 2, a half-integer;
 //   z0 = 0.5, z1 = m / 256, m - 128 = 2 mod 4:   8388607.5 + odd, a half-integer with k even.
 // The contract's double arithmetic reaches the exact half-integer at many samples (its
-// roundings cancel), and there rounds half to even. Any other order of operations, anchor,
-// fusion or precision misses the tie by an ulp up or down and rounds the other way at about
-// half of them, which is what makes these planes catch anchor and arithmetic variants.
+// roundings cancel), and there rounds half to even. Another anchor, fused evaluation or
+// precision misses the tie by an ulp up or down and rounds the other way at about half of them,
+// which is what makes these planes catch anchor and arithmetic variants. Not every reading:
+// with ty exactly 0 the order of the sum does not matter, and the depths' few bits make the
+// slopes' products exact (slopedTiePlane and the steep slivers of depth_arithmetic cover those).
 #include "family.hpp"
 
 namespace recode::kit::detail {

@@ -26,7 +26,7 @@ struct Family {
 
 constexpr int kNoCap = 1 << 30;
 
-const std::array<Family, 12> kFamilies = {{
+const std::array<Family, 13> kFamilies = {{
     {{"slivers", "sub-pixel slivers at every orientation, edges through sample points"},
      10,
      kNoCap,
@@ -72,6 +72,12 @@ const std::array<Family, 12> kFamilies = {{
      2,
      3,
      detail::wideFrames},
+    {{"depth_arithmetic",
+      "each reading of the depth arithmetic and its rounding, the rarest twice: sloped planes "
+      "at ties, steep, near-degenerate and far-anchored slivers"},
+     28,
+     60,
+     detail::depthArithmetic},
 }};
 
 constexpr int kAttempts = 400;

@@ -6,77 +6,142 @@ namespace recode::kit::detail {
 
 namespace {
 
-long long centre(int i) {
-  return 256LL * i + 128;
+long long centre(long long i) {
+  return 256 * i + 128;
+}
+
+// The order (anchor first, the others following cyclically in submitted order or, for a
+// rasterizer that sorts, counter-clockwise) the recipe builds the plane from. Which of the
+// other two comes first does not change the bits (section 5), only the anchor does.
+void planeOrder(AnchorVertex anchor, const long long X[3], const long long Y[3], const int ccw[3],
+                int order[3]) {
+  int first = 0;
+  switch (anchor) {
+    case AnchorVertex::Second:
+      first = 1;
+      break;
+    case AnchorVertex::Third:
+      first = 2;
+      break;
+    case AnchorVertex::Lowest:
+    case AnchorVertex::Highest:
+      for (int k = 1; k < 3; ++k) {
+        const int c = ccw[k], f = ccw[first];
+        const bool lower = Y[c] < Y[f] || (Y[c] == Y[f] && X[c] < X[f]);
+        const bool higher = Y[c] > Y[f] || (Y[c] == Y[f] && X[c] < X[f]);
+        if (anchor == AnchorVertex::Lowest ? lower : higher)
+          first = k;
+      }
+      for (int k = 0; k < 3; ++k)
+        order[k] = ccw[(first + k) % 3];
+      return;
+    default:
+      break;
+  }
+  for (int k = 0; k < 3; ++k)
+    order[k] = (first + k) % 3;
+}
+
+// The centre of the pixel column (or row) that holds the fixed-point coordinate v: v / 256
+// rounded down, also for negative v.
+long long pixelCentreOf(long long v) {
+  const long long pixel = v >= 0 ? v / 256 : -((-v + 255) / 256);
+  return centre(pixel);
 }
 
 }  // namespace
 
 ModelPlane::ModelPlane(const long long X[3], const long long Y[3], const float Z[3],
                        const int ccw[3], Variant variant)
-    : variant_(variant) {
-  int order[3] = {0, 1, 2};
-  if (variant == Variant::AnchorRotated) {
-    order[0] = 1, order[1] = 2, order[2] = 0;
-  } else if (variant == Variant::AnchorSorted) {
-    // A rasterizer that sorts: counter-clockwise, starting at the lowest vertex (y, then x).
-    int first = 0;
-    for (int k = 1; k < 3; ++k) {
-      const int c = ccw[k], f = ccw[first];
-      if (Y[c] < Y[f] || (Y[c] == Y[f] && X[c] < X[f]))
-        first = k;
-    }
-    for (int k = 0; k < 3; ++k)
-      order[k] = ccw[(first + k) % 3];
+    : recipe_(planeRecipe(variant)) {
+  int order[3];
+  planeOrder(recipe_.anchor, X, Y, ccw, order);
+  for (int k = 0; k < 3; ++k) {
+    tri_.X[k] = X[order[k]];
+    tri_.Y[k] = Y[order[k]];
+    tri_.Z[k] = Z[order[k]];
   }
-  setUp(X, Y, Z, order);
+  plane_ = setUpPlane(tri_, recipe_);
+  x0_ = tri_.X[0];
+  y0_ = tri_.Y[0];
+  // A recipe that starts elsewhere carries the plane there first, evaluated as the contract
+  // does, and takes that value as its z0.
+  long long rx = 0, ry = 0;
+  switch (recipe_.origin) {
+    case PlaneOrigin::AnchorPixelCentre:
+      rx = pixelCentreOf(x0_), ry = pixelCentreOf(y0_);
+      break;
+    case PlaneOrigin::Pixel00:
+      rx = centre(0), ry = centre(0);
+      break;
+    case PlaneOrigin::FramebufferOrigin:
+      break;
+    default:
+      return;
+  }
+  plane_.z0 = evaluate(rx, ry);
+  x0_ = rx;
+  y0_ = ry;
 }
 
-void ModelPlane::setUp(const long long X[3], const long long Y[3], const float Z[3],
-                       const int order[3]) {
-  const int a = order[0], b = order[1], c = order[2];
-  x0_ = X[a];
-  y0_ = Y[a];
-  const long long area = (X[b] - X[a]) * (Y[c] - Y[a]) - (X[c] - X[a]) * (Y[b] - Y[a]);
-  if (variant_ == Variant::FloatPlane) {
-    const float dz1 = Z[b] - Z[a], dz2 = Z[c] - Z[a];
-    const float ex1 = static_cast<float>(X[b] - X[a]), ey1 = static_cast<float>(Y[b] - Y[a]);
-    const float ex2 = static_cast<float>(X[c] - X[a]), ey2 = static_cast<float>(Y[c] - Y[a]);
-    const float a2 = static_cast<float>(area);
-    fz0_ = Z[a];
-    fdzdx_ = (dz1 * ey2 - dz2 * ey1) / a2;
-    fdzdy_ = (dz2 * ex1 - dz1 * ex2) / a2;
-    return;
+double ModelPlane::evaluate(long long px, long long py) const {
+  const PlaneSetup& p = plane_;
+  const double dx = static_cast<double>(px - x0_), dy = static_cast<double>(py - y0_);
+  if (recipe_.inFloat & kFloatEvaluation) {
+    // |dx|, |dy| < 2^24: exact in float too.
+    return static_cast<double>((p.fz0 + p.fdzdx * static_cast<float>(dx)) +
+                               p.fdzdy * static_cast<float>(dy));
   }
-  z0_ = static_cast<double>(Z[a]);
-  const double dz1 = static_cast<double>(Z[b]) - z0_, dz2 = static_cast<double>(Z[c]) - z0_;
-  const double ex1 = static_cast<double>(X[b] - X[a]), ey1 = static_cast<double>(Y[b] - Y[a]);
-  const double ex2 = static_cast<double>(X[c] - X[a]), ey2 = static_cast<double>(Y[c] - Y[a]);
+  switch (recipe_.eval) {
+    case EvalForm::YThenX:
+      return (p.z0 + p.dzdy * dy) + p.dzdx * dx;
+    case EvalForm::OffsetsFirst:
+      return p.z0 + (p.dzdx * dx + p.dzdy * dy);
+    case EvalForm::DivideSum:
+      return p.z0 + (p.na * dx + p.nb * dy) / p.a2;
+    case EvalForm::DivideTerms:
+      return (p.z0 + (p.na * dx) / p.a2) + (p.nb * dy) / p.a2;
+    case EvalForm::OffsetsOverArea:
+      return (p.z0 + p.na * (dx / p.a2)) + p.nb * (dy / p.a2);
+    case EvalForm::Barycentric:
+    case EvalForm::BarycentricWeights:
+      return barycentricAt(px, py);
+    default:
+      break;
+  }
+  const double sx = (recipe_.fused & kFuseEvalX) ? std::fma(p.dzdx, dx, p.z0) : p.z0 + p.dzdx * dx;
+  return (recipe_.fused & kFuseEvalY) ? std::fma(p.dzdy, dy, sx) : sx + p.dzdy * dy;
+}
+
+double ModelPlane::barycentricAt(long long px, long long py) const {
+  const OrderedTriangle& t = tri_;
+  const long long e1x = t.X[1] - t.X[0], e1y = t.Y[1] - t.Y[0];
+  const long long e2x = t.X[2] - t.X[0], e2y = t.Y[2] - t.Y[0];
+  const long long dx = px - t.X[0], dy = py - t.Y[0];
+  // The edge functions opposite v1 and v2 and the area: exact in 64 bits (below 2^50).
+  const long long area = e1x * e2y - e2x * e1y;
+  const long long w1 = e2y * dx - e2x * dy, w2 = e1x * dy - e1y * dx;
   const double a2 = static_cast<double>(area);
-  if (variant_ == Variant::FmaPlane) {
-    dzdx_ = std::fma(dz1, ey2, -(dz2 * ey1)) / a2;
-    dzdy_ = std::fma(dz2, ex1, -(dz1 * ex2)) / a2;
-  } else {
-    dzdx_ = (dz1 * ey2 - dz2 * ey1) / a2;
-    dzdy_ = (dz2 * ex1 - dz1 * ex2) / a2;
-  }
-}
-
-double ModelPlane::contractAt(long long px, long long py) const {
-  return (z0_ + dzdx_ * static_cast<double>(px - x0_)) + dzdy_ * static_cast<double>(py - y0_);
+  const double l1 = static_cast<double>(w1) / a2, l2 = static_cast<double>(w2) / a2;
+  if (recipe_.eval == EvalForm::Barycentric)
+    return (plane_.z0 + l1 * plane_.dz1) + l2 * plane_.dz2;
+  const double l0 = static_cast<double>(area - w1 - w2) / a2;
+  return (l0 * static_cast<double>(t.Z[0]) + l1 * static_cast<double>(t.Z[1])) +
+         l2 * static_cast<double>(t.Z[2]);
 }
 
 double ModelPlane::incrementalAt(int i, int j) {
+  const PlaneSetup& p = plane_;
   if (j == lastJ_ && i == lastI_ + 1) {
-    lastZ_ += dzdx_ * 256.0;
+    lastZ_ += p.dzdx * 256.0;
   } else {
     while (static_cast<int>(rowStart_.size()) <= j) {
-      rowStart_.push_back(rowStart_.empty() ? contractAt(centre(0), centre(0))
-                                            : rowStart_.back() + dzdy_ * 256.0);
+      rowStart_.push_back(rowStart_.empty() ? evaluate(centre(0), centre(0))
+                                            : rowStart_.back() + p.dzdy * 256.0);
     }
     lastZ_ = rowStart_[static_cast<std::size_t>(j)];
     for (int k = 0; k < i; ++k)
-      lastZ_ += dzdx_ * 256.0;
+      lastZ_ += p.dzdx * 256.0;
   }
   lastI_ = i;
   lastJ_ = j;
@@ -84,23 +149,10 @@ double ModelPlane::incrementalAt(int i, int j) {
 }
 
 double ModelPlane::at(int i, int j) {
-  const long long px = centre(i), py = centre(j);
-  switch (variant_) {
-    case Variant::FloatPlane:
-      return static_cast<double>((fz0_ + fdzdx_ * static_cast<float>(px - x0_)) +
-                                 fdzdy_ * static_cast<float>(py - y0_));
-    case Variant::FmaPlane:
-      return std::fma(dzdy_, static_cast<double>(py - y0_),
-                      std::fma(dzdx_, static_cast<double>(px - x0_), z0_));
-    case Variant::PlaneFromOrigin: {
-      const double c = (z0_ - dzdx_ * static_cast<double>(x0_)) - dzdy_ * static_cast<double>(y0_);
-      return (c + dzdx_ * static_cast<double>(px)) + dzdy_ * static_cast<double>(py);
-    }
-    case Variant::IncrementalFromPixel00:
-      return incrementalAt(i, j);
-    default:
-      return contractAt(px, py);
-  }
+  const double z = recipe_.origin == PlaneOrigin::SteppedFromPixel00
+                       ? incrementalAt(i, j)
+                       : evaluate(centre(i), centre(j));
+  return (recipe_.inFloat & kFloatOutput) ? roundedToFloat(z) : z;
 }
 
 }  // namespace recode::kit::detail

@@ -1,11 +1,12 @@
 #pragma once
 // The depth plane of the reference model (docs/rasterization.md, section 5) and its wrong
 // variants, one triangle at a time: the contract's double-precision plane anchored at the first
-// submitted vertex, or the way a variant sets it up and evaluates it.
+// submitted vertex, or the way a variant's recipe (plane_recipe.hpp) anchors, sets up and
+// evaluates it.
 
-#include <cstdint>
 #include <vector>
 
+#include "model_plane_setup.hpp"
 #include "recode/kit/variants.hpp"
 
 namespace recode::kit::detail {
@@ -18,19 +19,20 @@ class ModelPlane {
              Variant variant);
 
   // The unquantised depth at the centre of pixel (i, j). Calls for one row in increasing i are
-  // cheap under IncrementalFromPixel00, which steps from pixel (0, 0).
+  // cheap when the recipe steps from pixel (0, 0).
   [[nodiscard]] double at(int i, int j);
 
  private:
-  void setUp(const long long X[3], const long long Y[3], const float Z[3], const int order[3]);
-  [[nodiscard]] double contractAt(long long px, long long py) const;
+  // The plane's value at (px, py) the way the recipe evaluates it from (x0_, y0_).
+  [[nodiscard]] double evaluate(long long px, long long py) const;
+  [[nodiscard]] double barycentricAt(long long px, long long py) const;
   [[nodiscard]] double incrementalAt(int i, int j);
 
-  Variant variant_;
-  long long x0_ = 0, y0_ = 0;
-  double z0_ = 0.0, dzdx_ = 0.0, dzdy_ = 0.0;
-  float fz0_ = 0.0f, fdzdx_ = 0.0f, fdzdy_ = 0.0f;  // FloatPlane
-  // IncrementalFromPixel00: row starts stepped from pixel (0, 0), and the last value given.
+  PlaneRecipe recipe_;
+  OrderedTriangle tri_;  // anchor first
+  PlaneSetup plane_;
+  long long x0_ = 0, y0_ = 0;  // where the evaluation starts: the anchor or the point carried to
+  // SteppedFromPixel00: row starts stepped from pixel (0, 0), and the last value given.
   std::vector<double> rowStart_;
   int lastI_ = -2, lastJ_ = -2;
   double lastZ_ = 0.0;

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "model_plane.hpp"
+#include "model_quantise.hpp"
 
 namespace recode::kit {
 
@@ -56,15 +57,8 @@ ReferenceModel::ReferenceModel(int width, int height, Variant variant)
       sy1_(height) {}
 
 std::uint32_t ReferenceModel::quantize(double z) const {
-  if (std::isnan(z) || z <= 0.0)
-    return 0;
-  if (z >= 1.0)
-    return 16777215u;
-  if (variant_ == Variant::QuantiseHalfUp)
-    return static_cast<std::uint32_t>(std::floor(z * 16777215.0 + 0.5));
-  if (variant_ == Variant::Quantise2To24)
-    return std::min(16777215u, static_cast<std::uint32_t>(std::nearbyint(z * 16777216.0)));
-  return modelQuantize(z);
+  const detail::Rounding r = detail::rounding(variant_);
+  return r == detail::Rounding::NearestEven ? modelQuantize(z) : detail::quantiseWith(r, z);
 }
 
 unsigned ReferenceModel::stencilOp(int op, unsigned s) const {

@@ -36,8 +36,9 @@ struct KitVector {
 };
 
 // `count` vectors (at least 1) spread over the families in proportion to their weights, each
-// family's share capped where its cases run out (the compare x op x face grid: 24 vectors) or
-// its files are large (the 16384-pixel frames: 3). Throws std::invalid_argument for count < 1
+// family's share capped where its cases run out (the compare x op x face grid: 24 vectors; the
+// depth readings: 60, each once and the 15 rarest twice) or its files are large (the 16384-pixel
+// frames: 3). Throws std::invalid_argument for count < 1
 // and std::logic_error if a family finds no discriminating candidate or the reference model
 // disagrees with CpuDevice (a bug here, never bad input).
 [[nodiscard]] std::vector<KitVector> generateKit(int count, std::uint64_t seed);
