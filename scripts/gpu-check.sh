@@ -42,7 +42,7 @@ step "verify --suite --width 800" verify-800.json \
   "$recode" verify --suite --width 800 --vulkan --gl-exact --gl-platform egl --json
 step "bench table2 figure8" bench.log \
   "$recode" bench table2 figure8 $quick --out "$out/bench" \
-  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,fcl-gjk,bullet
+  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,fcl-gjk,bullet
 
 echo
 python3 - "$out" <<'PY'
@@ -71,7 +71,8 @@ if v:
 path = os.path.join(out, "bench", "bench.csv")
 if os.path.exists(path):
     rows = list(csv.DictReader(open(path)))
-    columns = ["recode-cpu", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair", "fcl-gjk"]
+    columns = ["recode-cpu", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
+               "recode-vulkan-speculative", "fcl-gjk"]
     print("\nmean ms a frame (submissions a frame):")
     print("| scene | triangles | " + " | ".join(columns) + " |")
     keys = sorted({(r["experiment"], r["scene"], int(r["triangles"])) for r in rows})

@@ -31,6 +31,9 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec vulkanPerPair{"recode-vulkan-per-pair", Kind::Recode, backends::DeviceKind::Vulkan,
                               core::MorMode::Min};
   vulkanPerPair.batch = false;
+  AlgorithmSpec vulkanSpeculative{"recode-vulkan-speculative", Kind::Recode,
+                                  backends::DeviceKind::Vulkan, core::MorMode::Min};
+  vulkanSpeculative.contactSchedule = core::ContactSchedule::Speculative;
   return {
       {"recode-cpu", Kind::Recode, backends::DeviceKind::Cpu, core::MorMode::Min},
       adaptive,
@@ -41,6 +44,7 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
       {"recode-gl-exact", Kind::Recode, backends::DeviceKind::GlExact, core::MorMode::Min},
       {"recode-vulkan", Kind::Recode, backends::DeviceKind::Vulkan, core::MorMode::Min},
       vulkanPerPair,
+      vulkanSpeculative,
       {"fcl-gjk", Kind::FclGjk},
       {"fcl-obbrss", Kind::FclObbrss},
       {"bullet", Kind::Bullet},

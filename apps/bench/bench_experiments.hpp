@@ -28,6 +28,8 @@ struct AlgorithmSpec {
   core::ViewAxisRule viewAxisRule = core::ViewAxisRule::Scene;
   // Recode only: core::RunOptions::batch (off for recode-vulkan-per-pair)
   bool batch = true;
+  // Recode only: core::RunOptions::contactSchedule (speculative for recode-vulkan-speculative)
+  core::ContactSchedule contactSchedule = core::ContactSchedule::AfterVerdict;
 };
 
 struct Experiment {

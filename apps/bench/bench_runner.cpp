@@ -27,6 +27,7 @@ std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
       options.pairMode = spec.mode;
       options.viewAxisRule = spec.viewAxisRule;
       options.batch = spec.batch;
+      options.contactSchedule = spec.contactSchedule;
       return std::make_unique<verify::RecodeDetector>(scene, options, spec.device, spec.name);
     }
     case AlgorithmSpec::Kind::FclGjk:

@@ -40,10 +40,11 @@ struct RunOptions {
   bool quiet = false;
   int threads = 0;  // core::RunOptions::threads
   long long maxPairTests = core::kDefaultMaxPairTestsPerFrame;
-  std::string mode = "reference";  // --mode
-  std::string viewAxis = "scene";  // --view-axis
-  std::string device = "cpu";      // --device: a name of the device registry
-  bool perPair = false;            // --per-pair: core::RunOptions::batch off
+  std::string mode = "reference";                 // --mode
+  std::string viewAxis = "scene";                 // --view-axis
+  std::string device = "cpu";                     // --device: a name of the device registry
+  bool perPair = false;                           // --per-pair: core::RunOptions::batch off
+  std::string contactSchedule = "after-verdict";  // --contact-schedule
 };
 
 std::string builtinNames() {
@@ -147,6 +148,9 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.viewAxisRule = viewAxisRule(o.viewAxis);
   options.deviceFactory = namedDeviceFactory(o.device);
   options.batch = !o.perPair;
+  options.contactSchedule = o.contactSchedule == "speculative"
+                                ? core::ContactSchedule::Speculative
+                                : core::ContactSchedule::AfterVerdict;
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -252,10 +256,19 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                   "the device the pairs are drawn on (an exact one gives the same output bytes "
                   "as cpu, timing aside; a GPU-API device draws from one thread, whatever "
                   "--threads says)");
-  cmd->add_flag("--per-pair", o->perPair,
-                "on a device that defers its commands (vulkan, gl-exact), run each pair test on "
-                "its own instead of a frame's tests as one batch (one or two submissions a "
-                "frame): the same output, for comparing the two");
+  CLI::Option* perPair = cmd->add_flag(
+      "--per-pair", o->perPair,
+      "on a device that defers its commands (vulkan, gl-exact), run each pair test on "
+      "its own instead of a frame's tests as one batch (one or two submissions a "
+      "frame): the same output, for comparing the two");
+  cmd->add_option("--contact-schedule", o->contactSchedule,
+                  "on a device that defers its commands, when a batch draws its contact passes: "
+                  "after-verdict (after the stencil's verdict, for the pairs that interfere: two "
+                  "submissions a frame) or speculative (over every pair's MOR with the stencil "
+                  "passes: one submission, more pixels); the same output")
+      ->check(CLI::IsMember({"after-verdict", "speculative"}))
+      ->excludes(perPair)
+      ->capture_default_str();
   addViewAxisOption(*cmd, o->viewAxis);
   cmd->add_option("--max-pair-tests", o->maxPairTests,
                   "stop with an error when a frame lists more than N pair tests (default " +

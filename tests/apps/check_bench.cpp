@@ -87,6 +87,7 @@ std::vector<Expected> expectations() {
                                         "recode-gl-exact",
                                         "recode-vulkan",
                                         "recode-vulkan-per-pair",
+                                        "recode-vulkan-speculative",
                                         "fcl-gjk",
                                         "fcl-obbrss",
                                         "bullet"};
@@ -240,8 +241,8 @@ int main(int argc, char** argv) {
         // Every device runs the same algorithm on the same frames: the same pairs, and (being
         // exact, or agreeing on coverage) the same pixels read.
         for (const char* key : {"contacts", "missed", "extra", "stencil_pixels_read"})
-          for (const char* device :
-               {"recode-gl", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair"})
+          for (const char* device : {"recode-gl", "recode-gl-exact", "recode-vulkan",
+                                     "recode-vulkan-per-pair", "recode-vulkan-speculative"})
             same("recode-cpu", device, key);
         // A frame's pair tests on Vulkan: one submission for the stencil passes of all and one
         // for the contact passes of those that interfere (docs/architecture.md); test by test,
@@ -252,6 +253,12 @@ int main(int argc, char** argv) {
         if (vulkan != rows.end() && vulkan->second.number("submissions_per_frame") > 2.0)
           fail(prefix + "recode-vulkan: " + vulkan->second.text("submissions_per_frame") +
                " submissions per frame, more than 2");
+        // Speculative contact passes: the stencil and contact passes of every pair in one.
+        const auto speculative = rows.find(prefix + "recode-vulkan-speculative");
+        if (speculative != rows.end() && speculative->second.number("submissions_per_frame") > 1.0)
+          fail(prefix +
+               "recode-vulkan-speculative: " + speculative->second.text("submissions_per_frame") +
+               " submissions per frame, more than 1");
         if (vulkan != rows.end() && perPair != rows.end() &&
             perPair->second.number("submissions_per_frame") <
                 vulkan->second.number("submissions_per_frame"))

@@ -42,3 +42,8 @@ foreach(scene comb-translate-aligned comb-translate-offset comb-rotate-aligned c
 endforeach()
 # Pair by pair instead (the path the bench's per-pair column times): the same bytes too.
 expect_same("run hand-grasp --per-pair" run hand-grasp --json --no-timing --per-pair)
+# The contact passes drawn with the stencil passes, one submission a frame: the same bytes too.
+expect_same("run hand-grasp --contact-schedule speculative" run hand-grasp --json --no-timing
+            --contact-schedule speculative)
+expect_same("run comb-translate-offset --contact-schedule speculative" run comb-translate-offset
+            --json --no-timing --contact-schedule speculative)

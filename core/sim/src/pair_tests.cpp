@@ -108,7 +108,10 @@ class PairTestRunner::Impl {
 };
 
 PairTestRunner::PairTestRunner(const RunOptions& options)
-    : concurrency_(pairTestThreads(options)), mode_(options.pairMode), batch_(options.batch) {
+    : concurrency_(pairTestThreads(options)),
+      mode_(options.pairMode),
+      batch_(options.batch),
+      schedule_(options.contactSchedule) {
   impl_ = std::make_unique<Impl>(options.deviceFactory, concurrency_);
 }
 
@@ -208,7 +211,7 @@ bool PairTestRunner::runBatches(const std::vector<PairTask>& tasks, std::size_t 
     jobs.push_back({tasks[i].blockA, tasks[i].blockB, tasks[i].request});
   }
   try {
-    std::vector<PairResult> results = collidePairs(devices, jobs);
+    std::vector<PairResult> results = collidePairs(devices, jobs, schedule_);
     for (std::size_t i = 0; i < count; ++i) {
       outcomes[i].result = std::move(results[i]);
       keepForReport(tasks[i], outcomes[i].result);

@@ -86,8 +86,9 @@ class PairTestRunner {
   std::unique_ptr<Impl> impl_;
   int concurrency_ = 1;
   PairMode mode_ = PairMode::Reference;
-  bool batch_ = true;                         // RunOptions::batch
-  std::map<std::pair<int, int>, int> lanes_;  // devices per frame size this frame
+  bool batch_ = true;                                         // RunOptions::batch
+  ContactSchedule schedule_ = ContactSchedule::AfterVerdict;  // RunOptions::contactSchedule
+  std::map<std::pair<int, int>, int> lanes_;                  // devices per frame size this frame
 };
 
 }  // namespace recode::core

@@ -19,6 +19,7 @@
 
 #include "recode/pair/frame.hpp"
 #include "recode/pair/pair.hpp"
+#include "recode/pair/pair_batch.hpp"
 #include "recode/raster/device.hpp"
 #include "recode/refine/pair_mode.hpp"
 #include "recode/refine/view_axis_choice.hpp"
@@ -90,6 +91,9 @@ struct RunOptions {
   // per-pair column). The reports are the same bytes either way; the reference and skip-apart
   // modes batch, the conservative and adaptive modes run pair by pair.
   bool batch = true;
+  // When a batch draws its contact passes (pair_batch.hpp): after the stencil's verdict (two
+  // submissions a frame), or speculatively with the stencil passes (one). The same reports.
+  ContactSchedule contactSchedule = ContactSchedule::AfterVerdict;
 };
 
 // A leaf pair whose blocks interfere at this frame.
