@@ -12,8 +12,9 @@ namespace recode::app::explain {
 
 namespace {
 
-// A script's text inside <script>...</script>: it must not close the element itself.
-std::string_view scriptText(std::string_view text, const char* what) {
+// A script's text inside <script>...</script>: it must not close the element itself. Unused in a
+// build without the WebAssembly module (the page is then not written).
+[[maybe_unused]] std::string_view scriptText(std::string_view text, const char* what) {
   if (text.find("</script") != std::string_view::npos)
     throw std::runtime_error(std::string(what) + " contains \"</script\" and cannot be inlined");
   return text;
