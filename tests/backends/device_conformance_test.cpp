@@ -1,11 +1,11 @@
 // One conformance suite for every device that promises the reference's bits: each built device
 // of the registry whose entry is exact (the CPU device itself, the exact GL device on every
-// context platform this build has, Vulkan) runs the same cases against raster::CpuDevice with no
-// tolerance: the golden vectors, random sloped streams compared after every command, the
-// generated pair suite over each pair's MOR, masked and scissored clears, two devices' states
-// kept apart, and the errors. A new
-// back end added to the registry is held to all of them. What is specific to one API (GL's
-// shared context, Vulkan's flipped origin) stays in that device's own test file.
+// context platform this build has, Vulkan with 64-bit and with 32-bit shader arithmetic) runs the
+// same cases against raster::CpuDevice with no tolerance: the golden vectors, random sloped streams
+// compared after every command, the generated pair suite over each pair's MOR, masked and scissored
+// clears, two devices' states kept apart, and the errors. A new back end added to the registry is
+// held to all of them. What is specific to one API (GL's shared context, Vulkan's flipped origin)
+// stays in that device's own test file.
 
 #include <catch2/catch.hpp>
 
@@ -83,6 +83,7 @@ TEST_CASE("the conforming devices are every exact device of this build", "[confo
   CHECK(std::count(labels.begin(), labels.end(), "cpu") == 1);
 #if RECODE_HAVE_VULKAN
   CHECK(std::count(labels.begin(), labels.end(), "vulkan") == 1);
+  CHECK(std::count(labels.begin(), labels.end(), "vulkan-32") == 1);
 #endif
 #if RECODE_HAVE_GL_EXACT
   CHECK(std::count_if(labels.begin(), labels.end(),

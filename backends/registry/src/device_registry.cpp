@@ -37,7 +37,7 @@ constexpr bool kVulkanBuilt = true;
 constexpr bool kVulkanBuilt = false;
 #endif
 
-constexpr std::array<DeviceInfo, 4> kDevices = {{
+constexpr std::array<DeviceInfo, 5> kDevices = {{
     {DeviceKind::Cpu, "cpu", "the CPU reference (raster::CpuDevice): the contract's bits", true,
      true, ""},
     {DeviceKind::Gl, "gl",
@@ -49,6 +49,10 @@ constexpr std::array<DeviceInfo, 4> kDevices = {{
      kGlExactBuilt, "install libegl-dev or libosmesa6-dev and reconfigure"},
     {DeviceKind::Vulkan, "vulkan",
      "Vulkan 1.3 shaders that apply the contract (VulkanDevice), headless", true, kVulkanBuilt,
+     "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
+    {DeviceKind::Vulkan32, "vulkan-32",
+     "the Vulkan device with 32-bit shader arithmetic only (no shaderFloat64, no shaderInt64)",
+     true, kVulkanBuilt,
      "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
 }};
 
@@ -122,6 +126,8 @@ std::unique_ptr<raster::DepthStencilDevice> makeDevice(DeviceKind kind, int widt
 #if RECODE_HAVE_VULKAN
     case DeviceKind::Vulkan:
       return std::make_unique<VulkanDevice>(width, height);
+    case DeviceKind::Vulkan32:
+      return std::make_unique<VulkanDevice>(width, height, ShaderArithmetic::Emulated32);
 #endif
     default:
       notBuilt(info);

@@ -20,15 +20,17 @@ constexpr const char* kInstallHint =
     "Mesa's CPU driver; or the GPU vendor's driver)";
 
 // Why a physical device cannot serve, or empty when it can; sets the queue family it would use.
-std::string unsuitable(VkPhysicalDevice physical, std::uint32_t& family) {
+std::string unsuitable(VkPhysicalDevice physical, ShaderArithmetic arithmetic,
+                       std::uint32_t& family) {
   VkPhysicalDeviceProperties properties{};
   vkGetPhysicalDeviceProperties(physical, &properties);
   if (properties.apiVersion < VK_API_VERSION_1_3)
     return "Vulkan 1.3 is missing";
   VkPhysicalDeviceFeatures features{};
   vkGetPhysicalDeviceFeatures(physical, &features);
-  if (!features.shaderFloat64 || !features.shaderInt64)
-    return "shaderFloat64 or shaderInt64 is missing";
+  if (arithmetic == ShaderArithmetic::Native64 &&
+      (!features.shaderFloat64 || !features.shaderInt64))
+    return "shaderFloat64 or shaderInt64 is missing (the vulkan-32 device needs neither)";
   VkPhysicalDeviceVulkan13Features v13{};
   v13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
   VkPhysicalDeviceFeatures2 features2{};
@@ -86,12 +88,17 @@ void vkCheck(VkResult result, const char* what) {
                              std::to_string(static_cast<int>(result)) + ")");
 }
 
-VulkanContext& VulkanContext::instance() {
-  static VulkanContext* context = new VulkanContext();  // leaked on purpose, see the header
-  return *context;
+VulkanContext& VulkanContext::instance(ShaderArithmetic arithmetic) {
+  // Leaked on purpose, see the header. Static locals, so each is made once even when threads race.
+  if (arithmetic == ShaderArithmetic::Native64) {
+    static VulkanContext* native = new VulkanContext(ShaderArithmetic::Native64);
+    return *native;
+  }
+  static VulkanContext* emulated = new VulkanContext(ShaderArithmetic::Emulated32);
+  return *emulated;
 }
 
-VulkanContext::VulkanContext() {
+VulkanContext::VulkanContext(ShaderArithmetic arithmetic) : arithmetic_(arithmetic) {
   createInstance();
   choosePhysicalDevice();
   createDevice();
@@ -126,7 +133,7 @@ void VulkanContext::choosePhysicalDevice() {
     VkPhysicalDeviceProperties properties{};
     vkGetPhysicalDeviceProperties(physical, &properties);
     std::uint32_t family = 0;
-    const std::string why = unsuitable(physical, family);
+    const std::string why = unsuitable(physical, arithmetic_, family);
     if (!why.empty()) {
       reasons += std::string("; ") + properties.deviceName + ": " + why;
       continue;
@@ -151,15 +158,17 @@ void VulkanContext::createDevice() {
   queue.queueFamilyIndex = queueFamily_;
   queue.queueCount = 1;
   queue.pQueuePriorities = &priority;
-  // The contract's doubles and 64-bit edge functions, and dynamic rendering (no render pass).
+  // Dynamic rendering (no render pass), and for Native64 the contract's doubles and 64-bit edge
+  // functions; Emulated32 asks for neither, which is its point.
   VkPhysicalDeviceVulkan13Features v13{};
   v13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
   v13.dynamicRendering = VK_TRUE;
   VkPhysicalDeviceFeatures2 features{};
   features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
   features.pNext = &v13;
-  features.features.shaderFloat64 = VK_TRUE;
-  features.features.shaderInt64 = VK_TRUE;
+  const VkBool32 native = arithmetic_ == ShaderArithmetic::Native64 ? VK_TRUE : VK_FALSE;
+  features.features.shaderFloat64 = native;
+  features.features.shaderInt64 = native;
   VkDeviceCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
   info.pNext = &features;

@@ -12,6 +12,8 @@
 #include <mutex>
 #include <string>
 
+#include "recode/backends/vulkan_shader_arithmetic.hpp"
+
 namespace recode::backends::detail {
 
 // Throws std::runtime_error naming `what` and the VkResult unless result is VK_SUCCESS.
@@ -27,9 +29,13 @@ struct HostBuffer {
 
 class VulkanContext {
  public:
-  // The process's context; the first call makes it and throws std::runtime_error when no
-  // driver or no suitable physical device exists, saying what to install or what is missing.
-  static VulkanContext& instance();
+  // The process's context for devices of that arithmetic (a logical device that enables
+  // shaderFloat64 and shaderInt64 for Native64 only); the first call makes it and throws
+  // std::runtime_error when no driver or no suitable physical device exists, saying what to
+  // install or what is missing.
+  static VulkanContext& instance(ShaderArithmetic arithmetic);
+
+  [[nodiscard]] ShaderArithmetic arithmetic() const { return arithmetic_; }
 
   [[nodiscard]] VkDevice device() const { return device_; }
   [[nodiscard]] const std::string& deviceName() const { return name_; }
@@ -50,11 +56,12 @@ class VulkanContext {
   void submitAndWait(VkCommandBuffer commands, VkFence fence);
 
  private:
-  VulkanContext();
+  explicit VulkanContext(ShaderArithmetic arithmetic);
   void createInstance();
   void choosePhysicalDevice();
   void createDevice();
 
+  ShaderArithmetic arithmetic_;
   VkInstance instance_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkPhysicalDeviceMemoryProperties memory_{};

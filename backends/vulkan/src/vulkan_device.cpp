@@ -42,12 +42,20 @@ using raster::PixelRect;
 // ordered as q is, so the float depth compare is the contract's integer compare.
 constexpr float kDepthUnit = 1.0f / 16777216.0f;
 
-// The pipelines every device shares, made with the context on first use (never destroyed,
-// like the context).
-const detail::ExactPipelines& sharedPipelines() {
-  static const detail::ExactPipelines* pipelines = new detail::ExactPipelines(
-      detail::createExactPipelines(detail::VulkanContext::instance().device()));
-  return *pipelines;
+// The pipelines every device of that arithmetic shares, made with its context on first use
+// (never destroyed, like the context).
+const detail::ExactPipelines& makePipelines(ShaderArithmetic arithmetic) {
+  return *new detail::ExactPipelines(detail::createExactPipelines(
+      detail::VulkanContext::instance(arithmetic).device(), arithmetic));
+}
+
+const detail::ExactPipelines& sharedPipelines(ShaderArithmetic arithmetic) {
+  if (arithmetic == ShaderArithmetic::Native64) {
+    static const detail::ExactPipelines& native = makePipelines(ShaderArithmetic::Native64);
+    return native;
+  }
+  static const detail::ExactPipelines& emulated = makePipelines(ShaderArithmetic::Emulated32);
+  return emulated;
 }
 
 constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
@@ -57,10 +65,11 @@ constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE
 struct VulkanDevice::Impl {
   int width = 0;
   int height = 0;
+  ShaderArithmetic arithmetic = ShaderArithmetic::Native64;
   const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
   detail::VulkanContext* context = nullptr;
   const detail::ExactPipelines* pipelines = nullptr;
-  detail::CommandRecorder* recorder = nullptr;  // sharedRecorder()
+  detail::CommandRecorder* recorder = nullptr;  // sharedRecorder(arithmetic)
   raster::TransferCounters transfers;           // what this device's calls made the recorder do
 
   // Runs `call` on the recorder and counts the submissions and read-back bytes it caused as
@@ -82,7 +91,7 @@ struct VulkanDevice::Impl {
   detail::ImageSlot slot;
   VkImage image = VK_NULL_HANDLE;  // slot's, named for the many uses
   VkImageView view = VK_NULL_HANDLE;
-  bool reused = false;  // the slot came from detail::imageCache(): in GENERAL layout already
+  bool reused = false;  // the slot came from detail::imageCache: in GENERAL layout already
 
   VkDevice device() const { return context->device(); }
 
@@ -95,7 +104,8 @@ struct VulkanDevice::Impl {
   // The image lives in GENERAL layout for its whole life, so attachments and transfers need no
   // layout transitions; the recorder's barriers order the commands.
   void createImage() {
-    if (std::optional<detail::ImageSlot> kept = detail::imageCache().take(width, height)) {
+    if (std::optional<detail::ImageSlot> kept =
+            detail::imageCache(arithmetic).take(width, height)) {
       slot = *kept;
       reused = true;
     } else {
@@ -275,7 +285,7 @@ struct VulkanDevice::Impl {
       recorder->finish();
     } catch (...) {  // NOLINT(bugprone-empty-catch): a destructor must not throw
     }
-    if (std::optional<detail::ImageSlot> unkept = detail::imageCache().give(slot)) {
+    if (std::optional<detail::ImageSlot> unkept = detail::imageCache(arithmetic).give(slot)) {
       vkDestroyImageView(device(), unkept->view, nullptr);
       vkDestroyImage(device(), unkept->image, nullptr);
       vkFreeMemory(device(), unkept->memory, nullptr);
@@ -283,16 +293,17 @@ struct VulkanDevice::Impl {
   }
 };
 
-VulkanDevice::VulkanDevice(int width, int height)
+VulkanDevice::VulkanDevice(int width, int height, ShaderArithmetic arithmetic)
     : RenderStateDevice(width, height), impl_(std::make_unique<Impl>()) {
   raster::checkFramebufferSize(width, height);
   Impl& d = *impl_;
   d.width = width;
   d.height = height;
+  d.arithmetic = arithmetic;
   d.state = &state_;
-  d.pipelines = &sharedPipelines();  // makes the context too
-  d.context = &detail::VulkanContext::instance();
-  d.recorder = &detail::sharedRecorder();
+  d.pipelines = &sharedPipelines(arithmetic);  // makes the context too
+  d.context = &detail::VulkanContext::instance(arithmetic);
+  d.recorder = &detail::sharedRecorder(arithmetic);
   d.createImage();
   d.initialiseImage();
 }
@@ -309,6 +320,10 @@ int VulkanDevice::height() const {
 
 std::string VulkanDevice::renderer() const {
   return impl_->context->deviceName();
+}
+
+ShaderArithmetic VulkanDevice::arithmetic() const {
+  return impl_->arithmetic;
 }
 
 // The state setters are RenderStateDevice's: state_ is set as dynamic state in every command

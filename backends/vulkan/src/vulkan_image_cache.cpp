@@ -39,9 +39,9 @@ std::optional<ImageSlot> ImageCache::give(const ImageSlot& slot) {
   return std::nullopt;
 }
 
-ImageCache& imageCache() {
-  static ImageCache* cache = new ImageCache();  // leaked on purpose, as the context
-  return *cache;
+ImageCache& imageCache(ShaderArithmetic arithmetic) {
+  static ImageCache* caches = new ImageCache[kShaderArithmeticCount];  // leaked, as the context
+  return caches[indexOf(arithmetic)];
 }
 
 int capacityFor(int size) {

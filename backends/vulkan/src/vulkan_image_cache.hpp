@@ -10,6 +10,8 @@
 #include <optional>
 #include <vector>
 
+#include "recode/backends/vulkan_shader_arithmetic.hpp"
+
 namespace recode::backends::detail {
 
 // A depth/stencil image with its memory and view, of a capacity at least the device's size: the
@@ -39,8 +41,9 @@ class ImageCache {
   std::vector<ImageSlot> slots_;
 };
 
-// The process's cache, never destroyed (as the context).
-[[nodiscard]] ImageCache& imageCache();
+// The process's cache of images made on that arithmetic's logical device, never destroyed (as
+// the context).
+[[nodiscard]] ImageCache& imageCache(ShaderArithmetic arithmetic);
 
 // The side a new image is made for `size` pixels: a multiple of 64 (at most the largest
 // framebuffer), so that the next sizes fit it.

@@ -38,8 +38,13 @@ constexpr std::array kDynamicStates = {
     VK_DYNAMIC_STATE_STENCIL_REFERENCE,
 };
 
-// The proxy records as per-instance attributes, in the layout of ProxyTriangle.
+// The proxy records as per-instance attributes, in the layout of ProxyTriangle. Emulated32's
+// shaders read z as the floats' bits (a UINT format: the bytes unchanged), never as floats.
 struct ProxyInput {
+  explicit ProxyInput(ShaderArithmetic arithmetic) {
+    if (arithmetic == ShaderArithmetic::Emulated32)
+      attributes[3].format = VK_FORMAT_R32G32B32_UINT;
+  }
   VkVertexInputBindingDescription binding{0, sizeof(ProxyTriangle), VK_VERTEX_INPUT_RATE_INSTANCE};
   std::array<VkVertexInputAttributeDescription, 6> attributes{{
       {0, 0, VK_FORMAT_R32G32B32A32_SINT, offsetof(ProxyTriangle, pixelRect)},
@@ -53,7 +58,8 @@ struct ProxyInput {
 
 VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout,
                           std::span<const std::uint32_t> vertexWords,
-                          std::span<const std::uint32_t> fragmentWords, bool proxyInput) {
+                          std::span<const std::uint32_t> fragmentWords, bool proxyInput,
+                          ShaderArithmetic arithmetic) {
   const VkShaderModule vertex = createModule(device, vertexWords);
   const VkShaderModule fragment = createModule(device, fragmentWords);
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
@@ -66,7 +72,7 @@ VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout,
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = fragment;
 
-  const ProxyInput proxy;
+  const ProxyInput proxy(arithmetic);
   VkPipelineVertexInputStateCreateInfo input{};
   input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
   if (proxyInput) {
@@ -134,7 +140,7 @@ VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout,
 
 }  // namespace
 
-ExactPipelines createExactPipelines(VkDevice device) {
+ExactPipelines createExactPipelines(VkDevice device, ShaderArithmetic arithmetic) {
   ExactPipelines out;
   VkPushConstantRange range{};
   range.stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -144,9 +150,11 @@ ExactPipelines createExactPipelines(VkDevice device) {
   layout.pushConstantRangeCount = 1;
   layout.pPushConstantRanges = &range;
   vkCheck(vkCreatePipelineLayout(device, &layout, nullptr, &out.layout), "vkCreatePipelineLayout");
-  const SpirvModules spirv = spirvModules();
-  out.exact = createPipeline(device, out.layout, spirv.exactVertex, spirv.exactFragment, true);
-  out.clear = createPipeline(device, out.layout, spirv.clearVertex, spirv.clearFragment, false);
+  const SpirvModules spirv = spirvModules(arithmetic);
+  out.exact =
+      createPipeline(device, out.layout, spirv.exactVertex, spirv.exactFragment, true, arithmetic);
+  out.clear =
+      createPipeline(device, out.layout, spirv.clearVertex, spirv.clearFragment, false, arithmetic);
   return out;
 }
 

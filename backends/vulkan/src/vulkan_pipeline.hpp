@@ -7,6 +7,8 @@
 
 #include <vulkan/vulkan_core.h>
 
+#include "recode/backends/vulkan_shader_arithmetic.hpp"
+
 namespace recode::backends::detail {
 
 // The push constants both pipelines read, in the shaders' `Frame` block layout.
@@ -24,7 +26,8 @@ struct ExactPipelines {
 // The depth/stencil attachment format both pipelines render to.
 inline constexpr VkFormat kExactDepthStencilFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
 
-// Made once per logical device; throws std::runtime_error on a Vulkan failure.
-[[nodiscard]] ExactPipelines createExactPipelines(VkDevice device);
+// Made once per logical device, with that arithmetic's shaders; throws std::runtime_error on a
+// Vulkan failure.
+[[nodiscard]] ExactPipelines createExactPipelines(VkDevice device, ShaderArithmetic arithmetic);
 
 }  // namespace recode::backends::detail

@@ -174,9 +174,16 @@ raster::TransferCounters CommandRecorder::counters() const {
   return counters_;
 }
 
-CommandRecorder& sharedRecorder() {
-  static CommandRecorder* recorder = new CommandRecorder(VulkanContext::instance());  // leaked
-  return *recorder;
+CommandRecorder& sharedRecorder(ShaderArithmetic arithmetic) {
+  // Leaked, as the contexts.
+  if (arithmetic == ShaderArithmetic::Native64) {
+    static CommandRecorder* native =
+        new CommandRecorder(VulkanContext::instance(ShaderArithmetic::Native64));
+    return *native;
+  }
+  static CommandRecorder* emulated =
+      new CommandRecorder(VulkanContext::instance(ShaderArithmetic::Emulated32));
+  return *emulated;
 }
 
 }  // namespace recode::backends::detail

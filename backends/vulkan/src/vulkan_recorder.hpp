@@ -104,8 +104,8 @@ class CommandRecorder {
   raster::TransferCounters counters_;
 };
 
-// The process's recorder, made with the context on first use and never destroyed (as the
-// context).
-[[nodiscard]] CommandRecorder& sharedRecorder();
+// The process's recorder for devices of that arithmetic (on that arithmetic's context), made
+// with the context on first use and never destroyed (as the context).
+[[nodiscard]] CommandRecorder& sharedRecorder(ShaderArithmetic arithmetic);
 
 }  // namespace recode::backends::detail

@@ -7,11 +7,15 @@ namespace {
 using std::uint32_t;
 #include "clear_vk.frag.h"
 #include "clear_vk.vert.h"
+#include "exact32_vk.frag.h"
+#include "exact32_vk.vert.h"
 #include "exact_vk.frag.h"
 #include "exact_vk.vert.h"
 }  // namespace
 
-SpirvModules spirvModules() {
+SpirvModules spirvModules(ShaderArithmetic arithmetic) {
+  if (arithmetic == ShaderArithmetic::Emulated32)
+    return {k_exact32_vk_vert, k_exact32_vk_frag, k_clear_vk_vert, k_clear_vk_frag};
   return {k_exact_vk_vert, k_exact_vk_frag, k_clear_vk_vert, k_clear_vk_frag};
 }
 

@@ -14,15 +14,16 @@
 namespace recode::backends {
 
 enum class DeviceKind {
-  Cpu,      // raster::CpuDevice, the reference
-  Gl,       // GlDevice: fixed-function OpenGL on OSMesa (llvmpipe; its depth is not bit-exact)
-  GlExact,  // GlExactDevice: OpenGL 4.5 shaders that apply the contract (EGL, else OSMesa)
-  Vulkan,   // VulkanDevice: the same contract on Vulkan 1.3
+  Cpu,       // raster::CpuDevice, the reference
+  Gl,        // GlDevice: fixed-function OpenGL on OSMesa (llvmpipe; its depth is not bit-exact)
+  GlExact,   // GlExactDevice: OpenGL 4.5 shaders that apply the contract (EGL, else OSMesa)
+  Vulkan,    // VulkanDevice: the same contract on Vulkan 1.3
+  Vulkan32,  // VulkanDevice, ShaderArithmetic::Emulated32: the same bits, 32-bit shaders only
 };
 
 struct DeviceInfo {
   DeviceKind kind = DeviceKind::Cpu;
-  std::string_view name;         // "cpu", "gl", "gl-exact", "vulkan": what --device takes
+  std::string_view name;  // "cpu", "gl", "gl-exact", "vulkan", "vulkan-32": what --device takes
   std::string_view description;  // one line
   bool exact = false;            // promises raster::CpuDevice's bits (docs/rasterization.md)
   bool built = false;            // this build can make it

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "recode/backends/vulkan_shader_arithmetic.hpp"
 #include "recode/raster/render_state_device.hpp"
 
 namespace recode::backends {
@@ -21,10 +22,11 @@ class VulkanDevice final : public raster::RenderStateDevice {
   // A width x height framebuffer (depth 2^24 - 1, stencil 0, the interface's default state).
   // Throws std::invalid_argument unless 1 <= width, height <= 16384, and std::runtime_error
   // when there is no Vulkan driver or no physical device with what the device needs (Vulkan
-  // 1.3, shaderFloat64, shaderInt64, a D32_SFLOAT_S8_UINT depth/stencil attachment), saying
-  // what to install. Every device of the process shares one instance, logical device and
-  // pipeline, made on first use; a device must be used by one thread at a time.
-  VulkanDevice(int width, int height);
+  // 1.3, a D32_SFLOAT_S8_UINT depth/stencil attachment, and for Native64 shaderFloat64 and
+  // shaderInt64), saying what to install. Every device of the process with the same arithmetic
+  // shares one instance, logical device and pipeline, made on first use; a device must be used
+  // by one thread at a time.
+  VulkanDevice(int width, int height, ShaderArithmetic arithmetic = ShaderArithmetic::Native64);
   ~VulkanDevice() override;
   VulkanDevice(const VulkanDevice&) = delete;
   VulkanDevice& operator=(const VulkanDevice&) = delete;
@@ -57,6 +59,7 @@ class VulkanDevice final : public raster::RenderStateDevice {
 
   // The physical device's name ("llvmpipe (LLVM 15.0.6, 256 bits)") and its driver's.
   [[nodiscard]] std::string renderer() const;
+  [[nodiscard]] ShaderArithmetic arithmetic() const;
 
  private:
   struct Impl;
