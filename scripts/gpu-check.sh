@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # The GPU check: on a machine with a GPU driver (a Vulkan ICD and an EGL vendor library), are the
 # exact devices still the reference bit for bit, and how fast are they? Runs
-#   1. recode conform on the exact Vulkan and GL devices (every committed golden vector),
-#   2. recode verify --suite at 800 pixels on both (per-command parity of 504 pairs, then the
-#      same pairs as one batch against the reference),
+#   1. recode conform on the exact Vulkan, GL and 32-bit Vulkan devices (every committed golden
+#      vector),
+#   2. recode verify --suite at 800 pixels on the exact Vulkan and GL devices (per-command parity
+#      of 504 pairs, then the same pairs as one batch against the reference),
 #   3. recode bench table2 figure8 with the GPU columns (the CGAL judge, recode-cpu, the exact
-#      devices batched and Vulkan pair by pair, FCL GJK, Bullet),
+#      devices batched, Vulkan pair by pair and with speculative contact passes, the 32-bit
+#      Vulkan device, FCL GJK, Bullet),
 # and prints a summary. Exit status 0 when every correctness check passed (the bench's times are
 # reported, never judged).
 #
@@ -38,11 +40,12 @@ step() {  # step NAME LOG COMMAND...: runs it, keeps its output, records a failu
 echo "gpu-check: $recode, writing into $out"
 step "conform --device vulkan" conform-vulkan.json "$recode" conform --device vulkan --json
 step "conform --device gl-exact" conform-gl-exact.json "$recode" conform --device gl-exact --json
+step "conform --device vulkan-32" conform-vulkan-32.json "$recode" conform --device vulkan-32 --json
 step "verify --suite --width 800" verify-800.json \
   "$recode" verify --suite --width 800 --vulkan --gl-exact --gl-platform egl --json
 step "bench table2 figure8" bench.log \
   "$recode" bench table2 figure8 $quick --out "$out/bench" \
-  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,fcl-gjk,bullet
+  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-32,fcl-gjk,bullet
 
 echo
 python3 - "$out" <<'PY'
@@ -56,7 +59,7 @@ def load(name):
     except (OSError, ValueError):
         return None
 
-for device in ("vulkan", "gl-exact"):
+for device in ("vulkan", "gl-exact", "vulkan-32"):
     c = load(f"conform-{device}.json")
     if c:
         print(f"conform {device}: {c.get('passed', '?')} of {c.get('vectors', '?')} vectors passed")
@@ -72,7 +75,7 @@ path = os.path.join(out, "bench", "bench.csv")
 if os.path.exists(path):
     rows = list(csv.DictReader(open(path)))
     columns = ["recode-cpu", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
-               "recode-vulkan-speculative", "fcl-gjk"]
+               "recode-vulkan-speculative", "recode-vulkan-32", "fcl-gjk"]
     print("\nmean ms a frame (submissions a frame):")
     print("| scene | triangles | " + " | ".join(columns) + " |")
     keys = sorted({(r["experiment"], r["scene"], int(r["triangles"])) for r in rows})

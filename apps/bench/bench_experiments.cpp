@@ -45,6 +45,7 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
       {"recode-vulkan", Kind::Recode, backends::DeviceKind::Vulkan, core::MorMode::Min},
       vulkanPerPair,
       vulkanSpeculative,
+      {"recode-vulkan-32", Kind::Recode, backends::DeviceKind::Vulkan32, core::MorMode::Min},
       {"fcl-gjk", Kind::FclGjk},
       {"fcl-obbrss", Kind::FclObbrss},
       {"bullet", Kind::Bullet},

@@ -88,6 +88,7 @@ std::vector<Expected> expectations() {
                                         "recode-vulkan",
                                         "recode-vulkan-per-pair",
                                         "recode-vulkan-speculative",
+                                        "recode-vulkan-32",
                                         "fcl-gjk",
                                         "fcl-obbrss",
                                         "bullet"};
@@ -241,8 +242,9 @@ int main(int argc, char** argv) {
         // Every device runs the same algorithm on the same frames: the same pairs, and (being
         // exact, or agreeing on coverage) the same pixels read.
         for (const char* key : {"contacts", "missed", "extra", "stencil_pixels_read"})
-          for (const char* device : {"recode-gl", "recode-gl-exact", "recode-vulkan",
-                                     "recode-vulkan-per-pair", "recode-vulkan-speculative"})
+          for (const char* device :
+               {"recode-gl", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
+                "recode-vulkan-speculative", "recode-vulkan-32"})
             same("recode-cpu", device, key);
         // A frame's pair tests on Vulkan: one submission for the stencil passes of all and one
         // for the contact passes of those that interfere (docs/architecture.md); test by test,
