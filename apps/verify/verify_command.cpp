@@ -35,6 +35,7 @@ struct VerifyOptions {
   bool glExact = false;
   std::string glPlatform = "auto";
   bool vulkan = false;
+  bool vulkan32 = false;  // --vulkan-32: the Vulkan oracle on the 32-bit arithmetic
   bool json = false;
   bool noTiming = false;  // --no-timing
   bool verbose = false;
@@ -47,8 +48,13 @@ struct VerifyOptions {
 // The oracles named on the command line; none named means Embree and CGAL (docs/cli.md,
 // "recode verify": the GL replay is asked for explicitly, as it needs OSMesa at run time).
 verify::OracleSelection selectedOracles(const VerifyOptions& o) {
-  verify::OracleSelection s{
-      o.embree, o.cgal, o.gl, o.glExact, *backends::parseGlPlatform(o.glPlatform), o.vulkan};
+  verify::OracleSelection s{o.embree,
+                            o.cgal,
+                            o.gl,
+                            o.glExact,
+                            *backends::parseGlPlatform(o.glPlatform),
+                            o.vulkan || o.vulkan32,
+                            o.vulkan32};
   if (!s.embree && !s.cgal && !s.gl && !s.glExact && !s.vulkan)
     s.embree = s.cgal = true;
   return s;
@@ -104,8 +110,10 @@ void checkBatches(VerifyRun& run, const VerifyPairs& input,
   if (run.oracles.glExact)
     run.glExactBatch = checkBatch(batch, verify::glExactDeviceFactory(run.glPlatform));
   if (run.oracles.vulkan)
-    run.vulkanBatch = checkBatch(batch, [](int width, int height) {
-      return backends::makeDevice(backends::DeviceKind::Vulkan, width, height);
+    run.vulkanBatch = checkBatch(batch, [&](int width, int height) {
+      return backends::makeDevice(
+          run.oracles.vulkan32 ? backends::DeviceKind::Vulkan32 : backends::DeviceKind::Vulkan,
+          width, height);
     });
 }
 
@@ -221,10 +229,15 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
                   "EGL, else OSMesa; --gl: OSMesa, else EGL)")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}))
       ->capture_default_str();
-  cmd->add_flag("--vulkan", o->vulkan,
-                "replay every pair's commands on the exact Vulkan device (headless Vulkan 1.3, "
-                "lavapipe or a GPU) and require bit-identical depth and stencil after every "
-                "command");
+  CLI::Option* vulkan =
+      cmd->add_flag("--vulkan", o->vulkan,
+                    "replay every pair's commands on the exact Vulkan device (headless Vulkan 1.3, "
+                    "lavapipe or a GPU) and require bit-identical depth and stencil after every "
+                    "command");
+  cmd->add_flag("--vulkan-32", o->vulkan32,
+                "the same on the vulkan-32 device (the exact Vulkan device with 32-bit shader "
+                "arithmetic only); reported as \"vulkan\" with \"device\": \"vulkan-32\"")
+      ->excludes(vulkan);
   CLI::Option* json =
       cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   addNoTimingFlag(*cmd, json, o->noTiming);

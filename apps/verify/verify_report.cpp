@@ -224,7 +224,8 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
     out << "  gl-exact " << glExactLine(t.glExact) << "  (" << backends::toString(run.glPlatform)
         << ", " << t.glExactSeconds << " s)\n";
   if (run.oracles.vulkan)
-    out << "  vulkan  " << glExactLine(t.vulkan) << "  (" << t.vulkanSeconds << " s)\n";
+    out << "  vulkan  " << glExactLine(t.vulkan) << "  ("
+        << (run.oracles.vulkan32 ? "vulkan-32, " : "") << t.vulkanSeconds << " s)\n";
   for (const auto& [name, batch] :
        {std::pair{"gl-exact", &run.glExactBatch}, std::pair{"vulkan", &run.vulkanBatch}})
     if (*batch)
@@ -289,6 +290,8 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
   }
   if (run.oracles.vulkan) {
     j["vulkan"] = glExactJson(t.vulkan);
+    if (run.oracles.vulkan32)
+      j["vulkan"]["device"] = "vulkan-32";
     j["vulkan"]["seconds"] = t.vulkanSeconds;
   }
   const auto batchJson = [](const BatchCheck& b) {

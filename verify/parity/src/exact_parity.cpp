@@ -152,15 +152,17 @@ core::DeviceFactory glExactDeviceFactory(backends::GlPlatform platform) {
 
 #ifndef RECODE_HAVE_VULKAN
 ExactParityReport compareOnVulkan(const core::TriangleMesh&, const core::TriangleMesh&,
-                                  const core::PairRequest&) {
+                                  const core::PairRequest&, bool) {
   throw std::runtime_error(
       "this build has no Vulkan device (Debian: apt-get install libvulkan-dev glslang-tools "
       "mesa-vulkan-drivers, then reconfigure)");
 }
 #else
 ExactParityReport compareOnVulkan(const core::TriangleMesh& a, const core::TriangleMesh& b,
-                                  const core::PairRequest& request) {
-  return compareOnDeviceWithRenderer<backends::VulkanDevice>(a, b, request);
+                                  const core::PairRequest& request, bool emulated32) {
+  return compareOnDeviceWithRenderer<backends::VulkanDevice>(
+      a, b, request,
+      emulated32 ? backends::ShaderArithmetic::Emulated32 : backends::ShaderArithmetic::Native64);
 }
 #endif
 

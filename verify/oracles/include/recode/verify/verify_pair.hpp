@@ -31,6 +31,9 @@ struct OracleSelection {
   bool glExact = false;  // bit-exact replay on backends::GlExactDevice
   backends::GlPlatform glPlatform = backends::GlPlatform::Auto;  // its context platform
   bool vulkan = false;  // bit-exact replay on backends::VulkanDevice
+  // With vulkan: the device's 32-bit shader arithmetic (the vulkan-32 device) instead of its
+  // 64-bit one; the reports keep the key "vulkan".
+  bool vulkan32 = false;
 };
 
 struct PairVerification {

@@ -63,11 +63,13 @@ struct ExactParityReport {
     const core::TriangleMesh& a, const core::TriangleMesh& b, const core::PairRequest& request,
     backends::GlPlatform platform = backends::GlPlatform::Auto);
 
-// The same on a backends::VulkanDevice (the process's shared Vulkan context). Throws
-// std::runtime_error when the build has no Vulkan device or no Vulkan driver is found.
+// The same on a backends::VulkanDevice (the process's shared Vulkan context), with its 32-bit
+// shader arithmetic when `emulated32` (the vulkan-32 device). Throws std::runtime_error when
+// the build has no Vulkan device or no Vulkan driver is found.
 [[nodiscard]] ExactParityReport compareOnVulkan(const core::TriangleMesh& a,
                                                 const core::TriangleMesh& b,
-                                                const core::PairRequest& request);
+                                                const core::PairRequest& request,
+                                                bool emulated32 = false);
 
 // The exact GL device on `platform` as verify makes it, for what runs on many devices (a batch;
 // the registry's factories take no platform): throws what compareOnGlExact throws when the
