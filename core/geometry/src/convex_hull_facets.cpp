@@ -12,6 +12,7 @@
 
 #include "convex_hull_detail.hpp"
 #include "recode/geometry/exact_predicates.hpp"
+#include "recode/geometry/hash_order.hpp"
 
 namespace recode::core::detail {
 namespace {
@@ -71,8 +72,13 @@ std::vector<Triangle> cornerTriangulation(std::span<const Eigen::Vector3d> point
   std::vector<Triangle> result;
   result.reserve(triangles.size());
   // Each larger face's boundary as "next vertex after u" (a convex polygon passes each vertex
-  // once).
-  std::unordered_map<std::size_t, std::unordered_map<VertexIndex, VertexIndex>> boundary;
+  // once), and the order libstdc++'s map of it lists the vertices in: the loop starts at its
+  // first (hash_order.hpp), as the native build always has, whatever the standard library.
+  struct FaceBoundary {
+    std::unordered_map<VertexIndex, VertexIndex> next;
+    LibstdcxxHashOrder order;
+  };
+  std::unordered_map<std::size_t, FaceBoundary> boundary;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const std::size_t face = faces.find(t);
     if (faceSize[face] == 1) {
@@ -80,8 +86,14 @@ std::vector<Triangle> cornerTriangulation(std::span<const Eigen::Vector3d> point
       continue;
     }
     for (std::size_t i = 0; i < 3; ++i) {
-      if (faces.find(across(t, i)) != face)
-        boundary[face][triangles[t][i]] = triangles[t][(i + 1) % 3];
+      if (faces.find(across(t, i)) != face) {
+        FaceBoundary& b = boundary[face];
+        const VertexIndex from = triangles[t][i], to = triangles[t][(i + 1) % 3];
+        if (b.next.emplace(from, to).second)
+          b.order.insert(from);
+        else
+          b.next[from] = to;
+      }
     }
   }
 
@@ -90,16 +102,10 @@ std::vector<Triangle> cornerTriangulation(std::span<const Eigen::Vector3d> point
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     if (faces.find(t) != t || faceSize[t] == 1)
       continue;
-    const auto& next = boundary.at(t);
+    const FaceBoundary& face = boundary.at(t);
+    const auto& next = face.next;
     loop.clear();
-    // From the face's largest vertex index, not a hash map's first entry, whose order is the
-    // standard library's own (libc++ and libstdc++ differ): the corners' order makes the face's
-    // triangles. Which start is arbitrary, but it decides the triangles, and a hull at the edge
-    // of the validation tolerance passes or fails with its triangles (the 1e-12 slab of the
-    // hull tests is refused with this start, accepted from the smallest vertex).
-    VertexIndex first = next.begin()->first;
-    for (const auto& edge : next)
-      first = std::max(first, edge.first);
+    const VertexIndex first = face.order.first();
     VertexIndex v = first;
     do {
       loop.push_back(v);

@@ -6,6 +6,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "recode/geometry/hash_order.hpp"
+
 namespace recode::core {
 
 namespace {
@@ -78,20 +80,24 @@ class Clipper {
         edges.insert(
             edgeKey(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]));
     std::unordered_map<VertexIndex, VertexIndex> next;  // cap edge b -> a for border edge a -> b
+    // The order libstdc++'s map lists `next` in: each loop starts at its first key, as the
+    // native build always has, whatever the standard library (hash_order.hpp); the cap's centre
+    // is summed in loop order.
+    LibstdcxxHashOrder order;
     for (const Triangle& t : out_.triangles)
       for (int k = 0; k < 3; ++k) {
         const VertexIndex a = t[static_cast<std::size_t>(k)];
         const VertexIndex b = t[static_cast<std::size_t>((k + 1) % 3)];
-        if (a != b && !edges.contains(edgeKey(b, a)))
-          next[b] = a;
+        if (a != b && !edges.contains(edgeKey(b, a))) {
+          if (next.emplace(b, a).second)
+            order.insert(b);
+          else
+            next[b] = a;
+        }
       }
     while (!next.empty()) {
       std::vector<VertexIndex> loop;
-      // Each loop from its smallest vertex: a hash map's order is the standard library's own
-      // (libc++ and libstdc++ differ), and the cap's centre is summed in loop order.
-      VertexIndex v = next.begin()->first;
-      for (const auto& edge : next)
-        v = std::min(v, edge.first);
+      VertexIndex v = order.first();
       while (true) {
         const auto it = next.find(v);
         if (it == next.end())
@@ -99,6 +105,7 @@ class Clipper {
         loop.push_back(v);
         v = it->second;
         next.erase(it);
+        order.erase(loop.back());
       }
       if (loop.size() < 3)
         continue;
