@@ -114,7 +114,10 @@ def main():
 
     cases, refused = [], []
     for i, case in enumerate(pair_cases):
-        native = subprocess.run([recode, "pair"] + cli_args(case), capture_output=True, text=True)
+        # Each run also writes its case map (--dump-cases), compared byte for byte too.
+        native_cases = os.path.join(work, "case-%04d.native.pgm" % i)
+        native = subprocess.run([recode, "pair"] + cli_args(case) + ["--dump-cases", native_cases],
+                                capture_output=True, text=True)
         expected = os.path.join(work, "case-%04d.native.json" % i)
         with open(expected, "w") as f:
             if native.returncode == 0:
@@ -128,8 +131,10 @@ def main():
                 refused.append(case)
         request = dict(case)
         request["timing"] = False
+        request["dump_cases"] = os.path.join(work, "case-%04d.wasm.pgm" % i)
         cases.append({"kind": "pair", "request": request, "expected": expected,
                       "out": os.path.join(work, "case-%04d.wasm.json" % i),
+                      "cases": (native_cases, request["dump_cases"]),
                       "what": "recode pair " + " ".join(cli_args(case))})
     for i, path in enumerate(goldens):
         cases.append({"kind": "golden", "path": path, "what": os.path.relpath(path, DATA),
@@ -144,19 +149,29 @@ def main():
         fail("node: " + run.stderr.strip()[-2000:])
 
     different, golden_failed = [], []
+    case_maps = 0
     for c in cases:
         with open(c["out"]) as f:
             got = f.read()
         if c["kind"] == "pair":
             with open(c["expected"]) as f:
-                if got != f.read():
-                    different.append(c)
+                same = got == f.read()
+            native_map, wasm_map = c["cases"]
+            if os.path.exists(native_map) != os.path.exists(wasm_map):
+                same = False
+            elif os.path.exists(native_map):
+                with open(native_map, "rb") as a, open(wasm_map, "rb") as b:
+                    same = same and a.read() == b.read()
+                case_maps += 1
+            if not same:
+                different.append(c)
         else:
             answer = json.loads(got)
             if answer.get("error") or answer["depth_pixels"] or answer["stencil_pixels"]:
                 golden_failed.append((c["what"], answer))
     for c in different[:5]:
-        print("different: %s (diff %s %s)" % (c["what"], c["expected"], c["out"]))
+        print("different: %s (diff %s %s; cmp %s %s)"
+              % ((c["what"], c["expected"], c["out"]) + c["cases"]))
     for what, answer in golden_failed[:5]:
         print("golden vector failed: %s: %s" % (what, json.dumps(answer)))
     if different or golden_failed:
@@ -164,10 +179,10 @@ def main():
              % (len(different), len(pair_cases), len(golden_failed), len(goldens)))
     scene_files = len(pair_cases) - len(BUILTIN_CASES) - len(block_pairs) - len(suite_scenes) \
         - len(suite_scenes[::8])
-    print("wasm same bytes OK: %d pair outputs identical (%d built-in pair, %d scene files, "
+    print("wasm same bytes OK: %d pair outputs and %d case maps identical (%d built-in pair, %d scene files, "
           "%d block pairs of the built-in scenes, %d suite pairs, %d in the adaptive mode; %d "
           "of them the same refusal); %d golden vectors pass"
-          % (len(pair_cases), len(BUILTIN_CASES), scene_files, len(block_pairs),
+          % (len(pair_cases), case_maps, len(BUILTIN_CASES), scene_files, len(block_pairs),
              len(suite_scenes), len(suite_scenes[::8]), len(refused), len(goldens)))
     return 0
 

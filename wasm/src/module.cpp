@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "cli/pgm.hpp"
 #include "golden_check.hpp"
 #include "live_page.hpp"
 #include "pair_request.hpp"
@@ -36,13 +37,17 @@ const char* answer(F run) {
 
 extern "C" {
 
-// `recode pair --json` for the request (pair_request.hpp): the same bytes, "\n" included.
+// `recode pair --json` for the request (pair_request.hpp): the same bytes, "\n" included; with
+// "dump_cases", the case map written as `--dump-cases` writes it.
 EMSCRIPTEN_KEEPALIVE const char* recode_pair(const char* request) {
   return answer([&] {
     const recode::wasm::PairRequestText r = recode::wasm::readPairRequest(request);
     const recode::app::PairRun run = recode::app::runPair(r.options, [](int width, int height) {
       return std::make_unique<recode::raster::CpuDevice>(width, height);
     });
+    if (!r.dumpCases.empty())
+      recode::app::writePgmBottomUp(r.dumpCases, run.setup.frame.width, run.setup.frame.height,
+                                    recode::app::frameCaseImage(run.setup.frame, run.result));
     return recode::app::pairRunJson(run, !r.timing).dump(2) + "\n";
   });
 }

@@ -74,10 +74,12 @@ PairRequestText readPairRequest(const std::string& json) {
       o.axisRule = *rule;
     } else if (key == "timing") {
       r.timing = flag(value, key);
+    } else if (key == "dump_cases") {
+      r.dumpCases = text(value, key);
     } else {
       refuse(key, value,
              "unknown key (expected scene, resolution, pixel_size, mor, contact, box_test, "
-             "normal, pixel, mode, view_axis or timing)");
+             "normal, pixel, mode, view_axis, timing or dump_cases)");
     }
   }
   if (o.overrides.width && o.overrides.pixelSize)

@@ -10,12 +10,13 @@ namespace recode::wasm {
 
 struct PairRequestText {
   app::PairRunOptions options;
-  bool timing = true;  // false: the JSON without its wall-clock fields (--no-timing)
+  bool timing = true;     // false: the JSON without its wall-clock fields (--no-timing)
+  std::string dumpCases;  // --dump-cases: the frame's case map as a PGM file at this path
 };
 
 // Reads {"scene", "resolution", "pixel_size", "mor", "contact", "box_test", "normal",
-// "pixel", "mode", "view_axis", "timing"}, every key optional. Throws std::invalid_argument
-// naming the key, the value and the rule (an unknown key included).
+// "pixel", "mode", "view_axis", "timing", "dump_cases"}, every key optional. Throws
+// std::invalid_argument naming the key, the value and the rule (an unknown key included).
 [[nodiscard]] PairRequestText readPairRequest(const std::string& json);
 
 }  // namespace recode::wasm
