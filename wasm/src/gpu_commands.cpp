@@ -7,6 +7,7 @@
 
 #include "recode/backends/exact_proxy.hpp"
 #include "recode/raster/command_stream.hpp"
+#include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "recode/raster/golden.hpp"
 
@@ -45,7 +46,16 @@ std::vector<std::uint32_t> proxyWords(const std::vector<backends::ProxyTriangle>
 }  // namespace
 
 std::string gpuCommands(const std::string& path) {
-  const raster::GoldenVector g = raster::readGolden(path);
+  raster::CommandFile file = raster::readCommandFile(path);
+  raster::GoldenVector& g = file.content;
+  if (!file.hasExpected) {
+    // A bare command stream: its expected buffers are the reference's, the CPU device's.
+    raster::CpuDevice device(g.stream.width, g.stream.height);
+    raster::replay(g.stream.commands, device);
+    const raster::PixelRect all{0, 0, g.stream.width, g.stream.height};
+    g.depth = device.readDepth(all);
+    g.stencil = device.readStencil(all);
+  }
   const int width = g.stream.width, height = g.stream.height;
   raster::RenderState state = raster::initialRenderState(width, height);
   nlohmann::ordered_json commands = nlohmann::ordered_json::array();
