@@ -128,8 +128,9 @@ class DevTools:
             f.write(base64.b64decode(r["data"]))
 
 
-def start_chromium(chromium, profile):
-    args = [chromium, "--headless=new", "--no-sandbox", "--disable-gpu", "--no-first-run",
+def start_chromium(chromium, profile, gpu_flags=("--disable-gpu",)):
+    """gpu_flags: the pages here need no GPU, unless a caller asks for one (WebGPU)."""
+    args = [chromium, "--headless=new", "--no-sandbox", *gpu_flags, "--no-first-run",
             "--disable-extensions", "--remote-debugging-port=0", "--remote-allow-origins=*",
             "--user-data-dir=" + profile, "--window-size=1600,1000", "about:blank"]
     proc = subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

@@ -9,6 +9,7 @@
 
 #include "cli/pgm.hpp"
 #include "golden_check.hpp"
+#include "gpu_commands.hpp"
 #include "live_page.hpp"
 #include "pair_request.hpp"
 #include "recode/raster/cpu_device.hpp"
@@ -65,6 +66,12 @@ EMSCRIPTEN_KEEPALIVE const char* recode_page(const char* request) {
 // buffers (golden_check.hpp).
 EMSCRIPTEN_KEEPALIVE const char* recode_check_golden(const char* path) {
   return answer([&] { return recode::wasm::checkGolden(path); });
+}
+
+// The golden vector at `path` as a GPU back end replays it: proxy records, render states and
+// the expected buffers (gpu_commands.hpp).
+EMSCRIPTEN_KEEPALIVE const char* recode_gpu_commands(const char* path) {
+  return answer([&] { return recode::wasm::gpuCommands(path); });
 }
 
 // The message of the last call that returned null.
