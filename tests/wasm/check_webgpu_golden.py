@@ -6,7 +6,8 @@ compares the depth and stencil aspects it reads back with the vector's expected 
 bit; then as many random command streams with sloped planes (webgpu_random_streams.py), against
 the module's CPU device. Fails on any differing pixel, any console or WebGPU error, or a missing adapter.
 
-Usage: check_webgpu_golden.py MODULE_JS GOLDEN_DIR WORKDIR
+Usage: check_webgpu_golden.py MODULE_JS GOLDEN_DIR WORKDIR [RANDOM_STREAMS]
+       (RANDOM_STREAMS: how many random streams, seeds 1..N; default 200)
 Exit status 0: passed; 1: failed; 77: skipped because no Chromium is installed.
 """
 
@@ -39,10 +40,13 @@ def run_async(dt, expression):
 
 
 def main():
-    if len(sys.argv) != 4:
+    if len(sys.argv) not in (4, 5):
         print(__doc__)
         return 2
     module_js, golden_dir, work = sys.argv[1], sys.argv[2], os.path.abspath(sys.argv[3])
+    global RANDOM_STREAMS
+    if len(sys.argv) == 5:
+        RANDOM_STREAMS = int(sys.argv[4])
     chromium = find_chromium()
     if chromium is None:
         print("SKIP: no chromium on PATH (scripts/setup.sh installs it); WebGPU was not checked")
