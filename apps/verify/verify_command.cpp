@@ -14,6 +14,7 @@
 #include "recode/scene/builtin_scenes.hpp"
 #include "recode/verify/exact_parity.hpp"
 #include "verify/pair_scenes.hpp"
+#include "verify/pair_streams.hpp"
 #include "verify/verify_batch.hpp"
 #include "verify/verify_pairs.hpp"
 #include "verify/verify_report.hpp"
@@ -28,7 +29,8 @@ struct VerifyOptions {
   int count = 504;
   unsigned seed = 20261122;
   int width = 64;
-  std::string saveScenes;  // --save-scenes DIR: write the pairs as scenes, check nothing
+  std::string saveScenes;   // --save-scenes DIR: write the pairs as scenes, check nothing
+  std::string saveStreams;  // --save-streams DIR: write the pairs' command streams, check nothing
   bool embree = false;
   bool cgal = false;
   bool gl = false;
@@ -118,6 +120,13 @@ void checkBatches(VerifyRun& run, const VerifyPairs& input,
 }
 
 int runVerifyCommand(const VerifyOptions& o) {
+  if (!o.saveStreams.empty()) {
+    const std::size_t written =
+        savePairStreams(pairsToVerify(o), o.frameOptions.mor(), o.saveStreams);
+    std::cout << "recode verify --save-streams: wrote " << written << " golden vectors "
+              << "(pair-000.json ...) to " << o.saveStreams << '\n';
+    return 0;
+  }
   if (!o.saveScenes.empty()) {
     const std::size_t written = savePairScenes(pairsToVerify(o), o.saveScenes);
     std::cout << "recode verify --save-scenes: wrote " << written << " scenes (pair-000.json "
@@ -213,6 +222,9 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
                   "write each pair it would check (the suite's, or the scene's block pairs) as "
                   "a scene file that recode pair reads (DIR/pair-NNN.json, its blocks as OFF "
                   "files beside it) and check nothing");
+  cmd->add_option("--save-streams", o->saveStreams,
+                  "write the command stream of each pair it would check, with the buffers the "
+                  "CPU device leaves, as a golden vector (DIR/pair-NNN.json) and check nothing");
   cmd->add_flag("--embree", o->embree,
                 "per pixel: Embree ray casts (naming no oracle runs --embree --cgal)");
   CLI::Option* cgalFlag =
