@@ -128,6 +128,18 @@ class DevTools:
             f.write(base64.b64decode(r["data"]))
 
 
+def chromium_and_fresh_workdir(work, what):
+    """Chromium's path, with `work` emptied and made again; None, after printing the SKIP line
+    the ctests look for, where no Chromium is installed."""
+    chromium = find_chromium()
+    if chromium is None:
+        print("SKIP: no chromium on PATH (scripts/setup.sh installs it); %s was not checked" % what)
+        return None
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    return chromium
+
+
 def start_chromium(chromium, profile, gpu_flags=("--disable-gpu",)):
     """gpu_flags: the pages here need no GPU, unless a caller asks for one (WebGPU)."""
     args = [chromium, "--headless=new", "--no-sandbox", *gpu_flags, "--no-first-run",
@@ -223,12 +235,9 @@ def main():
         print(__doc__)
         return 2
     recode, work = sys.argv[1], os.path.abspath(sys.argv[2])
-    chromium = find_chromium()
+    chromium = chromium_and_fresh_workdir(work, "the page")
     if chromium is None:
-        print("SKIP: no chromium on PATH (scripts/setup.sh installs it); the page was not checked")
         return 77
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
     page_dir = os.path.join(work, "page")
 
     # The oracle first, without the explain code: the case of every pixel, then one case-4

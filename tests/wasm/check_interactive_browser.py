@@ -22,7 +22,8 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "apps"))
-from check_explain_browser import DevTools, fail, find_chromium, start_chromium  # noqa: E402
+from check_explain_browser import (  # noqa: E402
+    DevTools, chromium_and_fresh_workdir, fail, start_chromium)
 
 TIMEOUT_S = 60
 TIMING_KEYS = {"timing_us", "timing_steps_us"}
@@ -119,12 +120,9 @@ def main():
         print(__doc__)
         return 2
     recode, work = sys.argv[1], os.path.abspath(sys.argv[2])
-    chromium = find_chromium()
+    chromium = chromium_and_fresh_workdir(work, "the interactive page")
     if chromium is None:
-        print("SKIP: no chromium on PATH (scripts/setup.sh installs it); the page was not checked")
         return 77
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
     page_dir = os.path.join(work, "page")
     downloads = os.path.join(work, "downloads")
     os.makedirs(downloads)

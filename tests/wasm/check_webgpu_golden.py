@@ -20,7 +20,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "apps"))
-from check_explain_browser import DevTools, fail, find_chromium, start_chromium  # noqa: E402
+from check_explain_browser import (  # noqa: E402
+    DevTools, chromium_and_fresh_workdir, fail, start_chromium)
 from webgpu_page import write_page  # noqa: E402
 from webgpu_random_streams import random_stream  # noqa: E402
 
@@ -47,12 +48,9 @@ def main():
     global RANDOM_STREAMS
     if len(sys.argv) == 5:
         RANDOM_STREAMS = int(sys.argv[4])
-    chromium = find_chromium()
+    chromium = chromium_and_fresh_workdir(work, "WebGPU")
     if chromium is None:
-        print("SKIP: no chromium on PATH (scripts/setup.sh installs it); WebGPU was not checked")
         return 77
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
     page = os.path.join(work, "webgpu.html")
     write_page(module_js, page)
     vectors = sorted(os.path.relpath(os.path.join(d, f), golden_dir)
