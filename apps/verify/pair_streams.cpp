@@ -2,10 +2,11 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 
-#include "recode/raster/command_stream.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/golden.hpp"
+#include "recode/verify/exact_parity.hpp"
 
 namespace recode::app {
 
@@ -20,11 +21,11 @@ std::size_t savePairStreams(const VerifyPairs& pairs, core::MorMode mor,
     // Recorded on the CPU device as the exact parity check records it: the commands in order,
     // then the buffers they leave as the expected ones.
     raster::CpuDevice cpu(pair.frame.width, pair.frame.height);
-    raster::RecordingDevice recorder(cpu);
-    (void)core::collidePair(recorder, *pair.a, *pair.b, request);
+    verify::RecordedPair recorded = verify::recordPair(*pair.a, *pair.b, request, cpu);
     const raster::PixelRect all{0, 0, pair.frame.width, pair.frame.height};
-    raster::GoldenVector golden{"recode verify --save-streams: " + pair.label, recorder.stream(),
-                                cpu.readDepth(all), cpu.readStencil(all)};
+    raster::GoldenVector golden{"recode verify --save-streams: " + pair.label,
+                                std::move(recorded.stream), cpu.readDepth(all),
+                                cpu.readStencil(all)};
     char name[32];
     std::snprintf(name, sizeof name, "pair-%03zu.json", written);
     raster::writeGolden(dir / name, golden, raster::GoldenLayout::Rows);

@@ -50,21 +50,14 @@ void compareRegion(const raster::DepthStencilDevice& reference,
   }
 }
 
-// RECODE's command stream for the pair on the reference device, and the pair's MOR.
-struct RecordedPair {
-  raster::CommandStream stream;
-  raster::PixelRect mor;
-};
+}  // namespace
 
-[[maybe_unused]] RecordedPair recordPair(const core::TriangleMesh& a, const core::TriangleMesh& b,
-                                         const core::PairRequest& request) {
-  raster::CpuDevice cpu(request.frame.width, request.frame.height);
-  raster::RecordingDevice recorder(cpu);
+RecordedPair recordPair(const core::TriangleMesh& a, const core::TriangleMesh& b,
+                        const core::PairRequest& request, raster::DepthStencilDevice& device) {
+  raster::RecordingDevice recorder(device);
   const core::PairResult result = core::collidePair(recorder, a, b, request);
   return {recorder.stream(), result.mor};
 }
-
-}  // namespace
 
 ExactParityReport compareStreamExactly(const raster::CommandStream& stream,
                                        raster::DepthStencilDevice& reference,
@@ -91,7 +84,8 @@ ExactParityReport compareStreamExactly(const raster::CommandStream& stream,
 ExactParityReport comparePairExactly(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                      const core::PairRequest& request,
                                      const core::DeviceFactory& makeCandidate) {
-  const RecordedPair pair = recordPair(a, b, request);
+  raster::CpuDevice cpu(request.frame.width, request.frame.height);
+  const RecordedPair pair = recordPair(a, b, request, cpu);
   if (pair.mor.empty())
     return {};
   const raster::CommandStream& stream = pair.stream;

@@ -52,6 +52,16 @@ struct ExactParityReport {
 // Runs core::collidePair for A and B on a CpuDevice, records its command stream and compares it
 // on a fresh device that `makeCandidate` makes at the stream's size, over the pair's MOR. Pairs
 // whose boxes do not overlap compare nothing. What the factory throws goes through.
+// RECODE's command stream for the pair, drawn on `device` (the reference: a CpuDevice of the
+// frame's size, left with the buffers the pair leaves), and the pair's MOR.
+struct RecordedPair {
+  raster::CommandStream stream;
+  raster::PixelRect mor;
+};
+[[nodiscard]] RecordedPair recordPair(const core::TriangleMesh& a, const core::TriangleMesh& b,
+                                      const core::PairRequest& request,
+                                      raster::DepthStencilDevice& device);
+
 [[nodiscard]] ExactParityReport comparePairExactly(const core::TriangleMesh& a,
                                                    const core::TriangleMesh& b,
                                                    const core::PairRequest& request,
