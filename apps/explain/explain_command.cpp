@@ -68,25 +68,12 @@ ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morNam
   ExplainSummary summary;
   summary.result = core::collidePair(device, setup.a, setup.b, request, &recorder);
   const core::PairResult& result = summary.result;
-  const auto range =
-      core::pairDepthRange(f.axis, core::boundingBox(setup.a), core::boundingBox(setup.b));
-  const raster::PixelBuffer<std::uint8_t> coverage =
-      explain::blockCoverage(setup, range[0], range[1]);
+  explain::ExplainedRun run = explain::explainRun(setup, result, recorder.snapshots(), request.mor,
+                                                  boxTest, dir, nullptr, descentHtml);
+  const std::vector<explain::Section>& sections = run.sections;
+  const nlohmann::json rayData = explain::rayDataJson(std::move(run.rays));
 
-  explain::PictureWriter pictures(dir, setup, result, coverage);
-  const std::vector<explain::Section> sections = explain::buildSections(
-      result, recorder.snapshots(), request.mor, boxTest, pictures, descentHtml);
-
-  const explain::FaceDepths facesA = explain::faceDepths(setup, setup.a, range[0], range[1]);
-  const explain::FaceDepths facesB = explain::faceDepths(setup, setup.b, range[0], range[1]);
-  const explain::RayInputs rays{result,  recorder.snapshots(), coverage, facesA, facesB, range[0],
-                                range[1]};
-  const raster::PixelRect frameRect{0, 0, f.width, f.height};
-  const nlohmann::json rayData =
-      explain::rayDataJson(rays, frameRect, explain::rayCrop(rays, frameRect));
-
-  const explain::Page page{setup,           morName,  result, pictures.scale(),
-                           pictures.view(), sections, rayData};
+  const explain::Page page{setup, morName, result, run.scale, run.view, sections, rayData};
   explain::writeIndexHtml(dir, page);
   explain::writeExplainJson(dir, page);
   for (const explain::Section& s : sections)

@@ -98,8 +98,7 @@ RayArrays rayArrays(const RayInputs& in, const PixelRect& frame, const PixelRect
   return r;
 }
 
-nlohmann::json rayDataJson(const RayInputs& in, const PixelRect& frame, const PixelRect& crop) {
-  RayArrays r = rayArrays(in, frame, crop);
+nlohmann::json rayDataJson(RayArrays r) {
   nlohmann::json j = std::move(r.scalars);
   j["depth"] = r.depth;
   j["stencil"] = r.stencil;

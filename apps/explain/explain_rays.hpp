@@ -47,8 +47,8 @@ struct RayArrays {
                                   const raster::PixelRect& crop);
 
 // {"crop", "capped", "steps": [{"id"}], "depth": [[...]], "stencil": [[...]], "a_front",
-// "a_back", "b_front", "b_back", "coverage", "case", ...}: rayArrays as one JSON object.
-[[nodiscard]] nlohmann::json rayDataJson(const RayInputs& in, const raster::PixelRect& frame,
-                                         const raster::PixelRect& crop);
+// "a_back", "b_front", "b_back", "coverage", "case", ...}: the arrays and the rest as one JSON
+// object (the inline data of `recode explain`'s page).
+[[nodiscard]] nlohmann::json rayDataJson(RayArrays arrays);
 
 }  // namespace recode::app::explain

@@ -108,4 +108,25 @@ std::vector<Section> buildSections(const core::PairResult& result,
   return sections;
 }
 
+ExplainedRun explainRun(const PairSetup& setup, const core::PairResult& result,
+                        const std::vector<StepSnapshot>& snapshots, core::MorMode mor, bool boxTest,
+                        const std::filesystem::path& dir, std::vector<KeptPicture>* kept,
+                        const std::string& descentHtml) {
+  const core::FrameSpec& f = setup.frame;
+  const auto range =
+      core::pairDepthRange(f.axis, core::boundingBox(setup.a), core::boundingBox(setup.b));
+  const raster::PixelBuffer<std::uint8_t> coverage = blockCoverage(setup, range[0], range[1]);
+  PictureWriter pictures(dir, setup, result, coverage, kept);
+  ExplainedRun run;
+  run.sections = buildSections(result, snapshots, mor, boxTest, pictures, descentHtml);
+  run.scale = pictures.scale();
+  run.view = pictures.view();
+  const FaceDepths facesA = faceDepths(setup, setup.a, range[0], range[1]);
+  const FaceDepths facesB = faceDepths(setup, setup.b, range[0], range[1]);
+  const RayInputs rays{result, snapshots, coverage, facesA, facesB, range[0], range[1]};
+  const raster::PixelRect frameRect{0, 0, f.width, f.height};
+  run.rays = rayArrays(rays, frameRect, rayCrop(rays, frameRect));
+  return run;
+}
+
 }  // namespace recode::app::explain

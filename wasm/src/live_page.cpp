@@ -27,25 +27,11 @@ LivePage livePage(const PairRequestText& request) {
       },
       &recorder);
   const app::PairSetup& setup = run.setup;
-  const core::FrameSpec& f = setup.frame;
-  const auto range =
-      core::pairDepthRange(f.axis, core::boundingBox(setup.a), core::boundingBox(setup.b));
-  const raster::PixelBuffer<std::uint8_t> coverage =
-      app::explain::blockCoverage(setup, range[0], range[1]);
-
   LivePage page;
-  app::explain::PictureWriter pictures({}, setup, run.result, coverage, &page.pictures);
-  const std::vector<app::explain::Section> sections = app::explain::buildSections(
-      run.result, recorder.snapshots(), run.request.mor, run.request.boxTest, pictures, {});
-  const app::explain::FaceDepths facesA =
-      app::explain::faceDepths(setup, setup.a, range[0], range[1]);
-  const app::explain::FaceDepths facesB =
-      app::explain::faceDepths(setup, setup.b, range[0], range[1]);
-  const app::explain::RayInputs rays{
-      run.result, recorder.snapshots(), coverage, facesA, facesB, range[0], range[1]};
-  const raster::PixelRect frameRect{0, 0, f.width, f.height};
-  const raster::PixelRect crop = app::explain::rayCrop(rays, frameRect);
-  app::explain::RayArrays arrays = app::explain::rayArrays(rays, frameRect, crop);
+  const app::explain::ExplainedRun explained =
+      app::explain::explainRun(setup, run.result, recorder.snapshots(), run.request.mor,
+                               run.request.boxTest, {}, &page.pictures, {});
+  const app::explain::RayArrays& arrays = explained.rays;
   // One block of numbers, in the order of "ray_arrays" below: the page makes typed arrays of
   // it instead of reading hundreds of thousands of numbers as JSON.
   for (const auto& step : arrays.depth)
@@ -56,17 +42,17 @@ LivePage livePage(const PairRequestText& request) {
        {&arrays.aFront, &arrays.aBack, &arrays.bFront, &arrays.bBack, &arrays.coverage})
     page.rays.insert(page.rays.end(), a->begin(), a->end());
   page.rays.insert(page.rays.end(), arrays.cases.begin(), arrays.cases.end());
-  const app::explain::Page explained{setup,           std::string(core::toString(run.request.mor)),
-                                     run.result,      pictures.scale(),
-                                     pictures.view(), sections,
-                                     arrays.scalars};
+  const app::explain::Page shown{setup,          std::string(core::toString(run.request.mor)),
+                                 run.result,     explained.scale,
+                                 explained.view, explained.sections,
+                                 arrays.scalars};
 
   nlohmann::ordered_json j;
   j["pair"] = app::pairRunJson(run, !request.timing);
-  j["body"] = app::explain::pageBodyHtml(explained);
+  j["body"] = app::explain::pageBodyHtml(shown);
   j["ray_data"] = arrays.scalars;
   j["ray_arrays"] = {{"offset", reinterpret_cast<std::uintptr_t>(page.rays.data())},
-                     {"pixels", crop.area()},
+                     {"pixels", arrays.cases.size()},
                      {"order",
                       "depth after each step, stencil after each step, a_front, "
                       "a_back, b_front, b_back, coverage, case"}};
