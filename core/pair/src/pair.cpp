@@ -335,6 +335,59 @@ void concludeContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
   r.timing.classifyUs += microsecondsSince(t);
 }
 
+const raster::StencilClasses& caseClasses() {
+  static const raster::StencilClasses classes = [] {
+    raster::StencilClasses c;
+    c.classOf = caseTable();
+    for (int k = 0; k < kCaseCount; ++k)
+      if (isInterfering(k))
+        c.marked = static_cast<std::uint16_t>(c.marked | (1u << k));
+    return c;
+  }();
+  return classes;
+}
+
+void concludeSummary(const raster::PixelSummary& summary, const OrthoView& view, PairResult& r) {
+  const Clock::time_point t = Clock::now();
+  r.stencilPixelsRead = r.mor.area();
+  for (std::size_t c = 0; c < kCaseCount; ++c)
+    r.caseCounts[c] += summary.classCounts[c];
+  for (int c = 3; c <= 6; ++c)
+    r.interferingPixels += r.caseCounts[static_cast<std::size_t>(c)];
+  r.collide = r.interferingPixels > 0;
+  r.contact.pixels = r.interferingPixels;
+  r.contact.area =
+      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
+  if (r.collide && summary.depth) {
+    const PixelRect& rect = summary.markedBounds;
+    r.contactRect = rect;
+    r.depthPixelsRead = 2 * rect.area();
+    // measureContact's arithmetic at the extremes: its columns' u, rows' v and ends' depths.
+    const double depthScale = 1.0 / static_cast<double>(raster::kDepthMax);
+    const double worldPerStep = (r.depthMax - r.depthMin) * depthScale;
+    const raster::DepthIntervals& d = *summary.depth;
+    const Eigen::Vector3d first =
+        view.fromPlane({view.planeU(rect.x0 + 0.5), view.planeV(rect.y0 + 0.5),
+                        view.planeD(d.nearest * depthScale)});
+    const Eigen::Vector3d last =
+        view.fromPlane({view.planeU((rect.x1 - 1) + 0.5), view.planeV((rect.y1 - 1) + 0.5),
+                        view.planeD(d.farthest * depthScale)});
+    r.contact.box.extend(first);
+    r.contact.box.extend(last);
+    r.contact.maxDepth = std::max(r.contact.maxDepth, d.longest * worldPerStep);
+    r.contact.collapsedPixels += d.inverted;
+  }
+  r.timing.classifyUs += microsecondsSince(t);
+}
+
+void dropPixelsUnlessKept(const PairRequest& request, PairResult& r) {
+  if (request.keepPixels)
+    return;
+  // Moved from empty ones, which frees the memory (assigning {} would keep the capacity).
+  r.caseMap = raster::PixelBuffer<std::uint8_t>();
+  r.contact.points = std::vector<Eigen::Vector3d>();
+}
+
 }  // namespace detail
 
 PairResult collidePair(raster::DepthStencilDevice& device, const TriangleMesh& a,
@@ -349,7 +402,8 @@ PairResult collidePair(raster::DepthStencilDevice& device, const PairBlock& a, c
   const FrameSpec& frame = request.frame;
   requireDeviceSize(device, frame);
   PairResult r = startPair(a, b, frame);
-  const auto finish = [&r, start]() -> PairResult {
+  const auto finish = [&r, &request, start]() -> PairResult {
+    dropPixelsUnlessKept(request, r);
     r.timing.totalUs = microsecondsSince(start);
     return std::move(r);
   };

@@ -25,10 +25,14 @@ using detail::microsecondsSince;
 struct RecordedPair {
   const PairJob* job = nullptr;
   raster::DepthStencilDevice* device = nullptr;
+  ContactSchedule schedule = ContactSchedule::AfterVerdict;
   PairResult result;
   std::optional<OrthoView> view;  // set when the passes were recorded
   // The blocks as drawn, kept only while contact passes may still be recorded after the verdict.
   std::unique_ptr<detail::BlockWindowSource> a, b;
+  // With a summary (usesSummary), the device's reduction of the stencil and contact depths;
+  // else the stencil and depths themselves.
+  raster::PendingRead<raster::PixelSummary> summary;
   raster::PendingRead<std::uint8_t> stencil;
   raster::PendingRead<std::uint32_t> nearDepth;  // waiting only with the contact passes
   raster::PendingRead<std::uint32_t> farDepth;
@@ -58,6 +62,33 @@ void recordContactPasses(raster::DepthStencilDevice& device, RecordedPair& p,
   });
 }
 
+// Whether the pair is concluded from a summary of the device's buffers (pixel_summary.hpp)
+// rather than from the buffers: when the request leaves the pixels out and the contact, if
+// asked for, is measured in the same submission (its normal needs every pixel's ends).
+bool usesSummary(const PairRequest& request, ContactSchedule schedule) {
+  if (request.keepPixels)
+    return false;
+  return !request.contact || (!request.normal && schedule == ContactSchedule::Speculative);
+}
+
+// The stencil passes, then (with the contact) both contact passes over the MOR, the near
+// ends kept on the device, and the summary of the stencil and of both ends: the contact passes
+// leave the stencil as the stencil passes made it (stencil write mask 0).
+void recordSummarizedPair(raster::DepthStencilDevice& device, RecordedPair& p,
+                          detail::PassRunner& passes, detail::StepRunner& steps) {
+  const raster::PixelRect mor = p.result.mor;
+  std::shared_ptr<const raster::KeptDepth> nearEnd;
+  if (p.job->request.contact) {
+    steps.run(PairStep::ContactNear, [&] {
+      passes.overlapEnd(mor, true);
+      nearEnd = device.keepDepthLater(mor);
+    });
+    steps.run(PairStep::ContactFar, [&] { passes.overlapEnd(mor, false); });
+  }
+  steps.run(PairStep::ReadStencil,
+            [&] { p.summary = device.summarizeLater(mor, detail::caseClasses(), nearEnd.get()); });
+}
+
 // What collidePair does before its first read-back, the read-back recorded instead of waited
 // for; with ContactSchedule::Speculative, the contact passes over the MOR too.
 RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job,
@@ -68,6 +99,7 @@ RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job,
   RecordedPair p;
   p.job = &job;
   p.device = &device;
+  p.schedule = schedule;
   p.result = detail::startPair(*job.a, *job.b, frame);
   PairResult& r = p.result;
   const OrthoView view = detail::pairView(frame, r);
@@ -78,12 +110,17 @@ RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job,
     detail::PassRunner passes(device, *p.a, *p.b);
     detail::StepRunner steps(device, nullptr, r.timing);
     detail::recordStencilPasses(passes, steps, r.mor);
-    steps.run(PairStep::ReadStencil, [&] { p.stencil = device.readStencilLater(r.mor); });
-    if (job.request.contact && schedule == ContactSchedule::Speculative)
-      recordContactPasses(device, p, r.mor);
+    if (usesSummary(job.request, schedule)) {
+      recordSummarizedPair(device, p, passes, steps);
+    } else {
+      steps.run(PairStep::ReadStencil, [&] { p.stencil = device.readStencilLater(r.mor); });
+      if (job.request.contact && schedule == ContactSchedule::Speculative)
+        recordContactPasses(device, p, r.mor);
+    }
   }
   // Only contact passes recorded after the verdict draw the blocks again.
-  if (!(p.view && job.request.contact && schedule == ContactSchedule::AfterVerdict)) {
+  if (!(p.view && job.request.contact && schedule == ContactSchedule::AfterVerdict &&
+        !usesSummary(job.request, schedule))) {
     p.a.reset();
     p.b.reset();
   }
@@ -97,6 +134,12 @@ bool concludeStencil(RecordedPair& p) {
     return false;
   const Clock::time_point start = Clock::now();
   PairResult& r = p.result;
+  if (usesSummary(p.job->request, p.schedule)) {
+    // The verdict and, with the contact, the contact region: nothing left to read.
+    detail::concludeSummary(p.summary.take().front(), *p.view, r);
+    p.ownUs += microsecondsSince(start);
+    return false;
+  }
   const raster::PixelBuffer<std::uint8_t> stencil{r.mor, p.stencil.take()};
   const raster::PixelRect contactRect = detail::concludeStencil(stencil, *p.view, r);
   const bool contact = r.collide && p.job->request.contact;
@@ -197,6 +240,7 @@ std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const
     throw;
   }
   for (RecordedPair& p : recorded) {
+    detail::dropPixelsUnlessKept(p.job->request, p.result);
     p.result.timing.totalUs = p.ownUs;
     results.push_back(std::move(p.result));
   }

@@ -8,6 +8,7 @@
 
 #include "recode/pair/pair.hpp"
 #include "recode/raster/pixel_buffer.hpp"
+#include "recode/raster/pixel_summary.hpp"
 
 #include "block_window_source.hpp"
 #include "pair_passes.hpp"
@@ -72,5 +73,19 @@ void concludeContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
                      const raster::PixelBuffer<std::uint32_t>& farDepth, const OrthoView& view,
                      const PairBlock& a, const PairBlock& b, const PairRequest& request,
                      PairResult& r);
+
+// The stencil's cases as summary classes: class c is case c, the interfering cases marked.
+[[nodiscard]] const raster::StencilClasses& caseClasses();
+
+// What concludeStencil and concludeContact set, from a device's summary over r.mor (with the
+// contact passes' depth intervals when `summary.depth` is set: the request's contact, without
+// its normal), the pixels left out. The same values as theirs: the summary's counts and bounds
+// are the case counts and the contact rectangle; the contact box and greatest depth follow from
+// the extreme columns, rows and depths because every world coordinate toWorld makes is a
+// monotone function of one of them (docs/architecture.md).
+void concludeSummary(const raster::PixelSummary& summary, const OrthoView& view, PairResult& r);
+
+// Empties the case map and the contact points unless the request keeps the pixels.
+void dropPixelsUnlessKept(const PairRequest& request, PairResult& r);
 
 }  // namespace recode::core::detail

@@ -52,8 +52,20 @@ class DeferringDevice : public raster::ForwardingDevice {
     depths_.clear();
   }
   [[nodiscard]] bool defers() const override { return true; }
+  // The interface's own summaries, from the read-backs above (not the CpuDevice's, which are
+  // ready at once): so the derived read-backs wait for finish() as a GPU's would.
+  std::shared_ptr<const raster::KeptDepth> keepDepthLater(const raster::PixelRect& rect) override {
+    return DepthStencilDevice::keepDepthLater(rect);
+  }
+  raster::PendingRead<raster::PixelSummary> summarizeLater(
+      const raster::PixelRect& rect, const raster::StencilClasses& classes,
+      const raster::KeptDepth* nearEnd) override {
+    ++summaries;
+    return DepthStencilDevice::summarizeLater(rect, classes, nearEnd);
+  }
 
   int finishes = 0;
+  int summaries = 0;
 
  private:
   std::vector<std::pair<raster::PendingRead<std::uint8_t>, std::vector<std::uint8_t>>> stencils_;
@@ -168,6 +180,66 @@ TEST_CASE("a batch gives each pair collidePair's result on a deferring device", 
     for (const auto& [width, device] : bySize)
       CHECK(device->finishes == (speculative ? 1 : 2));
   }
+}
+
+TEST_CASE("a batch that leaves the pixels out concludes from summaries, with the same results",
+          "[pair][batch]") {
+  Batch batch = makeBatch();
+  for (std::size_t i = 0; i < batch.jobs.size(); ++i) {
+    batch.jobs[i].request.keepPixels = false;
+    batch.jobs[i].request.contact = i != 5;  // one pair without the contact passes
+  }
+  const std::vector<core::PairResult> expected = oneByOne(batch.jobs);
+  int contacts = 0;
+  for (const core::PairResult& r : expected) {
+    CHECK(r.caseMap.data.empty());
+    CHECK(r.contact.points.empty());
+    contacts += r.collide && !r.contact.box.isEmpty() ? 1 : 0;
+  }
+  REQUIRE(contacts >= 2);
+  for (const core::ContactSchedule schedule :
+       {core::ContactSchedule::AfterVerdict, core::ContactSchedule::Speculative}) {
+    const bool speculative = schedule == core::ContactSchedule::Speculative;
+    INFO((speculative ? "speculative" : "after the verdict"));
+    const core::FrameSpec& frame = batch.jobs.front().request.frame;
+    std::vector<core::PairJob> jobs = batch.jobs;
+    for (core::PairJob& job : jobs)
+      job.request.frame = frame;  // one device for all
+    const std::vector<core::PairResult> want = oneByOne(jobs);
+    DeferringDevice device(frame.width, frame.height);
+    const std::vector<core::PairResult> got = core::collidePairs(device, jobs, schedule);
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      INFO("pair " << i);
+      CHECK(core::firstDifference(got[i], want[i]).value_or("") == "");
+    }
+    // Summarised: every drawn pair speculatively but those asking for the normal, and after
+    // the verdict only the pair without the contact passes.
+    int drawn = 0, summarised = 0;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      const bool wasDrawn = !want[i].mor.empty();
+      drawn += wasDrawn ? 1 : 0;
+      if (wasDrawn && (!jobs[i].request.contact || (speculative && !jobs[i].request.normal)))
+        ++summarised;
+    }
+    REQUIRE(drawn >= 4);
+    CHECK(device.summaries == summarised);
+    CHECK(summarised >= 1);
+  }
+  // A contact pass skipped for one pair shows in its summary too.
+  std::vector<core::PairJob> jobs = batch.jobs;
+  for (core::PairJob& job : jobs) {
+    job.request.frame = jobs.front().request.frame;
+    job.request.normal = false;
+    job.request.contact = true;
+  }
+  const std::vector<core::PairResult> want = oneByOne(jobs);
+  SkippingDevice skipping(jobs.front().request.frame.width, jobs.front().request.frame.height, 1);
+  const std::vector<core::PairResult> got =
+      core::collidePairs(skipping, jobs, core::ContactSchedule::Speculative);
+  int differing = 0;
+  for (std::size_t i = 0; i < got.size(); ++i)
+    differing += core::firstDifference(got[i], want[i]).has_value() ? 1 : 0;
+  CHECK(differing == 1);
 }
 
 TEST_CASE("a batch on a device that runs commands as they come is collidePair in turn",

@@ -6,10 +6,12 @@
 // docs/rasterization.md.
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "recode/raster/pending_read.hpp"
+#include "recode/raster/pixel_summary.hpp"
 #include "recode/raster/state.hpp"
 #include "recode/raster/triangle_source.hpp"
 
@@ -29,6 +31,13 @@ struct WindowVertex {
 struct TransferCounters {
   long long submissions = 0;    // command submissions waited on
   long long readbackBytes = 0;  // bytes copied from device memory to the host
+};
+
+// A depth over a rectangle kept by keepDepthLater for a later summarizeLater; what it holds
+// (values on the host, or a region of the device's own memory) is the device's affair.
+class KeptDepth {
+ public:
+  virtual ~KeptDepth() = default;
 };
 
 // A framebuffer of width() x height() pixels with a 24-bit depth and an 8-bit stencil value
@@ -103,6 +112,21 @@ class DepthStencilDevice {
   [[nodiscard]] virtual PendingRead<std::uint32_t> readDepthLater(const PixelRect& rect) {
     return PendingRead<std::uint32_t>::ready(readDepth(rect));
   }
+  // Summaries (pixel_summary.hpp), for callers that need counts and extremes rather than
+  // pixels: a GPU device may reduce its buffers itself, so that only kPixelSummaryBytes come
+  // back. The defaults read the buffers back (readStencilLater, readDepthLater) and summarise
+  // on the host when they arrive: the same values, the plain read-backs' cost.
+  //
+  // Keeps the depth over `rect` as it is after the commands so far, for summarizeLater.
+  [[nodiscard]] virtual std::shared_ptr<const KeptDepth> keepDepthLater(const PixelRect& rect);
+  // summarizePixels over `rect` of the stencil as it is after the commands so far, with
+  // `nearEnd`'s depths (kept by this device over the same rectangle; null: no depth interval)
+  // and the depth now as the far end. `rect` is clamped to the framebuffer. Throws
+  // std::invalid_argument for a KeptDepth of another device or rectangle, or a bad class table.
+  [[nodiscard]] virtual PendingRead<PixelSummary> summarizeLater(const PixelRect& rect,
+                                                                 const StencilClasses& classes,
+                                                                 const KeptDepth* nearEnd);
+
   // Runs every command given so far and delivers every pending read-back.
   virtual void finish() {}
   // Whether commands wait for finish(): then a read-back that waits costs nothing until then,

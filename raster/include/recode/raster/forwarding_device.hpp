@@ -53,6 +53,14 @@ class ForwardingDevice : public DepthStencilDevice {
   [[nodiscard]] PendingRead<std::uint32_t> readDepthLater(const PixelRect& rect) override {
     return inner_->readDepthLater(rect);
   }
+  [[nodiscard]] std::shared_ptr<const KeptDepth> keepDepthLater(const PixelRect& rect) override {
+    return inner_->keepDepthLater(rect);
+  }
+  [[nodiscard]] PendingRead<PixelSummary> summarizeLater(const PixelRect& rect,
+                                                         const StencilClasses& classes,
+                                                         const KeptDepth* nearEnd) override {
+    return inner_->summarizeLater(rect, classes, nearEnd);
+  }
   void finish() override { inner_->finish(); }
   [[nodiscard]] bool defers() const override { return inner_->defers(); }
   [[nodiscard]] TransferCounters transfers() const override { return inner_->transfers(); }

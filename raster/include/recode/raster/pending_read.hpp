@@ -4,6 +4,7 @@
 // read-backs into one submission and hands each read-back its values when the submission is
 // done; a device that runs commands as they come (CpuDevice) hands them over at once.
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -31,19 +32,38 @@ class PendingRead {
     return read;
   }
 
+  // A read-back worked out from others: ready once `sourcesReady` says so, its values then
+  // made by `make` (at the first take()). A device whose summaries are computed on the host
+  // from its plain read-backs hands these out (DepthStencilDevice::summarizeLater).
+  [[nodiscard]] static PendingRead derived(std::function<bool()> sourcesReady,
+                                           std::function<std::vector<T>()> make) {
+    PendingRead read = waiting();
+    read.state_->sourcesReady = std::move(sourcesReady);
+    read.state_->make = std::move(make);
+    return read;
+  }
+
   // Called by the device, once, when the values are known.
   void deliver(std::vector<T> values) {
     state_->values = std::move(values);
     state_->delivered = true;
   }
 
-  [[nodiscard]] bool isReady() const { return state_ && state_->delivered; }
+  [[nodiscard]] bool isReady() const {
+    return state_ && (state_->delivered || (state_->make && state_->sourcesReady()));
+  }
 
   // The values, moved out. Throws std::logic_error before the device has delivered them: the
   // caller forgot DepthStencilDevice::finish.
   [[nodiscard]] std::vector<T> take() {
     if (!isReady())
       throw std::logic_error("read-back taken before the device finished its commands");
+    if (!state_->delivered) {
+      state_->values = state_->make();
+      state_->delivered = true;
+      state_->make = nullptr;
+      state_->sourcesReady = nullptr;
+    }
     return std::move(state_->values);
   }
 
@@ -51,6 +71,8 @@ class PendingRead {
   struct State {
     bool delivered = false;
     std::vector<T> values;
+    std::function<bool()> sourcesReady;  // with make: a derived read-back
+    std::function<std::vector<T>()> make;
   };
   std::shared_ptr<State> state_;
 };

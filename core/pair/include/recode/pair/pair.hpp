@@ -47,6 +47,11 @@ struct PairRequest {
   // Also estimate the contact normal and penetration depth from the contact passes' depths
   // (ContactRegion::normal; docs/algorithm.md). Needs `contact`; off, nothing changes.
   bool normal = false;
+  // Keep the pixels: the case map and the contact points (one per interfering pixel). Off,
+  // both are left empty and everything else is the same, and a batch (collidePairs) may have
+  // a GPU device reduce its buffers to a summary of 64 bytes a pair test instead of reading
+  // them back (pair_batch.hpp).
+  bool keepPixels = true;
 };
 
 // The steps of the algorithm, in order, for timing and for observers (recode explain).

@@ -5,6 +5,12 @@
 // read-backs are recorded first and run in one submission, then each pair is concluded from
 // its read-backs: the host waits for the GPU once or twice a batch (ContactSchedule) instead of
 // up to three times a pair.
+//
+// A job whose request leaves the pixels out (PairRequest::keepPixels false) is concluded from
+// the device's summary of its buffers (DepthStencilDevice::summarizeLater) when its contact,
+// if asked for, comes with the verdict: without the contact, or with the Speculative schedule
+// and no normal. The Vulkan device works the summary out in a compute shader, so such a pair
+// test reads back 64 bytes and the batch takes one submission.
 
 #include <span>
 #include <vector>
