@@ -221,6 +221,30 @@ void VulkanContext::destroyHostBuffer(HostBuffer& buffer) const {
   buffer = {};
 }
 
+DeviceBuffer VulkanContext::createDeviceBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const {
+  DeviceBuffer buffer;
+  VkBufferCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  info.size = bytes;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer.buffer), "vkCreateBuffer");
+  VkMemoryRequirements requirements{};
+  vkGetBufferMemoryRequirements(device_, buffer.buffer, &requirements);
+  buffer.memory = allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  vkCheck(vkBindBufferMemory(device_, buffer.buffer, buffer.memory, 0), "vkBindBufferMemory");
+  buffer.size = bytes;
+  return buffer;
+}
+
+void VulkanContext::destroyDeviceBuffer(DeviceBuffer& buffer) const {
+  if (buffer.buffer == VK_NULL_HANDLE)
+    return;
+  vkDestroyBuffer(device_, buffer.buffer, nullptr);
+  vkFreeMemory(device_, buffer.memory, nullptr);
+  buffer = {};
+}
+
 VkCommandPool VulkanContext::createCommandPool() const {
   VkCommandPoolCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;

@@ -27,6 +27,13 @@ struct HostBuffer {
   VkDeviceSize size = 0;
 };
 
+// A buffer in device-local memory (a recording's scratch), not mapped.
+struct DeviceBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+};
+
 class VulkanContext {
  public:
   // The process's context for devices of that arithmetic (a logical device that enables
@@ -50,6 +57,9 @@ class VulkanContext {
   // A new host-visible, host-coherent buffer of `bytes`, mapped; destroyHostBuffer frees it.
   [[nodiscard]] HostBuffer createHostBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const;
   void destroyHostBuffer(HostBuffer& buffer) const;
+  // A new device-local buffer of `bytes`; destroyDeviceBuffer frees it.
+  [[nodiscard]] DeviceBuffer createDeviceBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const;
+  void destroyDeviceBuffer(DeviceBuffer& buffer) const;
 
   // Submits a recorded command buffer to the queue (shared, so under a lock) and waits for
   // `fence`, which must be unsignalled.

@@ -30,6 +30,7 @@
 #include "vulkan_image_cache.hpp"
 #include "vulkan_pipeline.hpp"
 #include "vulkan_recorder.hpp"
+#include "vulkan_summary.hpp"
 
 namespace recode::backends {
 
@@ -252,6 +253,18 @@ struct VulkanDevice::Impl {
 
   // Records a copy of one aspect of a GL-window rectangle; `deliver` gets its bytes, `texel`
   // bytes a pixel, rows bottom first (the copy holds them top first), when the recording runs.
+  // A copy of `aspect` over r into a buffer at `offset` (rows from the image's top down).
+  [[nodiscard]] VkBufferImageCopy aspectCopy(const PixelRect& r, VkImageAspectFlags aspect,
+                                             VkDeviceSize offset) const {
+    const VkRect2D source = framebufferRect(r);
+    VkBufferImageCopy region{};
+    region.bufferOffset = offset;
+    region.imageSubresource = {aspect, 0, 0, 1};
+    region.imageOffset = {source.offset.x, source.offset.y, 0};
+    region.imageExtent = {source.extent.width, source.extent.height, 1};
+    return region;
+  }
+
   void readAspect(const PixelRect& r, VkImageAspectFlags aspect, std::size_t texel,
                   std::function<void(std::vector<std::uint8_t>)> deliver) {
     const std::size_t rowBytes = static_cast<std::size_t>(r.width()) * texel;
@@ -418,6 +431,100 @@ raster::PendingRead<std::uint32_t> VulkanDevice::readDepthLater(const PixelRect&
   // The depth aspect of D32_SFLOAT_S8_UINT copies out as tightly packed 32-bit floats.
   d.readAspect(r, VK_IMAGE_ASPECT_DEPTH_BIT, 4, [read](std::vector<std::uint8_t> bytes) mutable {
     read.deliver(depthFromStoredFloats(bytes, "Vulkan device"));
+  });
+  return read;
+}
+
+std::shared_ptr<const raster::KeptDepth> VulkanDevice::keepDepthLater(const PixelRect& rect) {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  if (r.empty() || r.area() > detail::kMaxDeviceSummaryPixels)
+    return DepthStencilDevice::keepDepthLater(r);
+  const std::size_t bytes = 4 * static_cast<std::size_t>(r.area());
+  const auto hold = d.recorder->hold();
+  std::shared_ptr<const raster::KeptDepth> kept;
+  d.counted([&] {
+    d.recorder->makeRoom(bytes);
+    const detail::CommandRecorder::Scratch region = d.recorder->scratch(bytes);
+    kept = std::make_shared<detail::VulkanKeptDepth>(*d.recorder, impl_.get(), r, region);
+    const VkBufferImageCopy copy = d.aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset);
+    d.recorder->record([&](VkCommandBuffer cmd) {
+      vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &copy);
+    });
+  });
+  return kept;
+}
+
+raster::PendingRead<raster::PixelSummary> VulkanDevice::summarizeLater(
+    const PixelRect& rect, const raster::StencilClasses& classes,
+    const raster::KeptDepth* nearEnd) {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  const auto* kept = dynamic_cast<const detail::VulkanKeptDepth*>(nearEnd);
+  if (kept == nullptr &&
+      (nearEnd != nullptr || r.empty() || r.area() > detail::kMaxDeviceSummaryPixels))
+    return DepthStencilDevice::summarizeLater(r, classes, nearEnd);  // kept on the host, if any
+  if (kept != nullptr && (kept->owner() != impl_.get() || kept->rect() != r))
+    throw std::invalid_argument(
+        "summarizeLater: the near end was not kept by this device over this rectangle");
+  for (std::size_t v = 0; v < classes.classOf.size(); ++v)
+    if (classes.classOf[v] >= raster::kMaxStencilClasses)
+      throw std::invalid_argument("summarizeLater: stencil value " + std::to_string(v) +
+                                  " has class " + std::to_string(classes.classOf[v]) +
+                                  ", not below " + std::to_string(raster::kMaxStencilClasses));
+  const bool withDepth = kept != nullptr;
+  const std::size_t pixels = static_cast<std::size_t>(r.area());
+  // One scratch region: the stencil copy (a word per four pixels), the far copy, the table.
+  const std::size_t stencilBytes = (pixels + 3) / 4 * 4;
+  const std::size_t farBytes = withDepth ? 4 * pixels : 0;
+  const std::size_t tableBytes = classes.classOf.size();
+  const std::size_t bytes = stencilBytes + farBytes + tableBytes;
+  raster::PendingRead<raster::PixelSummary> read =
+      raster::PendingRead<raster::PixelSummary>::waiting();
+  const auto hold = d.recorder->hold();
+  d.counted([&] {
+    d.recorder->makeRoom(bytes + raster::kPixelSummaryBytes);
+    const detail::CommandRecorder::Scratch region = d.recorder->scratch(bytes);
+    const detail::CommandRecorder::Staged out = d.recorder->results(
+        raster::kPixelSummaryBytes, [read, r, withDepth](const std::uint8_t* bytesBack) mutable {
+          std::array<std::uint32_t, raster::kPixelSummaryWords> words{};
+          std::memcpy(words.data(), bytesBack, raster::kPixelSummaryBytes);
+          read.deliver({raster::unpackPixelSummary(words, r, withDepth, "Vulkan device")});
+        });
+    detail::SummaryPushConstants push;
+    push.stencilByte = static_cast<std::uint32_t>(region.offset);
+    push.farWord = static_cast<std::uint32_t>((region.offset + stencilBytes) / 4);
+    push.tableWord = static_cast<std::uint32_t>((region.offset + stencilBytes + farBytes) / 4);
+    push.nearWord = withDepth ? static_cast<std::uint32_t>(kept->region().offset / 4) : 0;
+    push.resultWord = static_cast<std::uint32_t>(out.offset / 4);
+    push.x0 = static_cast<std::uint32_t>(r.x0);
+    push.y1 = static_cast<std::uint32_t>(r.y1);
+    push.width = static_cast<std::uint32_t>(r.width());
+    push.height = static_cast<std::uint32_t>(r.height());
+    push.marked = classes.marked;
+    push.withDepth = withDepth ? 1 : 0;
+    const VkBufferImageCopy stencilCopy =
+        d.aspectCopy(r, VK_IMAGE_ASPECT_STENCIL_BIT, region.offset);
+    const VkBufferImageCopy farCopy =
+        d.aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset + stencilBytes);
+    const VkBuffer nearBuffer = withDepth ? kept->region().buffer : region.buffer;
+    d.recorder->record([&](VkCommandBuffer cmd) {
+      vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &stencilCopy);
+      if (withDepth)
+        vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &farCopy);
+      vkCmdUpdateBuffer(cmd, region.buffer, region.offset + stencilBytes + farBytes, tableBytes,
+                        classes.classOf.data());
+      // The copies and the table before the shader reads them.
+      VkMemoryBarrier barrier{};
+      barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+      barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+      barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                           nullptr);
+      detail::summaryPipeline(d.arithmetic)
+          .dispatch(cmd, nearBuffer, region.buffer, out.buffer, push);
+    });
   });
   return read;
 }

@@ -12,6 +12,8 @@ namespace {
 
 // New chunks are at least this large, so a batch of small draws makes few buffers.
 constexpr VkDeviceSize kChunkBytes = VkDeviceSize{4} << 20;
+// Scratch chunks are larger: a frame's summaries copy every drawn pair's MOR into them.
+constexpr VkDeviceSize kScratchChunkBytes = VkDeviceSize{64} << 20;
 // Offsets are kept to this alignment: more than vertex input or a depth/stencil copy asks.
 constexpr VkDeviceSize kAlignment = 64;
 
@@ -43,9 +45,11 @@ CommandRecorder::~CommandRecorder() {
   closeRendering();
   if (recording_)
     vkEndCommandBuffer(commands_);  // never submitted: the device is going away
-  for (Chunks* chunks : {&staging_, &readbacks_})
+  for (Chunks* chunks : {&staging_, &readbacks_, &results_})
     for (HostBuffer& buffer : chunks->buffers)
       context_.destroyHostBuffer(buffer);
+  for (DeviceBuffer& buffer : scratch_.buffers)
+    context_.destroyDeviceBuffer(buffer);
   vkDestroyFence(context_.device(), fence_, nullptr);
   vkDestroyCommandPool(context_.device(), pool_, nullptr);  // frees the command buffer too
 }
@@ -132,6 +136,51 @@ void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,
   counters_.readbackBytes += static_cast<long long>(bytes);
 }
 
+CommandRecorder::Scratch CommandRecorder::scratch(std::size_t bytes) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  const VkDeviceSize size =
+      (static_cast<VkDeviceSize>(bytes) + kAlignment - 1) / kAlignment * kAlignment;
+  while (scratch_.current < scratch_.buffers.size() &&
+         scratch_.used + size > scratch_.buffers[scratch_.current].size) {
+    ++scratch_.current;
+    scratch_.used = 0;
+  }
+  if (scratch_.current == scratch_.buffers.size())
+    scratch_.buffers.push_back(context_.createDeviceBuffer(
+        std::max(size, kScratchChunkBytes),
+        VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  const Scratch region{scratch_.buffers[scratch_.current].buffer, scratch_.used};
+  scratch_.used += size;
+  pendingBytes_ += bytes;
+  return region;
+}
+
+CommandRecorder::Staged CommandRecorder::results(std::size_t bytes,
+                                                 std::function<void(const std::uint8_t*)> deliver) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  const Slot slot = allocate(results_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  copies_.push_back(
+      {static_cast<const std::uint8_t*>(slot.buffer->mapped) + slot.offset, std::move(deliver)});
+  counters_.readbackBytes += static_cast<long long>(bytes);
+  return {slot.buffer->buffer, slot.offset};
+}
+
+void CommandRecorder::holdScratch() {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  ++scratchHolds_;
+}
+
+void CommandRecorder::releaseScratch() {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  --scratchHolds_;
+}
+
+void CommandRecorder::makeRoom(std::size_t bytes) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  if (pendingBytes_ + bytes > kFlushBytes)
+    finish();
+}
+
 void CommandRecorder::finish() {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   if (!recording_)
@@ -148,9 +197,13 @@ void CommandRecorder::finish() {
   std::vector<PendingCopy> copies = std::move(copies_);
   copies_.clear();
   pendingBytes_ = 0;
-  for (Chunks* chunks : {&staging_, &readbacks_}) {
+  for (Chunks* chunks : {&staging_, &readbacks_, &results_}) {
     chunks->current = 0;
     chunks->used = 0;
+  }
+  if (scratchHolds_ == 0) {  // else a held region lives on into the next recording
+    scratch_.current = 0;
+    scratch_.used = 0;
   }
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
   context_.submitAndWait(commands_, fence_);

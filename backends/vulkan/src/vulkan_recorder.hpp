@@ -59,6 +59,27 @@ class CommandRecorder {
   void readBack(VkImage image, VkImageAspectFlags aspect, const VkBufferImageCopy& region,
                 std::size_t bytes, std::function<void(const std::uint8_t*)> deliver);
 
+  // Device-local memory that the recording's own commands write and later commands read (the
+  // copies a compute shader summarises), and host-visible memory a shader writes its results
+  // to, `deliver` getting them when the recording has run (counted as read-back bytes). Neither
+  // runs the recording: a caller that allocates several regions and records their commands does
+  // it under hold(), after makeRoom() for them all. A scratch region lives until the recording
+  // has run, or, while someone holds scratch (holdScratch), until a finish() when nobody does.
+  struct Scratch {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceSize offset = 0;
+  };
+  [[nodiscard]] Scratch scratch(std::size_t bytes);
+  [[nodiscard]] Staged results(std::size_t bytes, std::function<void(const std::uint8_t*)> deliver);
+  void holdScratch();
+  void releaseScratch();
+  // Runs the recording first when `bytes` more would pass kFlushBytes.
+  void makeRoom(std::size_t bytes);
+  // The recorder's lock, for a sequence of calls no other thread may come between.
+  [[nodiscard]] std::unique_lock<std::recursive_mutex> hold() {
+    return std::unique_lock<std::recursive_mutex>(lock_);
+  }
+
   // Submits the recording, waits for it and delivers the read-backs; nothing when none is open.
   void finish();
 
@@ -81,6 +102,11 @@ class CommandRecorder {
     VkDeviceSize used = 0;
   };
   Slot allocate(Chunks& chunks, std::size_t bytes, VkBufferUsageFlags usage);
+  struct ScratchChunks {
+    std::vector<DeviceBuffer> buffers;
+    std::size_t current = 0;
+    VkDeviceSize used = 0;
+  };
   void begin();
   void closeRendering();
 
@@ -99,6 +125,9 @@ class CommandRecorder {
   VkImageView renderingTarget_ = VK_NULL_HANDLE;  // of the open rendering
   Chunks staging_;
   Chunks readbacks_;
+  Chunks results_;
+  ScratchChunks scratch_;
+  int scratchHolds_ = 0;
   std::size_t pendingBytes_ = 0;
   std::vector<PendingCopy> copies_;
   raster::TransferCounters counters_;

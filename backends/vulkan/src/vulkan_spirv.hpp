@@ -14,11 +14,12 @@ struct SpirvModules {
   std::span<const std::uint32_t> exactFragment;  // exact_vk.frag (exact32_vk.frag): coverage, depth
   std::span<const std::uint32_t> clearVertex;    // clear_vk.vert: a full-framebuffer rectangle
   std::span<const std::uint32_t> clearFragment;  // clear_vk.frag: the clear depth
+  std::span<const std::uint32_t> summaryCompute;  // summary_vk.comp: integers only, serves both
 };
 
 // The modules of devices with that shader arithmetic: Emulated32's exact stages declare neither
 // the Float64 nor the Int64 capability (tests/backends/vulkan checks the words); the clear
-// stages need neither and serve both.
+// stages and the summary's compute stage need neither and serve both.
 [[nodiscard]] SpirvModules spirvModules(ShaderArithmetic arithmetic);
 
 }  // namespace recode::backends::detail

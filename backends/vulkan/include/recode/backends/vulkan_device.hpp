@@ -53,6 +53,14 @@ class VulkanDevice final : public raster::RenderStateDevice {
       const raster::PixelRect& rect) override;
   [[nodiscard]] raster::PendingRead<std::uint32_t> readDepthLater(
       const raster::PixelRect& rect) override;
+  // Summaries worked out on the GPU (summary_vk.comp): the near end and the buffers are copied
+  // into device memory and reduced by a compute shader, and 64 bytes come back. Rectangles of
+  // more than 4 Mi pixels are summarised from plain read-backs instead.
+  [[nodiscard]] std::shared_ptr<const raster::KeptDepth> keepDepthLater(
+      const raster::PixelRect& rect) override;
+  [[nodiscard]] raster::PendingRead<raster::PixelSummary> summarizeLater(
+      const raster::PixelRect& rect, const raster::StencilClasses& classes,
+      const raster::KeptDepth* nearEnd) override;
   void finish() override;
   [[nodiscard]] bool defers() const override;
   [[nodiscard]] raster::TransferCounters transfers() const override;

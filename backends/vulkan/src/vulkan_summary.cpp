@@ -1,0 +1,123 @@
+// The summary compute pipeline and its descriptor sets.
+#include "vulkan_summary.hpp"
+
+#include "vulkan_context.hpp"
+#include "vulkan_spirv.hpp"
+
+namespace recode::backends::detail {
+
+namespace {
+
+constexpr std::uint32_t kBindings = 3;  // near scratch, scratch, results
+constexpr std::uint32_t kSetsPerPool = 64;
+
+}  // namespace
+
+SummaryPipeline::SummaryPipeline(VkDevice device) : device_(device) {
+  VkDescriptorSetLayoutBinding bindings[kBindings]{};
+  for (std::uint32_t i = 0; i < kBindings; ++i) {
+    bindings[i].binding = i;
+    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[i].descriptorCount = 1;
+    bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+  }
+  VkDescriptorSetLayoutCreateInfo setInfo{};
+  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  setInfo.bindingCount = kBindings;
+  setInfo.pBindings = bindings;
+  vkCheck(vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &setLayout_),
+          "vkCreateDescriptorSetLayout");
+  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(SummaryPushConstants)};
+  VkPipelineLayoutCreateInfo layoutInfo{};
+  layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &setLayout_;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &range;
+  vkCheck(vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &layout_),
+          "vkCreatePipelineLayout");
+  // Both arithmetics share the module: it uses 32-bit integers only.
+  const std::span<const std::uint32_t> spirv =
+      spirvModules(ShaderArithmetic::Native64).summaryCompute;
+  VkShaderModuleCreateInfo moduleInfo{};
+  moduleInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+  moduleInfo.codeSize = spirv.size_bytes();
+  moduleInfo.pCode = spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  vkCheck(vkCreateShaderModule(device_, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
+  VkComputePipelineCreateInfo pipelineInfo{};
+  pipelineInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+  pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  pipelineInfo.stage.module = module;
+  pipelineInfo.stage.pName = "main";
+  pipelineInfo.layout = layout_;
+  const VkResult made =
+      vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline_);
+  vkDestroyShaderModule(device_, module, nullptr);
+  vkCheck(made, "vkCreateComputePipelines (the summary shader)");
+}
+
+VkDescriptorSet SummaryPipeline::descriptorSet(VkBuffer nearScratch, VkBuffer scratch,
+                                               VkBuffer results) {
+  const std::array<VkBuffer, 3> key{nearScratch, scratch, results};
+  if (const auto found = sets_.find(key); found != sets_.end())
+    return found->second;
+  if (pools_.empty() || setsInPool_ == kSetsPerPool) {
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindings * kSetsPerPool};
+    VkDescriptorPoolCreateInfo poolInfo{};
+    poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    poolInfo.maxSets = kSetsPerPool;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &size;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    vkCheck(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+    pools_.push_back(pool);
+    setsInPool_ = 0;
+  }
+  VkDescriptorSetAllocateInfo allocate{};
+  allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  allocate.descriptorPool = pools_.back();
+  allocate.descriptorSetCount = 1;
+  allocate.pSetLayouts = &setLayout_;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  vkCheck(vkAllocateDescriptorSets(device_, &allocate, &set), "vkAllocateDescriptorSets");
+  ++setsInPool_;
+  VkDescriptorBufferInfo buffers[kBindings]{};
+  VkWriteDescriptorSet writes[kBindings]{};
+  for (std::uint32_t i = 0; i < kBindings; ++i) {
+    buffers[i] = {key[i], 0, VK_WHOLE_SIZE};
+    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    writes[i].dstSet = set;
+    writes[i].dstBinding = i;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[i].pBufferInfo = &buffers[i];
+  }
+  vkUpdateDescriptorSets(device_, kBindings, writes, 0, nullptr);
+  sets_.emplace(key, set);
+  return set;
+}
+
+void SummaryPipeline::dispatch(VkCommandBuffer cmd, VkBuffer nearScratch, VkBuffer scratch,
+                               VkBuffer results, const SummaryPushConstants& push) {
+  const VkDescriptorSet set = descriptorSet(nearScratch, scratch, results);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
+  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+  vkCmdDispatch(cmd, 1, 1, 1);
+}
+
+SummaryPipeline& summaryPipeline(ShaderArithmetic arithmetic) {
+  // Leaked, as the contexts.
+  if (arithmetic == ShaderArithmetic::Native64) {
+    static SummaryPipeline* native =
+        new SummaryPipeline(VulkanContext::instance(ShaderArithmetic::Native64).device());
+    return *native;
+  }
+  static SummaryPipeline* emulated =
+      new SummaryPipeline(VulkanContext::instance(ShaderArithmetic::Emulated32).device());
+  return *emulated;
+}
+
+}  // namespace recode::backends::detail

@@ -1,0 +1,91 @@
+#pragma once
+// The Vulkan devices' pixel summaries (raster/include/recode/raster/pixel_summary.hpp): the
+// compute pipeline of summary_vk.comp, one workgroup per summary, reading copies of the
+// rectangle's stencil and depths that the recording made in device-local scratch and writing 16
+// words to host-visible memory. So a pair test reads back 64 bytes, not its buffers.
+
+#include <vulkan/vulkan_core.h>
+
+#include <array>
+#include <cstdint>
+#include <map>
+
+#include "recode/backends/vulkan_shader_arithmetic.hpp"
+#include "recode/raster/device.hpp"
+#include "vulkan_recorder.hpp"
+
+namespace recode::backends::detail {
+
+// summary_vk.comp's push constants, in its `Summary` block's layout.
+struct SummaryPushConstants {
+  std::uint32_t stencilByte = 0;
+  std::uint32_t farWord = 0;
+  std::uint32_t tableWord = 0;
+  std::uint32_t nearWord = 0;
+  std::uint32_t resultWord = 0;
+  std::uint32_t x0 = 0;
+  std::uint32_t y1 = 0;
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint32_t marked = 0;
+  std::uint32_t withDepth = 0;
+};
+
+// Rectangles of more pixels are summarised on the host from plain read-backs (the interface's
+// default): their copies would crowd the scratch memory a frame's pairs share.
+inline constexpr long long kMaxDeviceSummaryPixels = 4LL << 20;
+
+class SummaryPipeline {
+ public:
+  explicit SummaryPipeline(VkDevice device);
+  SummaryPipeline(const SummaryPipeline&) = delete;
+  SummaryPipeline& operator=(const SummaryPipeline&) = delete;
+
+  // Records one summary's dispatch: the near copy in `nearScratch`, the stencil copy, the far
+  // copy and the class table in `scratch`, the words into `results`. Call under the recorder's
+  // lock (the descriptor sets are cached per triple of buffers, which live as long as the
+  // recorder).
+  void dispatch(VkCommandBuffer cmd, VkBuffer nearScratch, VkBuffer scratch, VkBuffer results,
+                const SummaryPushConstants& push);
+
+ private:
+  VkDescriptorSet descriptorSet(VkBuffer nearScratch, VkBuffer scratch, VkBuffer results);
+
+  VkDevice device_;
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  std::vector<VkDescriptorPool> pools_;
+  std::uint32_t setsInPool_ = 0;
+  std::map<std::array<VkBuffer, 3>, VkDescriptorSet> sets_;
+};
+
+// The pipeline on the context of that arithmetic, made on first use and never destroyed (as the
+// context and the recorder).
+[[nodiscard]] SummaryPipeline& summaryPipeline(ShaderArithmetic arithmetic);
+
+// A depth a Vulkan device copied into scratch for its next summary; the region is held
+// (CommandRecorder::holdScratch) while this lives.
+class VulkanKeptDepth final : public raster::KeptDepth {
+ public:
+  VulkanKeptDepth(CommandRecorder& recorder, const void* owner, const raster::PixelRect& rect,
+                  CommandRecorder::Scratch region)
+      : recorder_(recorder), owner_(owner), rect_(rect), region_(region) {
+    recorder_.holdScratch();
+  }
+  ~VulkanKeptDepth() override { recorder_.releaseScratch(); }
+  VulkanKeptDepth(const VulkanKeptDepth&) = delete;
+  VulkanKeptDepth& operator=(const VulkanKeptDepth&) = delete;
+
+  [[nodiscard]] const void* owner() const { return owner_; }
+  [[nodiscard]] const raster::PixelRect& rect() const { return rect_; }
+  [[nodiscard]] const CommandRecorder::Scratch& region() const { return region_; }
+
+ private:
+  CommandRecorder& recorder_;
+  const void* owner_;
+  raster::PixelRect rect_;
+  CommandRecorder::Scratch region_;
+};
+
+}  // namespace recode::backends::detail
