@@ -349,6 +349,7 @@ std::vector<PairTask> Simulation::listPairTasks(const std::vector<std::pair<int,
       task.request.mor = options_.mor;
       task.request.contact = options_.contact;
       task.keepContactPoints = options_.keepContactPoints;
+      task.request.keepPixels = options_.keepContactPoints;  // the report keeps no case map
       tasks.push_back(task);
     }
   }
