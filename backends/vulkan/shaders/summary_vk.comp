@@ -1,6 +1,6 @@
 #version 450
 // The pixel summary (raster/include/recode/raster/pixel_summary.hpp, summarizePixels) of one
-// rectangle, worked out by one workgroup: the stencil's pixels counted by class, the marked
+// rectangle, worked out by one workgroup (a dispatch summarises many rectangles): the stencil's pixels counted by class, the marked
 // pixels' bounding rectangle and, with a near end, their depth intervals. Every reduction is an
 // integer count, minimum or maximum, so the order the invocations meet in does not matter and
 // the words equal the host's. Integer arithmetic only: the same SPIR-V serves the devices with
@@ -14,7 +14,15 @@ layout(std430, set = 0, binding = 0) readonly buffer NearScratch { uint nearWord
 layout(std430, set = 0, binding = 1) readonly buffer Scratch { uint words[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Results { uint results[]; };
 
-layout(push_constant) uniform Summary {
+// Each summary's parameters, eleven words in the order of `Summary` below: workgroup k of a
+// dispatch summarises the k-th from `firstWord` on. The summaries recorded since the last
+// submission are summarised by one dispatch (one per set of buffers), recorded just before the
+// submission.
+layout(std430, set = 0, binding = 3) readonly buffer Summaries { uint parameters[]; };
+
+layout(push_constant) uniform Dispatch { uint firstWord; } dispatch;
+
+struct Summary {
   uint stencilByte;  // in Scratch: the stencil copy
   uint farWord;      // in Scratch: the depth now (the far ends)
   uint tableWord;    // in Scratch: 64 words, four stencil values' classes a word
@@ -26,7 +34,7 @@ layout(push_constant) uniform Summary {
   uint height;
   uint marked;     // bit c: class c is marked
   uint withDepth;  // 1: summarise the depth intervals too
-} pc;
+};
 
 const uint kClasses = 10u;  // kMaxStencilClasses
 const uint kNone = 0xFFFFFFFFu;
@@ -53,6 +61,8 @@ uint storedDepth(uint bits) {
   return significand >> shift;
 }
 
+Summary pc;
+
 uint stencilAt(uint i) {
   const uint byteIndex = pc.stencilByte + i;
   return (words[byteIndex >> 2] >> ((byteIndex & 3u) * 8u)) & 0xFFu;
@@ -63,6 +73,11 @@ uint classOf(uint stencil) {
 }
 
 void main() {
+  const uint base = dispatch.firstWord + 11u * gl_WorkGroupID.x;
+  pc = Summary(parameters[base], parameters[base + 1u], parameters[base + 2u],
+               parameters[base + 3u], parameters[base + 4u], parameters[base + 5u],
+               parameters[base + 6u], parameters[base + 7u], parameters[base + 8u],
+               parameters[base + 9u], parameters[base + 10u]);
   const uint lane = gl_LocalInvocationID.x;
   if (lane < kClasses)
     sharedCounts[lane] = 0u;

@@ -491,7 +491,7 @@ raster::PendingRead<raster::PixelSummary> VulkanDevice::summarizeLater(
           std::memcpy(words.data(), bytesBack, raster::kPixelSummaryBytes);
           read.deliver({raster::unpackPixelSummary(words, r, withDepth, "Vulkan device")});
         });
-    detail::SummaryPushConstants push;
+    detail::SummaryParameters push;
     push.stencilByte = static_cast<std::uint32_t>(region.offset);
     push.farWord = static_cast<std::uint32_t>((region.offset + stencilBytes) / 4);
     push.tableWord = static_cast<std::uint32_t>((region.offset + stencilBytes + farBytes) / 4);
@@ -514,17 +514,9 @@ raster::PendingRead<raster::PixelSummary> VulkanDevice::summarizeLater(
         vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &farCopy);
       vkCmdUpdateBuffer(cmd, region.buffer, region.offset + stencilBytes + farBytes, tableBytes,
                         classes.classOf.data());
-      // The copies and the table before the shader reads them.
-      VkMemoryBarrier barrier{};
-      barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-      barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-      barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
-                           nullptr);
-      detail::summaryPipeline(d.arithmetic)
-          .dispatch(cmd, nearBuffer, region.buffer, out.buffer, push);
     });
+    // The dispatch comes just before the submission, with every other summary's.
+    detail::summaryPipeline(d.arithmetic).add(nearBuffer, region.buffer, out.buffer, push);
   });
   return read;
 }

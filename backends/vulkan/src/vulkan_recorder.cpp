@@ -165,6 +165,18 @@ CommandRecorder::Staged CommandRecorder::results(std::size_t bytes,
   return {slot.buffer->buffer, slot.offset};
 }
 
+CommandRecorder::Staged CommandRecorder::upload(const void* data, std::size_t bytes) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  const Slot slot = allocate(results_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  std::memcpy(static_cast<std::uint8_t*>(slot.buffer->mapped) + slot.offset, data, bytes);
+  return {slot.buffer->buffer, slot.offset};
+}
+
+void CommandRecorder::setBeforeSubmit(std::function<void(VkCommandBuffer)> hook) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  beforeSubmit_ = std::move(hook);
+}
+
 void CommandRecorder::holdScratch() {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   ++scratchHolds_;
@@ -186,6 +198,8 @@ void CommandRecorder::finish() {
   if (!recording_)
     return;
   closeRendering();
+  if (beforeSubmit_)
+    beforeSubmit_(commands_);
   // Everything recorded is visible to the host once the fence says it is done.
   VkMemoryBarrier barrier{};
   barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;

@@ -71,6 +71,12 @@ class CommandRecorder {
   };
   [[nodiscard]] Scratch scratch(std::size_t bytes);
   [[nodiscard]] Staged results(std::size_t bytes, std::function<void(const std::uint8_t*)> deliver);
+  // Host-visible memory holding `bytes` of host data a shader reads (its parameters), for the
+  // recording being made; not a read-back.
+  [[nodiscard]] Staged upload(const void* data, std::size_t bytes);
+  // Called by finish() with the command buffer just before it is submitted, outside any
+  // rendering: the summaries record their one dispatch there.
+  void setBeforeSubmit(std::function<void(VkCommandBuffer)> hook);
   void holdScratch();
   void releaseScratch();
   // Runs the recording first when `bytes` more would pass kFlushBytes.
@@ -128,6 +134,7 @@ class CommandRecorder {
   Chunks results_;
   ScratchChunks scratch_;
   int scratchHolds_ = 0;
+  std::function<void(VkCommandBuffer)> beforeSubmit_;
   std::size_t pendingBytes_ = 0;
   std::vector<PendingCopy> copies_;
   raster::TransferCounters counters_;

@@ -8,12 +8,15 @@ namespace recode::backends::detail {
 
 namespace {
 
-constexpr std::uint32_t kBindings = 3;  // near scratch, scratch, results
+constexpr std::uint32_t kBindings = 4;  // near scratch, scratch, results, parameters
+constexpr std::size_t kParameterWords = sizeof(SummaryParameters) / 4;
+static_assert(kParameterWords == 11, "summary_vk.comp reads eleven words a summary");
 constexpr std::uint32_t kSetsPerPool = 64;
 
 }  // namespace
 
-SummaryPipeline::SummaryPipeline(VkDevice device) : device_(device) {
+SummaryPipeline::SummaryPipeline(VkDevice device, CommandRecorder& recorder)
+    : device_(device), recorder_(recorder) {
   VkDescriptorSetLayoutBinding bindings[kBindings]{};
   for (std::uint32_t i = 0; i < kBindings; ++i) {
     bindings[i].binding = i;
@@ -27,7 +30,7 @@ SummaryPipeline::SummaryPipeline(VkDevice device) : device_(device) {
   setInfo.pBindings = bindings;
   vkCheck(vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &setLayout_),
           "vkCreateDescriptorSetLayout");
-  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(SummaryPushConstants)};
+  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(std::uint32_t)};
   VkPipelineLayoutCreateInfo layoutInfo{};
   layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
   layoutInfo.setLayoutCount = 1;
@@ -56,11 +59,10 @@ SummaryPipeline::SummaryPipeline(VkDevice device) : device_(device) {
       vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline_);
   vkDestroyShaderModule(device_, module, nullptr);
   vkCheck(made, "vkCreateComputePipelines (the summary shader)");
+  recorder_.setBeforeSubmit([this](VkCommandBuffer cmd) { dispatchPending(cmd); });
 }
 
-VkDescriptorSet SummaryPipeline::descriptorSet(VkBuffer nearScratch, VkBuffer scratch,
-                                               VkBuffer results) {
-  const std::array<VkBuffer, 3> key{nearScratch, scratch, results};
+VkDescriptorSet SummaryPipeline::descriptorSet(const Buffers& key) {
   if (const auto found = sets_.find(key); found != sets_.end())
     return found->second;
   if (pools_.empty() || setsInPool_ == kSetsPerPool) {
@@ -99,24 +101,47 @@ VkDescriptorSet SummaryPipeline::descriptorSet(VkBuffer nearScratch, VkBuffer sc
   return set;
 }
 
-void SummaryPipeline::dispatch(VkCommandBuffer cmd, VkBuffer nearScratch, VkBuffer scratch,
-                               VkBuffer results, const SummaryPushConstants& push) {
-  const VkDescriptorSet set = descriptorSet(nearScratch, scratch, results);
+void SummaryPipeline::add(VkBuffer nearScratch, VkBuffer scratch, VkBuffer results,
+                          const SummaryParameters& parameters) {
+  pending_[{nearScratch, scratch, results}].push_back(parameters);
+}
+
+void SummaryPipeline::dispatchPending(VkCommandBuffer cmd) {
+  if (pending_.empty())
+    return;
+  // The copies, made by the commands before, ahead of the shader that reads them.
+  VkMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_HOST_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                       nullptr);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
-  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-  vkCmdDispatch(cmd, 1, 1, 1);
+  for (const auto& [buffers, summaries] : pending_) {
+    const CommandRecorder::Staged parameters =
+        recorder_.upload(summaries.data(), summaries.size() * sizeof(SummaryParameters));
+    const VkDescriptorSet set =
+        descriptorSet({buffers[0], buffers[1], buffers[2], parameters.buffer});
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
+    const auto firstWord = static_cast<std::uint32_t>(parameters.offset / 4);
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(firstWord), &firstWord);
+    vkCmdDispatch(cmd, static_cast<std::uint32_t>(summaries.size()), 1, 1);
+  }
+  pending_.clear();
 }
 
 SummaryPipeline& summaryPipeline(ShaderArithmetic arithmetic) {
   // Leaked, as the contexts.
   if (arithmetic == ShaderArithmetic::Native64) {
     static SummaryPipeline* native =
-        new SummaryPipeline(VulkanContext::instance(ShaderArithmetic::Native64).device());
+        new SummaryPipeline(VulkanContext::instance(ShaderArithmetic::Native64).device(),
+                            sharedRecorder(ShaderArithmetic::Native64));
     return *native;
   }
   static SummaryPipeline* emulated =
-      new SummaryPipeline(VulkanContext::instance(ShaderArithmetic::Emulated32).device());
+      new SummaryPipeline(VulkanContext::instance(ShaderArithmetic::Emulated32).device(),
+                          sharedRecorder(ShaderArithmetic::Emulated32));
   return *emulated;
 }
 

@@ -2,7 +2,8 @@
 // The Vulkan devices' pixel summaries (raster/include/recode/raster/pixel_summary.hpp): the
 // compute pipeline of summary_vk.comp, one workgroup per summary, reading copies of the
 // rectangle's stencil and depths that the recording made in device-local scratch and writing 16
-// words to host-visible memory. So a pair test reads back 64 bytes, not its buffers.
+// words to host-visible memory. So a pair test reads back 64 bytes, not its buffers, and a
+// submission's summaries cost one dispatch.
 
 #include <vulkan/vulkan_core.h>
 
@@ -16,8 +17,8 @@
 
 namespace recode::backends::detail {
 
-// summary_vk.comp's push constants, in its `Summary` block's layout.
-struct SummaryPushConstants {
+// One summary's parameters, as summary_vk.comp reads them (its `Summary`, eleven words).
+struct SummaryParameters {
   std::uint32_t stencilByte = 0;
   std::uint32_t farWord = 0;
   std::uint32_t tableWord = 0;
@@ -35,33 +36,40 @@ struct SummaryPushConstants {
 // default): their copies would crowd the scratch memory a frame's pairs share.
 inline constexpr long long kMaxDeviceSummaryPixels = 4LL << 20;
 
+// The summaries of a recording: each summarizeLater records its copies in place and leaves its
+// parameters here; just before the recording is submitted, one dispatch (one per set of
+// buffers) summarises them all, a workgroup each. One recorder, one SummaryPipeline.
 class SummaryPipeline {
  public:
-  explicit SummaryPipeline(VkDevice device);
+  SummaryPipeline(VkDevice device, CommandRecorder& recorder);
   SummaryPipeline(const SummaryPipeline&) = delete;
   SummaryPipeline& operator=(const SummaryPipeline&) = delete;
 
-  // Records one summary's dispatch: the near copy in `nearScratch`, the stencil copy, the far
-  // copy and the class table in `scratch`, the words into `results`. Call under the recorder's
-  // lock (the descriptor sets are cached per triple of buffers, which live as long as the
-  // recorder).
-  void dispatch(VkCommandBuffer cmd, VkBuffer nearScratch, VkBuffer scratch, VkBuffer results,
-                const SummaryPushConstants& push);
+  // A summary to dispatch before the recording is submitted: the near copy in `nearScratch`,
+  // the stencil copy, the far copy and the class table in `scratch`, the words into `results`.
+  // Call under the recorder's lock, after recording the copies.
+  void add(VkBuffer nearScratch, VkBuffer scratch, VkBuffer results,
+           const SummaryParameters& parameters);
 
  private:
-  VkDescriptorSet descriptorSet(VkBuffer nearScratch, VkBuffer scratch, VkBuffer results);
+  using Buffers = std::array<VkBuffer, 4>;  // near scratch, scratch, results, parameters
+  void dispatchPending(VkCommandBuffer cmd);
+  VkDescriptorSet descriptorSet(const Buffers& buffers);
 
   VkDevice device_;
+  CommandRecorder& recorder_;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   std::vector<VkDescriptorPool> pools_;
   std::uint32_t setsInPool_ = 0;
-  std::map<std::array<VkBuffer, 3>, VkDescriptorSet> sets_;
+  std::map<Buffers, VkDescriptorSet> sets_;
+  // What add() was given since the last submission, by (near scratch, scratch, results).
+  std::map<std::array<VkBuffer, 3>, std::vector<SummaryParameters>> pending_;
 };
 
-// The pipeline on the context of that arithmetic, made on first use and never destroyed (as the
-// context and the recorder).
+// The pipeline of that arithmetic's context and recorder, made on first use and never destroyed
+// (as the context and the recorder).
 [[nodiscard]] SummaryPipeline& summaryPipeline(ShaderArithmetic arithmetic);
 
 // A depth a Vulkan device copied into scratch for its next summary; the region is held
