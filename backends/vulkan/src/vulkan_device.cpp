@@ -152,7 +152,7 @@ struct VulkanDevice::Impl {
   // GENERAL layout (a kept image is in it already), then the start state of CpuDevice: depth
   // 2^24 - 1 (stored as (2^24 - 1) 2^-24), stencil 0 everywhere.
   void initialiseImage() {
-    recorder->record([&](VkCommandBuffer cmd) {
+    recorder->record(image, [&](VkCommandBuffer cmd) {
       if (reused) {
         clearWholeImage(cmd);
         return;
@@ -199,7 +199,7 @@ struct VulkanDevice::Impl {
       rendering.pStencilAttachment = &attachment;
       vkCmdBeginRendering(cmd, &rendering);
     };
-    recorder->render(view, beginRendering, [&](VkCommandBuffer cmd) {
+    recorder->render(image, view, beginRendering, [&](VkCommandBuffer cmd) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       const VkViewport viewport{0.0f,
                                 static_cast<float>(height),
@@ -448,7 +448,7 @@ std::shared_ptr<const raster::KeptDepth> VulkanDevice::keepDepthLater(const Pixe
     const detail::CommandRecorder::Scratch region = d.recorder->scratch(bytes);
     kept = std::make_shared<detail::VulkanKeptDepth>(*d.recorder, impl_.get(), r, region);
     const VkBufferImageCopy copy = d.aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset);
-    d.recorder->record([&](VkCommandBuffer cmd) {
+    d.recorder->record(d.image, [&](VkCommandBuffer cmd) {
       vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &copy);
     });
   });
@@ -508,7 +508,7 @@ raster::PendingRead<raster::PixelSummary> VulkanDevice::summarizeLater(
     const VkBufferImageCopy farCopy =
         d.aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset + stencilBytes);
     const VkBuffer nearBuffer = withDepth ? kept->region().buffer : region.buffer;
-    d.recorder->record([&](VkCommandBuffer cmd) {
+    d.recorder->record(d.image, [&](VkCommandBuffer cmd) {
       vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &stencilCopy);
       if (withDepth)
         vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &farCopy);

@@ -72,20 +72,26 @@ void CommandRecorder::closeRendering() {
   renderingOpen_ = false;
 }
 
-void CommandRecorder::record(const std::function<void(VkCommandBuffer)>& commands) {
+void CommandRecorder::record(VkImage image, const std::function<void(VkCommandBuffer)>& commands) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   begin();
   closeRendering();
-  fullBarrier(commands_);
+  if (image == VK_NULL_HANDLE ||
+      std::find(touched_.begin(), touched_.end(), image) != touched_.end()) {
+    fullBarrier(commands_);
+    touched_.clear();
+  }
+  if (image != VK_NULL_HANDLE)
+    touched_.push_back(image);
   commands(commands_);
 }
 
-void CommandRecorder::render(VkImageView target,
+void CommandRecorder::render(VkImage image, VkImageView target,
                              const std::function<void(VkCommandBuffer)>& beginRendering,
                              const std::function<void(VkCommandBuffer)>& draws) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   if (!renderingOpen_ || renderingTarget_ != target) {
-    record(beginRendering);  // closes the open rendering first
+    record(image, beginRendering);  // closes the open rendering first
     renderingOpen_ = true;
     renderingTarget_ = target;
   }
@@ -128,7 +134,7 @@ void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,
   VkBufferImageCopy copy = region;
   copy.bufferOffset = slot.offset;
   copy.imageSubresource.aspectMask = aspect;
-  record([&](VkCommandBuffer cmd) {
+  record(image, [&](VkCommandBuffer cmd) {
     vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_GENERAL, slot.buffer->buffer, 1, &copy);
   });
   copies_.push_back(
@@ -208,6 +214,7 @@ void CommandRecorder::finish() {
   vkCmdPipelineBarrier(commands_, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
                        1, &barrier, 0, nullptr, 0, nullptr);
   recording_ = false;
+  touched_.clear();
   std::vector<PendingCopy> copies = std::move(copies_);
   copies_.clear();
   pendingBytes_ = 0;

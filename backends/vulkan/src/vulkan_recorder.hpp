@@ -7,8 +7,9 @@
 // operation holds the recorder's lock, so devices on different threads may share it (each
 // command is recorded whole; which thread's finish() runs it does not matter).
 // Draws (clears are draws too) that follow one another share one rendering, in primitive order;
-// anything else is separated from what came before by a full memory barrier, so each sees what
-// the one before wrote, as when every command was a submission of its own.
+// anything else that touches an image touched since the last full memory barrier is separated
+// from what came before by a new one, so each command sees what the ones before wrote, as when
+// every command was a submission of its own.
 
 #include <vulkan/vulkan_core.h>
 
@@ -30,9 +31,14 @@ class CommandRecorder {
   CommandRecorder(const CommandRecorder&) = delete;
   CommandRecorder& operator=(const CommandRecorder&) = delete;
 
-  // Appends `commands` to the recording (starting one when none is open), after a full memory
-  // barrier and outside any rendering.
-  void record(const std::function<void(VkCommandBuffer)>& commands);
+  // Appends `commands` to the recording (starting one when none is open), outside any rendering,
+  // after a full memory barrier when they touch `image` and a command since the last barrier
+  // did too (or when `image` is null: commands that say nothing of what they touch). So the
+  // commands of devices with images of their own need no barrier between one device's and
+  // another's: a batch that draws every pair on a device of its own, then reads every pair,
+  // costs two barriers, not two a pair. Commands on fresh buffer regions (read-backs,
+  // scratch) need none.
+  void record(VkImage image, const std::function<void(VkCommandBuffer)>& commands);
 
   // Appends draws to the rendering that is open, or opens one first with `beginRendering`
   // (which records vkCmdBeginRendering). Consecutive draws share one rendering and need no
@@ -41,7 +47,8 @@ class CommandRecorder {
   // contract and GL give. The rendering is closed by the next record, read-back or finish, and
   // by draws to another `target` (the attachment's view: devices share the recorder, and one
   // device's draws must never land in another's rendering).
-  void render(VkImageView target, const std::function<void(VkCommandBuffer)>& beginRendering,
+  void render(VkImage image, VkImageView target,
+              const std::function<void(VkCommandBuffer)>& beginRendering,
               const std::function<void(VkCommandBuffer)>& draws);
 
   // Copies `bytes` of host data into staging memory that lives until the recording has run;
@@ -135,6 +142,7 @@ class CommandRecorder {
   ScratchChunks scratch_;
   int scratchHolds_ = 0;
   std::function<void(VkCommandBuffer)> beforeSubmit_;
+  std::vector<VkImage> touched_;  // images commands touched since the last barrier
   std::size_t pendingBytes_ = 0;
   std::vector<PendingCopy> copies_;
   raster::TransferCounters counters_;
