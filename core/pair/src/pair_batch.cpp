@@ -2,6 +2,7 @@
 #include "recode/pair/pair_batch.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -21,18 +22,30 @@ namespace {
 using detail::Clock;
 using detail::microsecondsSince;
 
+// One stretch of a pair's commands: draws, then the read-back of what they left (or the
+// keeping of a depth for a summary).
+struct Segment {
+  std::function<void()> draw;
+  std::function<void()> read;
+};
+
 // A pair of the batch while it waits for its read-backs.
 struct RecordedPair {
   const PairJob* job = nullptr;
   raster::DepthStencilDevice* device = nullptr;
   ContactSchedule schedule = ContactSchedule::AfterVerdict;
   PairResult result;
-  std::optional<OrthoView> view;  // set when the passes were recorded
-  // The blocks as drawn, kept only while contact passes may still be recorded after the verdict.
+  std::optional<OrthoView> view;  // set when the passes are to be recorded
+  // The view the blocks are drawn in, on the heap: the sources refer to it, and the pair is
+  // moved after they are made.
+  std::unique_ptr<const OrthoView> sourceView;
+  // The blocks as drawn, kept only while passes are still to be recorded.
   std::unique_ptr<detail::BlockWindowSource> a, b;
+  std::vector<Segment> segments;  // the commands of the round being recorded, in order
   // With a summary (usesSummary), the device's reduction of the stencil and contact depths;
   // else the stencil and depths themselves.
   raster::PendingRead<raster::PixelSummary> summary;
+  std::shared_ptr<const raster::KeptDepth> nearEnd;  // between a summary's two segments
   raster::PendingRead<std::uint8_t> stencil;
   raster::PendingRead<std::uint32_t> nearDepth;  // waiting only with the contact passes
   raster::PendingRead<std::uint32_t> farDepth;
@@ -46,22 +59,6 @@ void requireBlocks(const PairJob& job, std::size_t index) {
                                 (job.a == nullptr ? "A" : "B"));
 }
 
-// Both contact passes over `rect`, each with its depth read-back recorded.
-void recordContactPasses(raster::DepthStencilDevice& device, RecordedPair& p,
-                         const raster::PixelRect& rect) {
-  detail::PassRunner passes(device, *p.a, *p.b);
-  detail::StepRunner steps(device, nullptr, p.result.timing);
-  p.depthRect = rect;
-  steps.run(PairStep::ContactNear, [&] {
-    passes.overlapEnd(rect, true);
-    p.nearDepth = device.readDepthLater(rect);
-  });
-  steps.run(PairStep::ContactFar, [&] {
-    passes.overlapEnd(rect, false);
-    p.farDepth = device.readDepthLater(rect);
-  });
-}
-
 // Whether the pair is concluded from a summary of the device's buffers (pixel_summary.hpp)
 // rather than from the buffers: when the request leaves the pixels out and the contact, if
 // asked for, is measured in the same submission (its normal needs every pixel's ends).
@@ -71,28 +68,47 @@ bool usesSummary(const PairRequest& request, ContactSchedule schedule) {
   return !request.contact || (!request.normal && schedule == ContactSchedule::Speculative);
 }
 
-// The stencil passes, then (with the contact) both contact passes over the MOR, the near
-// ends kept on the device, and the summary of the stencil and of both ends: the contact passes
-// leave the stencil as the stencil passes made it (stencil write mask 0).
-void recordSummarizedPair(raster::DepthStencilDevice& device, RecordedPair& p,
-                          detail::PassRunner& passes, detail::StepRunner& steps) {
-  const raster::PixelRect mor = p.result.mor;
-  std::shared_ptr<const raster::KeptDepth> nearEnd;
-  if (p.job->request.contact) {
-    steps.run(PairStep::ContactNear, [&] {
-      passes.overlapEnd(mor, true);
-      nearEnd = device.keepDepthLater(mor);
-    });
-    steps.run(PairStep::ContactFar, [&] { passes.overlapEnd(mor, false); });
-  }
-  steps.run(PairStep::ReadStencil,
-            [&] { p.summary = device.summarizeLater(mor, detail::caseClasses(), nearEnd.get()); });
+// Runs `body` as `step` of the pair's timing, on its device.
+template <class Body>
+void step(RecordedPair& p, PairStep which, Body&& body) {
+  detail::StepRunner(*p.device, nullptr, p.result.timing).run(which, std::forward<Body>(body));
 }
 
-// What collidePair does before its first read-back, the read-back recorded instead of waited
-// for; with ContactSchedule::Speculative, the contact passes over the MOR too.
-RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job,
-                        ContactSchedule schedule) {
+// The stencil passes over the MOR.
+void drawStencilPasses(RecordedPair& p) {
+  detail::PassRunner passes(*p.device, *p.a, *p.b);
+  detail::StepRunner steps(*p.device, nullptr, p.result.timing);
+  detail::recordStencilPasses(passes, steps, p.result.mor);
+}
+
+// One contact pass (the near or the far end) over `rect`.
+void drawContactPass(RecordedPair& p, const raster::PixelRect& rect, bool nearEnd) {
+  step(p, nearEnd ? PairStep::ContactNear : PairStep::ContactFar,
+       [&] { detail::PassRunner(*p.device, *p.a, *p.b).overlapEnd(rect, nearEnd); });
+}
+
+// Both contact passes over `rect`, each followed by its depth read-back: two segments.
+void addContactSegments(RecordedPair& p, const raster::PixelRect& rect) {
+  p.depthRect = rect;
+  p.segments.push_back({[&p, rect] { drawContactPass(p, rect, true); },
+                        [&p, rect] {
+                          step(p, PairStep::ContactNear,
+                               [&] { p.nearDepth = p.device->readDepthLater(rect); });
+                        }});
+  p.segments.push_back({[&p, rect] { drawContactPass(p, rect, false); },
+                        [&p, rect] {
+                          step(p, PairStep::ContactFar,
+                               [&] { p.farDepth = p.device->readDepthLater(rect); });
+                        }});
+}
+
+// What collidePair does before its first read-back, as segments, read-backs recorded instead of
+// waited for: the stencil passes and the stencil's read-back, with ContactSchedule::Speculative
+// the contact passes over the MOR too; or, concluded from a summary, the stencil passes (and
+// with the contact both contact passes over the MOR, the near end kept on the device) and the
+// summary (the contact passes leave the stencil as the stencil passes made it: write mask 0).
+RecordedPair preparePair(raster::DepthStencilDevice& device, const PairJob& job,
+                         ContactSchedule schedule) {
   const Clock::time_point start = Clock::now();
   const FrameSpec& frame = job.request.frame;
   detail::requireDeviceSize(device, frame);
@@ -101,31 +117,99 @@ RecordedPair recordPair(raster::DepthStencilDevice& device, const PairJob& job,
   p.device = &device;
   p.schedule = schedule;
   p.result = detail::startPair(*job.a, *job.b, frame);
-  PairResult& r = p.result;
-  const OrthoView view = detail::pairView(frame, r);
-  p.a = std::make_unique<detail::BlockWindowSource>(*job.a, view);
-  p.b = std::make_unique<detail::BlockWindowSource>(*job.b, view);
-  if (detail::choosePassRegion(detail::DrawnPair{*p.a, *p.b}, job.request, r)) {
-    p.view = view;
-    detail::PassRunner passes(device, *p.a, *p.b);
-    detail::StepRunner steps(device, nullptr, r.timing);
-    detail::recordStencilPasses(passes, steps, r.mor);
-    if (usesSummary(job.request, schedule)) {
-      recordSummarizedPair(device, p, passes, steps);
-    } else {
-      steps.run(PairStep::ReadStencil, [&] { p.stencil = device.readStencilLater(r.mor); });
-      if (job.request.contact && schedule == ContactSchedule::Speculative)
-        recordContactPasses(device, p, r.mor);
-    }
-  }
-  // Only contact passes recorded after the verdict draw the blocks again.
-  if (!(p.view && job.request.contact && schedule == ContactSchedule::AfterVerdict &&
-        !usesSummary(job.request, schedule))) {
-    p.a.reset();
-    p.b.reset();
-  }
+  p.sourceView = std::make_unique<const OrthoView>(detail::pairView(frame, p.result));
+  p.a = std::make_unique<detail::BlockWindowSource>(*job.a, *p.sourceView);
+  p.b = std::make_unique<detail::BlockWindowSource>(*job.b, *p.sourceView);
+  if (detail::choosePassRegion(detail::DrawnPair{*p.a, *p.b}, job.request, p.result))
+    p.view = *p.sourceView;
   p.ownUs = microsecondsSince(start);
   return p;
+}
+
+// The first round's segments of a pair preparePair found drawn (its address is kept by them).
+void addFirstRound(RecordedPair& p) {
+  const raster::PixelRect mor = p.result.mor;
+  const PairRequest& request = p.job->request;
+  if (usesSummary(request, p.schedule)) {
+    if (!request.contact) {
+      p.segments.push_back({[&p] { drawStencilPasses(p); },
+                            [&p, mor] {
+                              step(p, PairStep::ReadStencil, [&] {
+                                p.summary =
+                                    p.device->summarizeLater(mor, detail::caseClasses(), nullptr);
+                              });
+                            }});
+      return;
+    }
+    p.segments.push_back({[&p, mor] {
+                            drawStencilPasses(p);
+                            drawContactPass(p, mor, true);
+                          },
+                          [&p, mor] {
+                            step(p, PairStep::ContactNear,
+                                 [&] { p.nearEnd = p.device->keepDepthLater(mor); });
+                          }});
+    p.segments.push_back({[&p, mor] { drawContactPass(p, mor, false); },
+                          [&p, mor] {
+                            step(p, PairStep::ReadStencil, [&] {
+                              p.summary = p.device->summarizeLater(mor, detail::caseClasses(),
+                                                                   p.nearEnd.get());
+                            });
+                            p.nearEnd.reset();
+                          }});
+    return;
+  }
+  p.segments.push_back({[&p] { drawStencilPasses(p); },
+                        [&p, mor] {
+                          step(p, PairStep::ReadStencil,
+                               [&] { p.stencil = p.device->readStencilLater(mor); });
+                        }});
+  if (request.contact && p.schedule == ContactSchedule::Speculative)
+    addContactSegments(p, mor);
+}
+
+// Records the segments of `pairs`. Pairs on devices of their own form a wave: the wave's first
+// segments are drawn, pair after pair, then read, then its second segments, and so on, so a
+// device with a recording of its own needs a barrier only between a wave's draws and its reads
+// (vulkan_recorder.hpp). A pair whose device an earlier pair of the wave used starts the next
+// wave, so every device sees each of its pairs' commands whole and in order, as collidePair
+// gives them.
+void recordInWaves(const std::vector<RecordedPair*>& pairs) {
+  std::size_t first = 0;
+  while (first < pairs.size()) {
+    std::vector<const raster::DepthStencilDevice*> used;
+    std::size_t last = first;
+    for (; last < pairs.size(); ++last) {
+      if (std::find(used.begin(), used.end(), pairs[last]->device) != used.end())
+        break;
+      used.push_back(pairs[last]->device);
+    }
+    for (std::size_t k = 0;; ++k) {
+      bool any = false;
+      for (std::size_t i = first; i < last; ++i) {
+        RecordedPair& p = *pairs[i];
+        if (k >= p.segments.size())
+          continue;
+        any = true;
+        const Clock::time_point start = Clock::now();
+        p.segments[k].draw();
+        p.ownUs += microsecondsSince(start);
+      }
+      if (!any)
+        break;
+      for (std::size_t i = first; i < last; ++i) {
+        RecordedPair& p = *pairs[i];
+        if (k >= p.segments.size())
+          continue;
+        const Clock::time_point start = Clock::now();
+        p.segments[k].read();
+        p.ownUs += microsecondsSince(start);
+      }
+    }
+    for (std::size_t i = first; i < last; ++i)
+      pairs[i]->segments.clear();
+    first = last;
+  }
 }
 
 // The verdict from the stencil. Returns whether the pair needs its contact passes' depths.
@@ -210,14 +294,26 @@ std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const
     return results;
   }
   std::vector<RecordedPair> recorded;
-  recorded.reserve(jobs.size());
+  recorded.reserve(jobs.size());  // never reallocated: the segments hold the pairs' addresses
   try {
     for (std::size_t i = 0; i < jobs.size(); ++i)
-      recorded.push_back(recordPair(*devices[i], jobs[i], schedule));
+      recorded.push_back(preparePair(*devices[i], jobs[i], schedule));
     std::vector<RecordedPair*> drawn;
-    for (RecordedPair& p : recorded)
-      if (p.view)
+    for (RecordedPair& p : recorded) {
+      if (p.view) {
+        addFirstRound(p);
         drawn.push_back(&p);
+      }
+    }
+    recordInWaves(drawn);
+    for (RecordedPair& p : recorded) {
+      // Only contact passes recorded after the verdict draw the blocks again.
+      if (!(p.view && p.job->request.contact && schedule == ContactSchedule::AfterVerdict &&
+            !usesSummary(p.job->request, schedule))) {
+        p.a.reset();
+        p.b.reset();
+      }
+    }
     finishShared(devices, drawn);
     std::vector<RecordedPair*> touching;
     for (RecordedPair* p : drawn) {
@@ -230,7 +326,8 @@ std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const
     }
     if (schedule == ContactSchedule::AfterVerdict) {
       for (RecordedPair* p : touching)
-        recordContactPasses(*p->device, *p, p->result.contactRect);
+        addContactSegments(*p, p->result.contactRect);
+      recordInWaves(touching);
       finishShared(devices, touching);
     }
     for (RecordedPair* p : touching)
