@@ -34,6 +34,10 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec vulkanSpeculative{"recode-vulkan-speculative", Kind::Recode,
                                   backends::DeviceKind::Vulkan, core::MorMode::Min};
   vulkanSpeculative.contactSchedule = core::ContactSchedule::Speculative;
+  AlgorithmSpec vulkanWaves{"recode-vulkan-waves", Kind::Recode, backends::DeviceKind::Vulkan,
+                            core::MorMode::Min};
+  vulkanWaves.contactSchedule = core::ContactSchedule::Speculative;
+  vulkanWaves.batchDevicesPerSize = 16;
   return {
       {"recode-cpu", Kind::Recode, backends::DeviceKind::Cpu, core::MorMode::Min},
       adaptive,
@@ -45,6 +49,7 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
       {"recode-vulkan", Kind::Recode, backends::DeviceKind::Vulkan, core::MorMode::Min},
       vulkanPerPair,
       vulkanSpeculative,
+      vulkanWaves,
       {"recode-vulkan-32", Kind::Recode, backends::DeviceKind::Vulkan32, core::MorMode::Min},
       {"fcl-gjk", Kind::FclGjk},
       {"fcl-obbrss", Kind::FclObbrss},

@@ -30,6 +30,8 @@ struct AlgorithmSpec {
   bool batch = true;
   // Recode only: core::RunOptions::contactSchedule (speculative for recode-vulkan-speculative)
   core::ContactSchedule contactSchedule = core::ContactSchedule::AfterVerdict;
+  // Recode only: core::RunOptions::batchDevicesPerSize (16 for recode-vulkan-waves)
+  int batchDevicesPerSize = 1;
 };
 
 struct Experiment {

@@ -28,6 +28,7 @@ std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
       options.viewAxisRule = spec.viewAxisRule;
       options.batch = spec.batch;
       options.contactSchedule = spec.contactSchedule;
+      options.batchDevicesPerSize = spec.batchDevicesPerSize;
       options.keepContactPoints = false;  // the bench reports pairs and counters only
       return std::make_unique<verify::RecodeDetector>(scene, options, spec.device, spec.name);
     }

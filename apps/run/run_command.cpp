@@ -45,6 +45,7 @@ struct RunOptions {
   std::string device = "cpu";                     // --device: a name of the device registry
   bool perPair = false;                           // --per-pair: core::RunOptions::batch off
   std::string contactSchedule = "after-verdict";  // --contact-schedule
+  int batchDevices = 1;                           // --batch-devices
 };
 
 std::string builtinNames() {
@@ -151,6 +152,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   options.contactSchedule = o.contactSchedule == "speculative"
                                 ? core::ContactSchedule::Speculative
                                 : core::ContactSchedule::AfterVerdict;
+  options.batchDevicesPerSize = o.batchDevices;
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -267,6 +269,13 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                   "submissions a frame) or speculative (over every pair's MOR with the stencil "
                   "passes: one submission, more pixels); the same output")
       ->check(CLI::IsMember({"after-verdict", "speculative"}))
+      ->excludes(perPair)
+      ->capture_default_str();
+  cmd->add_option("--batch-devices", o->batchDevices,
+                  "on a device that defers its commands, up to N devices of each pair frame size, "
+                  "so that a frame's pair tests are recorded in waves of pairs on devices of "
+                  "their own (on Vulkan one barrier a wave, not one a pair); the same output")
+      ->check(CLI::Range(1, core::kMaxBatchDevicesPerSize))
       ->excludes(perPair)
       ->capture_default_str();
   addViewAxisOption(*cmd, o->viewAxis);

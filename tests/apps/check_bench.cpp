@@ -88,6 +88,7 @@ std::vector<Expected> expectations() {
                                         "recode-vulkan",
                                         "recode-vulkan-per-pair",
                                         "recode-vulkan-speculative",
+                                        "recode-vulkan-waves",
                                         "recode-vulkan-32",
                                         "fcl-gjk",
                                         "fcl-obbrss",
@@ -244,7 +245,7 @@ int main(int argc, char** argv) {
         for (const char* key : {"contacts", "missed", "extra", "stencil_pixels_read"})
           for (const char* device :
                {"recode-gl", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
-                "recode-vulkan-speculative", "recode-vulkan-32"})
+                "recode-vulkan-speculative", "recode-vulkan-waves", "recode-vulkan-32"})
             same("recode-cpu", device, key);
         // A frame's pair tests on Vulkan: one submission for the stencil passes of all and one
         // for the contact passes of those that interfere (docs/architecture.md); test by test,
@@ -261,6 +262,23 @@ int main(int argc, char** argv) {
           fail(prefix +
                "recode-vulkan-speculative: " + speculative->second.text("submissions_per_frame") +
                " submissions per frame, more than 1");
+        // Both speculative columns conclude every pair test from the device's summary: at most
+        // 64 bytes read back a pair test, and the waves only change which device draws a pair.
+        for (const char* name : {"recode-vulkan-speculative", "recode-vulkan-waves"}) {
+          const auto row = rows.find(prefix + name);
+          if (row == rows.end())
+            continue;
+          const double bytes =
+              row->second.number("readback_bytes_per_frame") * row->second.number("frames");
+          // (the CSV gives bytes a frame to a tenth)
+          if (bytes > 64.0 * row->second.number("pair_tests") + 0.05 * row->second.number("frames"))
+            fail(prefix + name + ": " + row->second.text("readback_bytes_per_frame") +
+                 " bytes read back a frame, more than 64 a pair test");
+          if (row->second.number("submissions_per_frame") > 1.0)
+            fail(prefix + name + ": " + row->second.text("submissions_per_frame") +
+                 " submissions per frame, more than 1");
+        }
+        same("recode-vulkan-speculative", "recode-vulkan-waves", "readback_bytes_per_frame");
         if (vulkan != rows.end() && perPair != rows.end() &&
             perPair->second.number("submissions_per_frame") <
                 vulkan->second.number("submissions_per_frame"))

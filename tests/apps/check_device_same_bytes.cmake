@@ -53,3 +53,10 @@ foreach(scene comb-translate-aligned comb-translate-offset comb-rotate-aligned c
 endforeach()
 # Without the contact passes every pair test is concluded from a summary of the stencil alone.
 expect_same("run hand-grasp --no-contact" run hand-grasp --json --no-timing --no-contact)
+# Up to 16 devices a frame size: a frame's pair tests recorded in waves of pairs on devices of
+# their own, after the verdict and speculatively: the same bytes too.
+foreach(scene comb-translate-offset random-shapes hand-grasp)
+  expect_same("run ${scene} --batch-devices 16" run ${scene} --json --no-timing --batch-devices 16)
+  expect_same("run ${scene} --batch-devices 16 --contact-schedule speculative" run ${scene} --json
+              --no-timing --batch-devices 16 --contact-schedule speculative)
+endforeach()

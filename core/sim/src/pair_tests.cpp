@@ -111,7 +111,8 @@ PairTestRunner::PairTestRunner(const RunOptions& options)
     : concurrency_(pairTestThreads(options)),
       mode_(options.pairMode),
       batch_(options.batch),
-      schedule_(options.contactSchedule) {
+      schedule_(options.contactSchedule),
+      batchDevicesPerSize_(options.batchDevicesPerSize) {
   impl_ = std::make_unique<Impl>(options.deviceFactory, concurrency_);
 }
 
@@ -140,6 +141,18 @@ PairTestRunner::DeviceSetup PairTestRunner::reserveDevices(const std::vector<Pai
         std::min({tests[{width, height}], concurrency_, std::max(held + (earned ? 1 : 0), 1)});
     try {
       setup.us += pool.reserve(width, height, lanes->second);
+      // A batch of pairs on devices of their own records them wave by wave (collidePairs), one
+      // barrier a wave rather than one a pair: a deferring device of this size for each of its
+      // tests, up to batchDevicesPerSize_ and kMaxBatchPixelsPerSize pixels in all.
+      if (batchDevicesPerSize_ > 1 && concurrency_ == 1 && batch_ && batches(mode_) &&
+          pool.at(width, height, 0).defers()) {
+        const long long byPixels =
+            std::max(1LL, kMaxBatchPixelsPerSize / (static_cast<long long>(width) * height));
+        lanes->second =
+            static_cast<int>(std::min({static_cast<long long>(tests[{width, height}]),
+                                       static_cast<long long>(batchDevicesPerSize_), byPixels}));
+        setup.us += pool.reserve(width, height, lanes->second);
+      }
     } catch (...) {
       setup.error = std::current_exception();
       break;
@@ -203,9 +216,12 @@ bool PairTestRunner::runBatches(const std::vector<PairTask>& tasks, std::size_t 
   std::vector<PairJob> jobs;
   devices.reserve(count);
   jobs.reserve(count);
+  std::map<std::pair<int, int>, int> next;  // each size's tests go round its devices
   for (std::size_t i = 0; i < count; ++i) {
     const auto [width, height] = sizeOf(tasks[i]);
-    devices.push_back(&pool.at(width, height, 0));
+    int& k = next[{width, height}];
+    devices.push_back(&pool.at(width, height, k));
+    k = (k + 1) % lanes_.at({width, height});
     if (!devices.back()->defers())
       return false;  // one device runs the tests one by one anyway
     jobs.push_back({tasks[i].blockA, tasks[i].blockB, tasks[i].request});

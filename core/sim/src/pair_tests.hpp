@@ -51,7 +51,9 @@ class PairTestRunner {
   // frames (a rotating pair's) costs one device, as sequentially, as making it costs more than
   // the tests it would share, while a size that recurs grows to concurrency() devices. `usable`
   // tasks got theirs: all, unless making the device of task `usable` threw `error` (the tasks
-  // before it can still run, as they would have run before it sequentially).
+  // before it can still run, as they would have run before it sequentially). A frame batched on
+  // deferring devices gets one device per test of a size instead, within
+  // RunOptions::batchDevicesPerSize and kMaxBatchPixelsPerSize.
   struct DeviceSetup {
     double us = 0.0;  // spent making devices
     std::size_t usable = 0;
@@ -77,7 +79,8 @@ class PairTestRunner {
 
  private:
   // On the sequential path, with devices that defer their commands and a mode whose test is
-  // collidePair: the frame's tests as one collidePairs batch, each on its size's device. Returns
+  // collidePair: the frame's tests as one collidePairs batch, a size's tests going round its
+  // devices (so consecutive tests of a size draw on devices of their own). Returns
   // false, leaving the outcomes empty, when the devices do not defer or a batch threw.
   bool runBatches(const std::vector<PairTask>& tasks, std::size_t count,
                   std::vector<PairOutcome>& outcomes);
@@ -88,6 +91,7 @@ class PairTestRunner {
   PairMode mode_ = PairMode::Reference;
   bool batch_ = true;                                         // RunOptions::batch
   ContactSchedule schedule_ = ContactSchedule::AfterVerdict;  // RunOptions::contactSchedule
+  int batchDevicesPerSize_ = 1;                               // RunOptions::batchDevicesPerSize
   std::map<std::pair<int, int>, int> lanes_;                  // devices per frame size this frame
 };
 

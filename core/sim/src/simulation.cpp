@@ -212,6 +212,10 @@ Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::m
   if (options_.maxPairTestsPerFrame < 1)
     throw std::invalid_argument("the run's limit of pair tests per frame " +
                                 std::to_string(options_.maxPairTestsPerFrame) + " is not positive");
+  if (options_.batchDevicesPerSize < 1 || options_.batchDevicesPerSize > kMaxBatchDevicesPerSize)
+    throw std::invalid_argument("the run's devices per frame size " +
+                                std::to_string(options_.batchDevicesPerSize) + " is not in 1.." +
+                                std::to_string(kMaxBatchDevicesPerSize));
   pairTests_ = std::make_unique<PairTestRunner>(options_);
   leafBlocks_ = std::make_unique<FrameLeafBlocks>();
   axis_ = scene.view.axis;

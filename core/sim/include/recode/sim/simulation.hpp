@@ -94,7 +94,15 @@ struct RunOptions {
   // When a batch draws its contact passes (pair_batch.hpp): after the stencil's verdict (two
   // submissions a frame), or speculatively with the stencil passes (one). The same reports.
   ContactSchedule contactSchedule = ContactSchedule::AfterVerdict;
+  // With a batch on deferring devices: how many devices each frame size may have, so that a
+  // frame's tests of one size go round them and collidePairs records them in waves of pairs on
+  // devices of their own (one barrier a wave's half-segment on Vulkan, not one a pair), within
+  // kMaxBatchPixelsPerSize pixels a size. 1: one device a size. The same reports either way.
+  int batchDevicesPerSize = 1;
 };
+
+inline constexpr int kMaxBatchDevicesPerSize = 64;  // the most batchDevicesPerSize may be
+inline constexpr long long kMaxBatchPixelsPerSize = 16LL << 20;  // a size's devices' pixels at most
 
 // A leaf pair whose blocks interfere at this frame.
 struct LeafContact {
