@@ -6,8 +6,9 @@
 #   2. recode verify --suite at 800 pixels on the exact Vulkan and GL devices (per-command parity
 #      of 504 pairs, then the same pairs as one batch against the reference),
 #   3. recode bench table2 figure8 with the GPU columns (the CGAL judge, recode-cpu, the exact
-#      devices batched, Vulkan pair by pair and with speculative contact passes, the 32-bit
-#      Vulkan device, FCL GJK, Bullet),
+#      devices batched, Vulkan pair by pair, with speculative contact passes concluded from
+#      64-byte summaries, and the same on 16 devices a frame size (waves), the 32-bit Vulkan
+#      device, FCL GJK, Bullet),
 # and prints a summary. Exit status 0 when every correctness check passed (the bench's times are
 # reported, never judged).
 #
@@ -45,7 +46,7 @@ step "verify --suite --width 800" verify-800.json \
   "$recode" verify --suite --width 800 --vulkan --gl-exact --gl-platform egl --json
 step "bench table2 figure8" bench.log \
   "$recode" bench table2 figure8 $quick --out "$out/bench" \
-  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-32,fcl-gjk,bullet
+  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-waves,recode-vulkan-32,fcl-gjk,bullet
 
 echo
 python3 - "$out" <<'PY'
@@ -75,8 +76,8 @@ path = os.path.join(out, "bench", "bench.csv")
 if os.path.exists(path):
     rows = list(csv.DictReader(open(path)))
     columns = ["recode-cpu", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
-               "recode-vulkan-speculative", "recode-vulkan-32", "fcl-gjk"]
-    print("\nmean ms a frame (submissions a frame):")
+               "recode-vulkan-speculative", "recode-vulkan-waves", "recode-vulkan-32", "fcl-gjk"]
+    print("\nmean ms a frame (submissions a frame, read-back bytes a pair test):")
     print("| scene | triangles | " + " | ".join(columns) + " |")
     keys = sorted({(r["experiment"], r["scene"], int(r["triangles"])) for r in rows})
     for e, s, t in keys:
@@ -87,7 +88,10 @@ if os.path.exists(path):
             if r is None:
                 cells.append("-")
             elif r["submissions_per_frame"] and float(r["submissions_per_frame"]) > 0:
-                cells.append(f"{float(r['mean_ms']):.3f} ({float(r['submissions_per_frame']):.1f})")
+                tests = int(r["pair_tests"]) or 1
+                per_test = float(r["readback_bytes_per_frame"]) * int(r["frames"]) / tests
+                cells.append(f"{float(r['mean_ms']):.3f} ({float(r['submissions_per_frame']):.1f},"
+                             f" {per_test:.0f} B)")
             else:
                 cells.append(f"{float(r['mean_ms']):.3f}")
         print(f"| {s} | {t:,} | " + " | ".join(cells) + " |")
