@@ -359,24 +359,29 @@ void concludeSummary(const raster::PixelSummary& summary, const OrthoView& view,
   r.contact.area =
       static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
   if (r.collide && summary.depth) {
-    const PixelRect& rect = summary.markedBounds;
-    r.contactRect = rect;
-    r.depthPixelsRead = 2 * rect.area();
-    // measureContact's arithmetic at the extremes: its columns' u, rows' v and ends' depths.
-    const double depthScale = 1.0 / static_cast<double>(raster::kDepthMax);
-    const double worldPerStep = (r.depthMax - r.depthMin) * depthScale;
-    const raster::DepthIntervals& d = *summary.depth;
-    const Eigen::Vector3d first =
-        view.fromPlane({view.planeU(rect.x0 + 0.5), view.planeV(rect.y0 + 0.5),
-                        view.planeD(d.nearest * depthScale)});
-    const Eigen::Vector3d last =
-        view.fromPlane({view.planeU((rect.x1 - 1) + 0.5), view.planeV((rect.y1 - 1) + 0.5),
-                        view.planeD(d.farthest * depthScale)});
-    r.contact.box.extend(first);
-    r.contact.box.extend(last);
-    r.contact.maxDepth = std::max(r.contact.maxDepth, d.longest * worldPerStep);
-    r.contact.collapsedPixels += d.inverted;
+    r.contactRect = summary.markedBounds;
+    concludeSummaryContact(*summary.depth, view, r);
   }
+  r.timing.classifyUs += microsecondsSince(t);
+}
+
+void concludeSummaryContact(const raster::DepthIntervals& d, const OrthoView& view, PairResult& r) {
+  const Clock::time_point t = Clock::now();
+  const PixelRect& rect = r.contactRect;
+  r.depthPixelsRead = 2 * rect.area();
+  // measureContact's arithmetic at the extremes: its columns' u, rows' v and ends' depths.
+  const double depthScale = 1.0 / static_cast<double>(raster::kDepthMax);
+  const double worldPerStep = (r.depthMax - r.depthMin) * depthScale;
+  const Eigen::Vector3d first =
+      view.fromPlane({view.planeU(rect.x0 + 0.5), view.planeV(rect.y0 + 0.5),
+                      view.planeD(d.nearest * depthScale)});
+  const Eigen::Vector3d last =
+      view.fromPlane({view.planeU((rect.x1 - 1) + 0.5), view.planeV((rect.y1 - 1) + 0.5),
+                      view.planeD(d.farthest * depthScale)});
+  r.contact.box.extend(first);
+  r.contact.box.extend(last);
+  r.contact.maxDepth = std::max(r.contact.maxDepth, d.longest * worldPerStep);
+  r.contact.collapsedPixels += d.inverted;
   r.timing.classifyUs += microsecondsSince(t);
 }
 

@@ -59,13 +59,11 @@ void requireBlocks(const PairJob& job, std::size_t index) {
                                 (job.a == nullptr ? "A" : "B"));
 }
 
-// Whether the pair is concluded from a summary of the device's buffers (pixel_summary.hpp)
-// rather than from the buffers: when the request leaves the pixels out and the contact, if
-// asked for, is measured in the same submission (its normal needs every pixel's ends).
-bool usesSummary(const PairRequest& request, ContactSchedule schedule) {
-  if (request.keepPixels)
-    return false;
-  return !request.contact || (!request.normal && schedule == ContactSchedule::Speculative);
+// Whether the pair is concluded from summaries of the device's buffers (pixel_summary.hpp)
+// rather than from the buffers: when the request leaves the pixels out and asks for no normal
+// (the normal needs every pixel's ends).
+bool usesSummary(const PairRequest& request) {
+  return !request.keepPixels && !(request.contact && request.normal);
 }
 
 // Runs `body` as `step` of the pair's timing, on its device.
@@ -74,11 +72,12 @@ void step(RecordedPair& p, PairStep which, Body&& body) {
   detail::StepRunner(*p.device, nullptr, p.result.timing).run(which, std::forward<Body>(body));
 }
 
-// The stencil passes over the MOR.
-void drawStencilPasses(RecordedPair& p) {
+// The stencil passes over `rect` (the MOR, or in a summarised pair's second round its contact
+// rectangle).
+void drawStencilPasses(RecordedPair& p, const raster::PixelRect& rect) {
   detail::PassRunner passes(*p.device, *p.a, *p.b);
   detail::StepRunner steps(*p.device, nullptr, p.result.timing);
-  detail::recordStencilPasses(passes, steps, p.result.mor);
+  detail::recordStencilPasses(passes, steps, rect);
 }
 
 // One contact pass (the near or the far end) over `rect`.
@@ -126,40 +125,53 @@ RecordedPair preparePair(raster::DepthStencilDevice& device, const PairJob& job,
   return p;
 }
 
+// The stencil passes over `rect` and its summary; `withContact`: both contact passes over `rect`
+// between them, the near end kept on the device, and their depths in the summary (the contact
+// passes leave the stencil as the stencil passes made it: stencil write mask 0). Over a
+// contact rectangle inside the MOR the stencil passes leave the MOR's values (a pass's value
+// at a pixel does not depend on the scissor), so the summary's depths are the MOR's.
+void addSummarySegments(RecordedPair& p, const raster::PixelRect& rect, bool withContact) {
+  if (!withContact) {
+    p.segments.push_back({[&p, rect] { drawStencilPasses(p, rect); },
+                          [&p, rect] {
+                            step(p, PairStep::ReadStencil, [&] {
+                              p.summary =
+                                  p.device->summarizeLater(rect, detail::caseClasses(), nullptr);
+                            });
+                          }});
+    return;
+  }
+  p.segments.push_back({[&p, rect] {
+                          drawStencilPasses(p, rect);
+                          drawContactPass(p, rect, true);
+                        },
+                        [&p, rect] {
+                          step(p, PairStep::ContactNear,
+                               [&] { p.nearEnd = p.device->keepDepthLater(rect); });
+                        }});
+  p.segments.push_back({[&p, rect] { drawContactPass(p, rect, false); },
+                        [&p, rect] {
+                          step(p, PairStep::ReadStencil, [&] {
+                            p.summary = p.device->summarizeLater(rect, detail::caseClasses(),
+                                                                 p.nearEnd.get());
+                          });
+                          p.nearEnd.reset();
+                        }});
+}
+
 // The first round's segments of a pair preparePair found drawn (its address is kept by them).
 void addFirstRound(RecordedPair& p) {
   const raster::PixelRect mor = p.result.mor;
   const PairRequest& request = p.job->request;
-  if (usesSummary(request, p.schedule)) {
-    if (!request.contact) {
-      p.segments.push_back({[&p] { drawStencilPasses(p); },
-                            [&p, mor] {
-                              step(p, PairStep::ReadStencil, [&] {
-                                p.summary =
-                                    p.device->summarizeLater(mor, detail::caseClasses(), nullptr);
-                              });
-                            }});
+  if (usesSummary(request)) {
+    if (!request.contact || p.schedule == ContactSchedule::AfterVerdict) {
+      addSummarySegments(p, mor, false);
       return;
     }
-    p.segments.push_back({[&p, mor] {
-                            drawStencilPasses(p);
-                            drawContactPass(p, mor, true);
-                          },
-                          [&p, mor] {
-                            step(p, PairStep::ContactNear,
-                                 [&] { p.nearEnd = p.device->keepDepthLater(mor); });
-                          }});
-    p.segments.push_back({[&p, mor] { drawContactPass(p, mor, false); },
-                          [&p, mor] {
-                            step(p, PairStep::ReadStencil, [&] {
-                              p.summary = p.device->summarizeLater(mor, detail::caseClasses(),
-                                                                   p.nearEnd.get());
-                            });
-                            p.nearEnd.reset();
-                          }});
+    addSummarySegments(p, mor, true);
     return;
   }
-  p.segments.push_back({[&p] { drawStencilPasses(p); },
+  p.segments.push_back({[&p, mor] { drawStencilPasses(p, mor); },
                         [&p, mor] {
                           step(p, PairStep::ReadStencil,
                                [&] { p.stencil = p.device->readStencilLater(mor); });
@@ -218,11 +230,15 @@ bool concludeStencil(RecordedPair& p) {
     return false;
   const Clock::time_point start = Clock::now();
   PairResult& r = p.result;
-  if (usesSummary(p.job->request, p.schedule)) {
-    // The verdict and, with the contact, the contact region: nothing left to read.
-    detail::concludeSummary(p.summary.take().front(), *p.view, r);
+  if (usesSummary(p.job->request)) {
+    // The verdict and, with speculative contact passes, the contact region.
+    const raster::PixelSummary summary = p.summary.take().front();
+    detail::concludeSummary(summary, *p.view, r);
+    const bool contact = r.collide && p.job->request.contact;
+    if (contact)
+      r.contactRect = summary.markedBounds;
     p.ownUs += microsecondsSince(start);
-    return false;
+    return contact && !summary.depth;
   }
   const raster::PixelBuffer<std::uint8_t> stencil{r.mor, p.stencil.take()};
   const raster::PixelRect contactRect = detail::concludeStencil(stencil, *p.view, r);
@@ -235,6 +251,13 @@ bool concludeStencil(RecordedPair& p) {
 
 void concludeContact(RecordedPair& p) {
   const Clock::time_point start = Clock::now();
+  if (usesSummary(p.job->request)) {
+    const raster::PixelSummary summary = p.summary.take().front();
+    // Over the contact rectangle: its marked pixels are the MOR's interfering ones.
+    detail::concludeSummaryContact(*summary.depth, *p.view, p.result);
+    p.ownUs += microsecondsSince(start);
+    return;
+  }
   const raster::PixelBuffer<std::uint32_t> nearDepth{p.depthRect, p.nearDepth.take()};
   const raster::PixelBuffer<std::uint32_t> farDepth{p.depthRect, p.farDepth.take()};
   detail::concludeContact(nearDepth, farDepth, *p.view, *p.job->a, *p.job->b, p.job->request,
@@ -308,8 +331,7 @@ std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const
     recordInWaves(drawn);
     for (RecordedPair& p : recorded) {
       // Only contact passes recorded after the verdict draw the blocks again.
-      if (!(p.view && p.job->request.contact && schedule == ContactSchedule::AfterVerdict &&
-            !usesSummary(p.job->request, schedule))) {
+      if (!(p.view && p.job->request.contact && schedule == ContactSchedule::AfterVerdict)) {
         p.a.reset();
         p.b.reset();
       }
@@ -325,8 +347,12 @@ std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const
       }
     }
     if (schedule == ContactSchedule::AfterVerdict) {
-      for (RecordedPair* p : touching)
-        addContactSegments(*p, p->result.contactRect);
+      for (RecordedPair* p : touching) {
+        if (usesSummary(p->job->request))
+          addSummarySegments(*p, p->result.contactRect, true);
+        else
+          addContactSegments(*p, p->result.contactRect);
+      }
       recordInWaves(touching);
       finishShared(devices, touching);
     }

@@ -84,6 +84,10 @@ void concludeContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
 // the extreme columns, rows and depths because every world coordinate toWorld makes is a
 // monotone function of one of them (docs/architecture.md).
 void concludeSummary(const raster::PixelSummary& summary, const OrthoView& view, PairResult& r);
+// Its contact part alone, over r.contactRect (set): the box, greatest depth and collapsed pixels
+// from the depth intervals of the interfering pixels.
+void concludeSummaryContact(const raster::DepthIntervals& depth, const OrthoView& view,
+                            PairResult& r);
 
 // Empties the case map and the contact points unless the request keeps the pixels.
 void dropPixelsUnlessKept(const PairRequest& request, PairResult& r);
