@@ -6,11 +6,11 @@
 // its read-backs: the host waits for the GPU once or twice a batch (ContactSchedule) instead of
 // up to three times a pair.
 //
-// A job whose request leaves the pixels out (PairRequest::keepPixels false) is concluded from
-// the device's summary of its buffers (DepthStencilDevice::summarizeLater) when its contact,
-// if asked for, comes with the verdict: without the contact, or with the Speculative schedule
-// and no normal. The Vulkan device works the summary out in a compute shader, so such a pair
-// test reads back 64 bytes and the batch takes one submission.
+// A job whose request leaves the pixels out (PairRequest::keepPixels false) and asks for no
+// normal is concluded from the device's summaries of its buffers
+// (DepthStencilDevice::summarizeLater) instead of the buffers. The Vulkan device works them out
+// in a compute shader, so such a pair test reads back 64 bytes (and 64 more for the contact
+// of a pair that interferes, after the verdict).
 
 #include <span>
 #include <vector>
