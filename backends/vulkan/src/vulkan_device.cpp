@@ -498,6 +498,7 @@ raster::PendingRead<raster::PixelSummary> VulkanDevice::summarizeLater(
     push.nearWord = withDepth ? static_cast<std::uint32_t>(kept->region().offset / 4) : 0;
     push.resultWord = static_cast<std::uint32_t>(out.offset / 4);
     push.x0 = static_cast<std::uint32_t>(r.x0);
+    push.y0 = static_cast<std::uint32_t>(r.y0);
     push.y1 = static_cast<std::uint32_t>(r.y1);
     push.width = static_cast<std::uint32_t>(r.width());
     push.height = static_cast<std::uint32_t>(r.height());

@@ -10,7 +10,7 @@ namespace {
 
 constexpr std::uint32_t kBindings = 4;  // near scratch, scratch, results, parameters
 constexpr std::size_t kParameterWords = sizeof(SummaryParameters) / 4;
-static_assert(kParameterWords == 11, "summary_vk.comp reads eleven words a summary");
+static_assert(kParameterWords == 13, "pixel_summary.glsl reads thirteen words a summary");
 constexpr std::uint32_t kSetsPerPool = 64;
 
 }  // namespace

@@ -17,7 +17,7 @@
 
 namespace recode::backends::detail {
 
-// One summary's parameters, as summary_vk.comp reads them (its `Summary`, eleven words).
+// One summary's parameters, as pixel_summary.glsl reads them (its `Summary`, thirteen words).
 struct SummaryParameters {
   std::uint32_t stencilByte = 0;
   std::uint32_t farWord = 0;
@@ -25,11 +25,13 @@ struct SummaryParameters {
   std::uint32_t nearWord = 0;
   std::uint32_t resultWord = 0;
   std::uint32_t x0 = 0;
+  std::uint32_t y0 = 0;
   std::uint32_t y1 = 0;
   std::uint32_t width = 0;
   std::uint32_t height = 0;
   std::uint32_t marked = 0;
   std::uint32_t withDepth = 0;
+  std::uint32_t rowsFromBottom = 0;
 };
 
 // Rectangles of more pixels are summarised on the host from plain read-backs (the interface's
