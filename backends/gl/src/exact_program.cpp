@@ -1,5 +1,6 @@
 #include "exact_program.hpp"
 
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 
@@ -15,10 +16,11 @@ constexpr const char* kHeader =
     "#version 450 core\n"
     "#extension GL_ARB_gpu_shader_int64 : require\n";
 
-GLuint compileStage(const GlCoreFunctions& gl, GLenum stage, const char* body, const char* what) {
+// Compiles `parts` (their first the version line) as one stage.
+GLuint compileParts(const GlCoreFunctions& gl, GLenum stage,
+                    std::initializer_list<const char*> parts, const char* what) {
   const GLuint shader = gl.CreateShader(stage);
-  const char* parts[] = {kHeader, kExactContractGlsl, body};
-  gl.ShaderSource(shader, 3, parts, nullptr);
+  gl.ShaderSource(shader, static_cast<GLsizei>(parts.size()), parts.begin(), nullptr);
   gl.CompileShader(shader);
   GLint ok = GL_FALSE;
   gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -32,6 +34,29 @@ GLuint compileStage(const GlCoreFunctions& gl, GLenum stage, const char* body, c
   return shader;
 }
 
+GLuint compileStage(const GlCoreFunctions& gl, GLenum stage, const char* body, const char* what) {
+  return compileParts(gl, stage, {kHeader, kExactContractGlsl, body}, what);
+}
+
+// Links `shaders` (deleted here) into a program.
+GLuint linkProgram(const GlCoreFunctions& gl, std::initializer_list<GLuint> shaders) {
+  const GLuint program = gl.CreateProgram();
+  for (const GLuint shader : shaders)
+    gl.AttachShader(program, shader);
+  gl.LinkProgram(program);
+  for (const GLuint shader : shaders)
+    gl.DeleteShader(shader);
+  GLint ok = GL_FALSE;
+  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[4096] = {};
+    gl.GetProgramInfoLog(program, sizeof log, nullptr, log);
+    gl.DeleteProgram(program);
+    throw std::runtime_error(std::string("GL exact device: the program does not link: ") + log);
+  }
+  return program;
+}
+
 }  // namespace
 
 GLuint buildExactProgram(const GlCoreFunctions& gl) {
@@ -43,21 +68,14 @@ GLuint buildExactProgram(const GlCoreFunctions& gl) {
     gl.DeleteShader(vertex);
     throw;
   }
-  const GLuint program = gl.CreateProgram();
-  gl.AttachShader(program, vertex);
-  gl.AttachShader(program, fragment);
-  gl.LinkProgram(program);
-  gl.DeleteShader(vertex);
-  gl.DeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    char log[4096] = {};
-    gl.GetProgramInfoLog(program, sizeof log, nullptr, log);
-    gl.DeleteProgram(program);
-    throw std::runtime_error(std::string("GL exact device: the program does not link: ") + log);
-  }
-  return program;
+  return linkProgram(gl, {vertex, fragment});
+}
+
+GLuint buildSummaryProgram(const GlCoreFunctions& gl) {
+  const GLuint compute = compileParts(gl, GL_COMPUTE_SHADER,
+                                      {"#version 450 core\n", kSummaryGlCompute, kPixelSummaryGlsl},
+                                      "summary compute");
+  return linkProgram(gl, {compute});
 }
 
 }  // namespace recode::backends::detail

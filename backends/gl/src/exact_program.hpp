@@ -10,4 +10,8 @@ namespace recode::backends::detail {
 // driver without GL_ARB_gpu_shader_int64.
 [[nodiscard]] GLuint buildExactProgram(const GlCoreFunctions& gl);
 
+// The linked compute program of the pixel summaries (summary_gl.comp over pixel_summary.glsl,
+// integer arithmetic only). Throws std::runtime_error with the driver's log as above.
+[[nodiscard]] GLuint buildSummaryProgram(const GlCoreFunctions& gl);
+
 }  // namespace recode::backends::detail

@@ -8,5 +8,7 @@ namespace recode::backends::detail {
 extern const char* const kExactContractGlsl;  // shaders/exact_contract.glsl
 extern const char* const kExactGlVertex;      // shaders/exact_gl.vert
 extern const char* const kExactGlFragment;    // shaders/exact_gl.frag
+extern const char* const kPixelSummaryGlsl;   // backends/exact/shaders/pixel_summary.glsl
+extern const char* const kSummaryGlCompute;   // shaders/summary_gl.comp
 
 }  // namespace recode::backends::detail

@@ -6,10 +6,13 @@
 #include "recode/backends/gl_exact_device.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -77,6 +80,7 @@ struct SharedGl {
   std::unique_ptr<detail::GlContext> context;
   detail::GlCoreFunctions gl;
   GLuint program = 0;
+  GLuint summaryProgram = 0;  // made by the first summary
   GLint framebufferSizeUniform = -1;
   GLuint vertexArray = 0;
   GLuint proxyBuffer = 0;
@@ -289,6 +293,52 @@ struct GlExactDevice::Impl {
   }
 };
 
+namespace {
+
+// Rectangles of more pixels are summarised on the host from plain read-backs.
+constexpr long long kMaxDeviceSummaryPixels = 4LL << 20;
+
+// A buffer object on the context, deleted with this (GL defers the deletion while commands use
+// it).
+class GlBuffer {
+ public:
+  GlBuffer(SharedGl& shared, std::size_t bytes, const void* data, GLenum usage) : shared_(shared) {
+    shared_.gl.GenBuffers(1, &name_);
+    shared_.gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, name_);
+    shared_.gl.BufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), data, usage);
+    shared_.gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  }
+  ~GlBuffer() {
+    if (name_ != 0) {
+      shared_.context->makeCurrent();
+      shared_.gl.DeleteBuffers(1, &name_);
+    }
+  }
+  GlBuffer(const GlBuffer&) = delete;
+  GlBuffer& operator=(const GlBuffer&) = delete;
+  [[nodiscard]] GLuint name() const { return name_; }
+  // Hands the buffer over (to a pending read-back, which deletes it).
+  [[nodiscard]] GLuint release() { return std::exchange(name_, 0); }
+
+ private:
+  SharedGl& shared_;
+  GLuint name_ = 0;
+};
+
+// A depth an exact GL device read into a buffer object for its next summary.
+class GlKeptDepth final : public raster::KeptDepth {
+ public:
+  GlKeptDepth(SharedGl& shared, const void* keeper, const PixelRect& over)
+      : buffer(shared, 4 * static_cast<std::size_t>(over.area()), nullptr, GL_STREAM_COPY),
+        owner(keeper),
+        rect(over) {}
+  GlBuffer buffer;
+  const void* owner;
+  PixelRect rect;
+};
+
+}  // namespace
+
 GlPlatform resolveGlPlatform(GlPlatform requested) {
   return SharedGl::of(requested).platform;
 }
@@ -431,6 +481,101 @@ raster::PendingRead<std::uint32_t> GlExactDevice::readDepthLater(const PixelRect
   d.readLater(r, GL_DEPTH_COMPONENT, GL_FLOAT, 4, [read](std::vector<std::uint8_t> bytes) mutable {
     read.deliver(depthFromStoredFloats(bytes, "GL exact device"));
   });
+  return read;
+}
+
+std::shared_ptr<const raster::KeptDepth> GlExactDevice::keepDepthLater(const PixelRect& rect) {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  if (r.empty() || r.area() > kMaxDeviceSummaryPixels)
+    return DepthStencilDevice::keepDepthLater(r);
+  d.use();
+  auto kept = std::make_shared<GlKeptDepth>(*d.shared, impl_.get(), r);
+  const auto& g = d.gl();
+  g.BindBuffer(GL_PIXEL_PACK_BUFFER, kept->buffer.name());
+  g.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  d.shared->check("keepDepthLater");
+  return kept;
+}
+
+raster::PendingRead<raster::PixelSummary> GlExactDevice::summarizeLater(
+    const PixelRect& rect, const raster::StencilClasses& classes,
+    const raster::KeptDepth* nearEnd) {
+  Impl& d = *impl_;
+  const PixelRect r = rect.intersect({0, 0, d.width, d.height});
+  const auto* kept = dynamic_cast<const GlKeptDepth*>(nearEnd);
+  if (kept == nullptr && (nearEnd != nullptr || r.empty() || r.area() > kMaxDeviceSummaryPixels))
+    return DepthStencilDevice::summarizeLater(r, classes, nearEnd);  // kept on the host, if any
+  if (kept != nullptr && (kept->owner != impl_.get() || kept->rect != r))
+    throw std::invalid_argument(
+        "summarizeLater: the near end was not kept by this device over this rectangle");
+  for (std::size_t v = 0; v < classes.classOf.size(); ++v)
+    if (classes.classOf[v] >= raster::kMaxStencilClasses)
+      throw std::invalid_argument("summarizeLater: stencil value " + std::to_string(v) +
+                                  " has class " + std::to_string(classes.classOf[v]) +
+                                  ", not below " + std::to_string(raster::kMaxStencilClasses));
+  SharedGl& shared = *d.shared;
+  const auto& g = d.gl();
+  d.use();
+  if (shared.summaryProgram == 0)
+    shared.summaryProgram = detail::buildSummaryProgram(g);
+  const bool withDepth = kept != nullptr;
+  const std::size_t pixels = static_cast<std::size_t>(r.area());
+  // One buffer: the stencil (a byte a pixel, padded to a word), the depth now, the class table.
+  const std::size_t stencilBytes = (pixels + 3) / 4 * 4;
+  const std::size_t farBytes = withDepth ? 4 * pixels : 0;
+  const std::size_t tableBytes = classes.classOf.size();
+  GlBuffer inputs(shared, stencilBytes + farBytes + tableBytes, nullptr, GL_STREAM_COPY);
+  const auto at = [](std::size_t offset) { return reinterpret_cast<void*>(offset); };
+  g.BindBuffer(GL_PIXEL_PACK_BUFFER, inputs.name());
+  g.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, at(0));
+  if (withDepth)
+    g.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_COMPONENT, GL_FLOAT, at(stencilBytes));
+  g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  g.BindBuffer(GL_SHADER_STORAGE_BUFFER, inputs.name());
+  g.BufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(stencilBytes + farBytes),
+                  static_cast<GLsizeiptr>(tableBytes), classes.classOf.data());
+  // pixel_summary.glsl's Summary: the copies' rows run from y0 up.
+  const std::uint32_t parameters[13] = {0,
+                                        static_cast<std::uint32_t>(stencilBytes / 4),
+                                        static_cast<std::uint32_t>((stencilBytes + farBytes) / 4),
+                                        0,
+                                        0,
+                                        static_cast<std::uint32_t>(r.x0),
+                                        static_cast<std::uint32_t>(r.y0),
+                                        static_cast<std::uint32_t>(r.y1),
+                                        static_cast<std::uint32_t>(r.width()),
+                                        static_cast<std::uint32_t>(r.height()),
+                                        classes.marked,
+                                        withDepth ? 1u : 0u,
+                                        1u};
+  GlBuffer parameterBuffer(shared, sizeof parameters, parameters, GL_STREAM_DRAW);
+  GlBuffer results(shared, raster::kPixelSummaryBytes, nullptr, GL_STREAM_READ);
+  g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, withDepth ? kept->buffer.name() : inputs.name());
+  g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, inputs.name());
+  g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, results.name());
+  g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, parameterBuffer.name());
+  g.UseProgram(shared.summaryProgram);
+  g.DispatchCompute(1, 1, 1);
+  g.UseProgram(shared.program);
+  // The shader's writes before the read-back of its words.
+  g.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  for (GLuint binding = 0; binding < 4; ++binding)
+    g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+  shared.check("summarizeLater");
+  raster::PendingRead<raster::PixelSummary> read =
+      raster::PendingRead<raster::PixelSummary>::waiting();
+  SharedGl::PendingCopy copy;
+  copy.buffer = results.release();
+  copy.bytes = raster::kPixelSummaryBytes;
+  copy.deliver = [read, r, withDepth](std::vector<std::uint8_t> bytes) mutable {
+    std::array<std::uint32_t, raster::kPixelSummaryWords> words{};
+    std::memcpy(words.data(), bytes.data(), raster::kPixelSummaryBytes);
+    read.deliver({raster::unpackPixelSummary(words, r, withDepth, "GL exact device")});
+  };
+  d.transfers.readbackBytes += static_cast<long long>(raster::kPixelSummaryBytes);
+  shared.pending.push_back(std::move(copy));
   return read;
 }
 

@@ -68,7 +68,11 @@ namespace recode::backends::detail {
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)         \
   X(PFNGLVERTEXATTRIBDIVISORPROC, VertexAttribDivisor)         \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray) \
-  X(PFNGLDRAWARRAYSINSTANCEDPROC, DrawArraysInstanced)
+  X(PFNGLDRAWARRAYSINSTANCEDPROC, DrawArraysInstanced)         \
+  X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                     \
+  X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                   \
+  X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                 \
+  X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)
 
 // The compatibility-profile entry points the fixed-function GlDevice needs beyond the core ones:
 // the matrix stack, client vertex arrays, and the fixed state it sets once. glcorearb.h declares

@@ -58,6 +58,14 @@ class GlExactDevice final : public raster::RenderStateDevice {
       const raster::PixelRect& rect) override;
   [[nodiscard]] raster::PendingRead<std::uint32_t> readDepthLater(
       const raster::PixelRect& rect) override;
+  // Summaries worked out by a compute shader (pixel_summary.glsl): the buffers are read into
+  // buffer objects on the GPU and reduced there, and 64 bytes come back. Rectangles of more than
+  // 4 Mi pixels are summarised from plain read-backs instead.
+  [[nodiscard]] std::shared_ptr<const raster::KeptDepth> keepDepthLater(
+      const raster::PixelRect& rect) override;
+  [[nodiscard]] raster::PendingRead<raster::PixelSummary> summarizeLater(
+      const raster::PixelRect& rect, const raster::StencilClasses& classes,
+      const raster::KeptDepth* nearEnd) override;
   void finish() override;
   [[nodiscard]] bool defers() const override;
   [[nodiscard]] raster::TransferCounters transfers() const override;
