@@ -6,9 +6,9 @@
 #   2. recode verify --suite at 800 pixels on the exact Vulkan and GL devices (per-command parity
 #      of 504 pairs, then the same pairs as one batch against the reference),
 #   3. recode bench table2 figure8 with the GPU columns (the CGAL judge, recode-cpu, the exact
-#      devices batched, Vulkan pair by pair, with speculative contact passes concluded from
-#      64-byte summaries, and the same on 16 devices a frame size (waves), the 32-bit Vulkan
-#      device, FCL GJK, Bullet),
+#      devices batched, Vulkan pair by pair, with speculative contact passes, the same concluded
+#      from 64-byte summaries made by a compute shader, and that on 16 devices a frame size
+#      (waves), the 32-bit Vulkan device, FCL GJK, Bullet),
 # and prints a summary. Exit status 0 when every correctness check passed (the bench's times are
 # reported, never judged).
 #
@@ -46,7 +46,7 @@ step "verify --suite --width 800" verify-800.json \
   "$recode" verify --suite --width 800 --vulkan --gl-exact --gl-platform egl --json
 step "bench table2 figure8" bench.log \
   "$recode" bench table2 figure8 $quick --out "$out/bench" \
-  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-waves,recode-vulkan-32,fcl-gjk,bullet
+  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-summaries,recode-vulkan-waves,recode-vulkan-32,fcl-gjk,bullet
 
 echo
 python3 - "$out" <<'PY'
@@ -76,7 +76,8 @@ path = os.path.join(out, "bench", "bench.csv")
 if os.path.exists(path):
     rows = list(csv.DictReader(open(path)))
     columns = ["recode-cpu", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
-               "recode-vulkan-speculative", "recode-vulkan-waves", "recode-vulkan-32", "fcl-gjk"]
+               "recode-vulkan-speculative", "recode-vulkan-summaries", "recode-vulkan-waves",
+               "recode-vulkan-32", "fcl-gjk"]
     print("\nmean ms a frame (submissions a frame, read-back bytes a pair test):")
     print("| scene | triangles | " + " | ".join(columns) + " |")
     keys = sorted({(r["experiment"], r["scene"], int(r["triangles"])) for r in rows})

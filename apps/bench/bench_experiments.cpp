@@ -34,9 +34,11 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
   AlgorithmSpec vulkanSpeculative{"recode-vulkan-speculative", Kind::Recode,
                                   backends::DeviceKind::Vulkan, core::MorMode::Min};
   vulkanSpeculative.contactSchedule = core::ContactSchedule::Speculative;
-  AlgorithmSpec vulkanWaves{"recode-vulkan-waves", Kind::Recode, backends::DeviceKind::Vulkan,
-                            core::MorMode::Min};
-  vulkanWaves.contactSchedule = core::ContactSchedule::Speculative;
+  AlgorithmSpec vulkanSummaries = vulkanSpeculative;
+  vulkanSummaries.name = "recode-vulkan-summaries";
+  vulkanSummaries.deviceSummaries = true;
+  AlgorithmSpec vulkanWaves = vulkanSummaries;
+  vulkanWaves.name = "recode-vulkan-waves";
   vulkanWaves.batchDevicesPerSize = 16;
   return {
       {"recode-cpu", Kind::Recode, backends::DeviceKind::Cpu, core::MorMode::Min},
@@ -49,6 +51,7 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
       {"recode-vulkan", Kind::Recode, backends::DeviceKind::Vulkan, core::MorMode::Min},
       vulkanPerPair,
       vulkanSpeculative,
+      vulkanSummaries,
       vulkanWaves,
       {"recode-vulkan-32", Kind::Recode, backends::DeviceKind::Vulkan32, core::MorMode::Min},
       {"fcl-gjk", Kind::FclGjk},

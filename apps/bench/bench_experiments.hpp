@@ -32,6 +32,8 @@ struct AlgorithmSpec {
   core::ContactSchedule contactSchedule = core::ContactSchedule::AfterVerdict;
   // Recode only: core::RunOptions::batchDevicesPerSize (16 for recode-vulkan-waves)
   int batchDevicesPerSize = 1;
+  // Recode only: core::RunOptions::deviceSummaries (on for recode-vulkan-summaries and -waves)
+  bool deviceSummaries = false;
 };
 
 struct Experiment {

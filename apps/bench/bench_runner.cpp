@@ -29,6 +29,7 @@ std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
       options.batch = spec.batch;
       options.contactSchedule = spec.contactSchedule;
       options.batchDevicesPerSize = spec.batchDevicesPerSize;
+      options.deviceSummaries = spec.deviceSummaries;
       options.keepContactPoints = false;  // the bench reports pairs and counters only
       return std::make_unique<verify::RecodeDetector>(scene, options, spec.device, spec.name);
     }

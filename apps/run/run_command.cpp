@@ -46,6 +46,7 @@ struct RunOptions {
   bool perPair = false;                           // --per-pair: core::RunOptions::batch off
   std::string contactSchedule = "after-verdict";  // --contact-schedule
   int batchDevices = 1;                           // --batch-devices
+  bool summaries = false;                         // --summaries
 };
 
 std::string builtinNames() {
@@ -153,6 +154,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
                                 ? core::ContactSchedule::Speculative
                                 : core::ContactSchedule::AfterVerdict;
   options.batchDevicesPerSize = o.batchDevices;
+  options.deviceSummaries = o.summaries;
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -271,6 +273,11 @@ void addRunCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::IsMember({"after-verdict", "speculative"}))
       ->excludes(perPair)
       ->capture_default_str();
+  cmd->add_flag("--summaries", o->summaries,
+                "on a device that defers its commands, conclude each pair test from the device's "
+                "64-byte summaries of its buffers, made by a compute shader on vulkan, vulkan-32 "
+                "and gl-exact, instead of reading the stencil and depths back; the same output")
+      ->excludes(perPair);
   cmd->add_option("--batch-devices", o->batchDevices,
                   "on a device that defers its commands, up to N devices of each pair frame size, "
                   "so that a frame's pair tests are recorded in waves of pairs on devices of "

@@ -1,8 +1,8 @@
 cmake_minimum_required(VERSION 3.25)
 # `recode pair` and `recode run` with --device DEVICE give the CPU device's output bytes, timing
 # aside (--no-timing): the built-in pair in every mode and with --pixel, and every built-in scene
-# (batched after the verdict and speculatively from summaries, and the hands also pair by pair
-# and without the contact passes). Expects RECODE, DEVICE, OUT.
+# (batched, from the device's summaries, on several devices a frame size, and the hands also pair
+# by pair). Expects RECODE, DEVICE, OUT.
 
 # Runs `recode ARGS... --device device`; sets <var> to its standard output.
 function(recode_output var device)
@@ -43,20 +43,25 @@ foreach(scene comb-translate-aligned comb-translate-offset comb-rotate-aligned c
 endforeach()
 # Pair by pair instead (the path the bench's per-pair column times): the same bytes too.
 expect_same("run hand-grasp --per-pair" run hand-grasp --json --no-timing --per-pair)
-# The contact passes drawn with the stencil passes, one submission a frame, each pair test
-# concluded from the device's summary of its buffers (`recode run` keeps no pixels; on Vulkan a
-# compute shader makes the summary): the same bytes on every built-in scene.
+# The contact passes drawn with the stencil passes, one submission a frame: the same bytes.
+expect_same("run hand-grasp --contact-schedule speculative" run hand-grasp --json --no-timing
+            --contact-schedule speculative)
+# Each pair test concluded from the device's 64-byte summaries (--summaries: a compute shader
+# on vulkan, vulkan-32 and gl-exact), speculatively and after the verdict: the same bytes on
+# every built-in scene; without the contact passes too.
 foreach(scene comb-translate-aligned comb-translate-offset comb-rotate-aligned comb-rotate-offset
               random-cones random-shapes hand-grasp hierarchy-9)
-  expect_same("run ${scene} --contact-schedule speculative" run ${scene} --json --no-timing
-              --contact-schedule speculative)
+  expect_same("run ${scene} --summaries --contact-schedule speculative" run ${scene} --json
+              --no-timing --summaries --contact-schedule speculative)
+  expect_same("run ${scene} --summaries" run ${scene} --json --no-timing --summaries)
 endforeach()
-# Without the contact passes every pair test is concluded from a summary of the stencil alone.
-expect_same("run hand-grasp --no-contact" run hand-grasp --json --no-timing --no-contact)
+expect_same("run hand-grasp --summaries --no-contact" run hand-grasp --json --no-timing
+            --summaries --no-contact)
 # Up to 16 devices a frame size: a frame's pair tests recorded in waves of pairs on devices of
-# their own, after the verdict and speculatively: the same bytes too.
+# their own, after the verdict and speculatively from summaries: the same bytes too.
 foreach(scene comb-translate-offset random-shapes hand-grasp)
   expect_same("run ${scene} --batch-devices 16" run ${scene} --json --no-timing --batch-devices 16)
-  expect_same("run ${scene} --batch-devices 16 --contact-schedule speculative" run ${scene} --json
-              --no-timing --batch-devices 16 --contact-schedule speculative)
+  expect_same("run ${scene} --batch-devices 16 --summaries --contact-schedule speculative" run
+              ${scene} --json --no-timing --batch-devices 16 --summaries
+              --contact-schedule speculative)
 endforeach()

@@ -353,7 +353,8 @@ std::vector<PairTask> Simulation::listPairTasks(const std::vector<std::pair<int,
       task.request.mor = options_.mor;
       task.request.contact = options_.contact;
       task.keepContactPoints = options_.keepContactPoints;
-      task.request.keepPixels = options_.keepContactPoints;  // the report keeps no case map
+      // The report keeps no case map; the points only when asked to.
+      task.request.keepPixels = options_.keepContactPoints || !options_.deviceSummaries;
       tasks.push_back(task);
     }
   }

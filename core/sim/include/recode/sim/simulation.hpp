@@ -99,6 +99,12 @@ struct RunOptions {
   // devices of their own (one barrier a wave's half-segment on Vulkan, not one a pair), within
   // kMaxBatchPixelsPerSize pixels a size. 1: one device a size. The same reports either way.
   int batchDevicesPerSize = 1;
+  // With a batch on deferring devices and keepContactPoints off: conclude each pair test from
+  // the device's 64-byte summaries of its buffers (PairRequest::keepPixels off; the Vulkan and
+  // exact GL devices make them in a compute shader) instead of reading the stencil and depths
+  // back. The same reports. Off by default: on lavapipe and llvmpipe it is slower
+  // (docs/benchmarks.md, "GPU devices").
+  bool deviceSummaries = false;
 };
 
 inline constexpr int kMaxBatchDevicesPerSize = 64;  // the most batchDevicesPerSize may be
