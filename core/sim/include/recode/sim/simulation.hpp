@@ -103,7 +103,7 @@ struct RunOptions {
   // the device's 64-byte summaries of its buffers (PairRequest::keepPixels off; the Vulkan and
   // exact GL devices make them in a compute shader) instead of reading the stencil and depths
   // back. The same reports. Off by default: on lavapipe and llvmpipe it is slower
-  // (docs/benchmarks.md, "GPU devices").
+  // (docs/benchmarks.md, "GPU devices on lavapipe").
   bool deviceSummaries = false;
 };
 
