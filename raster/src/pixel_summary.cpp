@@ -28,11 +28,7 @@ PixelSummary summarizePixels(const PixelRect& rect, std::span<const std::uint8_t
     requireSize(nearDepth.size(), rect, "the near depth");
     requireSize(farDepth.size(), rect, "the far depth");
   }
-  for (std::size_t v = 0; v < classes.classOf.size(); ++v)
-    if (classes.classOf[v] >= kMaxStencilClasses)
-      throw std::invalid_argument("summarizePixels: stencil value " + std::to_string(v) +
-                                  " has class " + std::to_string(classes.classOf[v]) +
-                                  ", not below " + std::to_string(kMaxStencilClasses));
+  requireStencilClasses(classes, "summarizePixels");
   PixelSummary s;
   PixelRect bounds{rect.x1, rect.y1, rect.x0, rect.y0};  // grows from inside out
   DepthIntervals depth{0xFFFFFFFFu, 0, 0, 0};
@@ -65,6 +61,14 @@ PixelSummary summarizePixels(const PixelRect& rect, std::span<const std::uint8_t
       s.depth = depth;
   }
   return s;
+}
+
+void requireStencilClasses(const StencilClasses& classes, const char* caller) {
+  for (std::size_t v = 0; v < classes.classOf.size(); ++v)
+    if (classes.classOf[v] >= kMaxStencilClasses)
+      throw std::invalid_argument(std::string(caller) + ": stencil value " + std::to_string(v) +
+                                  " has class " + std::to_string(classes.classOf[v]) +
+                                  ", not below " + std::to_string(kMaxStencilClasses));
 }
 
 std::array<std::uint32_t, kPixelSummaryWords> packPixelSummary(const PixelSummary& summary) {

@@ -510,11 +510,7 @@ raster::PendingRead<raster::PixelSummary> GlExactDevice::summarizeLater(
   if (kept != nullptr && (kept->owner != impl_.get() || kept->rect != r))
     throw std::invalid_argument(
         "summarizeLater: the near end was not kept by this device over this rectangle");
-  for (std::size_t v = 0; v < classes.classOf.size(); ++v)
-    if (classes.classOf[v] >= raster::kMaxStencilClasses)
-      throw std::invalid_argument("summarizeLater: stencil value " + std::to_string(v) +
-                                  " has class " + std::to_string(classes.classOf[v]) +
-                                  ", not below " + std::to_string(raster::kMaxStencilClasses));
+  raster::requireStencilClasses(classes, "summarizeLater");
   SharedGl& shared = *d.shared;
   const auto& g = d.gl();
   d.use();

@@ -195,19 +195,28 @@ VkDeviceMemory VulkanContext::allocate(const VkMemoryRequirements& requirements,
   throw std::runtime_error("Vulkan device: no memory type with the properties needed");
 }
 
-HostBuffer VulkanContext::createHostBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const {
-  HostBuffer buffer;
+VkBuffer VulkanContext::createBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage,
+                                     VkMemoryPropertyFlags properties,
+                                     VkDeviceMemory& memory) const {
   VkBufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
   info.size = bytes;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer.buffer), "vkCreateBuffer");
+  VkBuffer buffer = VK_NULL_HANDLE;
+  vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer), "vkCreateBuffer");
   VkMemoryRequirements requirements{};
-  vkGetBufferMemoryRequirements(device_, buffer.buffer, &requirements);
-  buffer.memory = allocate(
-      requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  vkCheck(vkBindBufferMemory(device_, buffer.buffer, buffer.memory, 0), "vkBindBufferMemory");
+  vkGetBufferMemoryRequirements(device_, buffer, &requirements);
+  memory = allocate(requirements, properties);
+  vkCheck(vkBindBufferMemory(device_, buffer, memory, 0), "vkBindBufferMemory");
+  return buffer;
+}
+
+HostBuffer VulkanContext::createHostBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const {
+  HostBuffer buffer;
+  buffer.buffer = createBuffer(
+      bytes, usage, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+      buffer.memory);
   vkCheck(vkMapMemory(device_, buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped), "vkMapMemory");
   buffer.size = bytes;
   return buffer;
@@ -223,16 +232,7 @@ void VulkanContext::destroyHostBuffer(HostBuffer& buffer) const {
 
 DeviceBuffer VulkanContext::createDeviceBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const {
   DeviceBuffer buffer;
-  VkBufferCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-  info.size = bytes;
-  info.usage = usage;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer.buffer), "vkCreateBuffer");
-  VkMemoryRequirements requirements{};
-  vkGetBufferMemoryRequirements(device_, buffer.buffer, &requirements);
-  buffer.memory = allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  vkCheck(vkBindBufferMemory(device_, buffer.buffer, buffer.memory, 0), "vkBindBufferMemory");
+  buffer.buffer = createBuffer(bytes, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, buffer.memory);
   buffer.size = bytes;
   return buffer;
 }

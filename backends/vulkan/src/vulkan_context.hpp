@@ -70,6 +70,10 @@ class VulkanContext {
   void createInstance();
   void choosePhysicalDevice();
   void createDevice();
+  // A buffer of `bytes` bound to new memory with `properties` (returned in `memory`).
+  [[nodiscard]] VkBuffer createBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage,
+                                      VkMemoryPropertyFlags properties,
+                                      VkDeviceMemory& memory) const;
 
   ShaderArithmetic arithmetic_;
   VkInstance instance_ = VK_NULL_HANDLE;

@@ -467,11 +467,7 @@ raster::PendingRead<raster::PixelSummary> VulkanDevice::summarizeLater(
   if (kept != nullptr && (kept->owner() != impl_.get() || kept->rect() != r))
     throw std::invalid_argument(
         "summarizeLater: the near end was not kept by this device over this rectangle");
-  for (std::size_t v = 0; v < classes.classOf.size(); ++v)
-    if (classes.classOf[v] >= raster::kMaxStencilClasses)
-      throw std::invalid_argument("summarizeLater: stencil value " + std::to_string(v) +
-                                  " has class " + std::to_string(classes.classOf[v]) +
-                                  ", not below " + std::to_string(raster::kMaxStencilClasses));
+  raster::requireStencilClasses(classes, "summarizeLater");
   const bool withDepth = kept != nullptr;
   const std::size_t pixels = static_cast<std::size_t>(r.area());
   // One scratch region: the stencil copy (a word per four pixels), the far copy, the table.

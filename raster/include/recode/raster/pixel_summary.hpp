@@ -64,6 +64,10 @@ struct PixelSummary {
                                            std::span<const std::uint32_t> farDepth,
                                            const StencilClasses& classes);
 
+// Throws std::invalid_argument, naming `caller`, when a class in the table is not below
+// kMaxStencilClasses.
+void requireStencilClasses(const StencilClasses& classes, const char* caller);
+
 // The words a device delivers: the class counts, the bounds as two words (x0 | x1 << 16,
 // y0 | y1 << 16; framebuffers are at most kMaxFramebufferSize wide), then nearest, farthest,
 // longest and inverted (zero without a depth interval).
