@@ -532,6 +532,7 @@ raster::PendingRead<raster::PixelSummary> GlExactDevice::summarizeLater(
   g.BindBuffer(GL_SHADER_STORAGE_BUFFER, inputs.name());
   g.BufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(stencilBytes + farBytes),
                   static_cast<GLsizeiptr>(tableBytes), classes.classOf.data());
+  g.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   // pixel_summary.glsl's Summary: the copies' rows run from y0 up.
   const std::uint32_t parameters[13] = {0,
                                         static_cast<std::uint32_t>(stencilBytes / 4),
