@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libstb-dev
   catch2 libbenchmark-dev libtbb-dev libhwy-dev
   libembree-dev libcgal-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
-  libvulkan-dev mesa-vulkan-drivers glslang-tools
+  libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers
   clang-14 libfuzzer-14-dev
   libfcl-dev libbullet-dev gnuplot-nox
   chromium python3-websocket emscripten

@@ -39,6 +39,8 @@ std::string unsuitable(VkPhysicalDevice physical, ShaderArithmetic arithmetic,
   vkGetPhysicalDeviceFeatures2(physical, &features2);
   if (!v13.dynamicRendering)
     return "dynamicRendering is missing";
+  if (!v13.maintenance4)  // required of Vulkan 1.3 devices; checked for a driver that forgets
+    return "maintenance4 is missing";
   VkFormatProperties format{};
   vkGetPhysicalDeviceFormatProperties(physical, kExactDepthStencilFormat, &format);
   const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT |
@@ -158,11 +160,13 @@ void VulkanContext::createDevice() {
   queue.queueFamilyIndex = queueFamily_;
   queue.queueCount = 1;
   queue.pQueuePriorities = &priority;
-  // Dynamic rendering (no render pass), and for Native64 the contract's doubles and 64-bit edge
-  // functions; Emulated32 asks for neither, which is its point.
+  // Dynamic rendering (no render pass), maintenance4 (SPIR-V 1.6 compute stages declare their
+  // workgroup size with LocalSizeId, which needs it: the summary shader), and for Native64 the
+  // contract's doubles and 64-bit edge functions; Emulated32 asks for neither, which is its point.
   VkPhysicalDeviceVulkan13Features v13{};
   v13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
   v13.dynamicRendering = VK_TRUE;
+  v13.maintenance4 = VK_TRUE;
   VkPhysicalDeviceFeatures2 features{};
   features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
   features.pNext = &v13;
