@@ -158,6 +158,22 @@ PixelRect chooseMor(MorMode mode, const PixelRect& footA, const PixelRect& footB
   return {0, 0, frame.width, frame.height};
 }
 
+// Adds a stencil's case counts to r's, and its interfering pixels (cases 3-6).
+void addCaseCounts(const std::array<long long, kCaseCount>& counts, PairResult& r) {
+  for (std::size_t c = 0; c < kCaseCount; ++c)
+    r.caseCounts[c] += counts[c];
+  for (int c = 3; c <= 6; ++c)
+    r.interferingPixels += counts[static_cast<std::size_t>(c)];
+}
+
+// The verdict, the contact's pixel count and its area from the interfering pixels.
+void concludeVerdict(const OrthoView& view, PairResult& r) {
+  r.collide = r.interferingPixels > 0;
+  r.contact.pixels = r.interferingPixels;
+  r.contact.area =
+      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
+}
+
 // Decodes the stencil read over the MOR into the case map and the case counts, and returns the
 // bounding rectangle of the interfering pixels.
 PixelRect classifyStencil(const raster::PixelBuffer<std::uint8_t>& stencil, PairResult& r) {
@@ -206,10 +222,7 @@ PixelRect classifyStencil(const raster::PixelBuffer<std::uint8_t>& stencil, Pair
     for (; x < m.x1; ++x, ++i)
       decode(x, y, i);
   }
-  for (std::size_t c = 0; c < kCaseCount; ++c)
-    r.caseCounts[c] += counts[c];
-  for (int c = 3; c <= 6; ++c)
-    r.interferingPixels += r.caseCounts[static_cast<std::size_t>(c)];
+  addCaseCounts(counts, r);
   return r.interferingPixels > 0 ? PixelRect{cx0, cy0, cx1, cy1} : PixelRect{};
 }
 
@@ -307,10 +320,7 @@ PixelRect concludeStencil(const raster::PixelBuffer<std::uint8_t>& stencil, cons
   const Clock::time_point t = Clock::now();
   r.stencilPixelsRead = r.mor.area();
   const PixelRect contactRect = classifyStencil(stencil, r);
-  r.collide = r.interferingPixels > 0;
-  r.contact.pixels = r.interferingPixels;
-  r.contact.area =
-      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
+  concludeVerdict(view, r);
   r.timing.classifyUs += microsecondsSince(t);
   return contactRect;
 }
@@ -347,22 +357,16 @@ const raster::StencilClasses& caseClasses() {
   return classes;
 }
 
-void concludeSummary(const raster::PixelSummary& summary, const OrthoView& view, PairResult& r) {
+PixelRect concludeSummary(const raster::PixelSummary& summary, const OrthoView& view,
+                          PairResult& r) {
   const Clock::time_point t = Clock::now();
   r.stencilPixelsRead = r.mor.area();
-  for (std::size_t c = 0; c < kCaseCount; ++c)
-    r.caseCounts[c] += summary.classCounts[c];
-  for (int c = 3; c <= 6; ++c)
-    r.interferingPixels += r.caseCounts[static_cast<std::size_t>(c)];
-  r.collide = r.interferingPixels > 0;
-  r.contact.pixels = r.interferingPixels;
-  r.contact.area =
-      static_cast<double>(r.interferingPixels) * view.pixelWidth() * view.pixelHeight();
-  if (r.collide && summary.depth) {
-    r.contactRect = summary.markedBounds;
-    concludeSummaryContact(*summary.depth, view, r);
-  }
+  std::array<long long, kCaseCount> counts{};
+  std::copy_n(summary.classCounts.begin(), kCaseCount, counts.begin());
+  addCaseCounts(counts, r);
+  concludeVerdict(view, r);
   r.timing.classifyUs += microsecondsSince(t);
+  return summary.markedBounds;
 }
 
 void concludeSummaryContact(const raster::DepthIntervals& d, const OrthoView& view, PairResult& r) {

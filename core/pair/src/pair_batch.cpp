@@ -35,10 +35,10 @@ struct RecordedPair {
   raster::DepthStencilDevice* device = nullptr;
   ContactSchedule schedule = ContactSchedule::AfterVerdict;
   PairResult result;
-  std::optional<OrthoView> view;  // set when the passes are to be recorded
-  // The view the blocks are drawn in, on the heap: the sources refer to it, and the pair is
-  // moved after they are made.
-  std::unique_ptr<const OrthoView> sourceView;
+  // The pair's view, on the heap: the block sources refer to it, and the pair is moved after
+  // they are made.
+  std::unique_ptr<const OrthoView> view;
+  bool drawn = false;  // whether the passes are recorded (the box test and MOR let them)
   // The blocks as drawn, kept only while passes are still to be recorded.
   std::unique_ptr<detail::BlockWindowSource> a, b;
   std::vector<Segment> segments;  // the commands of the round being recorded, in order
@@ -101,11 +101,8 @@ void addContactSegments(RecordedPair& p, const raster::PixelRect& rect) {
                         }});
 }
 
-// What collidePair does before its first read-back, as segments, read-backs recorded instead of
-// waited for: the stencil passes and the stencil's read-back, with ContactSchedule::Speculative
-// the contact passes over the MOR too; or, concluded from a summary, the stencil passes (and
-// with the contact both contact passes over the MOR, the near end kept on the device) and the
-// summary (the contact passes leave the stencil as the stencil passes made it: write mask 0).
+// What collidePair does before it draws: the pair's depth range, view and blocks as drawn, the
+// box test and the MOR.
 RecordedPair preparePair(raster::DepthStencilDevice& device, const PairJob& job,
                          ContactSchedule schedule) {
   const Clock::time_point start = Clock::now();
@@ -116,11 +113,10 @@ RecordedPair preparePair(raster::DepthStencilDevice& device, const PairJob& job,
   p.device = &device;
   p.schedule = schedule;
   p.result = detail::startPair(*job.a, *job.b, frame);
-  p.sourceView = std::make_unique<const OrthoView>(detail::pairView(frame, p.result));
-  p.a = std::make_unique<detail::BlockWindowSource>(*job.a, *p.sourceView);
-  p.b = std::make_unique<detail::BlockWindowSource>(*job.b, *p.sourceView);
-  if (detail::choosePassRegion(detail::DrawnPair{*p.a, *p.b}, job.request, p.result))
-    p.view = *p.sourceView;
+  p.view = std::make_unique<const OrthoView>(detail::pairView(frame, p.result));
+  p.a = std::make_unique<detail::BlockWindowSource>(*job.a, *p.view);
+  p.b = std::make_unique<detail::BlockWindowSource>(*job.b, *p.view);
+  p.drawn = detail::choosePassRegion(detail::DrawnPair{*p.a, *p.b}, job.request, p.result);
   p.ownUs = microsecondsSince(start);
   return p;
 }
@@ -159,16 +155,17 @@ void addSummarySegments(RecordedPair& p, const raster::PixelRect& rect, bool wit
                         }});
 }
 
-// The first round's segments of a pair preparePair found drawn (its address is kept by them).
+// The first round's segments of a pair preparePair found drawn (its address is kept by them):
+// what collidePair does before its first read-back, read-backs recorded instead of waited for.
+// The stencil passes and the stencil's read-back, with ContactSchedule::Speculative the contact
+// passes over the MOR too; or, concluded from summaries, the stencil passes and their summary,
+// speculatively with the contact passes and their depths.
 void addFirstRound(RecordedPair& p) {
   const raster::PixelRect mor = p.result.mor;
   const PairRequest& request = p.job->request;
+  const bool speculative = request.contact && p.schedule == ContactSchedule::Speculative;
   if (usesSummary(request)) {
-    if (!request.contact || p.schedule == ContactSchedule::AfterVerdict) {
-      addSummarySegments(p, mor, false);
-      return;
-    }
-    addSummarySegments(p, mor, true);
+    addSummarySegments(p, mor, speculative);
     return;
   }
   p.segments.push_back({[&p, mor] { drawStencilPasses(p, mor); },
@@ -176,7 +173,7 @@ void addFirstRound(RecordedPair& p) {
                           step(p, PairStep::ReadStencil,
                                [&] { p.stencil = p.device->readStencilLater(mor); });
                         }});
-  if (request.contact && p.schedule == ContactSchedule::Speculative)
+  if (speculative)
     addContactSegments(p, mor);
 }
 
@@ -224,29 +221,31 @@ void recordInWaves(const std::vector<RecordedPair*>& pairs) {
   }
 }
 
-// The verdict from the stencil. Returns whether the pair needs its contact passes' depths.
+// The verdict from the stencil or its summary, and from a summary with the speculative contact
+// passes' depths the contact region too. Returns whether the pair still needs its contact
+// passes' depths.
 bool concludeStencil(RecordedPair& p) {
-  if (!p.view)
+  if (!p.drawn)
     return false;
   const Clock::time_point start = Clock::now();
   PairResult& r = p.result;
+  raster::PixelRect contactRect;
+  std::optional<raster::DepthIntervals> depth;
   if (usesSummary(p.job->request)) {
-    // The verdict and, with speculative contact passes, the contact region.
     const raster::PixelSummary summary = p.summary.take().front();
-    detail::concludeSummary(summary, *p.view, r);
-    const bool contact = r.collide && p.job->request.contact;
-    if (contact)
-      r.contactRect = summary.markedBounds;
-    p.ownUs += microsecondsSince(start);
-    return contact && !summary.depth;
+    contactRect = detail::concludeSummary(summary, *p.view, r);
+    depth = summary.depth;
+  } else {
+    const raster::PixelBuffer<std::uint8_t> stencil{r.mor, p.stencil.take()};
+    contactRect = detail::concludeStencil(stencil, *p.view, r);
   }
-  const raster::PixelBuffer<std::uint8_t> stencil{r.mor, p.stencil.take()};
-  const raster::PixelRect contactRect = detail::concludeStencil(stencil, *p.view, r);
   const bool contact = r.collide && p.job->request.contact;
   if (contact)
     r.contactRect = contactRect;
+  if (contact && depth)
+    detail::concludeSummaryContact(*depth, *p.view, r);
   p.ownUs += microsecondsSince(start);
-  return contact;
+  return contact && !depth;
 }
 
 void concludeContact(RecordedPair& p) {
@@ -323,7 +322,7 @@ std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const
       recorded.push_back(preparePair(*devices[i], jobs[i], schedule));
     std::vector<RecordedPair*> drawn;
     for (RecordedPair& p : recorded) {
-      if (p.view) {
+      if (p.drawn) {
         addFirstRound(p);
         drawn.push_back(&p);
       }
@@ -331,7 +330,7 @@ std::vector<PairResult> collidePairs(std::span<raster::DepthStencilDevice* const
     recordInWaves(drawn);
     for (RecordedPair& p : recorded) {
       // Only contact passes recorded after the verdict draw the blocks again.
-      if (!(p.view && p.job->request.contact && schedule == ContactSchedule::AfterVerdict)) {
+      if (!(p.drawn && p.job->request.contact && schedule == ContactSchedule::AfterVerdict)) {
         p.a.reset();
         p.b.reset();
       }

@@ -77,15 +77,17 @@ void concludeContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
 // The stencil's cases as summary classes: class c is case c, the interfering cases marked.
 [[nodiscard]] const raster::StencilClasses& caseClasses();
 
-// What concludeStencil and concludeContact set, from a device's summary over r.mor (with the
-// contact passes' depth intervals when `summary.depth` is set: the request's contact, without
-// its normal), the pixels left out. The same values as theirs: the summary's counts and bounds
-// are the case counts and the contact rectangle; the contact box and greatest depth follow from
-// the extreme columns, rows and depths because every world coordinate toWorld makes is a
-// monotone function of one of them (docs/architecture.md).
-void concludeSummary(const raster::PixelSummary& summary, const OrthoView& view, PairResult& r);
-// Its contact part alone, over r.contactRect (set): the box, greatest depth and collapsed pixels
-// from the depth intervals of the interfering pixels.
+// concludeStencil from a device's summary over r.mor instead of the stencil (the case map left
+// empty): the case counts, verdict, pixel count and area; returns the interfering pixels'
+// bounding rectangle (the summary's marked bounds).
+[[nodiscard]] raster::PixelRect concludeSummary(const raster::PixelSummary& summary,
+                                                const OrthoView& view, PairResult& r);
+
+// concludeContact from the depth intervals of a summary over r.contactRect (set) instead of the
+// depths: the box, greatest depth and collapsed pixels, without points or normal. The same
+// values as concludeContact's: the contact rectangle's extreme columns and rows and the
+// intervals' extreme ends give the box and the greatest depth, because every world coordinate
+// toWorld makes is a monotone function of one of them (docs/architecture.md).
 void concludeSummaryContact(const raster::DepthIntervals& depth, const OrthoView& view,
                             PairResult& r);
 
