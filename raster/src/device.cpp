@@ -14,13 +14,17 @@ class HostKeptDepth final : public KeptDepth {
  public:
   HostKeptDepth(const DepthStencilDevice& keeper, const PixelRect& over,
                 PendingRead<std::uint32_t> kept)
-      : device(&keeper), rect(over), values(std::move(kept)) {}
-  const DepthStencilDevice* device;
-  PixelRect rect;
+      : KeptDepth(&keeper, over), values(std::move(kept)) {}
   PendingRead<std::uint32_t> values;
 };
 
 }  // namespace
+
+void KeptDepth::requireKeptBy(const void* keeper, const PixelRect& rect) const {
+  if (keeper != keeper_ || rect != rect_)
+    throw std::invalid_argument(
+        "summarizeLater: the near end was not kept by this device over this rectangle");
+}
 
 std::shared_ptr<const KeptDepth> DepthStencilDevice::keepDepthLater(const PixelRect& rect) {
   const PixelRect r = rect.intersect({0, 0, width(), height()});
@@ -32,9 +36,12 @@ PendingRead<PixelSummary> DepthStencilDevice::summarizeLater(const PixelRect& re
                                                              const KeptDepth* nearEnd) {
   const PixelRect r = rect.intersect({0, 0, width(), height()});
   const auto* kept = dynamic_cast<const HostKeptDepth*>(nearEnd);
-  if (nearEnd != nullptr && (kept == nullptr || kept->device != this || kept->rect != r))
-    throw std::invalid_argument(
-        "summarizeLater: the near end was not kept by this device over this rectangle");
+  if (nearEnd != nullptr) {
+    nearEnd->requireKeptBy(this, r);
+    if (kept == nullptr)  // kept by this device in memory of its own, not read back
+      throw std::logic_error(
+          "summarizeLater: a depth the device kept itself reached the read-back summary");
+  }
   PendingRead<std::uint8_t> stencil = readStencilLater(r);
   PendingRead<std::uint32_t> nearDepth = kept ? kept->values : PendingRead<std::uint32_t>();
   PendingRead<std::uint32_t> farDepth = kept ? readDepthLater(r) : PendingRead<std::uint32_t>();

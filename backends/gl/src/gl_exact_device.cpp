@@ -6,10 +6,8 @@
 #include "recode/backends/gl_exact_device.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <exception>
 #include <functional>
 #include <memory>
@@ -25,6 +23,7 @@
 #include "gl_functions.hpp"
 #include "recode/backends/exact_depth.hpp"
 #include "recode/backends/exact_proxy.hpp"
+#include "recode/backends/summary_layout.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 
@@ -295,9 +294,6 @@ struct GlExactDevice::Impl {
 
 namespace {
 
-// Rectangles of more pixels are summarised on the host from plain read-backs.
-constexpr long long kMaxDeviceSummaryPixels = 4LL << 20;
-
 // A buffer object on the context, deleted with this (GL defers the deletion while commands use
 // it).
 class GlBuffer {
@@ -329,12 +325,9 @@ class GlBuffer {
 class GlKeptDepth final : public raster::KeptDepth {
  public:
   GlKeptDepth(SharedGl& shared, const void* keeper, const PixelRect& over)
-      : buffer(shared, 4 * static_cast<std::size_t>(over.area()), nullptr, GL_STREAM_COPY),
-        owner(keeper),
-        rect(over) {}
+      : KeptDepth(keeper, over),
+        buffer(shared, 4 * static_cast<std::size_t>(over.area()), nullptr, GL_STREAM_COPY) {}
   GlBuffer buffer;
-  const void* owner;
-  PixelRect rect;
 };
 
 }  // namespace
@@ -487,7 +480,7 @@ raster::PendingRead<std::uint32_t> GlExactDevice::readDepthLater(const PixelRect
 std::shared_ptr<const raster::KeptDepth> GlExactDevice::keepDepthLater(const PixelRect& rect) {
   Impl& d = *impl_;
   const PixelRect r = rect.intersect({0, 0, d.width, d.height});
-  if (r.empty() || r.area() > kMaxDeviceSummaryPixels)
+  if (!summarisedOnDevice(r))
     return DepthStencilDevice::keepDepthLater(r);
   d.use();
   auto kept = std::make_shared<GlKeptDepth>(*d.shared, impl_.get(), r);
@@ -505,11 +498,10 @@ raster::PendingRead<raster::PixelSummary> GlExactDevice::summarizeLater(
   Impl& d = *impl_;
   const PixelRect r = rect.intersect({0, 0, d.width, d.height});
   const auto* kept = dynamic_cast<const GlKeptDepth*>(nearEnd);
-  if (kept == nullptr && (nearEnd != nullptr || r.empty() || r.area() > kMaxDeviceSummaryPixels))
+  if (kept == nullptr && (nearEnd != nullptr || !summarisedOnDevice(r)))
     return DepthStencilDevice::summarizeLater(r, classes, nearEnd);  // kept on the host, if any
-  if (kept != nullptr && (kept->owner != impl_.get() || kept->rect != r))
-    throw std::invalid_argument(
-        "summarizeLater: the near end was not kept by this device over this rectangle");
+  if (kept != nullptr)
+    kept->requireKeptBy(impl_.get(), r);
   raster::requireStencilClasses(classes, "summarizeLater");
   SharedGl& shared = *d.shared;
   const auto& g = d.gl();
@@ -517,37 +509,22 @@ raster::PendingRead<raster::PixelSummary> GlExactDevice::summarizeLater(
   if (shared.summaryProgram == 0)
     shared.summaryProgram = detail::buildSummaryProgram(g);
   const bool withDepth = kept != nullptr;
-  const std::size_t pixels = static_cast<std::size_t>(r.area());
-  // One buffer: the stencil (a byte a pixel, padded to a word), the depth now, the class table.
-  const std::size_t stencilBytes = (pixels + 3) / 4 * 4;
-  const std::size_t farBytes = withDepth ? 4 * pixels : 0;
-  const std::size_t tableBytes = classes.classOf.size();
-  GlBuffer inputs(shared, stencilBytes + farBytes + tableBytes, nullptr, GL_STREAM_COPY);
+  const SummaryInputs layout(r, withDepth);
+  GlBuffer inputs(shared, layout.bytes(), nullptr, GL_STREAM_COPY);
   const auto at = [](std::size_t offset) { return reinterpret_cast<void*>(offset); };
   g.BindBuffer(GL_PIXEL_PACK_BUFFER, inputs.name());
   g.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, at(0));
   if (withDepth)
-    g.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_COMPONENT, GL_FLOAT, at(stencilBytes));
+    g.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_COMPONENT, GL_FLOAT,
+                 at(layout.farOffset()));
   g.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   g.BindBuffer(GL_SHADER_STORAGE_BUFFER, inputs.name());
-  g.BufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(stencilBytes + farBytes),
-                  static_cast<GLsizeiptr>(tableBytes), classes.classOf.data());
+  g.BufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(layout.tableOffset()),
+                  static_cast<GLsizeiptr>(layout.tableBytes), classes.classOf.data());
   g.BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  // pixel_summary.glsl's Summary: the copies' rows run from y0 up.
-  const std::uint32_t parameters[13] = {0,
-                                        static_cast<std::uint32_t>(stencilBytes / 4),
-                                        static_cast<std::uint32_t>((stencilBytes + farBytes) / 4),
-                                        0,
-                                        0,
-                                        static_cast<std::uint32_t>(r.x0),
-                                        static_cast<std::uint32_t>(r.y0),
-                                        static_cast<std::uint32_t>(r.y1),
-                                        static_cast<std::uint32_t>(r.width()),
-                                        static_cast<std::uint32_t>(r.height()),
-                                        classes.marked,
-                                        withDepth ? 1u : 0u,
-                                        1u};
-  GlBuffer parameterBuffer(shared, sizeof parameters, parameters, GL_STREAM_DRAW);
+  // One summary a dispatch, every buffer its own: offsets 0; glReadPixels's rows run from y0 up.
+  const SummaryParameters parameters = summaryParameters(r, classes, withDepth, true, 0, 0, 0);
+  GlBuffer parameterBuffer(shared, sizeof parameters, &parameters, GL_STREAM_DRAW);
   GlBuffer results(shared, raster::kPixelSummaryBytes, nullptr, GL_STREAM_READ);
   g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, withDepth ? kept->buffer.name() : inputs.name());
   g.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, inputs.name());
@@ -567,9 +544,7 @@ raster::PendingRead<raster::PixelSummary> GlExactDevice::summarizeLater(
   copy.buffer = results.release();
   copy.bytes = raster::kPixelSummaryBytes;
   copy.deliver = [read, r, withDepth](std::vector<std::uint8_t> bytes) mutable {
-    std::array<std::uint32_t, raster::kPixelSummaryWords> words{};
-    std::memcpy(words.data(), bytes.data(), raster::kPixelSummaryBytes);
-    read.deliver({raster::unpackPixelSummary(words, r, withDepth, "GL exact device")});
+    read.deliver({summaryFromBytes(bytes.data(), r, withDepth, "GL exact device")});
   };
   d.transfers.readbackBytes += static_cast<long long>(raster::kPixelSummaryBytes);
   shared.pending.push_back(std::move(copy));

@@ -438,7 +438,7 @@ raster::PendingRead<std::uint32_t> VulkanDevice::readDepthLater(const PixelRect&
 std::shared_ptr<const raster::KeptDepth> VulkanDevice::keepDepthLater(const PixelRect& rect) {
   Impl& d = *impl_;
   const PixelRect r = rect.intersect({0, 0, d.width, d.height});
-  if (r.empty() || r.area() > detail::kMaxDeviceSummaryPixels)
+  if (!summarisedOnDevice(r))
     return DepthStencilDevice::keepDepthLater(r);
   const std::size_t bytes = 4 * static_cast<std::size_t>(r.area());
   const auto hold = d.recorder->hold();
@@ -461,59 +461,41 @@ raster::PendingRead<raster::PixelSummary> VulkanDevice::summarizeLater(
   Impl& d = *impl_;
   const PixelRect r = rect.intersect({0, 0, d.width, d.height});
   const auto* kept = dynamic_cast<const detail::VulkanKeptDepth*>(nearEnd);
-  if (kept == nullptr &&
-      (nearEnd != nullptr || r.empty() || r.area() > detail::kMaxDeviceSummaryPixels))
+  if (kept == nullptr && (nearEnd != nullptr || !summarisedOnDevice(r)))
     return DepthStencilDevice::summarizeLater(r, classes, nearEnd);  // kept on the host, if any
-  if (kept != nullptr && (kept->owner() != impl_.get() || kept->rect() != r))
-    throw std::invalid_argument(
-        "summarizeLater: the near end was not kept by this device over this rectangle");
+  if (kept != nullptr)
+    kept->requireKeptBy(impl_.get(), r);
   raster::requireStencilClasses(classes, "summarizeLater");
   const bool withDepth = kept != nullptr;
-  const std::size_t pixels = static_cast<std::size_t>(r.area());
-  // One scratch region: the stencil copy (a word per four pixels), the far copy, the table.
-  const std::size_t stencilBytes = (pixels + 3) / 4 * 4;
-  const std::size_t farBytes = withDepth ? 4 * pixels : 0;
-  const std::size_t tableBytes = classes.classOf.size();
-  const std::size_t bytes = stencilBytes + farBytes + tableBytes;
+  const SummaryInputs inputs(r, withDepth);
   raster::PendingRead<raster::PixelSummary> read =
       raster::PendingRead<raster::PixelSummary>::waiting();
   const auto hold = d.recorder->hold();
   d.counted([&] {
-    d.recorder->makeRoom(bytes + raster::kPixelSummaryBytes);
-    const detail::CommandRecorder::Scratch region = d.recorder->scratch(bytes);
+    d.recorder->makeRoom(inputs.bytes() + raster::kPixelSummaryBytes);
+    const detail::CommandRecorder::Scratch region = d.recorder->scratch(inputs.bytes());
     const detail::CommandRecorder::Staged out = d.recorder->results(
-        raster::kPixelSummaryBytes, [read, r, withDepth](const std::uint8_t* bytesBack) mutable {
-          std::array<std::uint32_t, raster::kPixelSummaryWords> words{};
-          std::memcpy(words.data(), bytesBack, raster::kPixelSummaryBytes);
-          read.deliver({raster::unpackPixelSummary(words, r, withDepth, "Vulkan device")});
+        raster::kPixelSummaryBytes, [read, r, withDepth](const std::uint8_t* bytes) mutable {
+          read.deliver({summaryFromBytes(bytes, r, withDepth, "Vulkan device")});
         });
-    detail::SummaryParameters push;
-    push.stencilByte = static_cast<std::uint32_t>(region.offset);
-    push.farWord = static_cast<std::uint32_t>((region.offset + stencilBytes) / 4);
-    push.tableWord = static_cast<std::uint32_t>((region.offset + stencilBytes + farBytes) / 4);
-    push.nearWord = withDepth ? static_cast<std::uint32_t>(kept->region().offset / 4) : 0;
-    push.resultWord = static_cast<std::uint32_t>(out.offset / 4);
-    push.x0 = static_cast<std::uint32_t>(r.x0);
-    push.y0 = static_cast<std::uint32_t>(r.y0);
-    push.y1 = static_cast<std::uint32_t>(r.y1);
-    push.width = static_cast<std::uint32_t>(r.width());
-    push.height = static_cast<std::uint32_t>(r.height());
-    push.marked = classes.marked;
-    push.withDepth = withDepth ? 1 : 0;
+    // Vulkan's copies run from the image's top row down.
+    const SummaryParameters parameters =
+        summaryParameters(r, classes, withDepth, false, region.offset,
+                          withDepth ? kept->region().offset : 0, out.offset);
     const VkBufferImageCopy stencilCopy =
         d.aspectCopy(r, VK_IMAGE_ASPECT_STENCIL_BIT, region.offset);
     const VkBufferImageCopy farCopy =
-        d.aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset + stencilBytes);
+        d.aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset + inputs.farOffset());
     const VkBuffer nearBuffer = withDepth ? kept->region().buffer : region.buffer;
     d.recorder->record(d.image, [&](VkCommandBuffer cmd) {
       vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &stencilCopy);
       if (withDepth)
         vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &farCopy);
-      vkCmdUpdateBuffer(cmd, region.buffer, region.offset + stencilBytes + farBytes, tableBytes,
+      vkCmdUpdateBuffer(cmd, region.buffer, region.offset + inputs.tableOffset(), inputs.tableBytes,
                         classes.classOf.data());
     });
     // The dispatch comes just before the submission, with every other summary's.
-    detail::summaryPipeline(d.arithmetic).add(nearBuffer, region.buffer, out.buffer, push);
+    detail::summaryPipeline(d.arithmetic).add(nearBuffer, region.buffer, out.buffer, parameters);
   });
   return read;
 }

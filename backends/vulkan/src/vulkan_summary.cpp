@@ -9,8 +9,6 @@ namespace recode::backends::detail {
 namespace {
 
 constexpr std::uint32_t kBindings = 4;  // near scratch, scratch, results, parameters
-constexpr std::size_t kParameterWords = sizeof(SummaryParameters) / 4;
-static_assert(kParameterWords == 13, "pixel_summary.glsl reads thirteen words a summary");
 constexpr std::uint32_t kSetsPerPool = 64;
 
 }  // namespace

@@ -11,32 +11,12 @@
 #include <cstdint>
 #include <map>
 
+#include "recode/backends/summary_layout.hpp"
 #include "recode/backends/vulkan_shader_arithmetic.hpp"
 #include "recode/raster/device.hpp"
 #include "vulkan_recorder.hpp"
 
 namespace recode::backends::detail {
-
-// One summary's parameters, as pixel_summary.glsl reads them (its `Summary`, thirteen words).
-struct SummaryParameters {
-  std::uint32_t stencilByte = 0;
-  std::uint32_t farWord = 0;
-  std::uint32_t tableWord = 0;
-  std::uint32_t nearWord = 0;
-  std::uint32_t resultWord = 0;
-  std::uint32_t x0 = 0;
-  std::uint32_t y0 = 0;
-  std::uint32_t y1 = 0;
-  std::uint32_t width = 0;
-  std::uint32_t height = 0;
-  std::uint32_t marked = 0;
-  std::uint32_t withDepth = 0;
-  std::uint32_t rowsFromBottom = 0;
-};
-
-// Rectangles of more pixels are summarised on the host from plain read-backs (the interface's
-// default): their copies would crowd the scratch memory a frame's pairs share.
-inline constexpr long long kMaxDeviceSummaryPixels = 4LL << 20;
 
 // The summaries of a recording: each summarizeLater records its copies in place and leaves its
 // parameters here; just before the recording is submitted, one dispatch (one per set of
@@ -78,23 +58,17 @@ class SummaryPipeline {
 // (CommandRecorder::holdScratch) while this lives.
 class VulkanKeptDepth final : public raster::KeptDepth {
  public:
-  VulkanKeptDepth(CommandRecorder& recorder, const void* owner, const raster::PixelRect& rect,
+  VulkanKeptDepth(CommandRecorder& recorder, const void* keeper, const raster::PixelRect& rect,
                   CommandRecorder::Scratch region)
-      : recorder_(recorder), owner_(owner), rect_(rect), region_(region) {
+      : KeptDepth(keeper, rect), recorder_(recorder), region_(region) {
     recorder_.holdScratch();
   }
   ~VulkanKeptDepth() override { recorder_.releaseScratch(); }
-  VulkanKeptDepth(const VulkanKeptDepth&) = delete;
-  VulkanKeptDepth& operator=(const VulkanKeptDepth&) = delete;
 
-  [[nodiscard]] const void* owner() const { return owner_; }
-  [[nodiscard]] const raster::PixelRect& rect() const { return rect_; }
   [[nodiscard]] const CommandRecorder::Scratch& region() const { return region_; }
 
  private:
   CommandRecorder& recorder_;
-  const void* owner_;
-  raster::PixelRect rect_;
   CommandRecorder::Scratch region_;
 };
 

@@ -34,10 +34,22 @@ struct TransferCounters {
 };
 
 // A depth over a rectangle kept by keepDepthLater for a later summarizeLater; what it holds
-// (values on the host, or a region of the device's own memory) is the device's affair.
+// (values on the host, or a region of the device's own memory) is the device's affair. It
+// remembers who kept it and over which rectangle, since it serves only that summary.
 class KeptDepth {
  public:
+  KeptDepth(const void* keeper, const PixelRect& rect) : keeper_(keeper), rect_(rect) {}
   virtual ~KeptDepth() = default;
+  KeptDepth(const KeptDepth&) = delete;
+  KeptDepth& operator=(const KeptDepth&) = delete;
+
+  [[nodiscard]] const PixelRect& rect() const { return rect_; }
+  // Throws std::invalid_argument unless `keeper` kept it over `rect` (summarizeLater's check).
+  void requireKeptBy(const void* keeper, const PixelRect& rect) const;
+
+ private:
+  const void* keeper_;
+  PixelRect rect_;
 };
 
 // A framebuffer of width() x height() pixels with a 24-bit depth and an 8-bit stencil value
