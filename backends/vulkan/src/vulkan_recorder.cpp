@@ -45,7 +45,7 @@ CommandRecorder::~CommandRecorder() {
   closeRendering();
   if (recording_)
     vkEndCommandBuffer(commands_);  // never submitted: the device is going away
-  for (Chunks* chunks : {&staging_, &readbacks_, &results_})
+  for (Chunks<HostBuffer>* chunks : {&staging_, &readbacks_, &results_})
     for (HostBuffer& buffer : chunks->buffers)
       context_.destroyHostBuffer(buffer);
   for (DeviceBuffer& buffer : scratch_.buffers)
@@ -98,8 +98,10 @@ void CommandRecorder::render(VkImage image, VkImageView target,
   draws(commands_);
 }
 
-CommandRecorder::Slot CommandRecorder::allocate(Chunks& chunks, std::size_t bytes,
-                                                VkBufferUsageFlags usage) {
+template <class Buffer, class Make>
+CommandRecorder::Region<Buffer> CommandRecorder::allocate(Chunks<Buffer>& chunks, std::size_t bytes,
+                                                          VkDeviceSize chunkBytes,
+                                                          const Make& make) {
   const VkDeviceSize size =
       (static_cast<VkDeviceSize>(bytes) + kAlignment - 1) / kAlignment * kAlignment;
   while (chunks.current < chunks.buffers.size() &&
@@ -108,20 +110,40 @@ CommandRecorder::Slot CommandRecorder::allocate(Chunks& chunks, std::size_t byte
     chunks.used = 0;
   }
   if (chunks.current == chunks.buffers.size())
-    chunks.buffers.push_back(context_.createHostBuffer(std::max(size, kChunkBytes), usage));
-  const Slot slot{&chunks.buffers[chunks.current], chunks.used};
+    chunks.buffers.push_back(make(std::max(size, chunkBytes)));
+  const Region<Buffer> region{&chunks.buffers[chunks.current], chunks.used};
   chunks.used += size;
   pendingBytes_ += bytes;
-  return slot;
+  return region;
+}
+
+CommandRecorder::Region<HostBuffer> CommandRecorder::allocateHost(Chunks<HostBuffer>& chunks,
+                                                                  std::size_t bytes,
+                                                                  VkBufferUsageFlags usage) {
+  return allocate(chunks, bytes, kChunkBytes,
+                  [&](VkDeviceSize size) { return context_.createHostBuffer(size, usage); });
+}
+
+CommandRecorder::Staged CommandRecorder::copyIn(Chunks<HostBuffer>& chunks,
+                                                VkBufferUsageFlags usage, const void* data,
+                                                std::size_t bytes) {
+  const Region<HostBuffer> region = allocateHost(chunks, bytes, usage);
+  std::memcpy(static_cast<std::uint8_t*>(region.buffer->mapped) + region.offset, data, bytes);
+  return {region.buffer->buffer, region.offset};
+}
+
+void CommandRecorder::deliverAfterRun(const Region<HostBuffer>& region, std::size_t bytes,
+                                      std::function<void(const std::uint8_t*)> deliver) {
+  copies_.push_back({static_cast<const std::uint8_t*>(region.buffer->mapped) + region.offset,
+                     std::move(deliver)});
+  counters_.readbackBytes += static_cast<long long>(bytes);
 }
 
 CommandRecorder::Staged CommandRecorder::stage(const void* data, std::size_t bytes) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   if (pendingBytes_ + bytes > kFlushBytes)
     finish();
-  const Slot slot = allocate(staging_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-  std::memcpy(static_cast<std::uint8_t*>(slot.buffer->mapped) + slot.offset, data, bytes);
-  return {slot.buffer->buffer, slot.offset};
+  return copyIn(staging_, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, data, bytes);
 }
 
 void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,
@@ -130,52 +152,38 @@ void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   if (pendingBytes_ + bytes > kFlushBytes)
     finish();
-  const Slot slot = allocate(readbacks_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  const Region<HostBuffer> slot = allocateHost(readbacks_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   VkBufferImageCopy copy = region;
   copy.bufferOffset = slot.offset;
   copy.imageSubresource.aspectMask = aspect;
   record(image, [&](VkCommandBuffer cmd) {
     vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_GENERAL, slot.buffer->buffer, 1, &copy);
   });
-  copies_.push_back(
-      {static_cast<const std::uint8_t*>(slot.buffer->mapped) + slot.offset, std::move(deliver)});
-  counters_.readbackBytes += static_cast<long long>(bytes);
+  deliverAfterRun(slot, bytes, std::move(deliver));
 }
 
 CommandRecorder::Scratch CommandRecorder::scratch(std::size_t bytes) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
-  const VkDeviceSize size =
-      (static_cast<VkDeviceSize>(bytes) + kAlignment - 1) / kAlignment * kAlignment;
-  while (scratch_.current < scratch_.buffers.size() &&
-         scratch_.used + size > scratch_.buffers[scratch_.current].size) {
-    ++scratch_.current;
-    scratch_.used = 0;
-  }
-  if (scratch_.current == scratch_.buffers.size())
-    scratch_.buffers.push_back(context_.createDeviceBuffer(
-        std::max(size, kScratchChunkBytes),
-        VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
-  const Scratch region{scratch_.buffers[scratch_.current].buffer, scratch_.used};
-  scratch_.used += size;
-  pendingBytes_ += bytes;
-  return region;
+  const Region<DeviceBuffer> region =
+      allocate(scratch_, bytes, kScratchChunkBytes, [&](VkDeviceSize size) {
+        return context_.createDeviceBuffer(
+            size, VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      });
+  return {region.buffer->buffer, region.offset};
 }
 
 CommandRecorder::Staged CommandRecorder::results(std::size_t bytes,
                                                  std::function<void(const std::uint8_t*)> deliver) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
-  const Slot slot = allocate(results_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  copies_.push_back(
-      {static_cast<const std::uint8_t*>(slot.buffer->mapped) + slot.offset, std::move(deliver)});
-  counters_.readbackBytes += static_cast<long long>(bytes);
-  return {slot.buffer->buffer, slot.offset};
+  const Region<HostBuffer> region =
+      allocateHost(results_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  deliverAfterRun(region, bytes, std::move(deliver));
+  return {region.buffer->buffer, region.offset};
 }
 
 CommandRecorder::Staged CommandRecorder::upload(const void* data, std::size_t bytes) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
-  const Slot slot = allocate(results_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  std::memcpy(static_cast<std::uint8_t*>(slot.buffer->mapped) + slot.offset, data, bytes);
-  return {slot.buffer->buffer, slot.offset};
+  return copyIn(results_, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, data, bytes);
 }
 
 void CommandRecorder::setBeforeSubmit(std::function<void(VkCommandBuffer)> hook) {
@@ -218,7 +226,7 @@ void CommandRecorder::finish() {
   std::vector<PendingCopy> copies = std::move(copies_);
   copies_.clear();
   pendingBytes_ = 0;
-  for (Chunks* chunks : {&staging_, &readbacks_, &results_}) {
+  for (Chunks<HostBuffer>* chunks : {&staging_, &readbacks_, &results_}) {
     chunks->current = 0;
     chunks->used = 0;
   }

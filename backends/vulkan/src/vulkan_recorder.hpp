@@ -103,23 +103,33 @@ class CommandRecorder {
   static constexpr std::size_t kFlushBytes = std::size_t{256} << 20;
 
  private:
-  // A region of `bytes` in the chunks of `chunks` (new chunks of at least kChunkBytes made as
-  // needed), aligned for vertex input and image copies.
-  struct Slot {
-    const HostBuffer* buffer = nullptr;
+  // Buffers of one kind handed out front to back and reused after each submission.
+  template <class Buffer>
+  struct Chunks {
+    std::vector<Buffer> buffers;
+    std::size_t current = 0;
+    VkDeviceSize used = 0;
+  };
+  // A region of `bytes` in `chunks`: its buffer and offset, aligned for vertex input, image
+  // copies and storage buffers; a new chunk of at least `chunkBytes` is made by `make(size)` when
+  // none has room.
+  template <class Buffer>
+  struct Region {
+    const Buffer* buffer = nullptr;
     VkDeviceSize offset = 0;
   };
-  struct Chunks {
-    std::vector<HostBuffer> buffers;
-    std::size_t current = 0;
-    VkDeviceSize used = 0;
-  };
-  Slot allocate(Chunks& chunks, std::size_t bytes, VkBufferUsageFlags usage);
-  struct ScratchChunks {
-    std::vector<DeviceBuffer> buffers;
-    std::size_t current = 0;
-    VkDeviceSize used = 0;
-  };
+  template <class Buffer, class Make>
+  Region<Buffer> allocate(Chunks<Buffer>& chunks, std::size_t bytes, VkDeviceSize chunkBytes,
+                          const Make& make);
+  // A host-visible region of `bytes` with that usage.
+  Region<HostBuffer> allocateHost(Chunks<HostBuffer>& chunks, std::size_t bytes,
+                                  VkBufferUsageFlags usage);
+  // `bytes` of host data copied into a host-visible region with that usage.
+  Staged copyIn(Chunks<HostBuffer>& chunks, VkBufferUsageFlags usage, const void* data,
+                std::size_t bytes);
+  // A host-visible region whose bytes `deliver` gets when the recording has run (read back).
+  void deliverAfterRun(const Region<HostBuffer>& region, std::size_t bytes,
+                       std::function<void(const std::uint8_t*)> deliver);
   void begin();
   void closeRendering();
 
@@ -136,10 +146,10 @@ class CommandRecorder {
   bool recording_ = false;
   bool renderingOpen_ = false;
   VkImageView renderingTarget_ = VK_NULL_HANDLE;  // of the open rendering
-  Chunks staging_;
-  Chunks readbacks_;
-  Chunks results_;
-  ScratchChunks scratch_;
+  Chunks<HostBuffer> staging_;
+  Chunks<HostBuffer> readbacks_;
+  Chunks<HostBuffer> results_;
+  Chunks<DeviceBuffer> scratch_;
   int scratchHolds_ = 0;
   std::function<void(VkCommandBuffer)> beforeSubmit_;
   std::vector<VkImage> touched_;  // images commands touched since the last barrier
