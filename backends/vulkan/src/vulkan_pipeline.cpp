@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "recode/backends/exact_proxy.hpp"
 #include "vulkan_context.hpp"
@@ -156,6 +157,54 @@ ExactPipelines createExactPipelines(VkDevice device, ShaderArithmetic arithmetic
   out.clear =
       createPipeline(device, out.layout, spirv.clearVertex, spirv.clearFragment, false, arithmetic);
   return out;
+}
+
+ComputePipeline createComputePipeline(VkDevice device, std::span<const std::uint32_t> spirv,
+                                      std::uint32_t storageBuffers, std::uint32_t pushBytes,
+                                      const char* what) {
+  ComputePipeline made;
+  std::vector<VkDescriptorSetLayoutBinding> bindings(storageBuffers);
+  for (std::uint32_t i = 0; i < storageBuffers; ++i) {
+    bindings[i].binding = i;
+    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[i].descriptorCount = 1;
+    bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+  }
+  VkDescriptorSetLayoutCreateInfo setInfo{};
+  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  setInfo.bindingCount = storageBuffers;
+  setInfo.pBindings = bindings.data();
+  vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &made.setLayout),
+          "vkCreateDescriptorSetLayout");
+  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
+  VkPipelineLayoutCreateInfo layoutInfo{};
+  layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &made.setLayout;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &range;
+  vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &made.layout),
+          "vkCreatePipelineLayout");
+  const VkShaderModule module = createModule(device, spirv);
+  VkComputePipelineCreateInfo pipelineInfo{};
+  pipelineInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+  pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  pipelineInfo.stage.module = module;
+  pipelineInfo.stage.pName = "main";
+  pipelineInfo.layout = made.layout;
+  const VkResult result =
+      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &made.pipeline);
+  vkDestroyShaderModule(device, module, nullptr);
+  vkCheck(result, what);
+  return made;
+}
+
+void destroyComputePipeline(VkDevice device, ComputePipeline& pipeline) {
+  vkDestroyPipeline(device, pipeline.pipeline, nullptr);
+  vkDestroyPipelineLayout(device, pipeline.layout, nullptr);
+  vkDestroyDescriptorSetLayout(device, pipeline.setLayout, nullptr);
+  pipeline = {};
 }
 
 }  // namespace recode::backends::detail

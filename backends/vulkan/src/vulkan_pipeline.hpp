@@ -7,6 +7,9 @@
 
 #include <vulkan/vulkan_core.h>
 
+#include <cstdint>
+#include <span>
+
 #include "recode/backends/vulkan_shader_arithmetic.hpp"
 
 namespace recode::backends::detail {
@@ -29,5 +32,21 @@ inline constexpr VkFormat kExactDepthStencilFormat = VK_FORMAT_D32_SFLOAT_S8_UIN
 // Made once per logical device, with that arithmetic's shaders; throws std::runtime_error on a
 // Vulkan failure.
 [[nodiscard]] ExactPipelines createExactPipelines(VkDevice device, ShaderArithmetic arithmetic);
+
+// A compute pipeline whose shader reads `storageBuffers` storage buffers at bindings 0, 1, ...
+// of set 0 and a push-constant block of `pushBytes`: the summary pipeline's shape, and the
+// compute tests'.
+struct ComputePipeline {
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+// Throws std::runtime_error on a Vulkan failure, naming `what`.
+[[nodiscard]] ComputePipeline createComputePipeline(VkDevice device,
+                                                    std::span<const std::uint32_t> spirv,
+                                                    std::uint32_t storageBuffers,
+                                                    std::uint32_t pushBytes, const char* what);
+void destroyComputePipeline(VkDevice device, ComputePipeline& pipeline);
 
 }  // namespace recode::backends::detail

@@ -15,48 +15,10 @@ constexpr std::uint32_t kSetsPerPool = 64;
 
 SummaryPipeline::SummaryPipeline(VkDevice device, CommandRecorder& recorder)
     : device_(device), recorder_(recorder) {
-  VkDescriptorSetLayoutBinding bindings[kBindings]{};
-  for (std::uint32_t i = 0; i < kBindings; ++i) {
-    bindings[i].binding = i;
-    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    bindings[i].descriptorCount = 1;
-    bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-  }
-  VkDescriptorSetLayoutCreateInfo setInfo{};
-  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  setInfo.bindingCount = kBindings;
-  setInfo.pBindings = bindings;
-  vkCheck(vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &setLayout_),
-          "vkCreateDescriptorSetLayout");
-  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(std::uint32_t)};
-  VkPipelineLayoutCreateInfo layoutInfo{};
-  layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout_;
-  layoutInfo.pushConstantRangeCount = 1;
-  layoutInfo.pPushConstantRanges = &range;
-  vkCheck(vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &layout_),
-          "vkCreatePipelineLayout");
   // Both arithmetics share the module: it uses 32-bit integers only.
-  const std::span<const std::uint32_t> spirv =
-      spirvModules(ShaderArithmetic::Native64).summaryCompute;
-  VkShaderModuleCreateInfo moduleInfo{};
-  moduleInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-  moduleInfo.codeSize = spirv.size_bytes();
-  moduleInfo.pCode = spirv.data();
-  VkShaderModule module = VK_NULL_HANDLE;
-  vkCheck(vkCreateShaderModule(device_, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
-  VkComputePipelineCreateInfo pipelineInfo{};
-  pipelineInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
-  pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-  pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  pipelineInfo.stage.module = module;
-  pipelineInfo.stage.pName = "main";
-  pipelineInfo.layout = layout_;
-  const VkResult made =
-      vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline_);
-  vkDestroyShaderModule(device_, module, nullptr);
-  vkCheck(made, "vkCreateComputePipelines (the summary shader)");
+  pipeline_ = createComputePipeline(
+      device_, spirvModules(ShaderArithmetic::Native64).summaryCompute, kBindings,
+      sizeof(std::uint32_t), "vkCreateComputePipelines (the summary shader)");
   recorder_.setBeforeSubmit([this](VkCommandBuffer cmd) { dispatchPending(cmd); });
 }
 
@@ -79,7 +41,7 @@ VkDescriptorSet SummaryPipeline::descriptorSet(const Buffers& key) {
   allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   allocate.descriptorPool = pools_.back();
   allocate.descriptorSetCount = 1;
-  allocate.pSetLayouts = &setLayout_;
+  allocate.pSetLayouts = &pipeline_.setLayout;
   VkDescriptorSet set = VK_NULL_HANDLE;
   vkCheck(vkAllocateDescriptorSets(device_, &allocate, &set), "vkAllocateDescriptorSets");
   ++setsInPool_;
@@ -115,15 +77,17 @@ void SummaryPipeline::dispatchPending(VkCommandBuffer cmd) {
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
                        nullptr);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.pipeline);
   for (const auto& [buffers, summaries] : pending_) {
     const CommandRecorder::Staged parameters =
         recorder_.upload(summaries.data(), summaries.size() * sizeof(SummaryParameters));
     const VkDescriptorSet set =
         descriptorSet({buffers[0], buffers[1], buffers[2], parameters.buffer});
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.layout, 0, 1, &set, 0,
+                            nullptr);
     const auto firstWord = static_cast<std::uint32_t>(parameters.offset / 4);
-    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(firstWord), &firstWord);
+    vkCmdPushConstants(cmd, pipeline_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(firstWord),
+                       &firstWord);
     vkCmdDispatch(cmd, static_cast<std::uint32_t>(summaries.size()), 1, 1);
   }
   pending_.clear();

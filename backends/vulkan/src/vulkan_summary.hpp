@@ -14,6 +14,7 @@
 #include "recode/backends/summary_layout.hpp"
 #include "recode/backends/vulkan_shader_arithmetic.hpp"
 #include "recode/raster/device.hpp"
+#include "vulkan_pipeline.hpp"
 #include "vulkan_recorder.hpp"
 
 namespace recode::backends::detail {
@@ -40,9 +41,7 @@ class SummaryPipeline {
 
   VkDevice device_;
   CommandRecorder& recorder_;
-  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  ComputePipeline pipeline_;
   std::vector<VkDescriptorPool> pools_;
   std::uint32_t setsInPool_ = 0;
   std::map<Buffers, VkDescriptorSet> sets_;

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "vulkan_context.hpp"
+#include "vulkan_pipeline.hpp"
 
 namespace recode::testing {
 
@@ -14,9 +15,7 @@ using backends::detail::VulkanContext;
 struct ComputeHarness::Impl {
   VulkanContext& context = VulkanContext::instance(ShaderArithmetic::Emulated32);
   VkDevice device = context.device();
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
+  backends::detail::ComputePipeline pipeline;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkCommandPool commandPool = VK_NULL_HANDLE;
   VkFence fence = VK_NULL_HANDLE;
@@ -27,45 +26,8 @@ ComputeHarness::ComputeHarness(std::span<const std::uint32_t> spirv, std::uint32
     : impl_(new Impl) {
   Impl& h = *impl_;
   h.pushBytes = pushBytes;
-  VkDescriptorSetLayoutBinding bindings[2]{};
-  for (std::uint32_t i = 0; i < 2; ++i) {
-    bindings[i].binding = i;
-    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    bindings[i].descriptorCount = 1;
-    bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-  }
-  VkDescriptorSetLayoutCreateInfo setInfo{};
-  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  setInfo.bindingCount = 2;
-  setInfo.pBindings = bindings;
-  vkCheck(vkCreateDescriptorSetLayout(h.device, &setInfo, nullptr, &h.setLayout),
-          "vkCreateDescriptorSetLayout");
-  VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
-  VkPipelineLayoutCreateInfo layoutInfo{};
-  layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &h.setLayout;
-  layoutInfo.pushConstantRangeCount = 1;
-  layoutInfo.pPushConstantRanges = &range;
-  vkCheck(vkCreatePipelineLayout(h.device, &layoutInfo, nullptr, &h.layout),
-          "vkCreatePipelineLayout");
-  VkShaderModuleCreateInfo moduleInfo{};
-  moduleInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-  moduleInfo.codeSize = spirv.size_bytes();
-  moduleInfo.pCode = spirv.data();
-  VkShaderModule module = VK_NULL_HANDLE;
-  vkCheck(vkCreateShaderModule(h.device, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
-  VkComputePipelineCreateInfo pipelineInfo{};
-  pipelineInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
-  pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-  pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  pipelineInfo.stage.module = module;
-  pipelineInfo.stage.pName = "main";
-  pipelineInfo.layout = h.layout;
-  const VkResult made =
-      vkCreateComputePipelines(h.device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &h.pipeline);
-  vkDestroyShaderModule(h.device, module, nullptr);
-  vkCheck(made, "vkCreateComputePipelines");
+  h.pipeline = backends::detail::createComputePipeline(h.device, spirv, 2, pushBytes,
+                                                       "vkCreateComputePipelines");
   VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
   VkDescriptorPoolCreateInfo poolInfo{};
   poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
@@ -83,9 +45,7 @@ ComputeHarness::~ComputeHarness() {
   vkDestroyFence(h.device, h.fence, nullptr);
   vkDestroyCommandPool(h.device, h.commandPool, nullptr);
   vkDestroyDescriptorPool(h.device, h.pool, nullptr);
-  vkDestroyPipeline(h.device, h.pipeline, nullptr);
-  vkDestroyPipelineLayout(h.device, h.layout, nullptr);
-  vkDestroyDescriptorSetLayout(h.device, h.setLayout, nullptr);
+  backends::detail::destroyComputePipeline(h.device, h.pipeline);
   delete impl_;
 }
 
@@ -101,7 +61,7 @@ std::vector<std::uint8_t> ComputeHarness::run(std::span<const std::uint8_t> inpu
   allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   allocate.descriptorPool = h.pool;
   allocate.descriptorSetCount = 1;
-  allocate.pSetLayouts = &h.setLayout;
+  allocate.pSetLayouts = &h.pipeline.setLayout;
   VkDescriptorSet set = VK_NULL_HANDLE;
   vkCheck(vkAllocateDescriptorSets(h.device, &allocate, &set), "vkAllocateDescriptorSets");
   const VkDescriptorBufferInfo buffers[2] = {{in.buffer, 0, VK_WHOLE_SIZE},
@@ -128,9 +88,11 @@ std::vector<std::uint8_t> ComputeHarness::run(std::span<const std::uint8_t> inpu
   begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vkCheck(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, h.pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, h.layout, 0, 1, &set, 0, nullptr);
-  vkCmdPushConstants(cmd, h.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, h.pushBytes, push.data());
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, h.pipeline.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, h.pipeline.layout, 0, 1, &set, 0,
+                          nullptr);
+  vkCmdPushConstants(cmd, h.pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, h.pushBytes,
+                     push.data());
   vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
   // The host reads the results after the fence: make the shader's writes visible to it.
   VkMemoryBarrier barrier{};
