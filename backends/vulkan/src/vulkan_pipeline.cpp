@@ -207,4 +207,30 @@ void destroyComputePipeline(VkDevice device, ComputePipeline& pipeline) {
   pipeline = {};
 }
 
+VkDescriptorSet allocateStorageSet(VkDevice device, VkDescriptorPool pool,
+                                   const ComputePipeline& pipeline,
+                                   std::span<const VkBuffer> buffers) {
+  VkDescriptorSetAllocateInfo allocate{};
+  allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+  allocate.descriptorPool = pool;
+  allocate.descriptorSetCount = 1;
+  allocate.pSetLayouts = &pipeline.setLayout;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  vkCheck(vkAllocateDescriptorSets(device, &allocate, &set), "vkAllocateDescriptorSets");
+  std::vector<VkDescriptorBufferInfo> infos(buffers.size());
+  std::vector<VkWriteDescriptorSet> writes(buffers.size());
+  for (std::size_t i = 0; i < buffers.size(); ++i) {
+    infos[i] = {buffers[i], 0, VK_WHOLE_SIZE};
+    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    writes[i].dstSet = set;
+    writes[i].dstBinding = static_cast<std::uint32_t>(i);
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[i].pBufferInfo = &infos[i];
+  }
+  vkUpdateDescriptorSets(device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0,
+                         nullptr);
+  return set;
+}
+
 }  // namespace recode::backends::detail

@@ -49,4 +49,9 @@ struct ComputePipeline {
                                                     std::uint32_t pushBytes, const char* what);
 void destroyComputePipeline(VkDevice device, ComputePipeline& pipeline);
 
+// A descriptor set of `pipeline`'s layout from `pool`, with buffers[i], whole, at binding i.
+[[nodiscard]] VkDescriptorSet allocateStorageSet(VkDevice device, VkDescriptorPool pool,
+                                                 const ComputePipeline& pipeline,
+                                                 std::span<const VkBuffer> buffers);
+
 }  // namespace recode::backends::detail

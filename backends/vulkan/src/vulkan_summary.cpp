@@ -37,26 +37,8 @@ VkDescriptorSet SummaryPipeline::descriptorSet(const Buffers& key) {
     pools_.push_back(pool);
     setsInPool_ = 0;
   }
-  VkDescriptorSetAllocateInfo allocate{};
-  allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-  allocate.descriptorPool = pools_.back();
-  allocate.descriptorSetCount = 1;
-  allocate.pSetLayouts = &pipeline_.setLayout;
-  VkDescriptorSet set = VK_NULL_HANDLE;
-  vkCheck(vkAllocateDescriptorSets(device_, &allocate, &set), "vkAllocateDescriptorSets");
+  const VkDescriptorSet set = allocateStorageSet(device_, pools_.back(), pipeline_, key);
   ++setsInPool_;
-  VkDescriptorBufferInfo buffers[kBindings]{};
-  VkWriteDescriptorSet writes[kBindings]{};
-  for (std::uint32_t i = 0; i < kBindings; ++i) {
-    buffers[i] = {key[i], 0, VK_WHOLE_SIZE};
-    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    writes[i].dstSet = set;
-    writes[i].dstBinding = i;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[i].pBufferInfo = &buffers[i];
-  }
-  vkUpdateDescriptorSets(device_, kBindings, writes, 0, nullptr);
   sets_.emplace(key, set);
   return set;
 }

@@ -1,5 +1,6 @@
 #include "compute_harness.hpp"
 
+#include <array>
 #include <cstring>
 
 #include "vulkan_context.hpp"
@@ -57,25 +58,9 @@ std::vector<std::uint8_t> ComputeHarness::run(std::span<const std::uint8_t> inpu
   HostBuffer out = h.context.createHostBuffer(outputBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   std::memcpy(in.mapped, input.data(), input.size());
 
-  VkDescriptorSetAllocateInfo allocate{};
-  allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
-  allocate.descriptorPool = h.pool;
-  allocate.descriptorSetCount = 1;
-  allocate.pSetLayouts = &h.pipeline.setLayout;
-  VkDescriptorSet set = VK_NULL_HANDLE;
-  vkCheck(vkAllocateDescriptorSets(h.device, &allocate, &set), "vkAllocateDescriptorSets");
-  const VkDescriptorBufferInfo buffers[2] = {{in.buffer, 0, VK_WHOLE_SIZE},
-                                             {out.buffer, 0, VK_WHOLE_SIZE}};
-  VkWriteDescriptorSet writes[2]{};
-  for (std::uint32_t i = 0; i < 2; ++i) {
-    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    writes[i].dstSet = set;
-    writes[i].dstBinding = i;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[i].pBufferInfo = &buffers[i];
-  }
-  vkUpdateDescriptorSets(h.device, 2, writes, 0, nullptr);
+  const std::array<VkBuffer, 2> buffers{in.buffer, out.buffer};
+  const VkDescriptorSet set =
+      backends::detail::allocateStorageSet(h.device, h.pool, h.pipeline, buffers);
 
   VkCommandBufferAllocateInfo commandInfo{};
   commandInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
