@@ -46,7 +46,9 @@ class BlockWindowSource final : public raster::TriangleSource {
   [[nodiscard]] bool mostlyInside(const raster::PixelRect& rect) const;
 
   const PairBlock& block_;
-  const OrthoView& view_;
+  // A copy: a source outlives the scope that made its view (collidePairs draws a pair's contact
+  // passes in a later round).
+  const OrthoView view_;
   const std::uint64_t key_ = raster::newTriangleSourceKey();
   bool culls_ = false;
   std::array<raster::WindowVertex, 2> corners_{};

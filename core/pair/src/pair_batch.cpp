@@ -35,10 +35,8 @@ struct RecordedPair {
   raster::DepthStencilDevice* device = nullptr;
   ContactSchedule schedule = ContactSchedule::AfterVerdict;
   PairResult result;
-  // The pair's view, on the heap: the block sources refer to it, and the pair is moved after
-  // they are made.
-  std::unique_ptr<const OrthoView> view;
-  bool drawn = false;  // whether the passes are recorded (the box test and MOR let them)
+  std::optional<OrthoView> view;  // set by preparePair
+  bool drawn = false;             // whether the passes are recorded (the box test and MOR let them)
   // The blocks as drawn, kept only while passes are still to be recorded.
   std::unique_ptr<detail::BlockWindowSource> a, b;
   std::vector<Segment> segments;  // the commands of the round being recorded, in order
@@ -113,7 +111,7 @@ RecordedPair preparePair(raster::DepthStencilDevice& device, const PairJob& job,
   p.device = &device;
   p.schedule = schedule;
   p.result = detail::startPair(*job.a, *job.b, frame);
-  p.view = std::make_unique<const OrthoView>(detail::pairView(frame, p.result));
+  p.view = detail::pairView(frame, p.result);
   p.a = std::make_unique<detail::BlockWindowSource>(*job.a, *p.view);
   p.b = std::make_unique<detail::BlockWindowSource>(*job.b, *p.view);
   p.drawn = detail::choosePassRegion(detail::DrawnPair{*p.a, *p.b}, job.request, p.result);
