@@ -38,12 +38,12 @@ struct TransferCounters {
 // remembers who kept it and over which rectangle, since it serves only that summary.
 class KeptDepth {
  public:
+  // A depth `keeper` (the device, or what it identifies itself by) kept over `rect`.
   KeptDepth(const void* keeper, const PixelRect& rect) : keeper_(keeper), rect_(rect) {}
   virtual ~KeptDepth() = default;
   KeptDepth(const KeptDepth&) = delete;
   KeptDepth& operator=(const KeptDepth&) = delete;
 
-  [[nodiscard]] const PixelRect& rect() const { return rect_; }
   // Throws std::invalid_argument unless `keeper` kept it over `rect` (summarizeLater's check).
   void requireKeptBy(const void* keeper, const PixelRect& rect) const;
 
