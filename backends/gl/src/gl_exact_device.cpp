@@ -23,6 +23,7 @@
 #include "gl_functions.hpp"
 #include "recode/backends/exact_depth.hpp"
 #include "recode/backends/exact_proxy.hpp"
+#include "recode/backends/proxy_cache.hpp"
 #include "recode/backends/summary_layout.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
@@ -165,6 +166,30 @@ struct GlExactDevice::Impl {
   GLuint framebuffer = 0;
   GLuint depthStencil = 0;
   raster::TransferCounters transfers;  // what this device's calls waited for and read
+  ProxyCache proxyCache;               // the proxies of the blocks drawn last
+
+  // Draws `proxies` in the state set.
+  void drawProxies(const std::vector<ProxyTriangle>& proxies) {
+    if (proxies.empty())
+      return;
+    use();
+    gl().BufferData(GL_ARRAY_BUFFER,
+                    static_cast<GLsizeiptr>(proxies.size() * sizeof(ProxyTriangle)), proxies.data(),
+                    GL_STREAM_DRAW);
+    // Instances are drawn in order and GL keeps primitive order per pixel, so triangles reach
+    // each pixel in index order as the contract requires. The two halves of one proxy
+    // rectangle share an edge, which GL's own fill rule hands to exactly one of them.
+    constexpr std::size_t kMaxInstances = 1u << 30;
+    for (std::size_t first = 0; first < proxies.size(); first += kMaxInstances) {
+      const std::size_t count = std::min(kMaxInstances, proxies.size() - first);
+      if (first > 0) {
+        gl().BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(count * sizeof(ProxyTriangle)),
+                        proxies.data() + first, GL_STREAM_DRAW);
+      }
+      gl().DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count));
+    }
+    shared->check("drawTriangles");
+  }
 
   const detail::GlCoreFunctions& gl() const { return shared->gl; }
 
@@ -425,33 +450,14 @@ void GlExactDevice::clearStencil(std::uint8_t value) {
 
 void GlExactDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
                                   std::span<const std::uint32_t> indices) {
-  Impl& d = *impl_;
-  const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, state_);
-  if (proxies.empty())
-    return;
-  d.use();
-  d.gl().BufferData(GL_ARRAY_BUFFER,
-                    static_cast<GLsizeiptr>(proxies.size() * sizeof(ProxyTriangle)), proxies.data(),
-                    GL_STREAM_DRAW);
-  // Instances are drawn in order and GL keeps primitive order per pixel, so triangles reach
-  // each pixel in index order as the contract requires. The two halves of one proxy rectangle
-  // share an edge, which GL's own fill rule hands to exactly one of them.
-  constexpr std::size_t kMaxInstances = 1u << 30;
-  for (std::size_t first = 0; first < proxies.size(); first += kMaxInstances) {
-    const std::size_t count = std::min(kMaxInstances, proxies.size() - first);
-    if (first > 0) {
-      d.gl().BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(count * sizeof(ProxyTriangle)),
-                        proxies.data() + first, GL_STREAM_DRAW);
-    }
-    d.gl().DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count));
-  }
-  d.shared->check("drawTriangles");
+  impl_->drawProxies(buildProxyTriangles(vertices, indices, state_));
 }
 
 void GlExactDevice::drawMesh(const raster::TriangleSource& source) {
-  // As CpuDevice: the triangles left out would give no proxy.
-  const raster::TriangleDraw draw = raster::trianglesToDraw(source, state_.scissor);
-  drawTriangles(draw.vertices, draw.indices);
+  // As CpuDevice: only the triangles that meet the scissor (the others would give no proxy),
+  // set up once for every pass that draws the block under that scissor (proxy_cache.hpp).
+  Impl& d = *impl_;
+  d.drawProxies(*d.proxyCache.proxies(source, state_).list);
 }
 
 raster::PendingRead<std::uint8_t> GlExactDevice::readStencilLater(const PixelRect& rect) {

@@ -13,6 +13,7 @@
 
 #include "recode/backends/vulkan_device.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -23,6 +24,7 @@
 
 #include "recode/backends/exact_depth.hpp"
 #include "recode/backends/exact_proxy.hpp"
+#include "recode/backends/proxy_cache.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "vulkan_context.hpp"
@@ -89,6 +91,47 @@ struct VulkanDevice::Impl {
     } count{*this, before};
     return call();
   }
+  // The proxies of the blocks drawn last, and where the last lists went in staging memory (by
+  // ProxyCache id, with the recording they are valid in): a pass that draws a block again in
+  // the same recording binds the bytes already there.
+  ProxyCache proxyCache;
+  struct Upload {
+    std::uint64_t id = 0;
+    std::uint64_t recording = 0;
+    detail::CommandRecorder::Staged staged;
+  };
+  std::array<Upload, 2 * ProxyCache::kKeptBlocks> uploads{};
+  std::size_t nextUpload = 0;
+
+  // Draws `proxies` in the state set (an `id` of 0: a list not kept, staged anew).
+  void drawProxies(const std::vector<ProxyTriangle>& proxies, std::uint64_t id) {
+    if (proxies.empty())
+      return;
+    // No other thread's finish() may come between the staging and the draw that reads it.
+    const auto hold = recorder->hold();
+    std::optional<detail::CommandRecorder::Staged> staged;
+    for (const Upload& upload : uploads)
+      if (id != 0 && upload.id == id && upload.recording == recorder->recordingsRun())
+        staged = upload.staged;
+    if (!staged) {
+      staged = counted(
+          [&] { return recorder->stage(proxies.data(), proxies.size() * sizeof(ProxyTriangle)); });
+      if (id != 0) {
+        uploads[nextUpload] = {id, recorder->recordingsRun(), *staged};
+        nextUpload = (nextUpload + 1) % uploads.size();
+      }
+    }
+    // Instances are drawn in order and Vulkan keeps primitive order for depth and stencil
+    // (rasterization order), so triangles reach each pixel in index order as the contract
+    // requires. The two halves of a proxy rectangle share an edge, which Vulkan's
+    // rasterization rules hand to exactly one of them.
+    render(pipelines->exact, 0.0f, [&](VkCommandBuffer cmd) {
+      setDrawState(cmd);
+      vkCmdBindVertexBuffers(cmd, 0, 1, &staged->buffer, &staged->offset);
+      vkCmdDraw(cmd, 4, static_cast<std::uint32_t>(proxies.size()), 0, 0);
+    });
+  }
+
   detail::ImageSlot slot;
   VkImage image = VK_NULL_HANDLE;  // slot's, named for the many uses
   VkImageView view = VK_NULL_HANDLE;
@@ -388,27 +431,15 @@ void VulkanDevice::clearStencil(std::uint8_t value) {
 
 void VulkanDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
                                  std::span<const std::uint32_t> indices) {
-  Impl& d = *impl_;
-  const std::vector<ProxyTriangle> proxies = buildProxyTriangles(vertices, indices, state_);
-  if (proxies.empty())
-    return;
-  const detail::CommandRecorder::Staged staged = d.counted(
-      [&] { return d.recorder->stage(proxies.data(), proxies.size() * sizeof(ProxyTriangle)); });
-  // Instances are drawn in order and Vulkan keeps primitive order for depth and stencil
-  // (rasterization order), so triangles reach each pixel in index order as the contract
-  // requires. The two halves of a proxy rectangle share an edge, which Vulkan's rasterization
-  // rules hand to exactly one of them.
-  d.render(d.pipelines->exact, 0.0f, [&](VkCommandBuffer cmd) {
-    d.setDrawState(cmd);
-    vkCmdBindVertexBuffers(cmd, 0, 1, &staged.buffer, &staged.offset);
-    vkCmdDraw(cmd, 4, static_cast<std::uint32_t>(proxies.size()), 0, 0);
-  });
+  impl_->drawProxies(buildProxyTriangles(vertices, indices, state_), 0);
 }
 
 void VulkanDevice::drawMesh(const raster::TriangleSource& source) {
-  // As CpuDevice: the triangles left out would give no proxy.
-  const raster::TriangleDraw draw = raster::trianglesToDraw(source, state_.scissor);
-  drawTriangles(draw.vertices, draw.indices);
+  // As CpuDevice: only the triangles that meet the scissor (the others would give no proxy),
+  // set up once for every pass that draws the block under that scissor (proxy_cache.hpp).
+  Impl& d = *impl_;
+  const ProxyCache::Proxies proxies = d.proxyCache.proxies(source, state_);
+  d.drawProxies(*proxies.list, proxies.id);
 }
 
 raster::PendingRead<std::uint8_t> VulkanDevice::readStencilLater(const PixelRect& rect) {

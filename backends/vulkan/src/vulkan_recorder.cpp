@@ -235,6 +235,7 @@ void CommandRecorder::finish() {
     scratch_.used = 0;
   }
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
+  ++recordingsRun_;  // the staging above is free again, whatever the submission does
   context_.submitAndWait(commands_, fence_);
   ++counters_.submissions;
   // Every read-back gets its values even when one of them throws; the first error is passed on.
@@ -254,6 +255,11 @@ void CommandRecorder::finish() {
 raster::TransferCounters CommandRecorder::counters() const {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   return counters_;
+}
+
+std::uint64_t CommandRecorder::recordingsRun() const {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  return recordingsRun_;
 }
 
 CommandRecorder& sharedRecorder(ShaderArithmetic arithmetic) {

@@ -99,6 +99,10 @@ class CommandRecorder {
   // Submissions and read-back bytes of every device so far.
   [[nodiscard]] raster::TransferCounters counters() const;
 
+  // Recordings run so far: staged memory handed out while this was n stays valid (may be drawn
+  // again) for as long as it is still n, and no longer.
+  [[nodiscard]] std::uint64_t recordingsRun() const;
+
   // Staged and read-back bytes after which a recording is run before it grows further.
   static constexpr std::size_t kFlushBytes = std::size_t{256} << 20;
 
@@ -156,6 +160,7 @@ class CommandRecorder {
   std::size_t pendingBytes_ = 0;
   std::vector<PendingCopy> copies_;
   raster::TransferCounters counters_;
+  std::uint64_t recordingsRun_ = 0;
 };
 
 // The process's recorder for devices of that arithmetic (on that arithmetic's context), made

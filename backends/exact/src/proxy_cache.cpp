@@ -1,0 +1,55 @@
+#include "recode/backends/proxy_cache.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+namespace recode::backends {
+
+ProxyCache::Proxies ProxyCache::proxies(const raster::TriangleSource& source,
+                                        const raster::RenderState& state) {
+  if (source.contentKey() == 0) {
+    const raster::TriangleDraw draw = raster::trianglesToDraw(source, state.scissor);
+    uncached_ = buildProxyTriangles(draw.vertices, draw.indices, state);
+    return {&uncached_, ++lastId_};
+  }
+  Entry& entry = entryFor(source, state);
+  const auto cull = static_cast<std::size_t>(state.cull);
+  if (!entry.made[cull]) {
+    const std::vector<ProxyTriangle>& all =
+        entry.byCull[static_cast<std::size_t>(raster::CullMode::None)];
+    std::vector<ProxyTriangle>& kept = entry.byCull[cull];
+    kept.clear();
+    std::copy_if(all.begin(), all.end(), std::back_inserter(kept),
+                 [&](const ProxyTriangle& p) { return !state.culls(p.frontFacing != 0); });
+    entry.made[cull] = true;
+    entry.ids[cull] = ++lastId_;
+  }
+  return {&entry.byCull[cull], entry.ids[cull]};
+}
+
+ProxyCache::Entry& ProxyCache::entryFor(const raster::TriangleSource& source,
+                                        const raster::RenderState& state) {
+  const std::uint64_t key = source.contentKey();
+  for (Entry& entry : entries_)
+    if (entry.key == key && entry.scissor == state.scissor)
+      return entry;
+  // Every proxy of the draw whatever its facing: the culling modes' lists are taken from it.
+  raster::RenderState unculled = state;
+  unculled.cull = raster::CullMode::None;
+  const raster::TriangleDraw draw = raster::trianglesToDraw(source, state.scissor);
+  std::vector<ProxyTriangle> all = buildProxyTriangles(draw.vertices, draw.indices, unculled);
+  if (entries_.size() < kKeptBlocks)
+    entries_.emplace_back();
+  Entry& entry = entries_[next_];
+  next_ = (next_ + 1) % kKeptBlocks;
+  entry = Entry{};
+  entry.key = key;
+  entry.scissor = state.scissor;
+  const auto none = static_cast<std::size_t>(raster::CullMode::None);
+  entry.byCull[none] = std::move(all);
+  entry.made[none] = true;
+  entry.ids[none] = ++lastId_;
+  return entry;
+}
+
+}  // namespace recode::backends
