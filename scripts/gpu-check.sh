@@ -78,7 +78,8 @@ if os.path.exists(path):
     columns = ["recode-cpu", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
                "recode-vulkan-speculative", "recode-vulkan-summaries", "recode-vulkan-waves",
                "recode-vulkan-32", "fcl-gjk"]
-    print("\nmean ms a frame (submissions a frame, read-back bytes a pair test):")
+    print("\nmean ms a frame (submissions a frame, read-back bytes a pair test, ms of the frame"
+          " spent waiting for the device):")
     print("| scene | triangles | " + " | ".join(columns) + " |")
     keys = sorted({(r["experiment"], r["scene"], int(r["triangles"])) for r in rows})
     for e, s, t in keys:
@@ -92,7 +93,7 @@ if os.path.exists(path):
                 tests = int(r["pair_tests"]) or 1
                 per_test = float(r["readback_bytes_per_frame"]) * int(r["frames"]) / tests
                 cells.append(f"{float(r['mean_ms']):.3f} ({float(r['submissions_per_frame']):.1f},"
-                             f" {per_test:.0f} B)")
+                             f" {per_test:.0f} B, {float(r['device_wait_ms_per_frame']):.3f})")
             else:
                 cells.append(f"{float(r['mean_ms']):.3f}")
         print(f"| {s} | {t:,} | " + " | ".join(cells) + " |")

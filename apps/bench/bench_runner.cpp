@@ -62,6 +62,7 @@ void addCounters(RecodeCounters& sum, const core::FrameReport& r) {
   sum.depthPixelsRead += r.depthPixelsRead;
   sum.submissions += r.submissions;
   sum.readbackBytes += r.readbackBytes;
+  sum.deviceWaitUs += r.deviceWaitUs;
 }
 
 // What every detector of one case shares: the scene and its object trees, which each run poses

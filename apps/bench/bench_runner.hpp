@@ -21,6 +21,7 @@ struct RecodeCounters {
   long long depthPixelsRead = 0;
   long long submissions = 0;    // FrameReport::submissions: 0 on the CPU device
   long long readbackBytes = 0;  // FrameReport::readbackBytes
+  double deviceWaitUs = 0.0;    // FrameReport::deviceWaitUs
 };
 
 struct BenchRow {

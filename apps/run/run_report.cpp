@@ -176,7 +176,7 @@ void printStatistics(std::ostream& out, const core::RunStatistics& s, core::Pair
 std::string csvHeader(core::PairMode mode) {
   return std::string("frame,frame_us,collision_us,object_pairs,box_tests,pair_tests,") +
          (mode == core::PairMode::SkipApart ? "pair_tests_skipped," : "") +
-         "stencil_pixels_read,depth_pixels_read,contacts\n";
+         "stencil_pixels_read,depth_pixels_read,contacts,device_wait_us\n";
 }
 
 std::string csvRow(const core::FrameReport& f, core::PairMode mode) {
@@ -185,7 +185,8 @@ std::string csvRow(const core::FrameReport& f, core::PairMode mode) {
       << f.boxTests << ',' << f.pairTests << ',';
   if (mode == core::PairMode::SkipApart)
     row << f.pairTestsSkipped << ',';
-  row << f.stencilPixelsRead << ',' << f.depthPixelsRead << ',' << f.contacts.size() << '\n';
+  row << f.stencilPixelsRead << ',' << f.depthPixelsRead << ',' << f.contacts.size() << ','
+      << f.deviceWaitUs << '\n';
   return row.str();
 }
 

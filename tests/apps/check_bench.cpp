@@ -46,7 +46,7 @@ const char* const kHeader =
     "experiment,scene,triangles_per_block,triangles,algorithm,frames,judged_frames,total_ms,"
     "mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
     "stencil_pixels_read,depth_pixels_read,seen_finer,submissions_per_frame,"
-    "readback_bytes_per_frame";
+    "readback_bytes_per_frame,device_wait_ms_per_frame";
 
 struct Row {
   std::map<std::string, std::string> field;
@@ -136,10 +136,20 @@ void checkRow(const Row& r) {
       std::abs(total - mean * static_cast<double>(frames)) > 1e-3 * static_cast<double>(frames))
     fail(id + ": total " + r.text("total_ms") + " ms is not mean x frames");
   const bool recode = r.text("algorithm").rfind("recode-", 0) == 0;
-  for (const char* key : {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
-                          "submissions_per_frame", "readback_bytes_per_frame"})
+  for (const char* key :
+       {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
+        "submissions_per_frame", "readback_bytes_per_frame", "device_wait_ms_per_frame"})
     if (r.text(key).empty() == recode)
       fail(id + ": " + key + (recode ? " missing" : " given for a peer"));
+  // The device's share of the frame: none without a submission, and never more than the frame.
+  if (recode) {
+    const double wait = r.number("device_wait_ms_per_frame");
+    const bool submits = r.number("submissions_per_frame") > 0.0;
+    if (!(wait >= 0.0 && wait <= mean + 1e-3) || (wait > 0.0) != submits)
+      fail(id + ": device wait " + r.text("device_wait_ms_per_frame") + " ms a frame with " +
+           r.text("submissions_per_frame") + " submissions and " + r.text("mean_ms") +
+           " ms a frame");
+  }
   if (recode && r.count("pair_tests") < r.count("contacts"))
     fail(id + ": more contacts than pair tests");
   if (r.text("algorithm") == "cgal" && (missed != 0 || extra != 0 || found != truth))

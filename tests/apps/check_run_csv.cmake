@@ -12,7 +12,7 @@ if(NOT n EQUAL 13)
   message(FATAL_ERROR "expected a header and 12 rows, got ${n} lines")
 endif()
 list(GET lines 0 header)
-if(NOT header STREQUAL "frame,frame_us,collision_us,object_pairs,box_tests,pair_tests,stencil_pixels_read,depth_pixels_read,contacts")
+if(NOT header STREQUAL "frame,frame_us,collision_us,object_pairs,box_tests,pair_tests,stencil_pixels_read,depth_pixels_read,contacts,device_wait_us")
   message(FATAL_ERROR "unexpected header: ${header}")
 endif()
 # Frames 0-9: no contact and no pair test; frames 10 and 11: five of each.

@@ -5,7 +5,8 @@ cmake_minimum_required(VERSION 3.25)
 # - no-gl: without the recode-gl rows;
 # - view-axis: one recode-view-axis row's `pair_tests` raised by one (not recode-cpu's);
 # - skip-apart: one recode-skip-apart row's `contacts` raised by one (not recode-cpu's);
-# - batch: one recode-vulkan row's `submissions_per_frame` set to 3 (more than a batch takes).
+# - batch: one recode-vulkan row's `submissions_per_frame` set to 3 (more than a batch takes);
+# - device-wait: one recode-cpu row's `device_wait_ms_per_frame` set to 0.5 (it submits nothing).
 # Expects IN, OUT and KIND.
 file(REMOVE_RECURSE ${OUT})
 file(COPY ${IN}/ DESTINATION ${OUT})
@@ -23,9 +24,13 @@ elseif(KIND STREQUAL "batch")
   set(target "^comb,comb-rotate-aligned,.*,recode-vulkan,")
   set(column 20)  # submissions_per_frame
   set(replacement 3.00)
+elseif(KIND STREQUAL "device-wait")
+  set(target "^comb,comb-rotate-aligned,.*,recode-cpu,")
+  set(column 22)  # device_wait_ms_per_frame
+  set(replacement 0.5000)
 elseif(NOT KIND STREQUAL "no-gl")
   message(FATAL_ERROR
-          "KIND must be miscounted, no-gl, view-axis, skip-apart or batch, not '${KIND}'")
+          "KIND must be miscounted, no-gl, view-axis, skip-apart, batch or device-wait, not '${KIND}'")
 endif()
 set(out "")
 set(done OFF)

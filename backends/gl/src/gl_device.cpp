@@ -8,6 +8,7 @@
 #include "recode/backends/gl_device.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cmath>
 #include <stdexcept>
@@ -345,9 +346,12 @@ std::vector<std::uint8_t> GlDevice::readStencil(const PixelRect& rect) const {
   const GlFunctions& gl = impl_->gl;
   // glReadPixels returns rows from the bottom (y = r.y0) up, the interface's order; neither
   // the scissor nor the write masks affect it.
+  const auto waiting = std::chrono::steady_clock::now();  // glReadPixels waits for the draws
   gl.core.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
                      out.data());
   impl_->check("readStencil");
+  impl_->transfers.waitUs +=
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - waiting).count();
   ++impl_->transfers.submissions;
   impl_->transfers.readbackBytes += static_cast<long long>(out.size());
   return out;
@@ -362,9 +366,12 @@ std::vector<std::uint32_t> GlDevice::readDepth(const PixelRect& rect) const {
   const GlFunctions& gl = impl_->gl;
   // GL_UNSIGNED_INT_24_8 hands back the stored 24-bit depth unconverted in the top 24 bits
   // (GL_DEPTH_COMPONENT as GL_UNSIGNED_INT would rescale it to 32 bits and round).
+  const auto waiting = std::chrono::steady_clock::now();  // glReadPixels waits for the draws
   gl.core.ReadPixels(r.x0, r.y0, r.width(), r.height(), GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
                      out.data());
   impl_->check("readDepth");
+  impl_->transfers.waitUs +=
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - waiting).count();
   ++impl_->transfers.submissions;
   impl_->transfers.readbackBytes += static_cast<long long>(4 * out.size());
   for (std::uint32_t& word : out)

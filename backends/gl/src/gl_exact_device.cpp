@@ -6,6 +6,7 @@
 #include "recode/backends/gl_exact_device.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <exception>
@@ -280,6 +281,7 @@ struct GlExactDevice::Impl {
     std::vector<SharedGl::PendingCopy> copies = std::move(shared->pending);
     shared->pending.clear();
     ++transfers.submissions;
+    const auto waiting = std::chrono::steady_clock::now();
     std::exception_ptr error;
     const auto& g = gl();
     for (SharedGl::PendingCopy& copy : copies) {
@@ -297,6 +299,9 @@ struct GlExactDevice::Impl {
           error = std::current_exception();
       }
     }
+    transfers.waitUs +=
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - waiting)
+            .count();
     if (error)
       std::rethrow_exception(error);
   }

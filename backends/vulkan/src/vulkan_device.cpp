@@ -75,7 +75,7 @@ struct VulkanDevice::Impl {
   detail::CommandRecorder* recorder = nullptr;  // sharedRecorder(arithmetic)
   raster::TransferCounters transfers;           // what this device's calls made the recorder do
 
-  // Runs `call` on the recorder and counts the submissions and read-back bytes it caused as
+  // Runs `call` on the recorder and counts the submissions, read-back bytes and waits it caused as
   // this device's, so that the counters of a process's devices add up to the recorder's.
   template <typename Call>
   decltype(auto) counted(Call&& call) {
@@ -87,6 +87,7 @@ struct VulkanDevice::Impl {
         const raster::TransferCounters after = d.recorder->counters();
         d.transfers.submissions += after.submissions - before.submissions;
         d.transfers.readbackBytes += after.readbackBytes - before.readbackBytes;
+        d.transfers.waitUs += after.waitUs - before.waitUs;
       }
     } count{*this, before};
     return call();

@@ -1,6 +1,8 @@
 // CommandRecorder: a device's commands recorded into one command buffer, run by finish().
 #include "vulkan_recorder.hpp"
 
+#include <chrono>
+
 #include <algorithm>
 #include <cstring>
 #include <exception>
@@ -236,7 +238,11 @@ void CommandRecorder::finish() {
   }
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
   ++recordingsRun_;  // the staging above is free again, whatever the submission does
+  const auto submitted = std::chrono::steady_clock::now();
   context_.submitAndWait(commands_, fence_);
+  counters_.waitUs +=
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - submitted)
+          .count();
   ++counters_.submissions;
   // Every read-back gets its values even when one of them throws; the first error is passed on.
   std::exception_ptr error;

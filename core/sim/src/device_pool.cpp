@@ -94,6 +94,7 @@ raster::TransferCounters DevicePool::transfers() const {
       const raster::TransferCounters t = device->transfers();
       sum.submissions += t.submissions;
       sum.readbackBytes += t.readbackBytes;
+      sum.waitUs += t.waitUs;
     }
   }
   return sum;

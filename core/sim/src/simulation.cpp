@@ -312,6 +312,7 @@ FrameReport Simulation::runFrame(int frame) {
   const raster::TransferCounters after = pairTests_->transfers();
   report.submissions = after.submissions - before.submissions;
   report.readbackBytes = after.readbackBytes - before.readbackBytes;
+  report.deviceWaitUs = after.waitUs - before.waitUs;
   collectOutcomes(objects_, frame, tasks, skipped, outcomes, report);
   if (setup.error) {
     try {

@@ -31,6 +31,10 @@ struct WindowVertex {
 struct TransferCounters {
   long long submissions = 0;    // command submissions waited on
   long long readbackBytes = 0;  // bytes copied from device memory to the host
+  // Microseconds the host spent blocked until the device had run what was submitted (and,
+  // where the API waits inside the read, read it back): of a frame's time, what the device
+  // took rather than the host's own work of recording the commands and using their results.
+  double waitUs = 0.0;
 };
 
 // A depth over a rectangle kept by keepDepthLater for a later summarizeLater; what it holds

@@ -140,6 +140,9 @@ struct FrameReport {
   // the CPU device. Not in `recode run`'s output, which is the same on every exact device.
   long long submissions = 0;
   long long readbackBytes = 0;
+  // Of collisionUs, the time the host spent waiting for the device to run what it submitted
+  // (raster::TransferCounters::waitUs); the rest is the host's own work. 0 on the CPU device.
+  double deviceWaitUs = 0.0;
 };
 
 class Simulation {
