@@ -78,8 +78,17 @@ bool worthBanding(const raster::PixelRect& rect, const raster::FixedVertex (&v)[
 std::vector<ProxyTriangle> buildProxyTriangles(std::span<const raster::WindowVertex> vertices,
                                                std::span<const std::uint32_t> indices,
                                                const raster::RenderState& state) {
-  raster::checkDraw(vertices, indices);
   std::vector<ProxyTriangle> proxies;
+  buildProxyTrianglesInto(vertices, indices, state, proxies);
+  return proxies;
+}
+
+void buildProxyTrianglesInto(std::span<const raster::WindowVertex> vertices,
+                             std::span<const std::uint32_t> indices,
+                             const raster::RenderState& state,
+                             std::vector<ProxyTriangle>& proxies) {
+  raster::checkDraw(vertices, indices);
+  proxies.clear();
   proxies.reserve(indices.size() / 3);
   for (std::size_t k = 0; k + 2 < indices.size(); k += 3) {
     const raster::FixedVertex v[3] = {raster::snapVertex(vertices[indices[k]]),
@@ -126,7 +135,6 @@ std::vector<ProxyTriangle> buildProxyTriangles(std::span<const raster::WindowVer
       emit(raster::PixelRect{c.x0, y0, c.x1, y1}.intersect(rect));
     }
   }
-  return proxies;
 }
 
 }  // namespace recode::backends

@@ -9,7 +9,7 @@ ProxyCache::Proxies ProxyCache::proxies(const raster::TriangleSource& source,
                                         const raster::RenderState& state) {
   if (source.contentKey() == 0) {
     const raster::TriangleDraw draw = raster::trianglesToDraw(source, state.scissor);
-    uncached_ = buildProxyTriangles(draw.vertices, draw.indices, state);
+    buildProxyTrianglesInto(draw.vertices, draw.indices, state, uncached_);
     return {&uncached_, ++lastId_};
   }
   Entry& entry = entryFor(source, state);
@@ -19,6 +19,7 @@ ProxyCache::Proxies ProxyCache::proxies(const raster::TriangleSource& source,
         entry.byCull[static_cast<std::size_t>(raster::CullMode::None)];
     std::vector<ProxyTriangle>& kept = entry.byCull[cull];
     kept.clear();
+    kept.reserve(all.size());
     std::copy_if(all.begin(), all.end(), std::back_inserter(kept),
                  [&](const ProxyTriangle& p) { return !state.culls(p.frontFacing != 0); });
     entry.made[cull] = true;
@@ -36,17 +37,15 @@ ProxyCache::Entry& ProxyCache::entryFor(const raster::TriangleSource& source,
   // Every proxy of the draw whatever its facing: the culling modes' lists are taken from it.
   raster::RenderState unculled = state;
   unculled.cull = raster::CullMode::None;
+  // Made in the memory of the entry it replaces (a refused draw leaves that entry as it was).
   const raster::TriangleDraw draw = raster::trianglesToDraw(source, state.scissor);
-  std::vector<ProxyTriangle> all = buildProxyTriangles(draw.vertices, draw.indices, unculled);
-  if (entries_.size() < kKeptBlocks)
-    entries_.emplace_back();
   Entry& entry = entries_[next_];
+  const auto none = static_cast<std::size_t>(raster::CullMode::None);
+  buildProxyTrianglesInto(draw.vertices, draw.indices, unculled, entry.byCull[none]);
   next_ = (next_ + 1) % kKeptBlocks;
-  entry = Entry{};
   entry.key = key;
   entry.scissor = state.scissor;
-  const auto none = static_cast<std::size_t>(raster::CullMode::None);
-  entry.byCull[none] = std::move(all);
+  entry.made = {};
   entry.made[none] = true;
   entry.ids[none] = ++lastId_;
   return entry;

@@ -40,4 +40,11 @@ static_assert(sizeof(ProxyTriangle) == 72, "the shaders read 18 packed 32-bit fi
     std::span<const raster::WindowVertex> vertices, std::span<const std::uint32_t> indices,
     const raster::RenderState& state);
 
+// The same records into `proxies` (emptied first), keeping its memory: a caller that sets up
+// draw after draw (ProxyCache) then allocates, and the system maps fresh pages, only for a draw
+// larger than any before. After a refusal `proxies` is as it was.
+void buildProxyTrianglesInto(std::span<const raster::WindowVertex> vertices,
+                             std::span<const std::uint32_t> indices,
+                             const raster::RenderState& state, std::vector<ProxyTriangle>& proxies);
+
 }  // namespace recode::backends

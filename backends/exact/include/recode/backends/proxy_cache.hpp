@@ -42,7 +42,7 @@ class ProxyCache {
   // of a culling mode are the unculled ones of the kept facing, since a triangle's proxies do
   // not depend on the cull mode).
   struct Entry {
-    std::uint64_t key = 0;
+    std::uint64_t key = 0;  // TriangleSource::contentKey, never 0 for a block held
     raster::PixelRect scissor;
     std::array<std::vector<ProxyTriangle>, 3> byCull;  // indexed by raster::CullMode
     std::array<bool, 3> made{};
@@ -51,7 +51,7 @@ class ProxyCache {
 
   Entry& entryFor(const raster::TriangleSource& source, const raster::RenderState& state);
 
-  std::vector<Entry> entries_;  // at most kKeptBlocks, the next to replace at next_
+  std::array<Entry, kKeptBlocks> entries_{};  // a key of 0: none held; the next to replace at next_
   std::size_t next_ = 0;
   std::vector<ProxyTriangle> uncached_;  // the last draw of a source without a key
   std::uint64_t lastId_ = 0;
