@@ -22,7 +22,8 @@ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRECODE_WERROR=
   -DRECODE_WITH_VULKAN=OFF -DRECODE_WITH_PEERS=OFF -DRECODE_BUILD_BENCHMARKS=OFF \
   -DRECODE_BUILD_EXAMPLES=OFF >/dev/null
 suites=(recode_raster_tests recode_raster_invariant_tests recode_geometry_tests recode_pair_tests
-        recode_refine_tests recode_scene_tests recode_sim_tests recode_api_tests)
+        recode_refine_tests recode_scene_tests recode_sim_tests recode_api_tests
+        recode_backends_exact_tests)
 cmake --build "$dir" -j "$jobs" --target "${suites[@]}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
