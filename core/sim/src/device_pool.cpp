@@ -45,8 +45,6 @@ double DevicePool::reserve(int width, int height, int count) {
   double us = 0.0;
   while (static_cast<int>(devices.size()) < count) {
     const auto start = std::chrono::steady_clock::now();
-    if (factory_)
-      releaseIdleDevices(width, height);
     std::unique_ptr<raster::DepthStencilDevice> device =
         factory_ ? factory_(width, height) : reuseOrMakeCpuDevice(width, height);
     if (!device)
@@ -83,16 +81,6 @@ std::unique_ptr<raster::DepthStencilDevice> DevicePool::reuseOrMakeCpuDevice(int
   for (auto& [size, devices] : bySize_)
     std::erase(devices.made, nullptr);
   return device;
-}
-
-void DevicePool::releaseIdleDevices(int width, int height) {
-  // Not this size, even if the frame did not list it: reserve counts on its devices staying.
-  for (auto it = bySize_.begin(); it != bySize_.end();) {
-    const bool idle =
-        it->first != std::pair{width, height} &&
-        std::find(frameSizes_.begin(), frameSizes_.end(), it->first) == frameSizes_.end();
-    it = idle ? bySize_.erase(it) : std::next(it);
-  }
 }
 
 raster::DepthStencilDevice& DevicePool::at(int width, int height, int index) {

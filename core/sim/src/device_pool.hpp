@@ -34,9 +34,6 @@ class DevicePool {
   // test of, reshaped (the one with the least memory that holds the size, else the largest),
   // and only when there is none a new one: a frame's pairs change size as their blocks move,
   // and making a device maps its buffers' pages anew, which costs far more than clearing them.
-  // With a factory the devices of sizes this frame has no test of are let go before one is
-  // made, so that what they hold serves it (a Vulkan device's image goes back to the back end's
-  // cache, where the new device takes it: a clear instead of fresh memory).
   double reserve(int width, int height, int count);
 
   // What the devices held now have handed to hardware and back since they were made.
@@ -53,8 +50,6 @@ class DevicePool {
     long long uses = 0;
   };
 
-  // Lets the devices of every size but this one that the frame has no test of go.
-  void releaseIdleDevices(int width, int height);
   // A CpuDevice of this size from spare_ or an idle size's devices, or a new one.
   std::unique_ptr<raster::DepthStencilDevice> reuseOrMakeCpuDevice(int width, int height);
 

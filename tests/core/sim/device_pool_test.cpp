@@ -1,7 +1,7 @@
 // The simulation's device pool (core/sim/src/device_pool.hpp): without a factory, a new frame
 // size reshapes a CpuDevice that no test of the frame runs on (set aside, or held for an idle
 // size) instead of making one, never one of a size the frame has tests of; with a factory
-// every device is the factory's, and the idle sizes' devices go before it makes one.
+// every device is the factory's.
 
 #include <catch2/catch.hpp>
 
@@ -11,7 +11,6 @@
 
 #include "device_pool.hpp"
 #include "recode/raster/cpu_device.hpp"
-#include "recode/raster/forwarding_device.hpp"
 
 using namespace recode;
 using namespace recode::core;
@@ -85,38 +84,7 @@ TEST_CASE("with a factory every device is made by it", "[pool]") {
   pool.trim({{40, 40}});
   pool.reserve(40, 40, 1);
   CHECK(made == 2);
-}
-
-TEST_CASE("with a factory the idle sizes' devices go before a new one is made", "[pool]") {
-  // What a device holds (a GPU device's image) serves the next one only once it is gone.
-  struct Counted final : raster::ForwardingDevice {
-    Counted(int w, int h, int& alive)
-        : ForwardingDevice(std::make_unique<raster::CpuDevice>(w, h)), alive_(alive) {
-      ++alive_;
-    }
-    Counted(const Counted&) = delete;
-    Counted& operator=(const Counted&) = delete;
-    ~Counted() override { --alive_; }
-    int& alive_;
-  };
-  int alive = 0;
-  std::vector<int> aliveWhenMade;
-  DevicePool pool([&](int w, int h) -> std::unique_ptr<raster::DepthStencilDevice> {
-    aliveWhenMade.push_back(alive);
-    return std::make_unique<Counted>(w, h, alive);
-  });
-  pool.trim({{64, 32}});
-  pool.reserve(64, 32, 1);
-  pool.trim({{64, 32}, {40, 40}});
-  pool.reserve(40, 40, 1);  // 64x32 has tests this frame: it stays
-  pool.trim({{40, 40}, {16, 16}});
-  pool.reserve(40, 40, 1);  // held already: nothing made, nothing let go
   CHECK(pool.held(64, 32) == 1);
-  pool.reserve(16, 16, 1);  // 64x32 is idle: let go before the new device is made
-  CHECK(aliveWhenMade == std::vector{0, 1, 1});
-  CHECK(pool.held(64, 32) == 0);
-  CHECK(pool.held(40, 40) == 1);
-  CHECK(alive == 2);
 }
 
 TEST_CASE("a size the frame did not list keeps its own devices while it grows", "[pool]") {
