@@ -14,7 +14,7 @@ ProxyCache::Proxies ProxyCache::proxies(const raster::TriangleSource& source,
   }
   Entry& entry = entryFor(source, state);
   const auto cull = static_cast<std::size_t>(state.cull);
-  if (!entry.made[cull]) {
+  if (entry.ids[cull] == 0) {
     const std::vector<ProxyTriangle>& all =
         entry.byCull[static_cast<std::size_t>(raster::CullMode::None)];
     std::vector<ProxyTriangle>& kept = entry.byCull[cull];
@@ -22,7 +22,6 @@ ProxyCache::Proxies ProxyCache::proxies(const raster::TriangleSource& source,
     kept.reserve(all.size());
     std::copy_if(all.begin(), all.end(), std::back_inserter(kept),
                  [&](const ProxyTriangle& p) { return !state.culls(p.frontFacing != 0); });
-    entry.made[cull] = true;
     entry.ids[cull] = ++lastId_;
   }
   return {&entry.byCull[cull], entry.ids[cull]};
@@ -45,8 +44,7 @@ ProxyCache::Entry& ProxyCache::entryFor(const raster::TriangleSource& source,
   next_ = (next_ + 1) % kKeptBlocks;
   entry.key = key;
   entry.scissor = state.scissor;
-  entry.made = {};
-  entry.made[none] = true;
+  entry.ids = {};
   entry.ids[none] = ++lastId_;
   return entry;
 }

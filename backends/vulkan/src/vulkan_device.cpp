@@ -111,9 +111,12 @@ struct VulkanDevice::Impl {
     // No other thread's finish() may come between the staging and the draw that reads it.
     const auto hold = recorder->hold();
     std::optional<detail::CommandRecorder::Staged> staged;
-    for (const Upload& upload : uploads)
-      if (id != 0 && upload.id == id && upload.recording == recorder->recordingsRun())
-        staged = upload.staged;
+    if (id != 0) {
+      const std::uint64_t recording = recorder->recordingsRun();
+      for (const Upload& upload : uploads)
+        if (upload.id == id && upload.recording == recording)
+          staged = upload.staged;
+    }
     if (!staged) {
       staged = counted(
           [&] { return recorder->stage(proxies.data(), proxies.size() * sizeof(ProxyTriangle)); });

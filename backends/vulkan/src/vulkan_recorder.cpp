@@ -1,9 +1,8 @@
 // CommandRecorder: a device's commands recorded into one command buffer, run by finish().
 #include "vulkan_recorder.hpp"
 
-#include <chrono>
-
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <exception>
 #include <utility>

@@ -45,8 +45,7 @@ class ProxyCache {
     std::uint64_t key = 0;  // TriangleSource::contentKey, never 0 for a block held
     raster::PixelRect scissor;
     std::array<std::vector<ProxyTriangle>, 3> byCull;  // indexed by raster::CullMode
-    std::array<bool, 3> made{};
-    std::array<std::uint64_t, 3> ids{};
+    std::array<std::uint64_t, 3> ids{};  // each list's id once made, 0 before (ids start at 1)
   };
 
   Entry& entryFor(const raster::TriangleSource& source, const raster::RenderState& state);
