@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # The GPU check: on a machine with a GPU driver (a Vulkan ICD and an EGL vendor library), are the
 # exact devices still the reference bit for bit, and how fast are they? Runs
-#   1. recode conform on the exact Vulkan, GL and 32-bit Vulkan devices (every committed golden
-#      vector),
-#   2. recode verify --suite at 800 pixels on the exact Vulkan and GL devices (per-command parity
-#      of 504 pairs, then the same pairs as one batch against the reference),
+#   1. recode conform on the exact Vulkan, GL, 32-bit Vulkan and compute Vulkan devices (every
+#      committed golden vector),
+#   2. recode verify --suite at 800 pixels on the exact Vulkan and GL devices, and on the compute
+#      device (per-command parity of 504 pairs, then the same pairs as one batch against the
+#      reference),
 #   3. recode bench table2 figure8 with the GPU columns (the CGAL judge, recode-cpu, the exact
 #      devices batched, Vulkan pair by pair, with speculative contact passes, the same concluded
 #      from 64-byte summaries made by a compute shader, and that on 16 devices a frame size
-#      (waves), the 32-bit Vulkan device, FCL GJK, Bullet),
+#      (waves), the 32-bit Vulkan device, the compute device, FCL GJK, Bullet),
 # and prints a summary. Exit status 0 when every correctness check passed (the bench's times are
 # reported, never judged).
 #
@@ -42,11 +43,15 @@ echo "gpu-check: $recode, writing into $out"
 step "conform --device vulkan" conform-vulkan.json "$recode" conform --device vulkan --json
 step "conform --device gl-exact" conform-gl-exact.json "$recode" conform --device gl-exact --json
 step "conform --device vulkan-32" conform-vulkan-32.json "$recode" conform --device vulkan-32 --json
+step "conform --device vulkan-compute" conform-vulkan-compute.json \
+  "$recode" conform --device vulkan-compute --json
 step "verify --suite --width 800" verify-800.json \
   "$recode" verify --suite --width 800 --vulkan --gl-exact --gl-platform egl --json
+step "verify --suite --vulkan-compute" verify-800-compute.json \
+  "$recode" verify --suite --width 800 --vulkan-compute --json
 step "bench table2 figure8" bench.log \
   "$recode" bench table2 figure8 $quick --out "$out/bench" \
-  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-summaries,recode-vulkan-waves,recode-vulkan-32,fcl-gjk,bullet
+  --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-summaries,recode-vulkan-waves,recode-vulkan-32,recode-vulkan-compute,fcl-gjk,bullet
 
 echo
 python3 - "$out" <<'PY'
@@ -60,16 +65,18 @@ def load(name):
     except (OSError, ValueError):
         return None
 
-for device in ("vulkan", "gl-exact", "vulkan-32"):
+for device in ("vulkan", "gl-exact", "vulkan-32", "vulkan-compute"):
     c = load(f"conform-{device}.json")
     if c:
         print(f"conform {device}: {c.get('passed', '?')} of {c.get('vectors', '?')} vectors passed")
-v = load("verify-800.json")
-if v:
-    for key in ("vulkan", "gl_exact"):
+for name, keys in (("verify-800.json", ("vulkan", "gl_exact")),
+                   ("verify-800-compute.json", ("vulkan",))):
+    v = load(name)
+    for key in keys if v else ():
         d = v.get(key, {})
         b = d.get("batch", {})
-        print(f"verify {key}: {d.get('pixels', 0):,} pixels, {d.get('different', '?')} different;"
+        label = d.get("device", key)
+        print(f"verify {label}: {d.get('pixels', 0):,} pixels, {d.get('different', '?')} different;"
               f" batched {b.get('pairs', 0)} pairs, {b.get('different', '?')} different,"
               f" {b.get('submissions', '?')} submissions")
 path = os.path.join(out, "bench", "bench.csv")
@@ -77,7 +84,7 @@ if os.path.exists(path):
     rows = list(csv.DictReader(open(path)))
     columns = ["recode-cpu", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
                "recode-vulkan-speculative", "recode-vulkan-summaries", "recode-vulkan-waves",
-               "recode-vulkan-32", "fcl-gjk"]
+               "recode-vulkan-32", "recode-vulkan-compute", "fcl-gjk"]
     print("\nmean ms a frame (submissions a frame, read-back bytes a pair test, ms of the frame"
           " spent waiting for the device):")
     print("| scene | triangles | " + " | ".join(columns) + " |")
@@ -97,6 +104,13 @@ if os.path.exists(path):
             else:
                 cells.append(f"{float(r['mean_ms']):.3f}")
         print(f"| {s} | {t:,} | " + " | ".join(cells) + " |")
+    print("\nrecode-vulkan-compute, ms a frame: the device's share (the host waiting for it) and"
+          " the host's own work (the frame minus that wait):")
+    for r in rows:
+        if r["algorithm"] == "recode-vulkan-compute":
+            wait = float(r["device_wait_ms_per_frame"] or 0)
+            print(f"  {r['scene']} {int(r['triangles']):,}: device {wait:.3f},"
+                  f" host {float(r['mean_ms']) - wait:.3f}")
 PY
 
 if ((${#failed[@]})); then

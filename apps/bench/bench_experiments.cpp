@@ -54,6 +54,8 @@ std::vector<AlgorithmSpec> recodeAndPeers() {
       vulkanSummaries,
       vulkanWaves,
       {"recode-vulkan-32", Kind::Recode, backends::DeviceKind::Vulkan32, core::MorMode::Min},
+      {"recode-vulkan-compute", Kind::Recode, backends::DeviceKind::VulkanCompute,
+       core::MorMode::Min},
       {"fcl-gjk", Kind::FclGjk},
       {"fcl-obbrss", Kind::FclObbrss},
       {"bullet", Kind::Bullet},

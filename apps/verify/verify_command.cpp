@@ -38,6 +38,7 @@ struct VerifyOptions {
   std::string glPlatform = "auto";
   bool vulkan = false;
   bool vulkan32 = false;  // --vulkan-32: the Vulkan oracle on the 32-bit arithmetic
+  bool vulkanCompute = false;  // --vulkan-compute: the Vulkan oracle on the compute device
   bool json = false;
   bool noTiming = false;  // --no-timing
   bool verbose = false;
@@ -55,8 +56,10 @@ verify::OracleSelection selectedOracles(const VerifyOptions& o) {
                             o.gl,
                             o.glExact,
                             *backends::parseGlPlatform(o.glPlatform),
-                            o.vulkan || o.vulkan32,
-                            o.vulkan32};
+                            o.vulkan || o.vulkan32 || o.vulkanCompute,
+                            o.vulkan32        ? verify::VulkanOracleDevice::Emulated32
+                            : o.vulkanCompute ? verify::VulkanOracleDevice::Compute
+                                              : verify::VulkanOracleDevice::Native64};
   if (!s.embree && !s.cgal && !s.gl && !s.glExact && !s.vulkan)
     s.embree = s.cgal = true;
   return s;
@@ -98,6 +101,18 @@ void addViewAxisCost(VerifyRun::ViewAxisTotals& v, const core::PairResult& chose
   v.sceneRecodeUs += scene.timing.totalUs;
 }
 
+// The registry's kind of the Vulkan oracle's device.
+backends::DeviceKind vulkanDeviceKind(verify::VulkanOracleDevice device) {
+  switch (device) {
+    case verify::VulkanOracleDevice::Emulated32:
+      return backends::DeviceKind::Vulkan32;
+    case verify::VulkanOracleDevice::Compute:
+      return backends::DeviceKind::VulkanCompute;
+    default:
+      return backends::DeviceKind::Vulkan;
+  }
+}
+
 // With --gl-exact or --vulkan, every pair again as one batch on that device, against the
 // reference results the oracles judged.
 void checkBatches(VerifyRun& run, const VerifyPairs& input,
@@ -113,9 +128,7 @@ void checkBatches(VerifyRun& run, const VerifyPairs& input,
     run.glExactBatch = checkBatch(batch, verify::glExactDeviceFactory(run.glPlatform));
   if (run.oracles.vulkan)
     run.vulkanBatch = checkBatch(batch, [&](int width, int height) {
-      return backends::makeDevice(
-          run.oracles.vulkan32 ? backends::DeviceKind::Vulkan32 : backends::DeviceKind::Vulkan,
-          width, height);
+      return backends::makeDevice(vulkanDeviceKind(run.oracles.vulkanDevice), width, height);
     });
 }
 
@@ -250,6 +263,12 @@ void addVerifyCommand(CLI::App& app, int& exitCode) {
                 "the same on the vulkan-32 device (the exact Vulkan device with 32-bit shader "
                 "arithmetic only); reported as \"vulkan\" with \"device\": \"vulkan-32\"")
       ->excludes(vulkan);
+  cmd->add_flag("--vulkan-compute", o->vulkanCompute,
+                "the same on the vulkan-compute device (the contract as a tile rasterizer in "
+                "Vulkan compute shaders); reported as \"vulkan\" with \"device\": "
+                "\"vulkan-compute\"")
+      ->excludes(vulkan)
+      ->excludes("--vulkan-32");
   CLI::Option* json =
       cmd->add_flag("--json", o->json, "print one JSON object (docs/cli.md) instead of the report");
   addNoTimingFlag(*cmd, json, o->noTiming);

@@ -122,6 +122,18 @@ ordered_json pairJson(const verify::PairVerification& p) {
   return j;
 }
 
+// The text report's note of which Vulkan device drew (none for the vulkan device itself).
+const char* vulkanDeviceLabel(verify::VulkanOracleDevice device) {
+  switch (device) {
+    case verify::VulkanOracleDevice::Emulated32:
+      return "vulkan-32, ";
+    case verify::VulkanOracleDevice::Compute:
+      return "vulkan-compute, ";
+    default:
+      return "";
+  }
+}
+
 }  // namespace
 
 // What made the run fail, for the verdict line.
@@ -225,7 +237,7 @@ void printVerifyReport(std::ostream& out, const VerifyRun& run, bool everyPair) 
         << ", " << t.glExactSeconds << " s)\n";
   if (run.oracles.vulkan)
     out << "  vulkan  " << glExactLine(t.vulkan) << "  ("
-        << (run.oracles.vulkan32 ? "vulkan-32, " : "") << t.vulkanSeconds << " s)\n";
+        << vulkanDeviceLabel(run.oracles.vulkanDevice) << t.vulkanSeconds << " s)\n";
   for (const auto& [name, batch] :
        {std::pair{"gl-exact", &run.glExactBatch}, std::pair{"vulkan", &run.vulkanBatch}})
     if (*batch)
@@ -290,8 +302,10 @@ ordered_json verifyRunToJson(const VerifyRun& run) {
   }
   if (run.oracles.vulkan) {
     j["vulkan"] = glExactJson(t.vulkan);
-    if (run.oracles.vulkan32)
+    if (run.oracles.vulkanDevice == verify::VulkanOracleDevice::Emulated32)
       j["vulkan"]["device"] = "vulkan-32";
+    if (run.oracles.vulkanDevice == verify::VulkanOracleDevice::Compute)
+      j["vulkan"]["device"] = "vulkan-compute";
     j["vulkan"]["seconds"] = t.vulkanSeconds;
   }
   const auto batchJson = [](const BatchCheck& b) {

@@ -91,6 +91,7 @@ std::vector<Expected> expectations() {
                                         "recode-vulkan-summaries",
                                         "recode-vulkan-waves",
                                         "recode-vulkan-32",
+                                        "recode-vulkan-compute",
                                         "fcl-gjk",
                                         "fcl-obbrss",
                                         "bullet"};
@@ -257,7 +258,7 @@ int main(int argc, char** argv) {
           for (const char* device :
                {"recode-gl", "recode-gl-exact", "recode-vulkan", "recode-vulkan-per-pair",
                 "recode-vulkan-speculative", "recode-vulkan-summaries", "recode-vulkan-waves",
-                "recode-vulkan-32"})
+                "recode-vulkan-32", "recode-vulkan-compute"})
             same("recode-cpu", device, key);
         // A frame's pair tests on Vulkan: one submission for the stencil passes of all and one
         // for the contact passes of those that interfere (docs/architecture.md); test by test,

@@ -84,6 +84,7 @@ TEST_CASE("the conforming devices are every exact device of this build", "[confo
 #if RECODE_HAVE_VULKAN
   CHECK(std::count(labels.begin(), labels.end(), "vulkan") == 1);
   CHECK(std::count(labels.begin(), labels.end(), "vulkan-32") == 1);
+  CHECK(std::count(labels.begin(), labels.end(), "vulkan-compute") == 1);
 #endif
 #if RECODE_HAVE_GL_EXACT
   CHECK(std::count_if(labels.begin(), labels.end(),

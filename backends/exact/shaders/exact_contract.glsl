@@ -90,6 +90,20 @@ double depthAt(double z0, dvec2 slopes, i64vec2 v0, i64vec2 centre) {
   return z;
 }
 
+// v rounded to the nearest integer, ties to even (nearbyint in the default rounding mode), for
+// |v| < 2^62, by a truncating conversion and an exact difference rather than roundEven(): on
+// lavapipe (Mesa 22.3) roundEven of a double rounded 8388607.5 down to 8388607 in compute
+// shaders, which the conformance kit's depth ties catch.
+int64_t roundToNearestEven(double v) {
+  int64_t t = int64_t(v);  // towards zero
+  precise double rest = v - double(t);  // exact: |rest| < 1
+  if (rest > 0.5 || (rest == 0.5 && (t & 1l) != 0l))
+    t += 1l;
+  else if (rest < -0.5 || (rest == -0.5 && (t & 1l) != 0l))
+    t -= 1l;
+  return t;
+}
+
 // Clamp and quantise to the 24-bit integer q: round half to even of z (2^24 - 1).
 uint quantizeDepth(double z) {
   if (!(z > 0.0))
@@ -97,7 +111,7 @@ uint quantizeDepth(double z) {
   if (z >= 1.0)
     return 16777215u;
   precise double scaled = z * kDepthMax;
-  return uint(roundEven(scaled));
+  return uint(roundToNearestEven(scaled));
 }
 
 // Does directed edge a -> b of a counter-clockwise triangle cover the centre? E > 0, or E = 0

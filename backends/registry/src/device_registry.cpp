@@ -14,6 +14,7 @@
 #include "recode/backends/gl_exact_device.hpp"
 #endif
 #if RECODE_HAVE_VULKAN
+#include "recode/backends/vulkan_compute_device.hpp"
 #include "recode/backends/vulkan_device.hpp"
 #endif
 
@@ -37,7 +38,7 @@ constexpr bool kVulkanBuilt = true;
 constexpr bool kVulkanBuilt = false;
 #endif
 
-constexpr std::array<DeviceInfo, 5> kDevices = {{
+constexpr std::array<DeviceInfo, 6> kDevices = {{
     {DeviceKind::Cpu, "cpu", "the CPU reference (raster::CpuDevice): the contract's bits", true,
      true, ""},
     {DeviceKind::Gl, "gl",
@@ -52,6 +53,10 @@ constexpr std::array<DeviceInfo, 5> kDevices = {{
      "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
     {DeviceKind::Vulkan32, "vulkan-32",
      "the Vulkan device with 32-bit shader arithmetic only (no shaderFloat64, no shaderInt64)",
+     true, kVulkanBuilt,
+     "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
+    {DeviceKind::VulkanCompute, "vulkan-compute",
+     "the contract as a tile rasterizer in Vulkan compute shaders only (VulkanComputeDevice)",
      true, kVulkanBuilt,
      "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
 }};
@@ -128,6 +133,8 @@ std::unique_ptr<raster::DepthStencilDevice> makeDevice(DeviceKind kind, int widt
       return std::make_unique<VulkanDevice>(width, height);
     case DeviceKind::Vulkan32:
       return std::make_unique<VulkanDevice>(width, height, ShaderArithmetic::Emulated32);
+    case DeviceKind::VulkanCompute:
+      return std::make_unique<VulkanComputeDevice>(width, height);
 #endif
     default:
       notBuilt(info);

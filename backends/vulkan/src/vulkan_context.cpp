@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "vulkan_pipeline.hpp"
@@ -173,13 +174,32 @@ void VulkanContext::createDevice() {
   const VkBool32 native = arithmetic_ == ShaderArithmetic::Native64 ? VK_TRUE : VK_FALSE;
   features.features.shaderFloat64 = native;
   features.features.shaderInt64 = native;
+  // Push descriptors where the driver has them: the compute device binds its buffers with them
+  // (vulkan_compute_pipelines.hpp) and refuses to start without; the other devices do not use them.
+  std::uint32_t extensionCount = 0;
+  vkCheck(vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, nullptr),
+          "vkEnumerateDeviceExtensionProperties");
+  std::vector<VkExtensionProperties> extensions(extensionCount);
+  vkCheck(vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount,
+                                               extensions.data()),
+          "vkEnumerateDeviceExtensionProperties");
+  bool pushDescriptors = false;
+  for (const VkExtensionProperties& e : extensions)
+    if (std::string_view(e.extensionName) == VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME)
+      pushDescriptors = true;
+  const char* const pushDescriptorName = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
   VkDeviceCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
   info.pNext = &features;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
+  info.enabledExtensionCount = pushDescriptors ? 1 : 0;
+  info.ppEnabledExtensionNames = &pushDescriptorName;
   vkCheck(vkCreateDevice(physical_, &info, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  if (pushDescriptors)
+    pushDescriptorSet_ = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+        vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
 }
 
 VkDeviceMemory VulkanContext::allocate(const VkMemoryRequirements& requirements,

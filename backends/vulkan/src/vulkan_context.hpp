@@ -61,6 +61,12 @@ class VulkanContext {
   [[nodiscard]] DeviceBuffer createDeviceBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const;
   void destroyDeviceBuffer(DeviceBuffer& buffer) const;
 
+  // vkCmdPushDescriptorSetKHR when the driver has VK_KHR_push_descriptor (enabled then), else
+  // null: the compute device's way of binding its buffers.
+  [[nodiscard]] PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet() const {
+    return pushDescriptorSet_;
+  }
+
   // Submits a recorded command buffer to the queue (shared, so under a lock) and waits for
   // `fence`, which must be unsignalled.
   void submitAndWait(VkCommandBuffer commands, VkFence fence);
@@ -84,6 +90,7 @@ class VulkanContext {
   VkQueue queue_ = VK_NULL_HANDLE;
   std::mutex queueLock_;
   std::string name_;
+  PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
 };
 
 }  // namespace recode::backends::detail

@@ -18,6 +18,11 @@ constexpr VkDeviceSize kScratchChunkBytes = VkDeviceSize{64} << 20;
 // Offsets are kept to this alignment: more than vertex input or a depth/stencil copy asks.
 constexpr VkDeviceSize kAlignment = 64;
 
+// Results and uploads share their chunks: shaders read and write them, and the compute device
+// copies its uploads on to device-local memory.
+constexpr VkBufferUsageFlags kResultsUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+
 // Everything before happens-before everything after, host writes to mapped memory included.
 void fullBarrier(VkCommandBuffer cmd) {
   VkMemoryBarrier barrier{};
@@ -177,14 +182,14 @@ CommandRecorder::Staged CommandRecorder::results(std::size_t bytes,
                                                  std::function<void(const std::uint8_t*)> deliver) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   const Region<HostBuffer> region =
-      allocateHost(results_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      allocateHost(results_, bytes, kResultsUsage);
   deliverAfterRun(region, bytes, std::move(deliver));
   return {region.buffer->buffer, region.offset};
 }
 
 CommandRecorder::Staged CommandRecorder::upload(const void* data, std::size_t bytes) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
-  return copyIn(results_, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, data, bytes);
+  return copyIn(results_, kResultsUsage, data, bytes);
 }
 
 void CommandRecorder::setBeforeSubmit(std::function<void(VkCommandBuffer)> hook) {

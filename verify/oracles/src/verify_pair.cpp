@@ -196,7 +196,7 @@ PairVerification PairVerifier::verify(std::string label, const core::TriangleMes
 #ifdef RECODE_HAVE_VULKAN
   if (selection_.vulkan) {
     const auto start = std::chrono::steady_clock::now();
-    out.vulkan = compareOnVulkan(a, b, request, selection_.vulkan32);
+    out.vulkan = compareOnVulkan(a, b, request, selection_.vulkanDevice);
     out.vulkanSeconds = secondsSince(start);
   }
 #endif

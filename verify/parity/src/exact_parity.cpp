@@ -9,6 +9,7 @@
 #include "recode/backends/gl_exact_device.hpp"
 #endif
 #ifdef RECODE_HAVE_VULKAN
+#include "recode/backends/vulkan_compute_device.hpp"
 #include "recode/backends/vulkan_device.hpp"
 #endif
 
@@ -146,17 +147,24 @@ core::DeviceFactory glExactDeviceFactory(backends::GlPlatform platform) {
 
 #ifndef RECODE_HAVE_VULKAN
 ExactParityReport compareOnVulkan(const core::TriangleMesh&, const core::TriangleMesh&,
-                                  const core::PairRequest&, bool) {
+                                  const core::PairRequest&, VulkanOracleDevice) {
   throw std::runtime_error(
       "this build has no Vulkan device (Debian: apt-get install libvulkan-dev glslang-tools "
       "mesa-vulkan-drivers, then reconfigure)");
 }
 #else
 ExactParityReport compareOnVulkan(const core::TriangleMesh& a, const core::TriangleMesh& b,
-                                  const core::PairRequest& request, bool emulated32) {
-  return compareOnDeviceWithRenderer<backends::VulkanDevice>(
-      a, b, request,
-      emulated32 ? backends::ShaderArithmetic::Emulated32 : backends::ShaderArithmetic::Native64);
+                                  const core::PairRequest& request, VulkanOracleDevice device) {
+  switch (device) {
+    case VulkanOracleDevice::Emulated32:
+      return compareOnDeviceWithRenderer<backends::VulkanDevice>(
+          a, b, request, backends::ShaderArithmetic::Emulated32);
+    case VulkanOracleDevice::Compute:
+      return compareOnDeviceWithRenderer<backends::VulkanComputeDevice>(a, b, request);
+    default:
+      return compareOnDeviceWithRenderer<backends::VulkanDevice>(
+          a, b, request, backends::ShaderArithmetic::Native64);
+  }
 }
 #endif
 

@@ -19,11 +19,12 @@ enum class DeviceKind {
   GlExact,   // GlExactDevice: OpenGL 4.5 shaders that apply the contract (EGL, else OSMesa)
   Vulkan,    // VulkanDevice: the same contract on Vulkan 1.3
   Vulkan32,  // VulkanDevice, ShaderArithmetic::Emulated32: the same bits, 32-bit shaders only
+  VulkanCompute,  // VulkanComputeDevice: the contract as a tile rasterizer in compute shaders
 };
 
 struct DeviceInfo {
   DeviceKind kind = DeviceKind::Cpu;
-  std::string_view name;  // "cpu", "gl", "gl-exact", "vulkan", "vulkan-32": what --device takes
+  std::string_view name;  // "cpu", "gl", "gl-exact", "vulkan", "vulkan-32", "vulkan-compute"
   std::string_view description;  // one line
   bool exact = false;            // promises raster::CpuDevice's bits (docs/rasterization.md)
   bool built = false;            // this build can make it

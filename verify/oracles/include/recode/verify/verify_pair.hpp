@@ -31,9 +31,9 @@ struct OracleSelection {
   bool glExact = false;  // bit-exact replay on backends::GlExactDevice
   backends::GlPlatform glPlatform = backends::GlPlatform::Auto;  // its context platform
   bool vulkan = false;  // bit-exact replay on backends::VulkanDevice
-  // With vulkan: the device's 32-bit shader arithmetic (the vulkan-32 device) instead of its
-  // 64-bit one; the reports keep the key "vulkan".
-  bool vulkan32 = false;
+  // With vulkan: which Vulkan device (the vulkan-32 device's 32-bit shader arithmetic, or the
+  // vulkan-compute device, instead of the vulkan device); the reports keep the key "vulkan".
+  VulkanOracleDevice vulkanDevice = VulkanOracleDevice::Native64;
 };
 
 struct PairVerification {

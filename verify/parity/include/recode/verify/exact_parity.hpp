@@ -73,13 +73,16 @@ struct RecordedPair {
     const core::TriangleMesh& a, const core::TriangleMesh& b, const core::PairRequest& request,
     backends::GlPlatform platform = backends::GlPlatform::Auto);
 
-// The same on a backends::VulkanDevice (the process's shared Vulkan context), with its 32-bit
-// shader arithmetic when `emulated32` (the vulkan-32 device). Throws std::runtime_error when
-// the build has no Vulkan device or no Vulkan driver is found.
-[[nodiscard]] ExactParityReport compareOnVulkan(const core::TriangleMesh& a,
-                                                const core::TriangleMesh& b,
-                                                const core::PairRequest& request,
-                                                bool emulated32 = false);
+// Which of the Vulkan devices compareOnVulkan draws on: the exact device with 64-bit shader
+// arithmetic (`vulkan`), with 32-bit only (`vulkan-32`), or the compute device
+// (`vulkan-compute`).
+enum class VulkanOracleDevice { Native64, Emulated32, Compute };
+
+// The same on that Vulkan device (the process's shared Vulkan context). Throws
+// std::runtime_error when the build has no Vulkan device or no Vulkan driver is found.
+[[nodiscard]] ExactParityReport compareOnVulkan(
+    const core::TriangleMesh& a, const core::TriangleMesh& b, const core::PairRequest& request,
+    VulkanOracleDevice device = VulkanOracleDevice::Native64);
 
 // The exact GL device on `platform` as verify makes it, for what runs on many devices (a batch;
 // the registry's factories take no platform): throws what compareOnGlExact throws when the

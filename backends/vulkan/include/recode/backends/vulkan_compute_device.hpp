@@ -1,0 +1,83 @@
+#pragma once
+// The vulkan-compute device: the rasterization contract (docs/rasterization.md) as a tile
+// rasterizer in Vulkan compute shaders only: no graphics pipeline, no render pass, no
+// depth/stencil image (docs/backends.md, "The compute device"). The depth q and the stencil live
+// in a storage buffer, a word a pixel; a draw's triangles are set up, binned into the
+// reference's 8x8 blocks and drawn block by block on the device, each block's list in index
+// order, so its buffers match raster::CpuDevice bit for bit. The host validates a draw and hands
+// over its window vertices and indices as they are, once per TriangleSource::contentKey. It
+// shares the exact Vulkan device's 64-bit context and recording: a frame's commands of every
+// Vulkan device go in one submission. No Vulkan type appears here.
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "recode/raster/render_state_device.hpp"
+
+namespace recode::backends {
+
+class VulkanComputeDevice final : public raster::RenderStateDevice {
+ public:
+  // A width x height framebuffer (depth 2^24 - 1, stencil 0, the interface's default state).
+  // Throws std::invalid_argument unless 1 <= width, height <= 16384, and std::runtime_error
+  // when there is no Vulkan driver or no physical device with what it needs (Vulkan 1.3,
+  // shaderFloat64, shaderInt64 and VK_KHR_push_descriptor), saying what is missing.
+  VulkanComputeDevice(int width, int height);
+  ~VulkanComputeDevice() override;
+  VulkanComputeDevice(const VulkanComputeDevice&) = delete;
+  VulkanComputeDevice& operator=(const VulkanComputeDevice&) = delete;
+
+  [[nodiscard]] int width() const override;
+  [[nodiscard]] int height() const override;
+
+  void clearDepth(double depth) override;
+  void clearStencil(std::uint8_t value) override;
+  // Validated exactly as CpuDevice validates (raster::checkDraw), then uploaded as it is and
+  // drawn on the device.
+  void drawTriangles(std::span<const raster::WindowVertex> vertices,
+                     std::span<const std::uint32_t> indices) override;
+  // The block's triangles that meet the scissor (TriangleSource::trianglesMeeting), uploaded
+  // once for every later draw of the same content key under a scissor inside that one.
+  void drawMesh(const raster::TriangleSource& source) override;
+  // Each runs everything recorded so far (one submission) and returns the values.
+  [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
+  [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override;
+
+  // Recorded, and delivered by finish(): a compute shader copies the rectangle out of the
+  // framebuffer into host-visible memory.
+  [[nodiscard]] raster::PendingRead<std::uint8_t> readStencilLater(
+      const raster::PixelRect& rect) override;
+  [[nodiscard]] raster::PendingRead<std::uint32_t> readDepthLater(
+      const raster::PixelRect& rect) override;
+  // Summaries on the device, by the Vulkan device's summary shader over copies a compute shader
+  // makes from the framebuffer: 64 bytes come back. Rectangles of more than 4 Mi pixels are
+  // summarised from plain read-backs instead.
+  [[nodiscard]] std::shared_ptr<const raster::KeptDepth> keepDepthLater(
+      const raster::PixelRect& rect) override;
+  [[nodiscard]] raster::PendingRead<raster::PixelSummary> summarizeLater(
+      const raster::PixelRect& rect, const raster::StencilClasses& classes,
+      const raster::KeptDepth* nearEnd) override;
+  void finish() override;
+  [[nodiscard]] bool defers() const override;
+  [[nodiscard]] raster::TransferCounters transfers() const override;
+
+  // The physical device's name ("llvmpipe (LLVM 15.0.6, 256 bits)").
+  [[nodiscard]] std::string renderer() const;
+
+  // Triangle lists uploaded so far (a new content key, or a scissor its kept list does not
+  // cover), and draws that found their list on the device already.
+  struct MeshCounters {
+    long long uploads = 0;
+    long long reuses = 0;
+  };
+  [[nodiscard]] MeshCounters meshCounters() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace recode::backends

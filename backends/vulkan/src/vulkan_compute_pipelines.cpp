@@ -1,0 +1,140 @@
+// The compute device's pipelines and their shared layout.
+#include "vulkan_compute_pipelines.hpp"
+
+#include <algorithm>
+#include <array>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "vulkan_context.hpp"
+
+namespace recode::backends::detail {
+
+namespace {
+// glslangValidator --vn writes each module as `const uint32_t k_<stage>[] = {...};`.
+using std::uint32_t;
+#include "tile_clear.comp.h"
+#include "tile_raster.comp.h"
+#include "tile_read.comp.h"
+#include "tile_scan.comp.h"
+#include "tile_scatter.comp.h"
+#include "tile_setup.comp.h"
+
+constexpr std::uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount's smallest bound
+
+VkPipeline createStage(VkDevice device, VkPipelineLayout layout, std::span<const uint32_t> words,
+                       const char* name) {
+  VkShaderModuleCreateInfo moduleInfo{};
+  moduleInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+  moduleInfo.codeSize = words.size_bytes();
+  moduleInfo.pCode = words.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  vkCheck(vkCreateShaderModule(device, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
+  VkComputePipelineCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module;
+  info.stage.pName = "main";
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  const VkResult result =
+      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  vkDestroyShaderModule(device, module, nullptr);
+  vkCheck(result, (std::string("vkCreateComputePipelines (") + name + ")").c_str());
+  return pipeline;
+}
+
+}  // namespace
+
+TilePipelines::TilePipelines(const VulkanContext& context) {
+  push_ = context.pushDescriptorSet();
+  if (push_ == nullptr)
+    throw std::runtime_error("Vulkan compute device: the driver of " + context.deviceName() +
+                             " lacks VK_KHR_push_descriptor, which the vulkan-compute device "
+                             "binds its buffers with");
+  const VkDevice device = context.device();
+  std::array<VkDescriptorSetLayoutBinding, kTileBindings> bindings{};
+  for (std::uint32_t i = 0; i < kTileBindings; ++i) {
+    bindings[i].binding = i;
+    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[i].descriptorCount = 1;
+    bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+  }
+  VkDescriptorSetLayoutCreateInfo setInfo{};
+  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+  setInfo.bindingCount = kTileBindings;
+  setInfo.pBindings = bindings.data();
+  vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_),
+          "vkCreateDescriptorSetLayout");
+  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(TileDrawConstants)};
+  VkPipelineLayoutCreateInfo layoutInfo{};
+  layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &setLayout_;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &range;
+  vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
+  setup = createStage(device, layout_, k_tile_setup_comp, "tile_setup");
+  scan = createStage(device, layout_, k_tile_scan_comp, "tile_scan");
+  scatter = createStage(device, layout_, k_tile_scatter_comp, "tile_scatter");
+  raster = createStage(device, layout_, k_tile_raster_comp, "tile_raster");
+  clear = createStage(device, layout_, k_tile_clear_comp, "tile_clear");
+  read = createStage(device, layout_, k_tile_read_comp, "tile_read");
+}
+
+void TilePipelines::dispatch(VkCommandBuffer cmd, VkPipeline pipeline,
+                             std::initializer_list<TileBuffer> buffers,
+                             const TileDrawConstants& constants, std::uint32_t groupsX,
+                             std::uint32_t groupsY) const {
+  std::array<VkDescriptorBufferInfo, kTileBindings> infos{};
+  std::array<VkWriteDescriptorSet, kTileBindings> writes{};
+  std::uint32_t n = 0;
+  for (const TileBuffer& b : buffers) {
+    infos[n] = {b.buffer, b.offset, b.range};
+    writes[n].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    writes[n].dstBinding = static_cast<std::uint32_t>(b.binding);
+    writes[n].descriptorCount = 1;
+    writes[n].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[n].pBufferInfo = &infos[n];
+    ++n;
+  }
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+  push_(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, n, writes.data());
+  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants, &constants);
+  vkCmdDispatch(cmd, groupsX, groupsY, 1);
+}
+
+void TilePipelines::dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
+                                   std::initializer_list<TileBuffer> buffers,
+                                   const TileDrawConstants& constants, std::uint64_t count) const {
+  if (count == 0)
+    return;
+  const std::uint64_t groups = (count + 63) / 64;
+  const auto perRow = static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, kMaxGroupsPerRow));
+  const auto rows = static_cast<std::uint32_t>((groups + perRow - 1) / perRow);
+  dispatch(cmd, pipeline, buffers, constants, perRow, rows);
+}
+
+const TilePipelines& tilePipelines() {
+  // Leaked, as the context.
+  static const TilePipelines* made =
+      new TilePipelines(VulkanContext::instance(ShaderArithmetic::Native64));
+  return *made;
+}
+
+void computeBarrier(VkCommandBuffer cmd) {
+  VkMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  barrier.dstAccessMask =
+      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
+                       &barrier, 0, nullptr, 0, nullptr);
+}
+
+}  // namespace recode::backends::detail
