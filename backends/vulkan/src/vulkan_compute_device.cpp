@@ -1,7 +1,7 @@
 // VulkanComputeDevice: the contract as a tile rasterizer in compute shaders
 // (shaders/compute/). The host validates a draw and copies its window vertices and indices to
-// the device as they are; each draw then records four dispatches (set-up, the blocks' prefix
-// sum, binning, the blocks' fragments) and the framebuffer stays a storage buffer that clears,
+// the device as they are; each draw then records five dispatches (set-up, the blocks' prefix
+// sum, binning, sorting each block's list, the blocks' fragments) and the framebuffer stays a storage buffer that clears,
 // read-backs and summaries address directly. Everything is recorded into the shared recording
 // of the 64-bit Vulkan context (vulkan_recorder.hpp) and run by finish().
 
@@ -192,7 +192,7 @@ struct VulkanComputeDevice::Impl {
     return mesh;
   }
 
-  // Records the tile rasterizer's four stages for `mesh` in the current state.
+  // Records the tile rasterizer's five stages for `mesh` in the current state.
   void drawMeshEntry(const Mesh& mesh) {
     const PixelRect& scissor = state->scissor;
     if (mesh.triangles == 0 || scissor.empty())
@@ -226,6 +226,8 @@ struct VulkanComputeDevice::Impl {
       p.dispatch(cmd, p.scan, {counts, offsets, cursors}, c, 1, 1);
       detail::computeBarrier(cmd);
       p.dispatchLinear(cmd, p.scatter, {triangles, cursors, pairs}, c, mesh.triangles);
+      detail::computeBarrier(cmd);
+      p.dispatchLinear(cmd, p.sort, {counts, offsets, pairs}, c, blocks);
       detail::computeBarrier(cmd);
       p.dispatch(cmd, p.raster, {triangles, counts, offsets, pairs, pixels}, c, c.gridWidth,
                  c.gridHeight);

@@ -21,6 +21,7 @@ using std::uint32_t;
 #include "tile_scan.comp.h"
 #include "tile_scatter.comp.h"
 #include "tile_setup.comp.h"
+#include "tile_sort.comp.h"
 
 constexpr std::uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount's smallest bound
 
@@ -81,6 +82,7 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
   setup = createStage(device, layout_, k_tile_setup_comp, "tile_setup");
   scan = createStage(device, layout_, k_tile_scan_comp, "tile_scan");
   scatter = createStage(device, layout_, k_tile_scatter_comp, "tile_scatter");
+  sort = createStage(device, layout_, k_tile_sort_comp, "tile_sort");
   raster = createStage(device, layout_, k_tile_raster_comp, "tile_raster");
   clear = createStage(device, layout_, k_tile_clear_comp, "tile_clear");
   read = createStage(device, layout_, k_tile_read_comp, "tile_read");

@@ -1,6 +1,6 @@
 #pragma once
 // The compute device's pipelines (shaders/compute/, docs/backends.md "The compute device"): the
-// tile rasterizer's four stages, the clears and the read-backs. All six share one pipeline
+// tile rasterizer's five stages, the clears and the read-backs. All six share one pipeline
 // layout: nine storage buffers bound by push descriptors (VK_KHR_push_descriptor), so a
 // dispatch names its buffers as it is recorded and no descriptor set outlives it, and the
 // `Draw` push constants of tile_common.glsl.
@@ -64,6 +64,7 @@ class TilePipelines {
   VkPipeline setup = VK_NULL_HANDLE;
   VkPipeline scan = VK_NULL_HANDLE;
   VkPipeline scatter = VK_NULL_HANDLE;
+  VkPipeline sort = VK_NULL_HANDLE;
   VkPipeline raster = VK_NULL_HANDLE;
   VkPipeline clear = VK_NULL_HANDLE;
   VkPipeline read = VK_NULL_HANDLE;

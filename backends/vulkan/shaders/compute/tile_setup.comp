@@ -5,12 +5,14 @@
 // Snaps the three window vertices (section 2 of docs/rasterization.md), takes the doubled area,
 // the facing and the culling (section 3), clips the candidate pixels to the scissor and sets up
 // the depth plane (section 5, exact_contract.glsl: every operation `precise`, the division
-// correctly rounded); then counts the triangle once in each 8x8 block its candidates reach.
+// correctly rounded); then counts the triangle once in each 8x8 block its candidates reach where
+// it may cover a centre (tile_block_test.glsl).
 
 layout(local_size_x = 64) in;
 
 #include "exact_contract.glsl"
 #include "tile_common.glsl"
+#include "tile_block_test.glsl"
 
 layout(std430, set = 0, binding = 0) readonly buffer Vertices { float vertexData[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Indices { uint indexData[]; };
@@ -84,7 +86,10 @@ void main() {
   triangles[base + 15u] = dzdy.y;
   const uvec2 first = blockOf(x0, y0);
   const uvec2 last = blockOf(x1 - 1, y1 - 1);
+  const i64vec2 p1 = front ? v1 : v2;
+  const i64vec2 p2 = front ? v2 : v1;
   for (uint by = first.y; by <= last.y; ++by)
     for (uint bx = first.x; bx <= last.x; ++bx)
-      atomicAdd(blockCounts[by * draw.gridWidth + bx], 1u);
+      if (blockMeetsTriangle(v0, p1, p2, uvec2(bx, by)))
+        atomicAdd(blockCounts[by * draw.gridWidth + bx], 1u);
 }
