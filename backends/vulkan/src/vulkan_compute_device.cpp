@@ -116,6 +116,8 @@ struct VulkanComputeDevice::Impl {
   std::array<Mesh, kKeptMeshes> meshes{};
   std::uint64_t clock = 0;
   MeshCounters meshCounters;
+  bool keepStages = false;
+  std::shared_ptr<std::optional<DrawStages>> lastStages = std::make_shared<std::optional<DrawStages>>();
 
   // Runs `call` on the recorder and counts the submissions, read-back bytes and waits it caused
   // as this device's, so that the counters of a process's devices add up to the recorder's.
@@ -232,6 +234,61 @@ struct VulkanComputeDevice::Impl {
       p.dispatch(cmd, p.raster, {triangles, counts, offsets, pairs, pixels}, c, c.gridWidth,
                  c.gridHeight);
     });
+    if (keepStages)
+      copyStagesBack(layout, c);
+  }
+
+  // Records a copy of the work buffer as the draw left it; its bytes become lastStages when the
+  // recording has run.
+  void copyStagesBack(const WorkLayout& layout, const TileDrawConstants& c) {
+    const VkDeviceSize bytes = std::min(layout.bytes, work.size);
+    recorder->makeRoom(bytes);
+    const detail::CommandRecorder::Staged out = recorder->results(
+        bytes, [layout, c, last = lastStages](const std::uint8_t* words) {
+          *last = parseStages(words, layout, c);
+        });
+    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
+      const VkBufferCopy copy{0, out.offset, bytes};
+      vkCmdCopyBuffer(cmd, work.buffer, out.buffer, 1, &copy);
+    });
+  }
+
+  static DrawStages parseStages(const std::uint8_t* bytes, const WorkLayout& layout,
+                                const TileDrawConstants& c) {
+    const auto word = [&](VkDeviceSize byteOffset) {
+      std::uint32_t w = 0;
+      std::memcpy(&w, bytes + byteOffset, 4);
+      return w;
+    };
+    DrawStages s;
+    s.scissor = {c.scissor[0], c.scissor[1], c.scissor[2], c.scissor[3]};
+    s.gridWidth = static_cast<int>(c.gridWidth);
+    s.gridHeight = static_cast<int>(c.gridHeight);
+    for (std::uint32_t t = 0; t < c.triangleCount; ++t) {
+      const VkDeviceSize base = VkDeviceSize{t} * detail::kTileWordsPerTriangle * 4;
+      SetUpTriangle tri;
+      for (int k = 0; k < 6; ++k)
+        tri.fixed[k] = static_cast<std::int32_t>(word(base + 4 * k));
+      tri.frontFacing = word(base + 24) != 0;
+      tri.candidates = {static_cast<int>(word(base + 28)), static_cast<int>(word(base + 32)),
+                        static_cast<int>(word(base + 36)), static_cast<int>(word(base + 40))};
+      std::memcpy(&tri.z0, bytes + base + 44, 4);
+      std::memcpy(&tri.dzdx, bytes + base + 48, 8);
+      std::memcpy(&tri.dzdy, bytes + base + 56, 8);
+      s.triangles.push_back(tri);
+    }
+    const std::uint32_t blocks = c.gridWidth * c.gridHeight;
+    for (std::uint32_t b = 0; b < blocks; ++b) {
+      const std::uint32_t count = word(layout.countsOffset + 4 * b);
+      const std::uint32_t offset = word(layout.offsetsOffset + 4 * b);
+      const bool overflowed = offset + count > layout.pairCapacity;
+      s.overflowed.push_back(overflowed);
+      std::vector<std::uint32_t> list;
+      for (std::uint32_t k = 0; k < count && !overflowed; ++k)
+        list.push_back(word(layout.pairsOffset + 4 * (VkDeviceSize{offset} + k)));
+      s.blockLists.push_back(std::move(list));
+    }
+    return s;
   }
 
   // Records a clear of the scissor (tile_clear.comp): `stencil` false for depth.
@@ -335,6 +392,17 @@ std::string VulkanComputeDevice::renderer() const {
 
 VulkanComputeDevice::MeshCounters VulkanComputeDevice::meshCounters() const {
   return impl_->meshCounters;
+}
+
+void VulkanComputeDevice::keepDrawStages() {
+  impl_->keepStages = true;
+}
+
+VulkanComputeDevice::DrawStages VulkanComputeDevice::lastDrawStages() {
+  finish();
+  if (!impl_->lastStages->has_value())
+    throw std::logic_error("lastDrawStages: no draw drew anything since keepDrawStages()");
+  return **impl_->lastStages;
 }
 
 void VulkanComputeDevice::clearDepth(double depth) {

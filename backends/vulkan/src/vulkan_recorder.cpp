@@ -19,9 +19,10 @@ constexpr VkDeviceSize kScratchChunkBytes = VkDeviceSize{64} << 20;
 constexpr VkDeviceSize kAlignment = 64;
 
 // Results and uploads share their chunks: shaders read and write them, and the compute device
-// copies its uploads on to device-local memory.
-constexpr VkBufferUsageFlags kResultsUsage =
-    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+// copies its uploads on to device-local memory and its stages' outputs into results.
+constexpr VkBufferUsageFlags kResultsUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                             VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 // Everything before happens-before everything after, host writes to mapped memory included.
 void fullBarrier(VkCommandBuffer cmd) {

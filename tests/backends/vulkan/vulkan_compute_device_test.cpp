@@ -8,7 +8,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <random>
 #include <vector>
@@ -16,6 +18,7 @@
 #include "recode/backends/vulkan_compute_device.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/triangle_setup.hpp"
 #include "recode/raster/triangle_source.hpp"
 
 using namespace recode;
@@ -186,4 +189,106 @@ TEST_CASE("a draw of one triangle over thousands of blocks, then a read of a cor
   CHECK(device.readDepth(corner) == reference.readDepth(corner));
   CHECK(device.readStencil(corner) == reference.readStencil(corner));
   expectSameBuffers(device, reference);
+}
+
+namespace {
+
+std::uint64_t bitsOf(double d) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &d, sizeof b);
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("each stage's output is the reference's own: the set-up, and lists in index order "
+          "that hold every triangle covering a centre of their block",
+          "[vulkan-compute]") {
+  std::mt19937 rng(52);
+  Draw d = randomTriangles(rng, 300, -20.0f, -20.0f, 120.0f, 90.0f);
+  // A few zero-area triangles: a repeated vertex, and three on a line.
+  d.vertices[4] = d.vertices[3];
+  d.vertices[8] = {0.5f * (d.vertices[6].x + d.vertices[7].x),
+                   0.5f * (d.vertices[6].y + d.vertices[7].y), 0.5f};
+  d.vertices[8].x = raster::snapToSubpixel(d.vertices[8].x);
+  d.vertices[8].y = raster::snapToSubpixel(d.vertices[8].y);
+  VulkanComputeDevice device(100, 80);
+  const PixelRect scissor{3, 5, 97, 70};
+  device.setScissor(scissor);
+  device.setCullMode(raster::CullMode::Back);
+  device.keepDrawStages();
+  device.drawTriangles(d.vertices, d.indices);
+  const VulkanComputeDevice::DrawStages stages = device.lastDrawStages();
+  REQUIRE(stages.triangles.size() == 300);
+  // Set-up: raster::setupTriangle's snapped vertices, facing, bounds and depth plane, culled
+  // and clipped to the scissor as the reference's pipeline does.
+  std::vector<std::optional<raster::TriangleSetup>> reference;
+  int drawn = 0;
+  for (std::size_t t = 0; t < 300; ++t) {
+    INFO("triangle " << t);
+    const raster::FixedVertex v[3] = {raster::snapVertex(d.vertices[3 * t]),
+                                      raster::snapVertex(d.vertices[3 * t + 1]),
+                                      raster::snapVertex(d.vertices[3 * t + 2])};
+    std::optional<raster::TriangleSetup> setup = raster::setupTriangle(v[0], v[1], v[2]);
+    const VulkanComputeDevice::SetUpTriangle& got = stages.triangles[t];
+    if (setup && !setup->frontFacing)
+      setup.reset();  // culled
+    const PixelRect candidates = setup ? setup->bounds.intersect(scissor) : PixelRect{};
+    if (candidates.empty()) {
+      CHECK(got.candidates.empty());
+      reference.push_back(std::nullopt);
+      continue;
+    }
+    ++drawn;
+    CHECK(got.candidates == candidates);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(got.fixed[2 * k] == v[k].x);
+      CHECK(got.fixed[2 * k + 1] == v[k].y);
+    }
+    CHECK(got.frontFacing == setup->frontFacing);
+    CHECK(static_cast<double>(got.z0) == setup->depth.z0);
+    CHECK(bitsOf(got.dzdx) == bitsOf(setup->depth.dzdx));
+    CHECK(bitsOf(got.dzdy) == bitsOf(setup->depth.dzdy));
+    reference.push_back(setup);
+  }
+  CHECK(drawn > 50);
+  // Binning: every list in strictly increasing index order, each entry's candidates meeting the
+  // block, and every triangle that covers a centre of the block inside the scissor listed.
+  REQUIRE(stages.blockLists.size() ==
+          static_cast<std::size_t>(stages.gridWidth) * static_cast<std::size_t>(stages.gridHeight));
+  long long listed = 0;
+  for (int by = 0; by < stages.gridHeight; ++by) {
+    for (int bx = 0; bx < stages.gridWidth; ++bx) {
+      const std::size_t b = static_cast<std::size_t>(by * stages.gridWidth + bx);
+      INFO("block " << bx << ", " << by);
+      REQUIRE_FALSE(stages.overflowed[b]);
+      const std::vector<std::uint32_t>& list = stages.blockLists[b];
+      CHECK(std::adjacent_find(list.begin(), list.end(), std::greater_equal<>()) == list.end());
+      const PixelRect block =
+          PixelRect{(scissor.x0 & ~7) + 8 * bx, (scissor.y0 & ~7) + 8 * by, 0, 0};
+      const PixelRect area =
+          PixelRect{block.x0, block.y0, block.x0 + 8, block.y0 + 8}.intersect(scissor);
+      for (std::size_t t = 0; t < 300; ++t) {
+        const bool inList = std::find(list.begin(), list.end(), t) != list.end();
+        if (inList)
+          CHECK_FALSE(stages.triangles[t].candidates.intersect(area).empty());
+        bool covers = false;
+        for (int y = area.y0; reference[t] && y < area.y1; ++y)
+          for (int x = area.x0; x < area.x1; ++x) {
+            const std::int64_t cx = 256 * std::int64_t{x} + 128;
+            const std::int64_t cy = 256 * std::int64_t{y} + 128;
+            covers = covers || std::all_of(reference[t]->edges.begin(), reference[t]->edges.end(),
+                                           [&](const raster::EdgeFunction& e) {
+                                             return e.at(cx, cy) >= 0;
+                                           });
+          }
+        if (covers) {
+          INFO("triangle " << t);
+          CHECK(inList);
+        }
+      }
+      listed += static_cast<long long>(list.size());
+    }
+  }
+  CHECK(listed > 300);
 }

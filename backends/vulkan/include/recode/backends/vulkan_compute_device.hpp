@@ -75,6 +75,32 @@ class VulkanComputeDevice final : public raster::RenderStateDevice {
   };
   [[nodiscard]] MeshCounters meshCounters() const;
 
+  // What the rasterizer's first stages made of a draw, for checking each stage against the
+  // reference (tests/backends/vulkan/vulkan_compute_device_test.cpp does).
+  struct SetUpTriangle {
+    std::int32_t fixed[6] = {};  // snapped X0, Y0, X1, Y1, X2, Y2
+    bool frontFacing = false;
+    raster::PixelRect candidates;  // inside the scissor; empty: the triangle draws nothing
+    float z0 = 0.0f;
+    double dzdx = 0.0;
+    double dzdy = 0.0;
+  };
+  struct DrawStages {
+    raster::PixelRect scissor;
+    int gridWidth = 0;  // 8x8 blocks of the scissor's grid, from (x0 & ~7, y0 & ~7)
+    int gridHeight = 0;
+    std::vector<SetUpTriangle> triangles;  // the set-up stage's records, in index order
+    // Each block's list after the sort stage, row by row; a block whose list did not fit is
+    // marked in `overflowed` and drawn from every triangle instead.
+    std::vector<std::vector<std::uint32_t>> blockLists;
+    std::vector<bool> overflowed;
+  };
+  // From now on, every draw also copies its stages' outputs back (a debugging aid: it costs a
+  // read-back of the draw's work memory); lastDrawStages() runs what is recorded and returns
+  // those of the last draw that drew anything. Throws std::logic_error before any such draw.
+  void keepDrawStages();
+  [[nodiscard]] DrawStages lastDrawStages();
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
