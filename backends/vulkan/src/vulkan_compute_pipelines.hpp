@@ -42,8 +42,9 @@ struct TileDrawConstants {
   std::uint32_t gridHeight = 0;
   std::uint32_t pairCapacity = 0;
   std::uint32_t outWord = 0;
+  std::uint32_t blocksPerGroup = 1;
 };
-static_assert(sizeof(TileDrawConstants) == 56, "tile_common.glsl's Draw is 14 words");
+static_assert(sizeof(TileDrawConstants) == 60, "tile_common.glsl's Draw is 15 words");
 
 // A buffer range at a binding.
 struct TileBuffer {

@@ -146,6 +146,7 @@ void VulkanContext::choosePhysicalDevice() {
       physical_ = physical;
       queueFamily_ = family;
       name_ = properties.deviceName;
+      cpuDriver_ = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     }
   }
   if (physical_ == VK_NULL_HANDLE)

@@ -46,6 +46,9 @@ class VulkanContext {
 
   [[nodiscard]] VkDevice device() const { return device_; }
   [[nodiscard]] const std::string& deviceName() const { return name_; }
+  // Whether the physical device is a CPU driver (lavapipe): work is then best handed out in
+  // fewer, larger pieces.
+  [[nodiscard]] bool cpuDriver() const { return cpuDriver_; }
 
   // Device-local memory for an image or buffer with these requirements.
   [[nodiscard]] VkDeviceMemory allocate(const VkMemoryRequirements& requirements,
@@ -90,6 +93,7 @@ class VulkanContext {
   VkQueue queue_ = VK_NULL_HANDLE;
   std::mutex queueLock_;
   std::string name_;
+  bool cpuDriver_ = false;
   PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
 };
 

@@ -17,6 +17,7 @@ layout(push_constant) uniform Draw {
   uint gridHeight;     // rows of blocks
   uint pairCapacity;   // entries the bins' list holds
   uint outWord;        // a read's first word in its output
+  uint blocksPerGroup; // the raster stage's blocks a workgroup, along a row of the grid
 } draw;
 
 const uint kWordsPerTriangle = 16u;

@@ -91,20 +91,21 @@ void shade(uint t) {
   stencil = (next & writeMask) | (stencil & ~writeMask & 0xFFu);
 }
 
-void main() {
-  const uint block = gl_WorkGroupID.y * draw.gridWidth + gl_WorkGroupID.x;
-  pixel = ivec2((draw.scissor.x & ~7) + int(gl_WorkGroupID.x * 8u + gl_LocalInvocationID.x),
-                (draw.scissor.y & ~7) + int(gl_WorkGroupID.y * 8u + gl_LocalInvocationID.y));
+// Draws block (bx, by) of the scissor's grid: this invocation's pixel of it.
+void drawBlock(uint bx, uint by) {
+  const uint block = by * draw.gridWidth + bx;
+  pixel = ivec2((draw.scissor.x & ~7) + int(bx * 8u + gl_LocalInvocationID.x),
+                (draw.scissor.y & ~7) + int(by * 8u + gl_LocalInvocationID.y));
   inside = pixel.x >= draw.scissor.x && pixel.y >= draw.scissor.y && pixel.x < draw.scissor.z &&
            pixel.y < draw.scissor.w;
+  const uint count = blockCounts[block];
+  if (count == 0u)
+    return;
   const uint at = uint(pixel.y) * draw.width + uint(pixel.x);
   const uint before = inside ? pixels[at] : 0u;
   depth = depthOf(before);
   stencil = stencilOf(before);
-  const uint count = blockCounts[block];
   const uint offset = blockOffsets[block];
-  if (count == 0u)
-    return;
   if (offset + count > draw.pairCapacity) {
     // The list did not fit: every triangle of the draw, in index order (a set-up triangle that
     // misses this pixel is skipped by its candidate rectangle).
@@ -116,4 +117,13 @@ void main() {
   }
   if (inside)
     pixels[at] = packPixel(depth, stencil);
+}
+
+// A workgroup draws blocksPerGroup consecutive blocks of a row of the grid, one after the other:
+// one on a GPU, several on a CPU driver, where a workgroup's fixed cost is high.
+void main() {
+  const uint first = gl_WorkGroupID.x * draw.blocksPerGroup;
+  const uint end = min(first + draw.blocksPerGroup, draw.gridWidth);
+  for (uint bx = first; bx < end; ++bx)
+    drawBlock(bx, gl_WorkGroupID.y);
 }
