@@ -206,9 +206,9 @@ struct VulkanComputeDevice::Impl {
     const std::uint32_t blocks = c.gridWidth * c.gridHeight;
     const WorkLayout layout(mesh.triangles, blocks);
     c.pairCapacity = layout.pairCapacity;
-    // A workgroup a block on a GPU; on a CPU driver, where each workgroup has a fixed cost of
-    // several microseconds, one a row of blocks (hand-grasp on lavapipe: 0.85 of the time).
-    c.blocksPerGroup = context->cpuDriver() ? c.gridWidth : 1;
+    // Eight blocks a workgroup on a GPU; on a CPU driver, where each workgroup has a fixed cost
+    // of several microseconds, a row of blocks.
+    c.blocksPerGroup = context->cpuDriver() ? std::max(c.gridWidth, 8u) : 8u;
     reserve(work, layout.bytes);
     const VkBuffer w = work.buffer;
     const VkDeviceSize blockBytes = VkDeviceSize{blocks} * 4;
