@@ -228,7 +228,8 @@ struct VulkanComputeDevice::Impl {
       detail::computeBarrier(cmd);
       p.dispatchLinear(cmd, p.setup, {vertices, indices, triangles, counts}, c, mesh.triangles);
       detail::computeBarrier(cmd);
-      p.dispatch(cmd, p.scan, {counts, offsets, cursors}, c, 1, 1);
+      p.dispatch(cmd, context->cpuDriver() ? p.scanSerial : p.scan, {counts, offsets, cursors}, c,
+                 1, 1);
       detail::computeBarrier(cmd);
       p.dispatchLinear(cmd, p.scatter, {triangles, cursors, pairs}, c, mesh.triangles);
       detail::computeBarrier(cmd);

@@ -19,6 +19,7 @@ using std::uint32_t;
 #include "tile_raster.comp.h"
 #include "tile_read.comp.h"
 #include "tile_scan.comp.h"
+#include "tile_scan_serial.comp.h"
 #include "tile_scatter.comp.h"
 #include "tile_setup.comp.h"
 #include "tile_sort.comp.h"
@@ -81,6 +82,7 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
   vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
   setup = createStage(device, layout_, k_tile_setup_comp, "tile_setup");
   scan = createStage(device, layout_, k_tile_scan_comp, "tile_scan");
+  scanSerial = createStage(device, layout_, k_tile_scan_serial_comp, "tile_scan_serial");
   scatter = createStage(device, layout_, k_tile_scatter_comp, "tile_scatter");
   sort = createStage(device, layout_, k_tile_sort_comp, "tile_sort");
   raster = createStage(device, layout_, k_tile_raster_comp, "tile_raster");

@@ -64,6 +64,7 @@ class TilePipelines {
 
   VkPipeline setup = VK_NULL_HANDLE;
   VkPipeline scan = VK_NULL_HANDLE;
+  VkPipeline scanSerial = VK_NULL_HANDLE;  // the same in one invocation, for CPU drivers
   VkPipeline scatter = VK_NULL_HANDLE;
   VkPipeline sort = VK_NULL_HANDLE;
   VkPipeline raster = VK_NULL_HANDLE;
