@@ -37,7 +37,7 @@ struct VerifyOptions {
   bool glExact = false;
   std::string glPlatform = "auto";
   bool vulkan = false;
-  bool vulkan32 = false;  // --vulkan-32: the Vulkan oracle on the 32-bit arithmetic
+  bool vulkan32 = false;       // --vulkan-32: the Vulkan oracle on the 32-bit arithmetic
   bool vulkanCompute = false;  // --vulkan-compute: the Vulkan oracle on the compute device
   bool json = false;
   bool noTiming = false;  // --no-timing

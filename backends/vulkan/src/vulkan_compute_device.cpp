@@ -1,9 +1,9 @@
 // VulkanComputeDevice: the contract as a tile rasterizer in compute shaders
 // (shaders/compute/). The host validates a draw and copies its window vertices and indices to
 // the device as they are; each draw then records five dispatches (set-up, the blocks' prefix
-// sum, binning, sorting each block's list, the blocks' fragments) and the framebuffer stays a storage buffer that clears,
-// read-backs and summaries address directly. Everything is recorded into the shared recording
-// of the 64-bit Vulkan context (vulkan_recorder.hpp) and run by finish().
+// sum, binning, sorting each block's list, the blocks' fragments) and the framebuffer stays a
+// storage buffer that clears, read-backs and summaries address directly. Everything is recorded
+// into the shared recording of the 64-bit Vulkan context (vulkan_recorder.hpp) and run by finish().
 
 #include "recode/backends/vulkan_compute_device.hpp"
 
@@ -117,24 +117,13 @@ struct VulkanComputeDevice::Impl {
   std::uint64_t clock = 0;
   MeshCounters meshCounters;
   bool keepStages = false;
-  std::shared_ptr<std::optional<DrawStages>> lastStages = std::make_shared<std::optional<DrawStages>>();
+  std::shared_ptr<std::optional<DrawStages>> lastStages =
+      std::make_shared<std::optional<DrawStages>>();
 
-  // Runs `call` on the recorder and counts the submissions, read-back bytes and waits it caused
-  // as this device's, so that the counters of a process's devices add up to the recorder's.
+  // Runs `call` on the recorder, counting what it made the recorder do as this device's.
   template <typename Call>
   decltype(auto) counted(Call&& call) {
-    const raster::TransferCounters before = recorder->counters();
-    struct Count {
-      Impl& d;
-      const raster::TransferCounters& before;
-      ~Count() {
-        const raster::TransferCounters after = d.recorder->counters();
-        d.transfers.submissions += after.submissions - before.submissions;
-        d.transfers.readbackBytes += after.readbackBytes - before.readbackBytes;
-        d.transfers.waitUs += after.waitUs - before.waitUs;
-      }
-    } count{*this, before};
-    return call();
+    return detail::countedOn(*recorder, transfers, std::forward<Call>(call));
   }
 
   void freeRetired() {
@@ -247,8 +236,8 @@ struct VulkanComputeDevice::Impl {
   void copyStagesBack(const WorkLayout& layout, const TileDrawConstants& c) {
     const VkDeviceSize bytes = std::min(layout.bytes, work.size);
     recorder->makeRoom(bytes);
-    const detail::CommandRecorder::Staged out = recorder->results(
-        bytes, [layout, c, last = lastStages](const std::uint8_t* words) {
+    const detail::CommandRecorder::Staged out =
+        recorder->results(bytes, [layout, c, last = lastStages](const std::uint8_t* words) {
           *last = parseStages(words, layout, c);
         });
     recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {

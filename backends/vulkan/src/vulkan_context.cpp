@@ -181,9 +181,9 @@ void VulkanContext::createDevice() {
   vkCheck(vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, nullptr),
           "vkEnumerateDeviceExtensionProperties");
   std::vector<VkExtensionProperties> extensions(extensionCount);
-  vkCheck(vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount,
-                                               extensions.data()),
-          "vkEnumerateDeviceExtensionProperties");
+  vkCheck(
+      vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extensionCount, extensions.data()),
+      "vkEnumerateDeviceExtensionProperties");
   bool pushDescriptors = false;
   for (const VkExtensionProperties& e : extensions)
     if (std::string_view(e.extensionName) == VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME)

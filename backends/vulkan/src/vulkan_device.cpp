@@ -75,22 +75,10 @@ struct VulkanDevice::Impl {
   detail::CommandRecorder* recorder = nullptr;  // sharedRecorder(arithmetic)
   raster::TransferCounters transfers;           // what this device's calls made the recorder do
 
-  // Runs `call` on the recorder and counts the submissions, read-back bytes and waits it caused as
-  // this device's, so that the counters of a process's devices add up to the recorder's.
+  // Runs `call` on the recorder, counting what it made the recorder do as this device's.
   template <typename Call>
   decltype(auto) counted(Call&& call) {
-    const raster::TransferCounters before = recorder->counters();
-    struct Count {
-      Impl& d;
-      const raster::TransferCounters& before;
-      ~Count() {
-        const raster::TransferCounters after = d.recorder->counters();
-        d.transfers.submissions += after.submissions - before.submissions;
-        d.transfers.readbackBytes += after.readbackBytes - before.readbackBytes;
-        d.transfers.waitUs += after.waitUs - before.waitUs;
-      }
-    } count{*this, before};
-    return call();
+    return detail::countedOn(*recorder, transfers, std::forward<Call>(call));
   }
   // The proxies of the blocks drawn last, and where the last lists went in staging memory (by
   // ProxyCache id, with the recording they are valid in): a pass that draws a block again in

@@ -163,6 +163,27 @@ class CommandRecorder {
   std::uint64_t recordingsRun_ = 0;
 };
 
+// Runs `call` and adds what it made `recorder` do (submissions, read-back bytes, time waited) to
+// `counters`: a device's share of the recorder it shares, so that the counters of a process's
+// devices add up to the recorder's. Returns what `call` returns.
+template <typename Call>
+decltype(auto) countedOn(CommandRecorder& recorder, raster::TransferCounters& counters,
+                         Call&& call) {
+  const raster::TransferCounters before = recorder.counters();
+  struct Count {
+    CommandRecorder& recorder;
+    raster::TransferCounters& counters;
+    const raster::TransferCounters& before;
+    ~Count() {
+      const raster::TransferCounters after = recorder.counters();
+      counters.submissions += after.submissions - before.submissions;
+      counters.readbackBytes += after.readbackBytes - before.readbackBytes;
+      counters.waitUs += after.waitUs - before.waitUs;
+    }
+  } count{recorder, counters, before};
+  return call();
+}
+
 // The process's recorder for devices of that arithmetic (on that arithmetic's context), made
 // with the context on first use and never destroyed (as the context).
 [[nodiscard]] CommandRecorder& sharedRecorder(ShaderArithmetic arithmetic);

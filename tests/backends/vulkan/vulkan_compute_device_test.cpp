@@ -201,9 +201,10 @@ std::uint64_t bitsOf(double d) {
 
 }  // namespace
 
-TEST_CASE("each stage's output is the reference's own: the set-up, and lists in index order "
-          "that hold every triangle covering a centre of their block",
-          "[vulkan-compute]") {
+TEST_CASE(
+    "each stage's output is the reference's own: the set-up, and lists in index order "
+    "that hold every triangle covering a centre of their block",
+    "[vulkan-compute]") {
   std::mt19937 rng(52);
   Draw d = randomTriangles(rng, 300, -20.0f, -20.0f, 120.0f, 90.0f);
   // A few zero-area triangles: a repeated vertex, and three on a line.
@@ -277,10 +278,9 @@ TEST_CASE("each stage's output is the reference's own: the set-up, and lists in 
           for (int x = area.x0; x < area.x1; ++x) {
             const std::int64_t cx = 256 * std::int64_t{x} + 128;
             const std::int64_t cy = 256 * std::int64_t{y} + 128;
-            covers = covers || std::all_of(reference[t]->edges.begin(), reference[t]->edges.end(),
-                                           [&](const raster::EdgeFunction& e) {
-                                             return e.at(cx, cy) >= 0;
-                                           });
+            covers = covers ||
+                     std::all_of(reference[t]->edges.begin(), reference[t]->edges.end(),
+                                 [&](const raster::EdgeFunction& e) { return e.at(cx, cy) >= 0; });
           }
         if (covers) {
           INFO("triangle " << t);
