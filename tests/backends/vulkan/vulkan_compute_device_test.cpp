@@ -1,8 +1,8 @@
 // What is the compute device's own (backends::VulkanComputeDevice): the paths of its tile
-// rasterizer that the conformance suite's small draws rarely reach (a block whose list is longer
-// than the raster stage sorts at once, lists that overflow the bins and fall back to every
-// triangle, a triangle over thousands of blocks), and its triangle lists kept on the device per
-// content key and scissor. The contract itself is the conformance suite's
+// rasterizer that the conformance suite's small draws rarely reach (a block whose list holds
+// thousands of triangles, lists that overflow the bins and fall back to every triangle, a
+// triangle over thousands of blocks), its triangle lists kept on the device per content key and
+// scissor, and each stage's output against the reference's own. The contract itself is the conformance suite's
 // (tests/backends/device_conformance_test.cpp). Runs on whatever Vulkan driver the loader finds
 // (lavapipe here).
 
@@ -89,9 +89,9 @@ class KeyedSource final : public raster::TriangleSource {
 
 }  // namespace
 
-TEST_CASE("a block's list longer than the raster stage sorts at once keeps index order",
+TEST_CASE("a block's list of thousands of triangles is drawn in index order",
           "[vulkan-compute]") {
-  // 3,000 triangles inside one 8x8 block: the list is drawn in windows of 1,024 indices.
+  // 3,000 triangles inside one 8x8 block: the sort stage's heap holds all of them.
   std::mt19937 rng(48);
   const Draw d = randomTriangles(rng, 3000, 16.0f, 16.0f, 24.0f, 24.0f);
   VulkanComputeDevice device(40, 40);
