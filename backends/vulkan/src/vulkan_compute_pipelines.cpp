@@ -6,9 +6,9 @@
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "vulkan_context.hpp"
+#include "vulkan_pipeline.hpp"
 
 namespace recode::backends::detail {
 
@@ -26,29 +26,6 @@ using std::uint32_t;
 
 constexpr std::uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount's smallest bound
 
-VkPipeline createStage(VkDevice device, VkPipelineLayout layout, std::span<const uint32_t> words,
-                       const char* name) {
-  VkShaderModuleCreateInfo moduleInfo{};
-  moduleInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-  moduleInfo.codeSize = words.size_bytes();
-  moduleInfo.pCode = words.data();
-  VkShaderModule module = VK_NULL_HANDLE;
-  vkCheck(vkCreateShaderModule(device, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
-  VkComputePipelineCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
-  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  info.stage.module = module;
-  info.stage.pName = "main";
-  info.layout = layout;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  const VkResult result =
-      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-  vkDestroyShaderModule(device, module, nullptr);
-  vkCheck(result, (std::string("vkCreateComputePipelines (") + name + ")").c_str());
-  return pipeline;
-}
-
 }  // namespace
 
 TilePipelines::TilePipelines(const VulkanContext& context) {
@@ -58,36 +35,23 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
                              " lacks VK_KHR_push_descriptor, which the vulkan-compute device "
                              "binds its buffers with");
   const VkDevice device = context.device();
-  std::array<VkDescriptorSetLayoutBinding, kTileBindings> bindings{};
-  for (std::uint32_t i = 0; i < kTileBindings; ++i) {
-    bindings[i].binding = i;
-    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    bindings[i].descriptorCount = 1;
-    bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-  }
-  VkDescriptorSetLayoutCreateInfo setInfo{};
-  setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-  setInfo.bindingCount = kTileBindings;
-  setInfo.pBindings = bindings.data();
-  vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_),
-          "vkCreateDescriptorSetLayout");
-  const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(TileDrawConstants)};
-  VkPipelineLayoutCreateInfo layoutInfo{};
-  layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout_;
-  layoutInfo.pushConstantRangeCount = 1;
-  layoutInfo.pPushConstantRanges = &range;
-  vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
-  setup = createStage(device, layout_, k_tile_setup_comp, "tile_setup");
-  scan = createStage(device, layout_, k_tile_scan_comp, "tile_scan");
-  scanSerial = createStage(device, layout_, k_tile_scan_serial_comp, "tile_scan_serial");
-  scatter = createStage(device, layout_, k_tile_scatter_comp, "tile_scatter");
-  sort = createStage(device, layout_, k_tile_sort_comp, "tile_sort");
-  raster = createStage(device, layout_, k_tile_raster_comp, "tile_raster");
-  clear = createStage(device, layout_, k_tile_clear_comp, "tile_clear");
-  read = createStage(device, layout_, k_tile_read_comp, "tile_read");
+  const ComputePipeline layout =
+      createComputeLayout(device, kTileBindings, sizeof(TileDrawConstants),
+                          VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR);
+  setLayout_ = layout.setLayout;
+  layout_ = layout.layout;
+  const auto createStage = [&](std::span<const std::uint32_t> words, const char* name) {
+    return createComputeStage(device, layout_, words,
+                              (std::string("vkCreateComputePipelines (") + name + ")").c_str());
+  };
+  setup = createStage(k_tile_setup_comp, "tile_setup");
+  scan = createStage(k_tile_scan_comp, "tile_scan");
+  scanSerial = createStage(k_tile_scan_serial_comp, "tile_scan_serial");
+  scatter = createStage(k_tile_scatter_comp, "tile_scatter");
+  sort = createStage(k_tile_sort_comp, "tile_sort");
+  raster = createStage(k_tile_raster_comp, "tile_raster");
+  clear = createStage(k_tile_clear_comp, "tile_clear");
+  read = createStage(k_tile_read_comp, "tile_read");
 }
 
 void TilePipelines::dispatch(VkCommandBuffer cmd, VkPipeline pipeline,

@@ -159,9 +159,9 @@ ExactPipelines createExactPipelines(VkDevice device, ShaderArithmetic arithmetic
   return out;
 }
 
-ComputePipeline createComputePipeline(VkDevice device, std::span<const std::uint32_t> spirv,
-                                      std::uint32_t storageBuffers, std::uint32_t pushBytes,
-                                      const char* what) {
+ComputePipeline createComputeLayout(VkDevice device, std::uint32_t storageBuffers,
+                                    std::uint32_t pushBytes,
+                                    VkDescriptorSetLayoutCreateFlags flags) {
   ComputePipeline made;
   std::vector<VkDescriptorSetLayoutBinding> bindings(storageBuffers);
   for (std::uint32_t i = 0; i < storageBuffers; ++i) {
@@ -172,6 +172,7 @@ ComputePipeline createComputePipeline(VkDevice device, std::span<const std::uint
   }
   VkDescriptorSetLayoutCreateInfo setInfo{};
   setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+  setInfo.flags = flags;
   setInfo.bindingCount = storageBuffers;
   setInfo.pBindings = bindings.data();
   vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &made.setLayout),
@@ -185,6 +186,11 @@ ComputePipeline createComputePipeline(VkDevice device, std::span<const std::uint
   layoutInfo.pPushConstantRanges = &range;
   vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &made.layout),
           "vkCreatePipelineLayout");
+  return made;
+}
+
+VkPipeline createComputeStage(VkDevice device, VkPipelineLayout layout,
+                              std::span<const std::uint32_t> spirv, const char* what) {
   const VkShaderModule module = createModule(device, spirv);
   VkComputePipelineCreateInfo pipelineInfo{};
   pipelineInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
@@ -192,11 +198,20 @@ ComputePipeline createComputePipeline(VkDevice device, std::span<const std::uint
   pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   pipelineInfo.stage.module = module;
   pipelineInfo.stage.pName = "main";
-  pipelineInfo.layout = made.layout;
+  pipelineInfo.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
   const VkResult result =
-      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &made.pipeline);
+      vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline);
   vkDestroyShaderModule(device, module, nullptr);
   vkCheck(result, what);
+  return pipeline;
+}
+
+ComputePipeline createComputePipeline(VkDevice device, std::span<const std::uint32_t> spirv,
+                                      std::uint32_t storageBuffers, std::uint32_t pushBytes,
+                                      const char* what) {
+  ComputePipeline made = createComputeLayout(device, storageBuffers, pushBytes, 0);
+  made.pipeline = createComputeStage(device, made.layout, spirv, what);
   return made;
 }
 

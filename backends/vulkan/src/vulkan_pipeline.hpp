@@ -42,7 +42,19 @@ struct ComputePipeline {
   VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
-// Throws std::runtime_error on a Vulkan failure, naming `what`.
+// The set layout (`storageBuffers` storage buffers at bindings 0, 1, ..., with `flags`) and the
+// pipeline layout (with a push-constant block of `pushBytes`) of compute stages; `pipeline` is
+// left null. Throws std::runtime_error on a Vulkan failure.
+[[nodiscard]] ComputePipeline createComputeLayout(VkDevice device, std::uint32_t storageBuffers,
+                                                  std::uint32_t pushBytes,
+                                                  VkDescriptorSetLayoutCreateFlags flags);
+// A compute stage of `spirv` in `layout`; throws std::runtime_error on a Vulkan failure, naming
+// `what`.
+[[nodiscard]] VkPipeline createComputeStage(VkDevice device, VkPipelineLayout layout,
+                                            std::span<const std::uint32_t> spirv, const char* what);
+
+// Both, for a shader with a layout of its own. Throws std::runtime_error on a Vulkan failure,
+// naming `what`.
 [[nodiscard]] ComputePipeline createComputePipeline(VkDevice device,
                                                     std::span<const std::uint32_t> spirv,
                                                     std::uint32_t storageBuffers,
