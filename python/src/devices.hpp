@@ -1,7 +1,8 @@
 #pragma once
 // The devices Python draws on, by the names of the device registry ("cpu", "gl", "gl-exact",
-// "vulkan", "vulkan-32", "vulkan-compute"). A module built with the project's CMake has every device of that build; one built
-// by `pip install .` (the libraries alone, no GPU back end) has "cpu" only.
+// "vulkan", "vulkan-32", "vulkan-compute"). A module built with the project's CMake has every
+// device of that build; one built by `pip install .` (the libraries alone, no GPU back end) has
+// "cpu" only.
 
 #include <pybind11/pybind11.h>
 

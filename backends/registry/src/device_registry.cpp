@@ -56,9 +56,8 @@ constexpr std::array<DeviceInfo, 6> kDevices = {{
      true, kVulkanBuilt,
      "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
     {DeviceKind::VulkanCompute, "vulkan-compute",
-     "the contract as a tile rasterizer in Vulkan compute shaders only (VulkanComputeDevice)",
-     true, kVulkanBuilt,
-     "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
+     "the contract as a tile rasterizer in Vulkan compute shaders only (VulkanComputeDevice)", true,
+     kVulkanBuilt, "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
 }};
 
 [[noreturn]] void notBuilt(const DeviceInfo& info) {

@@ -182,8 +182,7 @@ CommandRecorder::Scratch CommandRecorder::scratch(std::size_t bytes) {
 CommandRecorder::Staged CommandRecorder::results(std::size_t bytes,
                                                  std::function<void(const std::uint8_t*)> deliver) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
-  const Region<HostBuffer> region =
-      allocateHost(results_, bytes, kResultsUsage);
+  const Region<HostBuffer> region = allocateHost(results_, bytes, kResultsUsage);
   deliverAfterRun(region, bytes, std::move(deliver));
   return {region.buffer->buffer, region.offset};
 }

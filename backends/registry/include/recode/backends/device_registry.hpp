@@ -24,7 +24,7 @@ enum class DeviceKind {
 
 struct DeviceInfo {
   DeviceKind kind = DeviceKind::Cpu;
-  std::string_view name;  // "cpu", "gl", "gl-exact", "vulkan", "vulkan-32", "vulkan-compute"
+  std::string_view name;         // "cpu", "gl", "gl-exact", "vulkan", "vulkan-32", "vulkan-compute"
   std::string_view description;  // one line
   bool exact = false;            // promises raster::CpuDevice's bits (docs/rasterization.md)
   bool built = false;            // this build can make it
