@@ -2,9 +2,9 @@
 // rasterizer that the conformance suite's small draws rarely reach (a block whose list holds
 // thousands of triangles, lists that overflow the bins and fall back to every triangle, a
 // triangle over thousands of blocks), its triangle lists kept on the device per content key and
-// scissor, and each stage's output against the reference's own. The contract itself is the conformance suite's
-// (tests/backends/device_conformance_test.cpp). Runs on whatever Vulkan driver the loader finds
-// (lavapipe here).
+// scissor, and each stage's output against the reference's own. The contract itself is the
+// conformance suite's (tests/backends/device_conformance_test.cpp). Runs on whatever Vulkan driver
+// the loader finds (lavapipe here).
 
 #include <catch2/catch.hpp>
 
@@ -65,6 +65,23 @@ void expectSameBuffers(const raster::DepthStencilDevice& device,
   CHECK(device.readStencil(all) == reference.readStencil(all));
 }
 
+// `d` drawn in countingState (under `scissor` when there is one) on the compute device and on the
+// CPU device, which must then hold the same buffers.
+void expectSameDraw(const Draw& d, int width, int height,
+                    std::optional<PixelRect> scissor = std::nullopt) {
+  VulkanComputeDevice device(width, height);
+  raster::CpuDevice reference(width, height);
+  for (raster::DepthStencilDevice* target :
+       {static_cast<raster::DepthStencilDevice*>(&device),
+        static_cast<raster::DepthStencilDevice*>(&reference)}) {
+    countingState(*target);
+    if (scissor)
+      target->setScissor(*scissor);
+    target->drawTriangles(d.vertices, d.indices);
+  }
+  expectSameBuffers(device, reference);
+}
+
 // A block source with a content key whose trianglesMeeting lists everything (a valid narrowing),
 // counting how often it is asked.
 class KeyedSource final : public raster::TriangleSource {
@@ -89,18 +106,10 @@ class KeyedSource final : public raster::TriangleSource {
 
 }  // namespace
 
-TEST_CASE("a block's list of thousands of triangles is drawn in index order",
-          "[vulkan-compute]") {
+TEST_CASE("a block's list of thousands of triangles is drawn in index order", "[vulkan-compute]") {
   // 3,000 triangles inside one 8x8 block: the sort stage's heap holds all of them.
   std::mt19937 rng(48);
-  const Draw d = randomTriangles(rng, 3000, 16.0f, 16.0f, 24.0f, 24.0f);
-  VulkanComputeDevice device(40, 40);
-  raster::CpuDevice reference(40, 40);
-  countingState(device);
-  countingState(reference);
-  device.drawTriangles(d.vertices, d.indices);
-  reference.drawTriangles(d.vertices, d.indices);
-  expectSameBuffers(device, reference);
+  expectSameDraw(randomTriangles(rng, 3000, 16.0f, 16.0f, 24.0f, 24.0f), 40, 40);
 }
 
 TEST_CASE("blocks whose lists overflow the bins are drawn from every triangle, in order",
@@ -108,29 +117,13 @@ TEST_CASE("blocks whose lists overflow the bins are drawn from every triangle, i
   // 1,500 triangles over the whole 256 x 256 frame: about 1,500 x 1,024 entries, far more than
   // the lists hold (4 a triangle, 2 a block), so most blocks take the fallback.
   std::mt19937 rng(49);
-  const Draw d = randomTriangles(rng, 1500, -300.0f, -300.0f, 560.0f, 560.0f);
-  VulkanComputeDevice device(256, 256);
-  raster::CpuDevice reference(256, 256);
-  countingState(device);
-  countingState(reference);
-  device.drawTriangles(d.vertices, d.indices);
-  reference.drawTriangles(d.vertices, d.indices);
-  expectSameBuffers(device, reference);
+  expectSameDraw(randomTriangles(rng, 1500, -300.0f, -300.0f, 560.0f, 560.0f), 256, 256);
 }
 
 TEST_CASE("a scissor off the block grid and triangles from the guard band", "[vulkan-compute]") {
   std::mt19937 rng(50);
-  const Draw d = randomTriangles(rng, 400, -32768.0f, -32768.0f, 32768.0f, 32768.0f);
-  VulkanComputeDevice device(77, 53);
-  raster::CpuDevice reference(77, 53);
-  for (raster::DepthStencilDevice* target :
-       {static_cast<raster::DepthStencilDevice*>(&device),
-        static_cast<raster::DepthStencilDevice*>(&reference)}) {
-    countingState(*target);
-    target->setScissor({3, 5, 70, 50});
-    target->drawTriangles(d.vertices, d.indices);
-  }
-  expectSameBuffers(device, reference);
+  expectSameDraw(randomTriangles(rng, 400, -32768.0f, -32768.0f, 32768.0f, 32768.0f), 77, 53,
+                 PixelRect{3, 5, 70, 50});
 }
 
 TEST_CASE("a block's triangles stay on the device for its key's later draws, and only for them",
