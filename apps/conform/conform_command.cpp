@@ -1,138 +1,153 @@
 #include "conform/conform_command.hpp"
 
-#include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "cli/atomic_file.hpp"
 #include "cli/device_option.hpp"
-#include "recode/backends/device_registry.hpp"
-#include "recode/kit/buffer_diff.hpp"
-#include "recode/raster/golden.hpp"
+#include "recode/conformance/process_backend.hpp"
+#include "recode/conformance/reduce.hpp"
+#include "recode/conformance/report.hpp"
+#include "recode/conformance/suite.hpp"
 
 namespace recode::app {
 
 namespace {
 
 namespace fs = std::filesystem;
+using namespace recode::conformance;
 
 struct ConformOptions {
   std::string device = "cpu";
+  std::string exec;
   std::string golden = RECODE_SOURCE_DATA_DIR "/golden";
+  int random = 0;
+  std::uint64_t seed = 1;
+  double timeout = 60.0;
+  std::string shard;
+  std::string baseline;
+  std::string junit, html, reduceDir;
+  int repeat = 1;
+  std::size_t explain = 4;
   bool json = false;
 };
 
-struct VectorResult {
-  std::string file;  // relative to the golden directory
-  long long depthPixels = 0, stencilPixels = 0;
-  std::optional<kit::PixelDifference> first;
-  std::string deviceError;  // the device refused the stream (a failure, not an error)
-  [[nodiscard]] bool passed() const {
-    return deviceError.empty() && depthPixels == 0 && stencilPixels == 0;
+// "I/N" of --shard.
+std::pair<int, int> parseShard(const std::string& text) {
+  const auto slash = text.find('/');
+  int index = -1, count = 0;
+  const auto parse = [](std::string_view s, int& v) {
+    const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+    return r.ec == std::errc() && r.ptr == s.data() + s.size();
+  };
+  if (slash == std::string::npos || !parse(std::string_view(text).substr(0, slash), index) ||
+      !parse(std::string_view(text).substr(slash + 1), count) || count < 1 || index < 0 ||
+      index >= count) {
+    throw std::runtime_error("--shard " + text + ": expected I/N with 0 <= I < N, e.g. 0/4");
   }
-};
-
-// Every *.json under `dir`, recursively, in a fixed order (by path).
-std::vector<fs::path> goldenFiles(const fs::path& dir) {
-  if (!fs::is_directory(dir))
-    throw std::runtime_error("--golden " + dir.string() + ": not a directory");
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".json")
-      files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  if (files.empty())
-    throw std::runtime_error("--golden " + dir.string() + ": no golden vectors (*.json)");
-  return files;
+  return {index, count};
 }
 
-// A malformed file is an error of the run (FormatError propagates); a device that throws on a
-// valid stream fails the vector.
-VectorResult conformVector(const fs::path& file, const fs::path& dir, backends::DeviceKind kind) {
-  const raster::GoldenVector g = raster::readGolden(file);
-  VectorResult r;
-  r.file = fs::relative(file, dir).generic_string();
-  auto device = backends::makeDevice(kind, g.stream.width, g.stream.height);
-  try {
-    raster::replay(g.stream.commands, *device);
-  } catch (const std::invalid_argument& e) {
-    r.deviceError = e.what();
-    return r;
+std::unique_ptr<Backend> makeBackend(const ConformOptions& o) {
+  if (!o.exec.empty()) {
+    ProcessOptions p;
+    p.timeout = std::chrono::milliseconds(static_cast<long long>(o.timeout * 1000.0));
+    return std::make_unique<ProcessBackend>(o.exec, p);
   }
-  const raster::PixelRect all{0, 0, g.stream.width, g.stream.height};
-  const auto depth = device->readDepth(all);
-  const auto stencil = device->readStencil(all);
-  const kit::BufferComparison cmp = kit::compareBuffers(g, depth, stencil, 1);
-  r.depthPixels = cmp.depthPixels;
-  r.stencilPixels = cmp.stencilPixels;
-  r.first = cmp.first();
-  return r;
+  // A device this build cannot make is an error before any vector is read.
+  (void)makeNamedDevice(o.device, 1, 1);
+  const std::string name = o.device;
+  return std::make_unique<DeviceBackend>(
+      name, [name](int w, int h) { return makeNamedDevice(name, w, h); });
 }
 
-nlohmann::json resultToJson(const VectorResult& r) {
-  nlohmann::json j = {{"file", r.file},
-                      {"passed", r.passed()},
-                      {"depth_pixels", r.depthPixels},
-                      {"stencil_pixels", r.stencilPixels},
-                      {"first_difference", nullptr}};
-  if (r.first) {
-    j["first_difference"] = {{"x", r.first->x},
-                             {"y", r.first->y},
-                             {"buffer", kit::toString(r.first->buffer)},
-                             {"expected", r.first->expected},
-                             {"got", r.first->got}};
+// Reduces the first failing vector of the run and writes the minimal vector and its passing
+// twin into the directory.
+void reduceFirstFailure(const SuiteReport& report, const std::vector<SuiteVector>& vectors,
+                        Backend& backend, const fs::path& dir) {
+  for (const VectorReport& r : report.vectors) {
+    if (r.status != Status::Failed && r.status != Status::ExpectedFailure)
+      continue;
+    const auto v = std::find_if(vectors.begin(), vectors.end(),
+                                [&](const SuiteVector& s) { return s.name == r.name; });
+    std::cerr << "recode conform: reducing " << r.name << " ...\n";
+    const Reduction red = reduce(v->golden.stream, backend);
+    CreatedDirectory created(dir, "--reduce");
+    std::string stem = fs::path(r.name).stem().string();
+    const fs::path minimal = dir / (stem + "-minimal.json");
+    writeFileAtomically(minimal, raster::goldenToJson(red.minimal, raster::GoldenLayout::Rows),
+                        "--reduce");
+    std::cout << "reduced " << r.name << " in " << red.backendRuns << " runs to " << red.draws
+              << " draws, " << red.triangles << " triangles: " << minimal.string() << '\n';
+    if (red.passingTwin) {
+      const fs::path twin = dir / (stem + "-passing-twin.json");
+      writeFileAtomically(twin, raster::goldenToJson(*red.passingTwin, raster::GoldenLayout::Rows),
+                          "--reduce");
+      std::cout << "passing twin: " << twin.string() << '\n';
+    } else {
+      std::cout << "no passing twin: every single step from the minimal vector still fails\n";
+    }
+    created.keep();
+    return;
   }
-  if (!r.deviceError.empty())
-    j["error"] = r.deviceError;
-  return j;
-}
-
-void printResult(std::ostream& out, const VectorResult& r) {
-  out << (r.passed() ? "  pass  " : "  FAIL  ") << r.file;
-  if (!r.deviceError.empty()) {
-    out << ": the device refused the stream: " << r.deviceError;
-  } else if (r.first) {
-    out << ": " << r.depthPixels << " depth, " << r.stencilPixels
-        << " stencil pixels differ; first at (" << r.first->x << ", " << r.first->y << ") "
-        << kit::toString(r.first->buffer) << " expected " << r.first->expected << ", got "
-        << r.first->got;
-  }
-  out << '\n';
+  std::cout << "--reduce: nothing failed, nothing to reduce\n";
 }
 
 int runConform(const ConformOptions& o) {
-  const backends::DeviceKind kind = backends::parseDeviceKind(o.device);
-  // A device this build cannot make is an error before any vector is read.
-  (void)backends::makeDevice(kind, 1, 1);
-  const fs::path dir = o.golden;
-  std::vector<VectorResult> results;
-  for (const fs::path& file : goldenFiles(dir))
-    results.push_back(conformVector(file, dir, kind));
-  const auto passed = std::count_if(results.begin(), results.end(),
-                                    [](const VectorResult& r) { return r.passed(); });
-  const auto failed = static_cast<std::ptrdiff_t>(results.size()) - passed;
-  if (o.json) {
-    nlohmann::json list = nlohmann::json::array();
-    for (const VectorResult& r : results)
-      list.push_back(resultToJson(r));
-    const nlohmann::json j = {{"device", o.device},        {"golden", dir.string()},
-                              {"vectors", results.size()}, {"passed", passed},
-                              {"failed", failed},          {"results", list}};
-    std::cout << j.dump(1) << '\n';
-  } else {
-    std::cout << "recode conform: device " << o.device << ", " << results.size()
-              << " golden vectors under " << dir.string() << '\n';
-    for (const VectorResult& r : results)
-      printResult(std::cout, r);
-    std::cout << results.size() << " vectors: " << passed << " passed, " << failed << " failed\n";
+  std::vector<SuiteVector> vectors =
+      o.random > 0 ? randomVectors(o.random, o.seed) : goldenVectors(o.golden);
+  if (!o.shard.empty()) {
+    const auto [index, count] = parseShard(o.shard);
+    vectors = shardOf(vectors, index, count);
   }
-  return failed == 0 ? 0 : 2;
+  SuiteOptions options;
+  options.repeat = o.repeat;
+  options.stopAtFirstFailure = o.random > 0;
+  options.explainLimit = o.json || !o.html.empty() ? 4096 : o.explain;
+  if (!o.baseline.empty())
+    options.baseline = readBaseline(o.baseline);
+
+  const std::unique_ptr<Backend> backend = makeBackend(o);
+  const std::string source =
+      o.random > 0 ? std::to_string(o.random) + " random streams of seed " + std::to_string(o.seed)
+                   : std::to_string(vectors.size()) + " golden vectors under " + o.golden;
+  if (!o.json) {
+    std::cout << "recode conform: " << (o.exec.empty() ? "device " : "back end ")
+              << backend->name() << ", " << source << '\n'
+              << std::flush;
+  }
+  const SuiteReport report =
+      runSuite(*backend, vectors, options, [&o](const VectorReport& v) {
+        if (!o.json) {
+          printVector(std::cout, v, o.explain);
+          std::cout.flush();
+        }
+      });
+  if (o.json) {
+    // Which back end ran: the registry's device, or the command.
+    std::cout << toJson(report, {{o.exec.empty() ? "device" : "exec",
+                                  o.exec.empty() ? o.device : o.exec}});
+  } else {
+    printSummary(std::cout, report);
+  }
+  if (!o.junit.empty())
+    writeFileAtomically(o.junit, toJunit(report), "--junit");
+  if (!o.html.empty())
+    writeFileAtomically(o.html, toHtml(report), "--html");
+  if (!report.error.empty()) {
+    if (o.json)
+      std::cerr << "recode conform: error: " << report.error << '\n';
+    return 1;
+  }
+  if (!o.reduceDir.empty())
+    reduceFirstFailure(report, vectors, *backend, o.reduceDir);
+  return report.passed() ? 0 : 2;
 }
 
 }  // namespace
@@ -141,11 +156,47 @@ void addConformCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<ConformOptions>();
   CLI::App* cmd = app.add_subcommand(
       "conform",
-      "Replay every golden vector under a directory on a device and compare every depth and "
-      "stencil value (exit 2 when any vector fails)");
-  addDeviceOption(*cmd, o->device, "the device");
-  cmd->add_option("--golden", o->golden, "directory searched recursively for *.json vectors")
+      "Run the conformance suite on a back end: a device of this build (--device) or a program "
+      "in any language speaking the recode-conform-1 line protocol (--exec, docs/conformance.md). "
+      "Every depth and stencil value is compared; each failure is explained pixel by pixel and "
+      "named. Exit 0: all passed; 2: a vector failed; 1: an error");
+  CLI::Option* device = addDeviceOption(*cmd, o->device, "the device");
+  cmd->add_option("--exec", o->exec,
+                  "run this command (with /bin/sh -c) as the back end, over the line protocol "
+                  "of docs/conformance.md")
+      ->excludes(device);
+  CLI::Option* golden =
+      cmd->add_option("--golden", o->golden, "directory searched recursively for *.json vectors")
+          ->capture_default_str();
+  CLI::Option* random =
+      cmd->add_option("--random", o->random,
+                      "instead of golden vectors, run up to N random streams of the kit's "
+                      "families and stop at the first that fails")
+          ->check(CLI::Range(1, 1000000))
+          ->excludes(golden);
+  cmd->add_option("--seed", o->seed, "seed of --random")->capture_default_str()->needs(random);
+  cmd->add_option("--timeout", o->timeout,
+                  "seconds --exec's back end may take per answer before the run ends")
+      ->check(CLI::Range(0.001, 86400.0))
       ->capture_default_str();
+  cmd->add_option("--shard", o->shard, "run only shard I of N (0-based: every Nth vector from I)");
+  cmd->add_option("--baseline", o->baseline,
+                  "file of vector names expected to fail (one per line, # comments): they do "
+                  "not fail the run, and one that passes does");
+  cmd->add_option("--repeat", o->repeat,
+                  "run every vector this many times (a failing one always twice): different "
+                  "answers mark it nondeterministic")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  cmd->add_option("--explain", o->explain, "bad pixels explained per failing vector in the text")
+      ->check(CLI::Range(0, 1 << 20))
+      ->capture_default_str();
+  cmd->add_option("--junit", o->junit, "also write a JUnit XML report to this file");
+  cmd->add_option("--html", o->html,
+                  "also write a self-contained HTML report (error masks, histories) to this file");
+  cmd->add_option("--reduce", o->reduceDir,
+                  "reduce the first failing vector to a minimal one and write it, with a "
+                  "passing twin, as golden vectors into this directory");
   cmd->add_flag("--json", o->json, "print one JSON object instead of the report");
   cmd->callback([o, &exitCode]() { exitCode = runConform(*o); });
 }

@@ -195,6 +195,33 @@ std::vector<KitVector> generateKit(int count, std::uint64_t seed) {
   return kit;
 }
 
+KitVector randomKitStream(std::uint64_t seed, int index) {
+  if (index < 0)
+    throw std::invalid_argument("a random stream's index is at least 0, got " +
+                                std::to_string(index));
+  std::vector<std::size_t> families;
+  for (std::size_t f = 0; f < kFamilies.size(); ++f) {
+    if (kFamilies[f].info.name != "wide")
+      families.push_back(f);
+  }
+  const std::size_t f = families[static_cast<std::size_t>(index) % families.size()];
+  const int round = index / static_cast<int>(families.size());
+  // Another stream of random numbers than the kit's own vectors of the same seed.
+  Rng rng = vectorRng(~seed, f, round);
+  const Candidate c = kFamilies[f].draw(rng, round);
+  const Buffers contract = onCpu(c);
+  KitVector out{"random-" + std::to_string(seed) + "-" + std::to_string(index),
+                std::string(kFamilies[f].info.name),
+                {},
+                {}};
+  out.golden.description = "Random stream " + std::to_string(index) + " of seed " +
+                           std::to_string(seed) + " (family " + out.family + "): " + c.description;
+  out.golden.stream = {c.width, c.height, c.commands};
+  out.golden.depth = contract.depth;
+  out.golden.stencil = contract.stencil;
+  return out;
+}
+
 namespace {
 
 bool isKitFile(const std::filesystem::path& p) {

@@ -43,6 +43,12 @@ struct KitVector {
 // disagrees with CpuDevice (a bug here, never bad input).
 [[nodiscard]] std::vector<KitVector> generateKit(int count, std::uint64_t seed);
 
+// Random stream `index` of `seed` for differential testing (`recode conform --random`): the
+// families in turn (all but `wide`, whose 16384-pixel frames would dominate a run), each
+// candidate drawn as the kit draws it but kept whatever it catches; expected buffers from
+// raster::CpuDevice. `catches` is left empty. The same (seed, index) gives the same stream.
+[[nodiscard]] KitVector randomKitStream(std::uint64_t seed, int index);
+
 // Writes each vector as DIR/<name>.json (GoldenLayout::Rows), creating DIR, after removing the
 // files of an earlier kit there (<family>_<digits>.json of the families above; nothing else).
 // The vectors are written into DIR/.recode-kit-staging and moved in once all are written, so a

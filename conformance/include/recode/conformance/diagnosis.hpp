@@ -1,0 +1,101 @@
+#pragma once
+// Why a back end's answer differs from the contract's: for a differing pixel, the stage of the
+// contract that first goes another way (coverage, facing, depth value, quantisation, depth
+// test, stencil, clears, validation) and the section of docs/rasterization.md that states its
+// rule; for a whole run, the kit's wrong readings (kit/variants.hpp) whose answers equal the
+// back end's on every vector ("behaves like: the plane evaluated with a fused multiply-add");
+// and for a vector, whether the graphics APIs themselves require its answer or only this
+// contract does.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "recode/conformance/backend.hpp"
+#include "recode/conformance/pixel_history.hpp"
+#include "recode/kit/variants.hpp"
+#include "recode/raster/command_stream.hpp"
+
+namespace recode::conformance {
+
+enum class Stage {
+  Validation,    // the back end refused a valid stream (section 2)
+  Coverage,      // which samples a triangle covers: edges and the fill rule (section 4)
+  Facing,        // front or back, culling (section 3)
+  DepthValue,    // the plane's arithmetic (section 5)
+  Quantisation,  // z to 24 bits (section 5)
+  DepthTest,     // which fragment's depth won (section 6, step 2)
+  Stencil,       // the stencil test, ops and masks (section 6)
+  Clear,         // clears: scissor and write masks (section 6)
+};
+
+[[nodiscard]] std::string_view toString(Stage s);  // "coverage", "depth value", ...
+// The contract section that states the stage's rule, e.g. "rasterization.md section 4
+// (coverage and the fill rule)".
+[[nodiscard]] std::string_view contractSection(Stage s);
+// The stage a wrong reading of the kit departs at (top_left_fill: coverage, fma_plane: depth
+// value, quantise_truncate: quantisation, ...).
+[[nodiscard]] Stage stageOf(kit::Variant v);
+
+// A pixel where the back end's buffers differ from the expected ones.
+struct BadPixel {
+  int x = 0, y = 0;  // GL window coordinates
+  std::uint32_t expectedDepth = 0, gotDepth = 0;
+  std::uint8_t expectedStencil = 0, gotStencil = 0;
+  [[nodiscard]] bool depthDiffers() const { return expectedDepth != gotDepth; }
+  [[nodiscard]] bool stencilDiffers() const { return expectedStencil != gotStencil; }
+  // gotDepth - expectedDepth, in 24-bit depth units.
+  [[nodiscard]] long long depthUnits() const {
+    return static_cast<long long>(gotDepth) - static_cast<long long>(expectedDepth);
+  }
+};
+
+// Every differing pixel in scan order (row 0 first), at most `limit`; `count` gets their number.
+[[nodiscard]] std::vector<BadPixel> badPixels(const raster::CommandStream& stream,
+                                              const Answer& expected, const Answer& got,
+                                              std::size_t limit, long long* count = nullptr);
+
+// A bad pixel explained: its history under the contract, the stage that first differs and why.
+struct PixelExplanation {
+  BadPixel pixel;
+  PixelHistory history;
+  Stage stage = Stage::DepthValue;
+  std::string why;  // one sentence, e.g. "the back end kept the clear's depth where triangle 3
+                    // of draw 0 covers the sample on its inclusive left edge"
+  // A wrong reading whose model gives the back end's values at this pixel, if any.
+  std::optional<kit::Variant> sameAsReading;
+};
+
+// `readings`: the wrong readings' answers to the same stream (from readingAnswers), consulted
+// to name the stage; may be empty.
+struct ReadingAnswer {
+  kit::Variant variant;
+  Answer answer;
+};
+[[nodiscard]] std::vector<ReadingAnswer> readingAnswers(const raster::CommandStream& stream);
+
+[[nodiscard]] PixelExplanation explainPixel(const raster::CommandStream& stream,
+                                            const BadPixel& pixel,
+                                            const std::vector<ReadingAnswer>& readings);
+
+// The stage at which a whole failing answer first departs: a refusal is Validation; else the
+// stage of its first bad pixel.
+[[nodiscard]] Stage failingStage(const raster::CommandStream& stream, const Answer& expected,
+                                 const Answer& got, const std::vector<ReadingAnswer>& readings);
+
+// Whether the graphics APIs (Vulkan, OpenGL, WebGPU) require a vector's answer or only this
+// contract does. The APIs leave the tie rule, the depth arithmetic and its rounding, and the
+// guard band to the implementation: a vector whose answer any of the kit's readings of those
+// latitudes changes is contract-only, and `latitudes` lists which.
+struct Requirement {
+  bool byGraphicsApis = true;
+  std::vector<std::string> latitudes;  // "fill rule on ties", "depth arithmetic", ...
+};
+[[nodiscard]] Requirement requirementOf(const raster::CommandStream& stream,
+                                        const Answer& expected);
+// Whether the APIs leave the variant's departure to the implementation.
+[[nodiscard]] bool apiLatitude(kit::Variant v);
+
+}  // namespace recode::conformance

@@ -1,0 +1,57 @@
+#pragma once
+// A back end in another process and any language, driven over the line protocol
+// recode-conform-1 (docs/conformance.md): JSON requests on its stdin, JSON answers on its
+// stdout, one object per line. POSIX only.
+//
+// Nothing the child does can crash or hang the caller: every wait is bounded by the timeout, an
+// answer longer than its bound is refused before it is parsed, stderr is drained as it comes
+// (its last 4 KiB kept for messages), and a child that breaks the protocol is killed with its
+// whole process group and reported as a BackendError naming what it did.
+
+#include <chrono>
+#include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+
+#include "recode/conformance/backend.hpp"
+
+namespace recode::conformance {
+
+inline constexpr const char* kProtocol = "recode-conform-1";
+
+struct ProcessOptions {
+  std::chrono::milliseconds timeout{60000};  // per message: the greeting, each answer
+  std::chrono::milliseconds exitGrace{5000};  // after stdin is closed, before the kill
+};
+
+class ProcessBackend final : public Backend {
+ public:
+  // Starts `command` with /bin/sh -c and exchanges the greeting. Throws BackendError when the
+  // command cannot be started or does not greet in time.
+  explicit ProcessBackend(std::string command, ProcessOptions options = {});
+  ~ProcessBackend() override;
+  ProcessBackend(const ProcessBackend&) = delete;
+  ProcessBackend& operator=(const ProcessBackend&) = delete;
+
+  // The name the back end gave in its greeting.
+  [[nodiscard]] std::string name() const override { return name_; }
+  [[nodiscard]] Answer run(const raster::CommandStream& stream) override;
+
+  [[nodiscard]] const std::string& command() const { return command_; }
+
+ private:
+  struct Child;
+  // Sends a request line and returns the answer line (at most `limit` bytes).
+  [[nodiscard]] std::string exchange(const std::string& request, std::size_t limit,
+                                     const std::string& what);
+  [[nodiscard]] nlohmann::json parsed(const std::string& line, const std::string& what);
+  // Kills the child and throws BackendError with `what` and the end of its stderr.
+  [[noreturn]] void fail(const std::string& what);
+  std::string command_;
+  ProcessOptions options_;
+  std::string name_;
+  long long nextId_ = 1;
+  std::unique_ptr<Child> child_;
+};
+
+}  // namespace recode::conformance

@@ -1,0 +1,428 @@
+#include "recode/conformance/report.hpp"
+
+#include <array>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace recode::conformance {
+
+namespace {
+
+using nlohmann::json;
+
+std::string readingText(kit::Variant v) {
+  for (const kit::VariantInfo& info : kit::wrongVariants()) {
+    if (info.variant == v)
+      return std::string(info.what) + " (" + std::string(info.name) + ")";
+  }
+  return std::string(kit::variantName(v));
+}
+
+std::string requirementText(const Requirement& r) {
+  if (r.byGraphicsApis)
+    return "its answer is required by the graphics APIs too: a driver bug";
+  std::string s = "its answer is required by this contract only (the APIs leave ";
+  for (std::size_t i = 0; i < r.latitudes.size(); ++i)
+    s += (i == 0 ? "" : (i + 1 == r.latitudes.size() ? " and " : ", ")) + r.latitudes[i];
+  return s + " to the implementation)";
+}
+
+std::string pixelLine(const BadPixel& p) {
+  std::ostringstream o;
+  o << "pixel (" << p.x << ", " << p.y << "): ";
+  if (p.depthDiffers()) {
+    o << "depth expected " << p.expectedDepth << ", got " << p.gotDepth << " ("
+      << (p.depthUnits() > 0 ? "+" : "") << p.depthUnits() << " units)";
+  }
+  if (p.depthDiffers() && p.stencilDiffers())
+    o << "; ";
+  if (p.stencilDiffers()) {
+    o << "stencil expected " << static_cast<int>(p.expectedStencil) << ", got "
+      << static_cast<int>(p.gotStencil);
+  }
+  return o.str();
+}
+
+void indented(std::ostream& out, const std::string& text, const std::string& pad) {
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line))
+    out << pad << line << '\n';
+}
+
+std::map<Stage, int> stageCounts(const SuiteReport& report) {
+  std::map<Stage, int> counts;
+  for (const VectorReport& v : report.vectors) {
+    if (v.stage && (v.status == Status::Failed || v.status == Status::ExpectedFailure))
+      ++counts[*v.stage];
+  }
+  return counts;
+}
+
+}  // namespace
+
+void printVector(std::ostream& out, const VectorReport& v, std::size_t pixels) {
+  out << "  " << toString(v.status) << "  " << v.name;
+  if (v.status == Status::UnexpectedPass)
+    out << ": passes, but the baseline lists it as failing (remove it from the baseline)";
+  if (v.status == Status::Nondeterministic)
+    out << ": two runs of the vector gave different answers";
+  if (!v.stage) {
+    out << '\n';
+    return;
+  }
+  if (!v.refused.empty())
+    out << ": the back end refused the stream: " << v.refused;
+  else
+    out << ": " << v.depthPixels << " depth, " << v.stencilPixels << " stencil pixels differ";
+  out << "\n        stage: " << toString(*v.stage) << ", " << contractSection(*v.stage) << '\n';
+  if (v.requirement)
+    out << "        " << requirementText(*v.requirement) << '\n';
+  for (std::size_t i = 0; i < v.explained.size() && i < pixels; ++i) {
+    const PixelExplanation& e = v.explained[i];
+    out << "        " << pixelLine(e.pixel) << '\n';
+    out << "          " << toString(e.stage) << ": " << e.why << '\n';
+    out << "          the contract's history of the pixel:\n";
+    indented(out, describe(e.history), "            ");
+  }
+  if (v.badPixelCount > static_cast<long long>(std::min(pixels, v.explained.size()))) {
+    out << "        (" << v.badPixelCount << " bad pixels in all; --json and --html give every one"
+        << ")\n";
+  }
+}
+
+std::string verdict(const SuiteReport& report) {
+  if (!report.behavesLike.empty()) {
+    std::string s = "behaves like: ";
+    for (std::size_t i = 0; i < report.behavesLike.size(); ++i)
+      s += (i == 0 ? "" : "; or ") + readingText(report.behavesLike[i]);
+    return s;
+  }
+  const std::map<Stage, int> counts = stageCounts(report);
+  if (counts.empty())
+    return {};
+  std::string s = "behaves like none of the kit's wrong readings; failing vectors first depart at ";
+  bool first = true;
+  for (const auto& [stage, n] : counts) {
+    s += (first ? "" : ", ") + std::string(toString(stage)) + " (" + std::to_string(n) + ", " +
+         std::string(contractSection(stage)) + ")";
+    first = false;
+  }
+  return s;
+}
+
+void printSummary(std::ostream& out, const SuiteReport& report) {
+  out << report.vectors.size() << " vectors: " << report.count(Status::Passed) << " passed, "
+      << report.count(Status::Failed) << " failed";
+  if (const int n = report.count(Status::ExpectedFailure); n > 0)
+    out << ", " << n << " expected failures";
+  if (const int n = report.count(Status::UnexpectedPass); n > 0)
+    out << ", " << n << " unexpected passes";
+  if (const int n = report.count(Status::Nondeterministic); n > 0)
+    out << ", " << n << " nondeterministic";
+  out << '\n';
+  if (const std::string v = verdict(report); !v.empty())
+    out << v << '\n';
+  if (!report.error.empty())
+    out << "recode conform: error: " << report.error << '\n';
+}
+
+namespace {
+
+json historyJson(const PixelHistory& h) {
+  json events = json::array();
+  for (const HistoryEvent& e : h.events) {
+    json j = {{"command", e.command}};
+    if (e.clear) {
+      const ClearEvent& c = *e.clear;
+      j["clear"] = c.depth ? "depth" : "stencil";
+      j["value"] = c.value;
+      j["skipped"] = c.skipped;
+      j["write_mask"] = c.writeMask;
+      j["depth"] = {c.depthBefore, c.depthAfter};
+      j["stencil"] = {c.stencilBefore, c.stencilAfter};
+    }
+    if (e.triangle) {
+      const TriangleEvent& t = *e.triangle;
+      static constexpr std::array<const char*, 5> outcomes = {
+          "fragment", "degenerate", "culled", "outside the scissor", "excluded by the tie rule"};
+      j["draw"] = t.draw;
+      j["triangle"] = t.triangle;
+      j["outcome"] = outcomes[static_cast<std::size_t>(t.outcome)];
+      j["vertices_fixed"] = json::array();
+      for (int k = 0; k < 3; ++k)
+        j["vertices_fixed"].push_back({t.X[k], t.Y[k], static_cast<double>(t.Z[k])});
+      j["area2"] = t.area2;
+      j["facing"] = t.front ? "front" : "back";
+      j["edges"] = json::array();
+      for (const EdgeAtSample& edge : t.edges) {
+        j["edges"].push_back({{"from", edge.from},
+                              {"to", edge.to},
+                              {"value", edge.value},
+                              {"inclusive", edge.inclusive}});
+      }
+      if (t.outcome == TriangleOutcome::Fragment) {
+        const PlaneTerms& p = t.plane;
+        j["plane"] = {{"z0", p.z0},         {"dz1", p.dz1},
+                      {"dz2", p.dz2},       {"e1x", p.e1x},
+                      {"e1y", p.e1y},       {"e2x", p.e2x},
+                      {"e2y", p.e2y},       {"a2", p.a2},
+                      {"dzdx", p.dzdx},     {"dzdy", p.dzdy},
+                      {"tx", p.tx},         {"ty", p.ty},
+                      {"z0_plus_tx", p.z0PlusTx}, {"z", p.z}};
+        j["quantisation"] = {{"scaled", t.quantisation.scaled},
+                             {"tie", t.quantisation.tie},
+                             {"q", t.quantisation.q}};
+        j["stencil_test"] = {{"func", t.stencilFunc},
+                             {"ref", t.stencilRef},
+                             {"value_mask", t.valueMask},
+                             {"passed", t.stencilPassed}};
+        j["depth_test"] = {{"func", t.depthFunc}, {"passed", t.depthPassed}};
+        j["op"] = {{"slot", t.opSlot}, {"op", t.op}};
+        j["write_masks"] = {{"depth", t.depthWrite}, {"stencil", t.writeMask}};
+        j["depth"] = {t.depthBefore, t.depthAfter};
+        j["stencil"] = {t.stencilBefore, t.stencilAfter};
+      }
+    }
+    events.push_back(std::move(j));
+  }
+  return {{"events", events}, {"depth", h.finalDepth}, {"stencil", h.finalStencil}};
+}
+
+json vectorJson(const VectorReport& v) {
+  json j = {{"file", v.name},
+            {"status", toString(v.status)},
+            {"passed", v.status == Status::Passed},
+            {"width", v.width},
+            {"height", v.height},
+            {"seconds", v.seconds}};
+  if (!v.stage)
+    return j;
+  j["stage"] = toString(*v.stage);
+  j["contract_section"] = contractSection(*v.stage);
+  if (!v.refused.empty())
+    j["refused"] = v.refused;
+  if (v.requirement) {
+    j["required_by"] = v.requirement->byGraphicsApis ? "graphics APIs" : "contract only";
+    j["api_latitudes"] = v.requirement->latitudes;
+  }
+  j["depth_pixels"] = v.depthPixels;
+  j["stencil_pixels"] = v.stencilPixels;
+  if (!v.badPixels.empty()) {
+    const BadPixel& p = v.badPixels.front();
+    const bool depth = p.depthDiffers();
+    j["first_difference"] = {{"x", p.x},
+                             {"y", p.y},
+                             {"buffer", depth ? "depth" : "stencil"},
+                             {"expected", depth ? p.expectedDepth : p.expectedStencil},
+                             {"got", depth ? p.gotDepth : p.gotStencil}};
+  }
+  j["bad_pixels"] = json::array();
+  for (const BadPixel& p : v.badPixels) {
+    j["bad_pixels"].push_back({{"x", p.x},
+                               {"y", p.y},
+                               {"depth", {p.expectedDepth, p.gotDepth}},
+                               {"stencil", {p.expectedStencil, p.gotStencil}},
+                               {"depth_units", p.depthUnits()}});
+  }
+  j["explained"] = json::array();
+  for (const PixelExplanation& e : v.explained) {
+    json x = {{"x", e.pixel.x},
+              {"y", e.pixel.y},
+              {"stage", toString(e.stage)},
+              {"contract_section", contractSection(e.stage)},
+              {"why", e.why},
+              {"history", historyJson(e.history)}};
+    if (e.sameAsReading)
+      x["same_as_reading"] = kit::variantName(*e.sameAsReading);
+    j["explained"].push_back(std::move(x));
+  }
+  return j;
+}
+
+std::string xmlEscaped(std::string_view s) {
+  std::string out;
+  for (const char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        // XML 1.0 forbids most control characters even escaped.
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t')
+          out += '?';
+        else
+          out += c;
+    }
+  }
+  return out;
+}
+
+std::string vectorText(const VectorReport& v, std::size_t pixels) {
+  std::ostringstream o;
+  printVector(o, v, pixels);
+  return o.str();
+}
+
+}  // namespace
+
+std::string toJson(const SuiteReport& report,
+                   const std::vector<std::pair<std::string, std::string>>& fields) {
+  json list = json::array();
+  for (const VectorReport& v : report.vectors)
+    list.push_back(vectorJson(v));
+  json readings = json::array();
+  for (kit::Variant r : report.behavesLike)
+    readings.push_back(kit::variantName(r));
+  json j = {{"backend", report.backend},
+            {"vectors", report.vectors.size()},
+            {"passed", report.count(Status::Passed)},
+            {"failed", report.count(Status::Failed)},
+            {"expected_failures", report.count(Status::ExpectedFailure)},
+            {"unexpected_passes", report.count(Status::UnexpectedPass)},
+            {"nondeterministic", report.count(Status::Nondeterministic)},
+            {"behaves_like", readings},
+            {"verdict", verdict(report)},
+            {"results", list}};
+  if (!report.error.empty())
+    j["error"] = report.error;
+  for (const auto& [key, value] : fields)
+    j[key] = value;
+  return j.dump(1) + "\n";
+}
+
+std::string toJunit(const SuiteReport& report) {
+  std::ostringstream o;
+  const int failures = report.count(Status::Failed) + report.count(Status::UnexpectedPass);
+  const int errors = report.count(Status::Nondeterministic) + (report.error.empty() ? 0 : 1);
+  double seconds = 0;
+  for (const VectorReport& v : report.vectors)
+    seconds += v.seconds;
+  o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+    << "<testsuites>\n<testsuite name=\"recode conform: " << xmlEscaped(report.backend)
+    << "\" tests=\"" << report.vectors.size() + (report.error.empty() ? 0 : 1) << "\" failures=\""
+    << failures << "\" errors=\"" << errors << "\" skipped=\""
+    << report.count(Status::ExpectedFailure) << "\" time=\"" << seconds << "\">\n";
+  for (const VectorReport& v : report.vectors) {
+    o << " <testcase classname=\"recode.conform\" name=\"" << xmlEscaped(v.name) << "\" time=\""
+      << v.seconds << "\"";
+    const std::string text = xmlEscaped(vectorText(v, 4));
+    const std::string stage = v.stage ? std::string(toString(*v.stage)) : std::string();
+    switch (v.status) {
+      case Status::Passed:
+        o << "/>\n";
+        continue;
+      case Status::Failed:
+        o << ">\n  <failure message=\"" << xmlEscaped(stage + ": " + std::string(contractSection(
+                                                                    *v.stage)))
+          << "\">" << text << "</failure>\n";
+        break;
+      case Status::ExpectedFailure:
+        o << ">\n  <skipped message=\"expected failure (baseline)\">" << text << "</skipped>\n";
+        break;
+      case Status::UnexpectedPass:
+        o << ">\n  <failure message=\"unexpected pass: remove it from the baseline\"/>\n";
+        break;
+      case Status::Nondeterministic:
+        o << ">\n  <error message=\"nondeterministic: two runs gave different answers\">" << text
+          << "</error>\n";
+        break;
+    }
+    o << " </testcase>\n";
+  }
+  if (!report.error.empty()) {
+    o << " <testcase classname=\"recode.conform\" name=\"back end\">\n  <error message=\""
+      << xmlEscaped(report.error.substr(0, report.error.find('\n'))) << "\">"
+      << xmlEscaped(report.error) << "</error>\n </testcase>\n";
+  }
+  o << "</testsuite>\n</testsuites>\n";
+  return o.str();
+}
+
+namespace {
+
+// One colour per stage, for the error masks and their legend.
+const char* stageColour(Stage s) {
+  static constexpr std::array<const char*, 8> colours = {
+      "#7f7f7f", "#d62728", "#9467bd", "#1f77b4", "#17becf", "#ff7f0e", "#2ca02c", "#8c564b"};
+  return colours[static_cast<std::size_t>(s)];
+}
+
+// The vector's frame with every bad pixel coloured by the stage of its explanation (grey where
+// it was not explained), y up as in the buffers.
+std::string errorMask(const VectorReport& v) {
+  std::map<std::pair<int, int>, Stage> stages;
+  for (const PixelExplanation& e : v.explained)
+    stages[{e.pixel.x, e.pixel.y}] = e.stage;
+  std::ostringstream o;
+  const int w = v.width, h = v.height;
+  const int longest = std::max(w, h);
+  const double scale = longest >= 256 ? 1.0 : 256.0 / longest;
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\""
+    << std::min(1024.0, w * scale) << "\" height=\"" << std::min(1024.0, h * scale)
+    << "\" viewBox=\"0 0 " << w << ' ' << h
+    << "\" preserveAspectRatio=\"none\" shape-rendering=\"crispEdges\">"
+    << "<rect width=\"" << w << "\" height=\"" << h << "\" fill=\"#fff\" stroke=\"#000\" "
+    << "stroke-width=\"" << longest / 256.0 << "\"/>";
+  for (const BadPixel& p : v.badPixels) {
+    const auto it = stages.find({p.x, p.y});
+    o << "<rect x=\"" << p.x << "\" y=\"" << h - 1 - p.y << "\" width=\"1\" height=\"1\" fill=\""
+      << (it == stages.end() ? "#bbbbbb" : stageColour(it->second)) << "\"><title>"
+      << xmlEscaped(pixelLine(p)) << "</title></rect>";
+  }
+  o << "</svg>";
+  return o.str();
+}
+
+}  // namespace
+
+std::string toHtml(const SuiteReport& report) {
+  std::ostringstream o;
+  o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>recode conform: "
+    << xmlEscaped(report.backend) << "</title>\n<style>body{font:14px sans-serif;margin:2em}"
+    << "pre{background:#f4f4f4;padding:.5em;overflow-x:auto}.pass{color:#2ca02c}"
+    << ".FAIL,.NONDETERMINISTIC,.UNEXPECTED{color:#d62728}.key span{display:inline-block;"
+    << "width:1em;height:1em;margin:0 .3em 0 1em;vertical-align:middle}"
+    << "svg{image-rendering:pixelated;border:1px solid #ccc}</style></head><body>\n"
+    << "<h1>recode conform: " << xmlEscaped(report.backend) << "</h1>\n<pre>";
+  {
+    std::ostringstream summary;
+    printSummary(summary, report);
+    o << xmlEscaped(summary.str());
+  }
+  o << "</pre>\n<p class=\"key\">Error masks by stage:";
+  for (int s = 0; s <= static_cast<int>(Stage::Clear); ++s) {
+    o << "<span style=\"background:" << stageColour(static_cast<Stage>(s)) << "\"></span>"
+      << toString(static_cast<Stage>(s));
+  }
+  o << "<span style=\"background:#bbbbbb\"></span>not explained</p>\n";
+  for (const VectorReport& v : report.vectors) {
+    if (!v.stage && v.status == Status::Passed)
+      continue;
+    o << "<section><h2 class=\"" << xmlEscaped(std::string(toString(v.status)).substr(0, 10))
+      << "\">" << xmlEscaped(std::string(toString(v.status))) << " " << xmlEscaped(v.name)
+      << "</h2>\n<p>" << xmlEscaped(v.description) << "</p>\n";
+    if (v.stage && v.refused.empty())
+      o << errorMask(v) << "\n";
+    o << "<pre>" << xmlEscaped(vectorText(v, v.explained.size())) << "</pre></section>\n";
+  }
+  o << "<h2>Passed</h2><p>";
+  for (const VectorReport& v : report.vectors) {
+    if (v.status == Status::Passed)
+      o << "<span class=\"pass\">" << xmlEscaped(v.name) << "</span> ";
+  }
+  o << "</p></body></html>\n";
+  return o.str();
+}
+
+}  // namespace recode::conformance

@@ -1,0 +1,209 @@
+#include "recode/conformance/suite.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <stdexcept>
+
+#include "recode/kit/generator.hpp"
+
+namespace recode::conformance {
+
+namespace fs = std::filesystem;
+
+std::vector<SuiteVector> goldenVectors(const fs::path& dir) {
+  if (!fs::is_directory(dir))
+    throw std::runtime_error("--golden " + dir.string() + ": not a directory");
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".json")
+      files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty())
+    throw std::runtime_error("--golden " + dir.string() + ": no golden vectors (*.json)");
+  std::vector<SuiteVector> out;
+  for (const fs::path& f : files)
+    out.push_back({fs::relative(f, dir).generic_string(), raster::readGolden(f)});
+  return out;
+}
+
+std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed) {
+  if (count < 1)
+    throw std::invalid_argument("--random: expected at least 1 stream, got " +
+                                std::to_string(count));
+  std::vector<SuiteVector> out;
+  for (int i = 0; i < count; ++i) {
+    kit::KitVector v = kit::randomKitStream(seed, i);
+    out.push_back({std::move(v.name), std::move(v.golden)});
+  }
+  return out;
+}
+
+std::vector<SuiteVector> shardOf(const std::vector<SuiteVector>& all, int index, int count) {
+  if (count < 1 || index < 0 || index >= count) {
+    throw std::invalid_argument("--shard " + std::to_string(index) + "/" + std::to_string(count) +
+                                ": expected I/N with 0 <= I < N");
+  }
+  std::vector<SuiteVector> out;
+  for (std::size_t i = static_cast<std::size_t>(index); i < all.size();
+       i += static_cast<std::size_t>(count))
+    out.push_back(all[i]);
+  return out;
+}
+
+std::set<std::string> readBaseline(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in)
+    throw std::runtime_error("--baseline " + file.string() + ": cannot be read");
+  std::set<std::string> names;
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#')
+      continue;
+    const auto last = line.find_last_not_of(" \t\r");
+    names.insert(line.substr(first, last - first + 1));
+  }
+  return names;
+}
+
+std::string_view toString(Status s) {
+  switch (s) {
+    case Status::Passed:
+      return "pass";
+    case Status::Failed:
+      return "FAIL";
+    case Status::ExpectedFailure:
+      return "expected failure";
+    case Status::UnexpectedPass:
+      return "UNEXPECTED PASS";
+    case Status::Nondeterministic:
+      return "NONDETERMINISTIC";
+  }
+  return "?";
+}
+
+bool failsRun(Status s) {
+  return s == Status::Failed || s == Status::UnexpectedPass || s == Status::Nondeterministic;
+}
+
+int SuiteReport::count(Status s) const {
+  return static_cast<int>(std::count_if(vectors.begin(), vectors.end(),
+                                        [s](const VectorReport& v) { return v.status == s; }));
+}
+
+bool SuiteReport::passed() const {
+  return error.empty() && std::none_of(vectors.begin(), vectors.end(), [](const VectorReport& v) {
+           return failsRun(v.status);
+         });
+}
+
+namespace {
+
+Answer expectedOf(const raster::GoldenVector& g) {
+  return {g.depth, g.stencil, {}};
+}
+
+// Counts and explains a failing answer.
+void explainFailure(const SuiteVector& v, const Answer& expected, const Answer& got,
+                    const SuiteOptions& options, VectorReport& r) {
+  const raster::CommandStream& stream = v.golden.stream;
+  r.refused = got.refused;
+  r.requirement = requirementOf(stream, expected);
+  if (got.wasRefused()) {
+    r.stage = Stage::Validation;
+    return;
+  }
+  r.badPixels = badPixels(stream, expected, got, SIZE_MAX, &r.badPixelCount);
+  for (const BadPixel& p : r.badPixels) {
+    r.depthPixels += p.depthDiffers() ? 1 : 0;
+    r.stencilPixels += p.stencilDiffers() ? 1 : 0;
+  }
+  const std::vector<ReadingAnswer> readings = readingAnswers(stream);
+  const std::size_t n = std::min(options.explainLimit, r.badPixels.size());
+  for (std::size_t i = 0; i < n; ++i)
+    r.explained.push_back(explainPixel(stream, r.badPixels[i], readings));
+  r.stage = r.explained.empty() ? failingStage(stream, expected, got, readings)
+                                : r.explained.front().stage;
+}
+
+// The wrong readings whose answers equal the back end's on every vector: eliminated on the
+// failing vectors first (few survive the first one), then confirmed on the passing ones.
+std::vector<kit::Variant> matchingReadings(const std::vector<SuiteVector>& run,
+                                           const std::vector<Answer>& answers,
+                                           const std::vector<bool>& failed) {
+  std::vector<kit::Variant> candidates;
+  for (const kit::VariantInfo& v : kit::wrongVariants())
+    candidates.push_back(v.variant);
+  for (const bool failingPass : {true, false}) {
+    for (std::size_t i = 0; i < run.size() && !candidates.empty(); ++i) {
+      if (failed[i] != failingPass)
+        continue;
+      std::erase_if(candidates, [&](kit::Variant v) {
+        ModelBackend model(v);
+        return !(model.run(run[i].golden.stream) == answers[i]);
+      });
+    }
+  }
+  return candidates;
+}
+
+}  // namespace
+
+SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
+                     const SuiteOptions& options,
+                     const std::function<void(const VectorReport&)>& onVector) {
+  SuiteReport report;
+  report.backend = backend.name();
+  std::vector<SuiteVector> run;
+  std::vector<Answer> answers;
+  std::vector<bool> failed;
+  for (const SuiteVector& v : vectors) {
+    VectorReport r;
+    r.name = v.name;
+    r.description = v.golden.description;
+    r.width = v.golden.stream.width;
+    r.height = v.golden.stream.height;
+    const Answer expected = expectedOf(v.golden);
+    Answer got;
+    bool differentRuns = false;
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      got = backend.run(v.golden.stream);
+      r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const int runs = std::max(options.repeat, got == expected ? 1 : 2);
+      for (int k = 1; k < runs && !differentRuns; ++k)
+        differentRuns = !(backend.run(v.golden.stream) == got);
+    } catch (const BackendError& e) {
+      report.error = v.name + ": " + e.what();
+      break;
+    }
+    const bool fails = !(got == expected);
+    const bool listed = options.baseline.count(v.name) > 0;
+    if (differentRuns)
+      r.status = Status::Nondeterministic;
+    else if (fails)
+      r.status = listed ? Status::ExpectedFailure : Status::Failed;
+    else
+      r.status = listed ? Status::UnexpectedPass : Status::Passed;
+    if (fails)
+      explainFailure(v, expected, got, options, r);
+    if (onVector)
+      onVector(r);
+    report.vectors.push_back(std::move(r));
+    if (!differentRuns) {
+      run.push_back(v);
+      answers.push_back(std::move(got));
+      failed.push_back(fails);
+    }
+    if (fails && options.stopAtFirstFailure)
+      break;
+  }
+  const bool anyFailed = std::find(failed.begin(), failed.end(), true) != failed.end();
+  if (options.nameReadings && anyFailed)
+    report.behavesLike = matchingReadings(run, answers, failed);
+  return report;
+}
+
+}  // namespace recode::conformance
