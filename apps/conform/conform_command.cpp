@@ -118,21 +118,20 @@ int runConform(const ConformOptions& o) {
       o.random > 0 ? std::to_string(o.random) + " random streams of seed " + std::to_string(o.seed)
                    : std::to_string(vectors.size()) + " golden vectors under " + o.golden;
   if (!o.json) {
-    std::cout << "recode conform: " << (o.exec.empty() ? "device " : "back end ")
-              << backend->name() << ", " << source << '\n'
+    std::cout << "recode conform: " << (o.exec.empty() ? "device " : "back end ") << backend->name()
+              << ", " << source << '\n'
               << std::flush;
   }
-  const SuiteReport report =
-      runSuite(*backend, vectors, options, [&o](const VectorReport& v) {
-        if (!o.json) {
-          printVector(std::cout, v, o.explain);
-          std::cout.flush();
-        }
-      });
+  const SuiteReport report = runSuite(*backend, vectors, options, [&o](const VectorReport& v) {
+    if (!o.json) {
+      printVector(std::cout, v, o.explain);
+      std::cout.flush();
+    }
+  });
   if (o.json) {
     // Which back end ran: the registry's device, or the command.
-    std::cout << toJson(report, {{o.exec.empty() ? "device" : "exec",
-                                  o.exec.empty() ? o.device : o.exec}});
+    std::cout << toJson(report,
+                        {{o.exec.empty() ? "device" : "exec", o.exec.empty() ? o.device : o.exec}});
   } else {
     printSummary(std::cout, report);
   }

@@ -30,9 +30,9 @@ Answer DeviceBackend::run(const raster::CommandStream& stream) {
 ModelBackend::ModelBackend(kit::Variant variant) : variant_(variant) {}
 
 std::string ModelBackend::name() const {
-  return variant_ == kit::Variant::Contract ? "reference model"
-                                            : "reference model, " +
-                                                  std::string(kit::variantName(variant_));
+  return variant_ == kit::Variant::Contract
+             ? "reference model"
+             : "reference model, " + std::string(kit::variantName(variant_));
 }
 
 Answer ModelBackend::run(const raster::CommandStream& stream) {

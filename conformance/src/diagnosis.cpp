@@ -156,8 +156,8 @@ void stageFromHistory(const PixelHistory& h, PixelExplanation& out) {
     if (t->depthPassed && t->stencilPassed && t->depthWrite && t->depthAfter == h.finalDepth)
       writer = t;
   }
-  if (!ties.empty() && (p.stencilDiffers() || fragments.empty() ||
-                        std::abs(p.depthUnits()) > 2 || p.gotDepth == 16777215u)) {
+  if (!ties.empty() && (p.stencilDiffers() || fragments.empty() || std::abs(p.depthUnits()) > 2 ||
+                        p.gotDepth == 16777215u)) {
     const TriangleEvent& t = *ties.front();
     out.stage = Stage::Coverage;
     out.why = "the sample lies exactly on an edge of " + triangleName(t) + ", which " +
@@ -235,8 +235,8 @@ std::vector<BadPixel> badPixels(const raster::CommandStream& stream, const Answe
           continue;
         ++n;
         if (out.size() < limit) {
-          out.push_back({x, y, expected.depth[i], got.depth[i], expected.stencil[i],
-                         got.stencil[i]});
+          out.push_back(
+              {x, y, expected.depth[i], got.depth[i], expected.stencil[i], got.stencil[i]});
         }
       }
     }

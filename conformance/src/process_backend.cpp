@@ -292,7 +292,7 @@ nlohmann::json ProcessBackend::parsed(const std::string& line, const std::string
 
 // Sends one request line and waits for one answer line, pumping stderr all along.
 std::string ProcessBackend::exchange(const std::string& request, std::size_t limit,
-                              const std::string& what) {
+                                     const std::string& what) {
   Child& c = *child_;
   const auto deadline = Clock::now() + options_.timeout;
   const std::string line = request + "\n";
@@ -318,7 +318,8 @@ std::string ProcessBackend::exchange(const std::string& request, std::size_t lim
     const int wait = remainingMs(deadline);
     if (wait == 0)
       fail(what + ": no answer within " + seconds(options_.timeout));
-    pollfd fds[3] = {{c.out, POLLIN, 0}, {c.err, c.errClosed ? short{0} : short{POLLIN}, 0},
+    pollfd fds[3] = {{c.out, POLLIN, 0},
+                     {c.err, c.errClosed ? short{0} : short{POLLIN}, 0},
                      {c.in, written < line.size() ? short{POLLOUT} : short{0}, 0}};
     const int ready = ::poll(fds, 3, wait);
     if (ready < 0) {
@@ -350,8 +351,10 @@ std::string ProcessBackend::exchange(const std::string& request, std::size_t lim
 Answer ProcessBackend::run(const raster::CommandStream& stream) {
   const long long id = nextId_++;
   const json doc = json::parse(raster::commandStreamToJson(stream));
-  const json request = {
-      {"id", id}, {"width", stream.width}, {"height", stream.height}, {"commands", doc["commands"]}};
+  const json request = {{"id", id},
+                        {"width", stream.width},
+                        {"height", stream.height},
+                        {"commands", doc["commands"]}};
   const std::size_t pixels =
       static_cast<std::size_t>(stream.width) * static_cast<std::size_t>(stream.height);
   const std::size_t limit = 16 * pixels + 65536;
@@ -361,10 +364,11 @@ Answer ProcessBackend::run(const raster::CommandStream& stream) {
     fail(what + ": the answer is not a JSON object");
   const bool refused = a.contains("refused");
   for (const auto& [key, value] : a.items()) {
-    const bool allowed = key == "id" || (refused ? key == "refused" : key == "depth" || key == "stencil");
+    const bool allowed =
+        key == "id" || (refused ? key == "refused" : key == "depth" || key == "stencil");
     if (!allowed) {
-      fail(what + ": answer." + io::printable(key) + ": unknown key (allowed: " +
-           (refused ? "id, refused" : "id, depth, stencil") + ")");
+      fail(what + ": answer." + io::printable(key) +
+           ": unknown key (allowed: " + (refused ? "id, refused" : "id, depth, stencil") + ")");
     }
   }
   if (!a.contains("id") || !a["id"].is_number_integer() || a["id"].get<long long>() != id) {
@@ -382,9 +386,10 @@ Answer ProcessBackend::run(const raster::CommandStream& stream) {
     if (!a.contains(key))
       fail(what + ": answer." + key + ": missing (an answer has depth and stencil, or refused)");
     if (!a[key].is_array() || a[key].size() != pixels) {
-      fail(what + ": answer." + key + ": expected an array of width x height = " +
-           std::to_string(pixels) + " integers, got " +
-           (a[key].is_array() ? std::to_string(a[key].size()) + " values" : excerpt(a[key].dump())));
+      fail(
+          what + ": answer." + key +
+          ": expected an array of width x height = " + std::to_string(pixels) + " integers, got " +
+          (a[key].is_array() ? std::to_string(a[key].size()) + " values" : excerpt(a[key].dump())));
     }
   }
   out.depth.resize(pixels);

@@ -164,13 +164,20 @@ json historyJson(const PixelHistory& h) {
       }
       if (t.outcome == TriangleOutcome::Fragment) {
         const PlaneTerms& p = t.plane;
-        j["plane"] = {{"z0", p.z0},         {"dz1", p.dz1},
-                      {"dz2", p.dz2},       {"e1x", p.e1x},
-                      {"e1y", p.e1y},       {"e2x", p.e2x},
-                      {"e2y", p.e2y},       {"a2", p.a2},
-                      {"dzdx", p.dzdx},     {"dzdy", p.dzdy},
-                      {"tx", p.tx},         {"ty", p.ty},
-                      {"z0_plus_tx", p.z0PlusTx}, {"z", p.z}};
+        j["plane"] = {{"z0", p.z0},
+                      {"dz1", p.dz1},
+                      {"dz2", p.dz2},
+                      {"e1x", p.e1x},
+                      {"e1y", p.e1y},
+                      {"e2x", p.e2x},
+                      {"e2y", p.e2y},
+                      {"a2", p.a2},
+                      {"dzdx", p.dzdx},
+                      {"dzdy", p.dzdy},
+                      {"tx", p.tx},
+                      {"ty", p.ty},
+                      {"z0_plus_tx", p.z0PlusTx},
+                      {"z", p.z}};
         j["quantisation"] = {{"scaled", t.quantisation.scaled},
                              {"tie", t.quantisation.tie},
                              {"q", t.quantisation.q}};
@@ -191,12 +198,9 @@ json historyJson(const PixelHistory& h) {
 }
 
 json vectorJson(const VectorReport& v) {
-  json j = {{"file", v.name},
-            {"status", toString(v.status)},
-            {"passed", v.status == Status::Passed},
-            {"width", v.width},
-            {"height", v.height},
-            {"seconds", v.seconds}};
+  json j = {
+      {"file", v.name},   {"status", toString(v.status)}, {"passed", v.status == Status::Passed},
+      {"width", v.width}, {"height", v.height},           {"seconds", v.seconds}};
   if (!v.stage)
     return j;
   j["stage"] = toString(*v.stage);
@@ -323,9 +327,9 @@ std::string toJunit(const SuiteReport& report) {
         o << "/>\n";
         continue;
       case Status::Failed:
-        o << ">\n  <failure message=\"" << xmlEscaped(stage + ": " + std::string(contractSection(
-                                                                    *v.stage)))
-          << "\">" << text << "</failure>\n";
+        o << ">\n  <failure message=\""
+          << xmlEscaped(stage + ": " + std::string(contractSection(*v.stage))) << "\">" << text
+          << "</failure>\n";
         break;
       case Status::ExpectedFailure:
         o << ">\n  <skipped message=\"expected failure (baseline)\">" << text << "</skipped>\n";
@@ -368,9 +372,8 @@ std::string errorMask(const VectorReport& v) {
   const int w = v.width, h = v.height;
   const int longest = std::max(w, h);
   const double scale = longest >= 256 ? 1.0 : 256.0 / longest;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\""
-    << std::min(1024.0, w * scale) << "\" height=\"" << std::min(1024.0, h * scale)
-    << "\" viewBox=\"0 0 " << w << ' ' << h
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << std::min(1024.0, w * scale)
+    << "\" height=\"" << std::min(1024.0, h * scale) << "\" viewBox=\"0 0 " << w << ' ' << h
     << "\" preserveAspectRatio=\"none\" shape-rendering=\"crispEdges\">"
     << "<rect width=\"" << w << "\" height=\"" << h << "\" fill=\"#fff\" stroke=\"#000\" "
     << "stroke-width=\"" << longest / 256.0 << "\"/>";

@@ -94,9 +94,8 @@ int SuiteReport::count(Status s) const {
 }
 
 bool SuiteReport::passed() const {
-  return error.empty() && std::none_of(vectors.begin(), vectors.end(), [](const VectorReport& v) {
-           return failsRun(v.status);
-         });
+  return error.empty() && std::none_of(vectors.begin(), vectors.end(),
+                                       [](const VectorReport& v) { return failsRun(v.status); });
 }
 
 namespace {
@@ -110,7 +109,8 @@ void explainFailure(const SuiteVector& v, const Answer& expected, const Answer& 
                     const SuiteOptions& options, VectorReport& r) {
   const raster::CommandStream& stream = v.golden.stream;
   r.refused = got.refused;
-  r.requirement = requirementOf(stream, expected);
+  if (options.classify)
+    r.requirement = requirementOf(stream, expected);
   if (got.wasRefused()) {
     r.stage = Stage::Validation;
     return;
@@ -120,7 +120,8 @@ void explainFailure(const SuiteVector& v, const Answer& expected, const Answer& 
     r.depthPixels += p.depthDiffers() ? 1 : 0;
     r.stencilPixels += p.stencilDiffers() ? 1 : 0;
   }
-  const std::vector<ReadingAnswer> readings = readingAnswers(stream);
+  const std::vector<ReadingAnswer> readings =
+      options.explainLimit > 0 ? readingAnswers(stream) : std::vector<ReadingAnswer>{};
   const std::size_t n = std::min(options.explainLimit, r.badPixels.size());
   for (std::size_t i = 0; i < n; ++i)
     r.explained.push_back(explainPixel(stream, r.badPixels[i], readings));

@@ -70,7 +70,8 @@ int main(int argc, char** argv) {
   recode::conformance::ModelBackend backend(variant);
   std::string line;
   try {
-    if (!std::getline(std::cin, line) || json::parse(line).value("protocol", "") != "recode-conform-1")
+    if (!std::getline(std::cin, line) ||
+        json::parse(line).value("protocol", "") != "recode-conform-1")
       throw std::runtime_error("expected the greeting {\"protocol\":\"recode-conform-1\"}");
     std::cout << json{{"protocol", "recode-conform-1"}, {"name", backend.name()}}.dump() << '\n'
               << std::flush;

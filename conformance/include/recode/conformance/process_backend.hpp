@@ -20,7 +20,7 @@ namespace recode::conformance {
 inline constexpr const char* kProtocol = "recode-conform-1";
 
 struct ProcessOptions {
-  std::chrono::milliseconds timeout{60000};  // per message: the greeting, each answer
+  std::chrono::milliseconds timeout{60000};   // per message: the greeting, each answer
   std::chrono::milliseconds exitGrace{5000};  // after stdin is closed, before the kill
 };
 

@@ -41,7 +41,7 @@ struct ReduceOptions {
 
 struct Reduction {
   FailureSignature signature;
-  raster::GoldenVector minimal;                   // fails the same way; expected = reference
+  raster::GoldenVector minimal;                     // fails the same way; expected = reference
   std::optional<raster::GoldenVector> passingTwin;  // one step away; the back end passes it
   long long backendRuns = 0;
   int draws = 0, triangles = 0;  // in the minimal vector

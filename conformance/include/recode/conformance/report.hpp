@@ -21,8 +21,7 @@ void printSummary(std::ostream& out, const SuiteReport& report);
 
 // `fields`: top-level string members to add, e.g. {"device", "cpu"} or {"exec", "..."}.
 [[nodiscard]] std::string toJson(
-    const SuiteReport& report,
-    const std::vector<std::pair<std::string, std::string>>& fields = {});
+    const SuiteReport& report, const std::vector<std::pair<std::string, std::string>>& fields = {});
 [[nodiscard]] std::string toJunit(const SuiteReport& report);
 [[nodiscard]] std::string toHtml(const SuiteReport& report);
 

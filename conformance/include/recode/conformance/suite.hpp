@@ -60,16 +60,19 @@ struct VectorReport {
   int width = 0, height = 0;
   std::string refused;  // the back end refused the stream
   long long badPixelCount = 0, depthPixels = 0, stencilPixels = 0;
-  std::vector<BadPixel> badPixels;              // all of them, scan order
-  std::vector<PixelExplanation> explained;      // the first explainLimit of them
-  std::optional<Stage> stage;                   // where a failing answer first departs
-  std::optional<Requirement> requirement;       // for failing vectors
-  double seconds = 0.0;                         // the back end's time on the vector
+  std::vector<BadPixel> badPixels;          // all of them, scan order
+  std::vector<PixelExplanation> explained;  // the first explainLimit of them
+  std::optional<Stage> stage;               // where a failing answer first departs
+  std::optional<Requirement> requirement;   // for failing vectors
+  double seconds = 0.0;                     // the back end's time on the vector
 };
 
 struct SuiteOptions {
-  std::size_t explainLimit = 64;  // bad pixels of a vector explained with their history
-  int repeat = 1;                 // runs of every vector (a failing one is always run twice)
+  // Bad pixels of a failing vector explained with their history; 0 skips the explanations and
+  // the wrong readings' answers they consult (the stage then comes from the history alone).
+  std::size_t explainLimit = 64;
+  bool classify = true;  // say for each failing vector whether the graphics APIs require it
+  int repeat = 1;        // runs of every vector (a failing one is always run twice)
   std::set<std::string> baseline;
   bool stopAtFirstFailure = false;  // --random: stop at the first failing stream
   bool nameReadings = true;         // match the failures against the kit's wrong readings

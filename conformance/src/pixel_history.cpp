@@ -1,0 +1,629 @@
+// One pixel's history under the contract, written from docs/rasterization.md (sections 2-6)
+// and not from the device or the kit's model: the state is followed command by command, every
+// triangle is snapped, set up and tested at the one sample, and the depth plane is evaluated in
+// the contract's order with every double operation rounded on its own (this file inherits
+// -ffp-contract=off from recode_raster).
+
+#include "recode/conformance/pixel_history.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+namespace recode::conformance {
+
+namespace {
+
+using raster::CompareFunc;
+using raster::CullMode;
+using raster::Face;
+using raster::StencilOp;
+using raster::StencilOps;
+
+constexpr std::uint32_t kDepthOne = 16777215u;  // 2^24 - 1
+constexpr int kMaxSize = 16384;
+constexpr double kMaxCoordinate = 32768.0;
+
+// Round half to even, written out so that it does not depend on the floating-point
+// environment's rounding mode (nearbyint in the default mode gives the same). Used for the
+// snapping (section 2) and the quantisation (section 5); `v - floor(v)` is exact in double.
+double roundHalfEven(double v) {
+  const double k = std::floor(v);
+  const double frac = v - k;
+  if (frac > 0.5)
+    return k + 1.0;
+  if (frac < 0.5)
+    return k;
+  return std::fmod(k, 2.0) == 0.0 ? k : k + 1.0;
+}
+
+// Section 5: q = 0 if z <= 0 (or NaN), 16777215 if z >= 1, else nearbyint(z * 16777215.0).
+Quantisation quantise(double z) {
+  Quantisation r;
+  if (!(z > 0.0)) {
+    r.clampedLow = true;
+    r.q = 0;
+    return r;
+  }
+  if (z >= 1.0) {
+    r.clampedHigh = true;
+    r.q = kDepthOne;
+    return r;
+  }
+  r.scaled = z * 16777215.0;
+  r.tie = r.scaled - std::floor(r.scaled) == 0.5;
+  r.q = static_cast<std::uint32_t>(roundHalfEven(r.scaled));
+  return r;
+}
+
+// Section 6: `incoming FUNC stored`.
+bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored) {
+  switch (func) {
+    case CompareFunc::Never:
+      return false;
+    case CompareFunc::Less:
+      return incoming < stored;
+    case CompareFunc::Equal:
+      return incoming == stored;
+    case CompareFunc::LEqual:
+      return incoming <= stored;
+    case CompareFunc::Greater:
+      return incoming > stored;
+    case CompareFunc::NotEqual:
+      return incoming != stored;
+    case CompareFunc::GEqual:
+      return incoming >= stored;
+    case CompareFunc::Always:
+      return true;
+  }
+  return false;
+}
+
+const char* compareSymbol(CompareFunc func) {
+  switch (func) {
+    case CompareFunc::Less:
+      return "<";
+    case CompareFunc::Equal:
+      return "==";
+    case CompareFunc::LEqual:
+      return "<=";
+    case CompareFunc::Greater:
+      return ">";
+    case CompareFunc::NotEqual:
+      return "!=";
+    case CompareFunc::GEqual:
+      return ">=";
+    case CompareFunc::Never:
+    case CompareFunc::Always:
+      break;
+  }
+  return "";
+}
+
+// Section 6's stencil ops on 8 bits.
+std::uint8_t applyOp(StencilOp op, std::uint8_t s, std::uint8_t ref) {
+  switch (op) {
+    case StencilOp::Keep:
+      return s;
+    case StencilOp::Zero:
+      return 0;
+    case StencilOp::Replace:
+      return ref;
+    case StencilOp::Incr:
+      return s == 255 ? s : static_cast<std::uint8_t>(s + 1);
+    case StencilOp::IncrWrap:
+      return static_cast<std::uint8_t>((s + 1) % 256);
+    case StencilOp::Decr:
+      return s == 0 ? s : static_cast<std::uint8_t>(s - 1);
+    case StencilOp::DecrWrap:
+      return static_cast<std::uint8_t>((s + 255) % 256);
+    case StencilOp::Invert:
+      return static_cast<std::uint8_t>(255 - s);
+  }
+  return s;
+}
+
+// s <- (n & writeMask) | (s & ~writeMask)
+std::uint8_t masked(std::uint8_t n, std::uint8_t s, std::uint8_t writeMask) {
+  return static_cast<std::uint8_t>((n & writeMask) | (s & static_cast<std::uint8_t>(~writeMask)));
+}
+
+// The state a draw or a clear depends on, with GL's defaults (section 6).
+struct State {
+  raster::PixelRect scissor;  // clamped to the frame
+  CompareFunc depthFunc = CompareFunc::Less;
+  bool depthWrite = true;
+  CompareFunc stencilFunc = CompareFunc::Always;
+  std::uint8_t ref = 0;
+  std::uint8_t valueMask = 0xFF;
+  std::uint8_t writeMask = 0xFF;
+  StencilOps front;
+  StencilOps back;
+  CullMode cull = CullMode::None;
+};
+
+int clampInt(int v, int lo, int hi) {
+  return v < lo ? lo : (v > hi ? hi : v);
+}
+
+// Section 8's value ranges: the scissor is clamped to the framebuffer, and x1 < x0 or y1 < y0
+// gives an empty one.
+raster::PixelRect clampScissor(const raster::PixelRect& r, int width, int height) {
+  raster::PixelRect c;
+  c.x0 = clampInt(r.x0, 0, width);
+  c.x1 = clampInt(r.x1, 0, width);
+  c.y0 = clampInt(r.y0, 0, height);
+  c.y1 = clampInt(r.y1, 0, height);
+  if (c.x1 < c.x0)
+    c.x1 = c.x0;
+  if (c.y1 < c.y0)
+    c.y1 = c.y0;
+  return c;
+}
+
+bool inside(const raster::PixelRect& r, int x, int y) {
+  return x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
+}
+
+std::string commandText(int command) {
+  return "command " + std::to_string(command);
+}
+
+// Section 2: the whole draw is validated before anything is drawn.
+void validateDraw(const raster::cmd::Draw& draw, int command) {
+  const std::string where = "pixelHistory: " + commandText(command) + ": ";
+  if (draw.indices.size() % 3 != 0)
+    throw std::invalid_argument(where + "index count is not a multiple of 3");
+  for (std::size_t k = 0; k < draw.indices.size(); ++k) {
+    const std::uint32_t i = draw.indices[k];
+    if (static_cast<std::size_t>(i) >= draw.vertices.size())
+      throw std::invalid_argument(where + "index " + std::to_string(k) + " is out of range");
+    const raster::WindowVertex& v = draw.vertices[i];
+    const double x = static_cast<double>(v.x);
+    const double y = static_cast<double>(v.y);
+    const double z = static_cast<double>(v.z);
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+      throw std::invalid_argument(where + "vertex " + std::to_string(i) + " is not finite");
+    if (std::fabs(x) > kMaxCoordinate || std::fabs(y) > kMaxCoordinate)
+      throw std::invalid_argument(where + "vertex " + std::to_string(i) +
+                                  " lies outside |x|, |y| <= 32768");
+    if (!(z >= 0.0 && z <= 1.0))
+      throw std::invalid_argument(where + "vertex " + std::to_string(i) +
+                                  " has a depth outside [0, 1]");
+  }
+}
+
+// Section 2: X = nearbyint(x * 256) in double.
+long long snap(float v) {
+  return static_cast<long long>(roundHalfEven(static_cast<double>(v) * 256.0));
+}
+
+// Section 5, in exactly the contract's order, each operation rounded on its own.
+PlaneTerms planeAt(const TriangleEvent& t, long long xc, long long yc) {
+  PlaneTerms p;
+  p.z0 = static_cast<double>(t.Z[0]);
+  p.dz1 = static_cast<double>(t.Z[1]) - p.z0;
+  p.dz2 = static_cast<double>(t.Z[2]) - p.z0;
+  p.e1x = static_cast<double>(t.X[1] - t.X[0]);
+  p.e1y = static_cast<double>(t.Y[1] - t.Y[0]);
+  p.e2x = static_cast<double>(t.X[2] - t.X[0]);
+  p.e2y = static_cast<double>(t.Y[2] - t.Y[0]);
+  p.a2 = static_cast<double>(t.area2);
+  const double xLeft = p.dz1 * p.e2y;
+  const double xRight = p.dz2 * p.e1y;
+  p.dzdxNumerator = xLeft - xRight;
+  p.dzdx = p.dzdxNumerator / p.a2;
+  const double yLeft = p.dz2 * p.e1x;
+  const double yRight = p.dz1 * p.e2x;
+  p.dzdyNumerator = yLeft - yRight;
+  p.dzdy = p.dzdyNumerator / p.a2;
+  p.sampleDx = static_cast<double>(xc - t.X[0]);
+  p.sampleDy = static_cast<double>(yc - t.Y[0]);
+  p.tx = p.dzdx * p.sampleDx;
+  p.ty = p.dzdy * p.sampleDy;
+  p.z0PlusTx = p.z0 + p.tx;
+  p.z = p.z0PlusTx + p.ty;
+  return p;
+}
+
+// Section 6, for a covered sample inside the scissor; `t` holds the before-values.
+void fragment(TriangleEvent& t, const State& st) {
+  const StencilOps& ops = t.front ? st.front : st.back;
+  t.stencilRef = st.ref;
+  t.valueMask = st.valueMask;
+  t.writeMask = st.writeMask;
+  t.stencilFunc = std::string(raster::toString(st.stencilFunc));
+  t.depthFunc = std::string(raster::toString(st.depthFunc));
+  t.depthWrite = st.depthWrite;
+  const std::uint8_t s = t.stencilBefore;
+  const std::uint32_t d = t.depthBefore;
+  std::uint32_t newDepth = d;
+  StencilOp op = ops.stencilFail;
+  t.stencilPassed = compare(st.stencilFunc, static_cast<std::uint32_t>(st.ref & st.valueMask),
+                            static_cast<std::uint32_t>(s & st.valueMask));
+  if (!t.stencilPassed) {
+    t.opSlot = "sfail";
+  } else {
+    t.depthPassed = compare(st.depthFunc, t.quantisation.q, d);
+    if (!t.depthPassed) {
+      op = ops.depthFail;
+      t.opSlot = "dpfail";
+    } else {
+      op = ops.depthPass;
+      t.opSlot = "dppass";
+      if (st.depthWrite)
+        newDepth = t.quantisation.q;
+    }
+  }
+  t.op = std::string(raster::toString(op));
+  t.stencilAfter = masked(applyOp(op, s, st.ref), s, st.writeMask);
+  t.depthAfter = newDepth;
+}
+
+// ---- describe() helpers ----
+
+std::string g17(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string hex2(std::uint8_t v) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "0x%02x", static_cast<unsigned>(v));
+  return buf;
+}
+
+std::string num(long long v) {
+  return std::to_string(v);
+}
+std::string num(std::uint32_t v) {
+  return std::to_string(v);
+}
+std::string byte(std::uint8_t v) {
+  return std::to_string(static_cast<unsigned>(v));
+}
+
+const char* edgeSide(const EdgeAtSample& e) {
+  if (e.dy < 0)
+    return "left";
+  if (e.dy > 0)
+    return "right";
+  return e.dx > 0 ? "bottom" : "top";
+}
+
+std::string edgeName(const EdgeAtSample& e) {
+  return std::string(edgeSide(e)) + " edge v" + std::to_string(e.from) + " -> v" +
+         std::to_string(e.to);
+}
+
+// The edges at the sample whose value is exactly 0 and that are not inclusive.
+std::string tieEdges(const TriangleEvent& t) {
+  std::string out;
+  int count = 0;
+  for (const EdgeAtSample& e : t.edges) {
+    if (e.value == 0 && !e.inclusive) {
+      out += (count == 0 ? "" : " and ") + edgeName(e);
+      ++count;
+    }
+  }
+  if (count == 0)
+    return "";
+  return "E = 0 on its " + out + (count == 1 ? ", which is" : ", which are") +
+         " not inclusive (right and top edges do not own the samples on them)";
+}
+
+bool hasTie(const TriangleEvent& t) {
+  for (const EdgeAtSample& e : t.edges)
+    if (e.value == 0 && !e.inclusive)
+      return true;
+  return false;
+}
+
+std::string quantisationText(const Quantisation& q, const std::string& what) {
+  if (q.clampedLow)
+    return what + " <= 0 -> q = 0";
+  if (q.clampedHigh)
+    return what + " >= 1 -> q = 16777215";
+  std::string out = what + "*16777215 = " + g17(q.scaled);
+  if (q.tie)
+    out += " tie -> q = " + num(q.q) + " (even)";
+  else
+    out += " -> q = " + num(q.q);
+  return out;
+}
+
+std::string scissorText(const raster::PixelRect& r) {
+  if (r.x1 <= r.x0 || r.y1 <= r.y0)
+    return "the scissor is empty";
+  return "the scissor is x in [" + std::to_string(r.x0) + ", " + std::to_string(r.x1) +
+         "), y in [" + std::to_string(r.y0) + ", " + std::to_string(r.y1) + ")";
+}
+
+std::string testText(const char* what, const std::string& func, CompareFunc f,
+                     const std::string& incoming, const std::string& stored, bool passed) {
+  std::string out = std::string(what) + " " + func;
+  if (f != CompareFunc::Never && f != CompareFunc::Always)
+    out += " " + incoming + " " + compareSymbol(f) + " " + stored;
+  return out + (passed ? " passes" : " fails");
+}
+
+std::string describeClear(const HistoryEvent& ev) {
+  const ClearEvent& c = *ev.clear;
+  std::string out = commandText(ev.command) + ": ";
+  if (c.depth) {
+    out += "clear_depth " + g17(c.value);
+    if (c.skipped)
+      return out + " skipped: the depth write mask is off (" +
+             quantisationText(c.quantisation, "d") + " not written); depth stays " +
+             num(c.depthBefore) + "\n";
+    return out + ": " + quantisationText(c.quantisation, "d") + "; depth " + num(c.depthBefore) +
+           " -> " + num(c.depthAfter) + "\n";
+  }
+  const auto v = static_cast<std::uint8_t>(c.value);
+  out += "clear_stencil " + byte(v);
+  if (c.writeMask != 0xFF)
+    out += " through write mask " + hex2(c.writeMask) + ": (" + byte(v) + " & " +
+           hex2(c.writeMask) + ") | (" + byte(c.stencilBefore) + " & " +
+           hex2(static_cast<std::uint8_t>(~c.writeMask)) + ")";
+  return out + "; stencil " + byte(c.stencilBefore) + " -> " + byte(c.stencilAfter) + "\n";
+}
+
+std::string describeTriangle(const HistoryEvent& ev, int x, int y) {
+  const TriangleEvent& t = *ev.triangle;
+  std::string out = commandText(t.command) + ", draw " + std::to_string(t.draw) + ", triangle " +
+                    std::to_string(t.triangle) + (t.front ? " (front)" : " (back)") + ": ";
+  switch (t.outcome) {
+    case TriangleOutcome::Fragment: {
+      const Quantisation& q = t.quantisation;
+      out += "covered; z = " + g17(t.plane.z) + " (z0 + tx = " + g17(t.plane.z0PlusTx) +
+             ", ty = " + g17(t.plane.ty) + "), " + quantisationText(q, "z") + "; ";
+      out += testText("stencil", t.stencilFunc, *raster::parseCompareFunc(t.stencilFunc),
+                      "(" + byte(t.stencilRef) + " & " + hex2(t.valueMask) + " = " +
+                          byte(static_cast<std::uint8_t>(t.stencilRef & t.valueMask)) + ")",
+                      "(" + byte(t.stencilBefore) + " & " + hex2(t.valueMask) + " = " +
+                          byte(static_cast<std::uint8_t>(t.stencilBefore & t.valueMask)) + ")",
+                      t.stencilPassed);
+      if (t.stencilPassed)
+        out += "; " + testText("depth", t.depthFunc, *raster::parseCompareFunc(t.depthFunc),
+                               num(q.q), num(t.depthBefore), t.depthPassed);
+      else
+        out += "; depth test not run";
+      out += "; " + t.opSlot + " " + t.op + ": ";
+      if (t.writeMask != 0xFF) {
+        const std::uint8_t n =
+            applyOp(*raster::parseStencilOp(t.op), t.stencilBefore, t.stencilRef);
+        out += byte(t.stencilBefore) + " -> " + byte(n) + " through write mask " +
+               hex2(t.writeMask) + ": ";
+      }
+      out += "stencil " + byte(t.stencilBefore) + " -> " + byte(t.stencilAfter);
+      if (t.depthAfter != t.depthBefore || (t.depthPassed && t.depthWrite))
+        out += ", depth " + num(t.depthBefore) + " -> " + num(t.depthAfter);
+      else if (t.depthPassed)
+        out += ", depth stays " + num(t.depthBefore) + " (depth write mask off)";
+      else
+        out += ", depth stays " + num(t.depthBefore);
+      break;
+    }
+    case TriangleOutcome::Culled:
+      out += std::string("culled (") + (t.front ? "front" : "back") + "-facing, cull mode " +
+             (t.front ? "front" : "back") + ")";
+      if (hasTie(t))
+        out += "; it would not have covered the sample anyway: " + tieEdges(t);
+      else
+        out += "; it would cover the sample";
+      break;
+    case TriangleOutcome::OutsideScissor:
+      out += "outside the scissor: " + scissorText(t.scissor);
+      if (hasTie(t))
+        out += "; it would not have covered the sample anyway: " + tieEdges(t);
+      else
+        out += "; it covers the sample";
+      break;
+    case TriangleOutcome::ExcludedByTie:
+      out += "excluded by the tie rule: " + tieEdges(t);
+      break;
+    case TriangleOutcome::Degenerate:
+      out += "degenerate (A2 = 0 after snapping): draws nothing";
+      break;
+  }
+  out += "\n";
+
+  // The arithmetic.
+  const long long xc = 256LL * x + 128;
+  const long long yc = 256LL * y + 128;
+  out += "    vertices (24.8 fixed point, submitted order):";
+  for (int k = 0; k < 3; ++k)
+    out += std::string(k == 0 ? " " : ", ") + "v" + std::to_string(k) + " (" + num(t.X[k]) + ", " +
+           num(t.Y[k]) + ", z " + g17(static_cast<double>(t.Z[k])) + ")";
+  out += "\n    A2 = (X1 - X0)(Y2 - Y0) - (X2 - X0)(Y1 - Y0) = " + num(t.area2) +
+         (t.area2 > 0 ? " > 0: front-facing" : (t.area2 < 0 ? " < 0: back-facing" : "")) + "\n";
+  out += "    edges (counter-clockwise), E = dx (Yc - Ya) - dy (Xc - Xa) at (Xc, Yc) = (" +
+         num(xc) + ", " + num(yc) + "):\n";
+  for (const EdgeAtSample& e : t.edges) {
+    out += "      " + edgeName(e) + (e.inclusive ? " (inclusive)" : " (not inclusive)") +
+           ": dx = " + num(e.dx) + ", dy = " + num(e.dy) + ", E = " + num(e.value) +
+           (e.passes() ? " passes" : " excludes") + "\n";
+  }
+  if (t.outcome != TriangleOutcome::Fragment)
+    return out;
+  const PlaneTerms& p = t.plane;
+  out += "    z0 = " + g17(p.z0) + ", dz1 = " + g17(p.dz1) + ", dz2 = " + g17(p.dz2) + "\n";
+  out += "    e1x = " + g17(p.e1x) + ", e1y = " + g17(p.e1y) + ", e2x = " + g17(p.e2x) +
+         ", e2y = " + g17(p.e2y) + ", a2 = " + g17(p.a2) + "\n";
+  // The numerators' products, recomputed here with the same rounded operations.
+  const double xLeft = p.dz1 * p.e2y;
+  const double xRight = p.dz2 * p.e1y;
+  const double yLeft = p.dz2 * p.e1x;
+  const double yRight = p.dz1 * p.e2x;
+  out += "    dzdx = (dz1 e2y - dz2 e1y) / a2 = (" + g17(xLeft) + " - " + g17(xRight) +
+         ") / a2 = " + g17(p.dzdxNumerator) + " / a2 = " + g17(p.dzdx) + "\n";
+  out += "    dzdy = (dz2 e1x - dz1 e2x) / a2 = (" + g17(yLeft) + " - " + g17(yRight) +
+         ") / a2 = " + g17(p.dzdyNumerator) + " / a2 = " + g17(p.dzdy) + "\n";
+  out += "    Xc - X0 = " + g17(p.sampleDx) + ", Yc - Y0 = " + g17(p.sampleDy) +
+         "; tx = dzdx (Xc - X0) = " + g17(p.tx) + ", ty = dzdy (Yc - Y0) = " + g17(p.ty) + "\n";
+  out +=
+      "    z = (z0 + tx) + ty = " + g17(p.z0PlusTx) + " + " + g17(p.ty) + " = " + g17(p.z) + "\n";
+  return out;
+}
+
+}  // namespace
+
+PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
+  const int width = stream.width;
+  const int height = stream.height;
+  if (width < 1 || width > kMaxSize || height < 1 || height > kMaxSize)
+    throw std::invalid_argument("pixelHistory: frame size " + std::to_string(width) + " x " +
+                                std::to_string(height) + " outside 1..16384");
+  if (x < 0 || x >= width || y < 0 || y >= height)
+    throw std::invalid_argument("pixelHistory: pixel (" + std::to_string(x) + ", " +
+                                std::to_string(y) + ") lies outside the " + std::to_string(width) +
+                                " x " + std::to_string(height) + " frame");
+
+  PixelHistory history;
+  history.x = x;
+  history.y = y;
+  std::uint32_t depth = kDepthOne;  // section 1's initial values
+  std::uint8_t stencil = 0;
+  State st;
+  st.scissor = {0, 0, width, height};
+  const long long xc = 256LL * x + 128;  // the sample: the pixel centre in 24.8
+  const long long yc = 256LL * y + 128;
+  int drawIndex = 0;
+
+  for (std::size_t ci = 0; ci < stream.commands.size(); ++ci) {
+    const int command = static_cast<int>(ci);
+    const raster::Command& cmd = stream.commands[ci];
+    if (const auto* c = std::get_if<raster::cmd::Scissor>(&cmd)) {
+      st.scissor = clampScissor(c->rect, width, height);
+    } else if (const auto* c1 = std::get_if<raster::cmd::DepthFunc>(&cmd)) {
+      st.depthFunc = c1->func;
+    } else if (const auto* c2 = std::get_if<raster::cmd::DepthWriteMask>(&cmd)) {
+      st.depthWrite = c2->write;
+    } else if (const auto* c3 = std::get_if<raster::cmd::StencilFunc>(&cmd)) {
+      st.stencilFunc = c3->func;
+      st.ref = c3->ref;
+      st.valueMask = c3->valueMask;
+    } else if (const auto* c4 = std::get_if<raster::cmd::StencilOpsCmd>(&cmd)) {
+      if (c4->face != Face::Back)
+        st.front = c4->ops;
+      if (c4->face != Face::Front)
+        st.back = c4->ops;
+    } else if (const auto* c5 = std::get_if<raster::cmd::StencilWriteMask>(&cmd)) {
+      st.writeMask = c5->mask;
+    } else if (const auto* c6 = std::get_if<raster::cmd::Cull>(&cmd)) {
+      st.cull = c6->mode;
+    } else if (const auto* c7 = std::get_if<raster::cmd::ClearDepth>(&cmd)) {
+      if (!std::isfinite(c7->value))
+        throw std::invalid_argument("pixelHistory: " + commandText(command) +
+                                    ": clear_depth value is not finite");
+      if (!inside(st.scissor, x, y))
+        continue;
+      ClearEvent clear;
+      clear.depth = true;
+      clear.value = c7->value;
+      clear.skipped = !st.depthWrite;
+      clear.quantisation = quantise(c7->value);
+      clear.depthBefore = depth;
+      clear.stencilBefore = clear.stencilAfter = stencil;
+      if (!clear.skipped)
+        depth = clear.quantisation.q;
+      clear.depthAfter = depth;
+      history.events.push_back({command, clear, std::nullopt});
+    } else if (const auto* c8 = std::get_if<raster::cmd::ClearStencil>(&cmd)) {
+      if (!inside(st.scissor, x, y))
+        continue;
+      ClearEvent clear;
+      clear.depth = false;
+      clear.value = static_cast<double>(c8->value);
+      clear.writeMask = st.writeMask;
+      clear.depthBefore = clear.depthAfter = depth;
+      clear.stencilBefore = stencil;
+      stencil = masked(c8->value, stencil, st.writeMask);
+      clear.stencilAfter = stencil;
+      history.events.push_back({command, clear, std::nullopt});
+    } else if (const auto* draw = std::get_if<raster::cmd::Draw>(&cmd)) {
+      validateDraw(*draw, command);
+      const std::size_t triangles = draw->indices.size() / 3;
+      for (std::size_t ti = 0; ti < triangles; ++ti) {
+        TriangleEvent t;
+        t.draw = drawIndex;
+        t.triangle = static_cast<int>(ti);
+        t.command = command;
+        for (std::size_t k = 0; k < 3; ++k) {
+          const raster::WindowVertex& v = draw->vertices[draw->indices[3 * ti + k]];
+          t.X[k] = snap(v.x);
+          t.Y[k] = snap(v.y);
+          t.Z[k] = v.z;
+        }
+        // Section 3.
+        t.area2 = (t.X[1] - t.X[0]) * (t.Y[2] - t.Y[0]) - (t.X[2] - t.X[0]) * (t.Y[1] - t.Y[0]);
+        if (t.area2 == 0)
+          continue;
+        t.front = t.area2 > 0;
+        // Section 4: counter-clockwise order (v0, v1, v2) if front-facing, else (v0, v2, v1).
+        const int order[3] = {0, t.front ? 1 : 2, t.front ? 2 : 1};
+        bool reaches = true;
+        bool covered = true;
+        for (int e = 0; e < 3; ++e) {
+          EdgeAtSample& edge = t.edges[e];
+          edge.from = order[e];
+          edge.to = order[(e + 1) % 3];
+          const long long xa = t.X[edge.from];
+          const long long ya = t.Y[edge.from];
+          edge.dx = t.X[edge.to] - xa;
+          edge.dy = t.Y[edge.to] - ya;
+          edge.value = edge.dx * (yc - ya) - edge.dy * (xc - xa);
+          edge.inclusive = edge.dy < 0 || (edge.dy == 0 && edge.dx > 0);
+          if (edge.value < 0)
+            reaches = false;
+          if (!edge.passes())
+            covered = false;
+        }
+        if (!reaches)
+          continue;  // the sample lies outside the triangle: nothing to tell
+        t.scissor = st.scissor;
+        t.depthBefore = t.depthAfter = depth;
+        t.stencilBefore = t.stencilAfter = stencil;
+        const bool culled =
+            (st.cull == CullMode::Front && t.front) || (st.cull == CullMode::Back && !t.front);
+        if (culled) {
+          t.outcome = TriangleOutcome::Culled;
+        } else if (!inside(st.scissor, x, y)) {
+          t.outcome = TriangleOutcome::OutsideScissor;
+        } else if (!covered) {
+          t.outcome = TriangleOutcome::ExcludedByTie;
+        } else {
+          t.outcome = TriangleOutcome::Fragment;
+          t.plane = planeAt(t, xc, yc);
+          t.quantisation = quantise(t.plane.z);
+          fragment(t, st);
+          depth = t.depthAfter;
+          stencil = t.stencilAfter;
+        }
+        history.events.push_back({command, std::nullopt, t});
+      }
+      ++drawIndex;
+    }
+  }
+  history.finalDepth = depth;
+  history.finalStencil = stencil;
+  return history;
+}
+
+std::string describe(const PixelHistory& history) {
+  std::string out = "pixel (" + std::to_string(history.x) + ", " + std::to_string(history.y) +
+                    "): " + std::to_string(history.events.size()) +
+                    (history.events.size() == 1 ? " event" : " events") + "; final depth " +
+                    num(history.finalDepth) + ", stencil " + byte(history.finalStencil) + "\n";
+  for (const HistoryEvent& ev : history.events) {
+    if (ev.clear)
+      out += describeClear(ev);
+    else if (ev.triangle)
+      out += describeTriangle(ev, history.x, history.y);
+  }
+  return out;
+}
+
+}  // namespace recode::conformance

@@ -1,0 +1,73 @@
+// The suite names what a failing back end behaves like: each of the kit's wrong readings, run as
+// a back end, is named (and the contract's model passes and is named nothing).
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "recode/conformance/suite.hpp"
+
+using namespace recode::conformance;
+using recode::kit::Variant;
+
+namespace {
+
+const std::vector<SuiteVector>& goldenSet() {
+  static const std::vector<SuiteVector> all = goldenVectors(RECODE_DATA_DIR "/golden");
+  return all;
+}
+
+SuiteOptions quick() {
+  SuiteOptions o;
+  o.explainLimit = 0;  // naming only: the explanations have their own tests
+  o.classify = false;
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("the contract's model passes every golden vector and is named nothing", "[naming]") {
+  ModelBackend model(Variant::Contract);
+  const SuiteReport r = runSuite(model, goldenSet(), quick());
+  CHECK(r.passed());
+  CHECK(r.count(Status::Passed) == static_cast<int>(goldenSet().size()));
+  CHECK(r.behavesLike.empty());
+}
+
+TEST_CASE("every wrong reading of the kit, run as a back end, is named", "[naming]") {
+  for (const recode::kit::VariantInfo& v : recode::kit::wrongVariants()) {
+    ModelBackend model(v.variant);
+    const SuiteReport r = runSuite(model, goldenSet(), quick());
+    INFO(v.name);
+    CHECK_FALSE(r.passed());
+    CHECK(std::find(r.behavesLike.begin(), r.behavesLike.end(), v.variant) != r.behavesLike.end());
+    // A reading is named alone unless another gives the same bits on every vector.
+    CHECK(r.behavesLike.size() <= 2);
+  }
+}
+
+TEST_CASE("a back end that fails one way no reading has is named by its stages", "[naming]") {
+  // The contract, except that pixel (0, 0)'s stencil is inverted after every stream.
+  class OnePixelOff final : public Backend {
+   public:
+    std::string name() const override { return "one pixel off"; }
+    Answer run(const recode::raster::CommandStream& s) override {
+      Answer a = referenceAnswer(s);
+      a.stencil[0] = static_cast<std::uint8_t>(255 - a.stencil[0]);
+      return a;
+    }
+  } backend;
+  const std::vector<SuiteVector> some(goldenSet().begin(), goldenSet().begin() + 10);
+  SuiteOptions o;
+  o.explainLimit = 4;
+  const SuiteReport r = runSuite(backend, some, o);
+  CHECK(r.count(Status::Failed) == 10);
+  CHECK(r.behavesLike.empty());
+  for (const VectorReport& v : r.vectors) {
+    REQUIRE(v.stage.has_value());
+    REQUIRE(v.explained.size() == 1);
+    CHECK(v.explained.front().pixel.x == 0);
+    CHECK(v.explained.front().pixel.y == 0);
+    CHECK_FALSE(v.explained.front().why.empty());
+    REQUIRE(v.requirement.has_value());
+  }
+}
