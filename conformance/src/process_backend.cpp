@@ -131,8 +131,17 @@ struct ProcessBackend::Child {
   [[nodiscard]] std::string exitText() const {
     if (!reaped)
       return "closed its stdout";
-    if (WIFEXITED(status))
-      return "exited with status " + std::to_string(WEXITSTATUS(status));
+    if (WIFEXITED(status)) {
+      const int code = WEXITSTATUS(status);
+      std::string text = "exited with status " + std::to_string(code);
+      // The shell that runs the command reports a child killed by signal n as 128 + n.
+      if (code > 128 && code < 128 + 65) {
+        const char* name = sigabbrev_np(code - 128);
+        if (name != nullptr)
+          text += " (a shell's report of signal " + std::to_string(code - 128) + ", SIG" + name + ")";
+      }
+      return text;
+    }
     if (WIFSIGNALED(status)) {
       const int sig = WTERMSIG(status);
       const char* name = sigabbrev_np(sig);

@@ -120,8 +120,12 @@ void explainFailure(const SuiteVector& v, const Answer& expected, const Answer& 
     r.depthPixels += p.depthDiffers() ? 1 : 0;
     r.stencilPixels += p.stencilDiffers() ? 1 : 0;
   }
-  const std::vector<ReadingAnswer> readings =
+  std::vector<ReadingAnswer> readings =
       options.explainLimit > 0 ? readingAnswers(stream) : std::vector<ReadingAnswer>{};
+  // A reading that gives the back end's whole answer is the likeliest explanation of each of its
+  // pixels: consulted first.
+  std::stable_partition(readings.begin(), readings.end(),
+                        [&](const ReadingAnswer& a) { return a.answer == got; });
   const std::size_t n = std::min(options.explainLimit, r.badPixels.size());
   for (std::size_t i = 0; i < n; ++i)
     r.explained.push_back(explainPixel(stream, r.badPixels[i], readings));
