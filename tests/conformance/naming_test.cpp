@@ -71,3 +71,30 @@ TEST_CASE("a back end that fails one way no reading has is named by its stages",
     REQUIRE(v.requirement.has_value());
   }
 }
+
+TEST_CASE("a reading is named only when it also agrees where the back end passes", "[naming]") {
+  // top_left_fill's answer on the first vector it fails, the contract's everywhere else: its
+  // failures alone look like top_left_fill, the vectors it passes say otherwise.
+  class WrongOnce final : public Backend {
+   public:
+    WrongOnce() {
+      for (const SuiteVector& v : goldenSet()) {
+        if (!(wrong_.run(v.golden.stream) == referenceAnswer(v.golden.stream))) {
+          chosen_ = recode::raster::commandStreamToJson(v.golden.stream);
+          break;
+        }
+      }
+    }
+    std::string name() const override { return "wrong once"; }
+    Answer run(const recode::raster::CommandStream& s) override {
+      return recode::raster::commandStreamToJson(s) == chosen_ ? wrong_.run(s) : referenceAnswer(s);
+    }
+
+   private:
+    ModelBackend wrong_{Variant::TopLeftFill};
+    std::string chosen_;
+  } backend;
+  const SuiteReport r = runSuite(backend, goldenSet(), quick());
+  CHECK(r.count(Status::Failed) == 1);
+  CHECK(r.behavesLike.empty());
+}
