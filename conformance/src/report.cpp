@@ -362,41 +362,83 @@ const char* stageColour(Stage s) {
   return colours[static_cast<std::size_t>(s)];
 }
 
-// The vector's frame with every bad pixel coloured by the stage of its explanation (grey where
-// it was not explained), y up as in the buffers.
+// The vector's frame as a canvas with every bad pixel coloured by the stage of its explanation
+// (grey where it was not explained), y up as in the buffers. The mask travels as runs of
+// "stage:count" over the pixels in buffer order (-1: a good pixel), which the page's script
+// paints: a few bytes for a frame of any size, where an element per pixel would not scale.
 std::string errorMask(const VectorReport& v) {
   std::map<std::pair<int, int>, Stage> stages;
   for (const PixelExplanation& e : v.explained)
     stages[{e.pixel.x, e.pixel.y}] = e.stage;
-  std::ostringstream o;
-  const int w = v.width, h = v.height;
-  const int longest = std::max(w, h);
-  const double scale = longest >= 256 ? 1.0 : 256.0 / longest;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << std::min(1024.0, w * scale)
-    << "\" height=\"" << std::min(1024.0, h * scale) << "\" viewBox=\"0 0 " << w << ' ' << h
-    << "\" preserveAspectRatio=\"none\" shape-rendering=\"crispEdges\">"
-    << "<rect width=\"" << w << "\" height=\"" << h << "\" fill=\"#fff\" stroke=\"#000\" "
-    << "stroke-width=\"" << longest / 256.0 << "\"/>";
+  constexpr int kUnexplained = 8;
+  std::ostringstream runs;
+  int current = -1;
+  long long length = 0, at = 0;
+  const auto flush = [&](int next, long long pixel) {
+    if (length > 0)
+      runs << current << ':' << length << ' ';
+    current = next;
+    length = 0;
+    at = pixel;
+  };
   for (const BadPixel& p : v.badPixels) {
+    const long long pixel = static_cast<long long>(p.y) * v.width + p.x;
+    if (pixel > at)
+      flush(-1, at), length = pixel - at;
     const auto it = stages.find({p.x, p.y});
-    o << "<rect x=\"" << p.x << "\" y=\"" << h - 1 - p.y << "\" width=\"1\" height=\"1\" fill=\""
-      << (it == stages.end() ? "#bbbbbb" : stageColour(it->second)) << "\"><title>"
-      << xmlEscaped(pixelLine(p)) << "</title></rect>";
+    const int code = it == stages.end() ? kUnexplained : static_cast<int>(it->second);
+    if (code != current)
+      flush(code, pixel);
+    ++length;
+    at = pixel + 1;
   }
-  o << "</svg>";
+  flush(-1, at);
+  const int longest = std::max(v.width, v.height);
+  const int scale = longest >= 256 ? 1 : 256 / longest;
+  std::ostringstream o;
+  o << "<canvas class=\"mask\" width=\"" << v.width << "\" height=\"" << v.height
+    << "\" style=\"width:" << std::min(1024, v.width * scale)
+    << "px;height:" << std::min(1024, v.height * scale) << "px\" data-runs=\"" << runs.str()
+    << "\"></canvas>";
   return o.str();
+}
+
+// Paints every mask: white for good pixels, the stage's colour for bad ones, bottom row last.
+std::string maskScript() {
+  std::string colours;
+  for (int s = 0; s <= static_cast<int>(Stage::Clear); ++s)
+    colours += std::string(s == 0 ? "" : ",") + "'" + stageColour(static_cast<Stage>(s)) + "'";
+  return "<script>\nconst colours = [" + colours +
+         ", '#bbbbbb'];\n"
+         "for (const c of document.querySelectorAll('canvas.mask')) {\n"
+         "  const g = c.getContext('2d'), w = c.width, h = c.height;\n"
+         "  g.fillStyle = '#fff'; g.fillRect(0, 0, w, h);\n"
+         "  let i = 0;\n"
+         "  for (const run of c.dataset.runs.trim().split(' ')) {\n"
+         "    if (!run) continue;\n"
+         "    const [code, n] = run.split(':').map(Number);\n"
+         "    if (code >= 0) {\n"
+         "      g.fillStyle = colours[code];\n"
+         "      for (let k = i; k < i + n; ++k) g.fillRect(k % w, h - 1 - Math.floor(k / w), 1, "
+         "1);\n"
+         "    }\n"
+         "    i += n;\n"
+         "  }\n"
+         "}\n</script>\n";
 }
 
 }  // namespace
 
 std::string toHtml(const SuiteReport& report) {
+  // Histories shown per vector: the mask shows every bad pixel, and --json has every history.
+  constexpr std::size_t kHtmlHistories = 16;
   std::ostringstream o;
   o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>recode conform: "
     << xmlEscaped(report.backend) << "</title>\n<style>body{font:14px sans-serif;margin:2em}"
-    << "pre{background:#f4f4f4;padding:.5em;overflow-x:auto}.pass{color:#2ca02c}"
+    << "pre{background:#f4f4f4;padding:.5em;white-space:pre-wrap}.pass{color:#2ca02c}"
     << ".FAIL,.NONDETERMINISTIC,.UNEXPECTED{color:#d62728}.key span{display:inline-block;"
     << "width:1em;height:1em;margin:0 .3em 0 1em;vertical-align:middle}"
-    << "svg{image-rendering:pixelated;border:1px solid #ccc}</style></head><body>\n"
+    << "canvas{image-rendering:pixelated;border:1px solid #ccc}</style></head><body>\n"
     << "<h1>recode conform: " << xmlEscaped(report.backend) << "</h1>\n<pre>";
   {
     std::ostringstream summary;
@@ -417,14 +459,14 @@ std::string toHtml(const SuiteReport& report) {
       << "</h2>\n<p>" << xmlEscaped(v.description) << "</p>\n";
     if (v.stage && v.refused.empty())
       o << errorMask(v) << "\n";
-    o << "<pre>" << xmlEscaped(vectorText(v, v.explained.size())) << "</pre></section>\n";
+    o << "<pre>" << xmlEscaped(vectorText(v, kHtmlHistories)) << "</pre></section>\n";
   }
   o << "<h2>Passed</h2><p>";
   for (const VectorReport& v : report.vectors) {
     if (v.status == Status::Passed)
       o << "<span class=\"pass\">" << xmlEscaped(v.name) << "</span> ";
   }
-  o << "</p></body></html>\n";
+  o << "</p>\n" << maskScript() << "</body></html>\n";
   return o.str();
 }
 

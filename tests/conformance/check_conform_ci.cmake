@@ -85,7 +85,7 @@ if(NOT xml MATCHES "<testsuite name=\"recode conform: [^\"]*\" tests=\"${count}\
   message(FATAL_ERROR "--junit: unexpected report:\n${xml}")
 endif()
 file(READ ${OUT}/report.html html)
-if(NOT html MATCHES "<svg" OR NOT html MATCHES "behaves like: [^\n]*top_left_fill"
+if(NOT html MATCHES "<canvas class=\"mask\"" OR NOT html MATCHES "behaves like: [^\n]*top_left_fill"
    OR NOT html MATCHES "the contract's history of the pixel")
   message(FATAL_ERROR "--html: no error mask, reading or history in ${OUT}/report.html")
 endif()
