@@ -295,17 +295,21 @@ Stage failingStage(const raster::CommandStream& stream, const Answer& expected, 
 
 Requirement requirementOf(const raster::CommandStream& stream, const Answer& expected) {
   Requirement r;
+  const auto departs = [](BufferRequirement& b, const std::string& latitude) {
+    b.byGraphicsApis = false;
+    if (std::find(b.latitudes.begin(), b.latitudes.end(), latitude) == b.latitudes.end())
+      b.latitudes.push_back(latitude);
+  };
   for (const kit::VariantInfo& v : kit::wrongVariants()) {
     if (!apiLatitude(v.variant))
       continue;
     const std::string name = latitudeName(v.variant);
-    if (std::find(r.latitudes.begin(), r.latitudes.end(), name) != r.latitudes.end())
-      continue;
     ModelBackend model(v.variant);
-    if (!(model.run(stream) == expected)) {
-      r.byGraphicsApis = false;
-      r.latitudes.push_back(name);
-    }
+    const Answer a = model.run(stream);
+    if (a.wasRefused() || a.depth != expected.depth)
+      departs(r.depth, name);
+    if (a.wasRefused() || a.stencil != expected.stencil)
+      departs(r.stencil, name);
   }
   return r;
 }

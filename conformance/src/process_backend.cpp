@@ -138,7 +138,8 @@ struct ProcessBackend::Child {
       if (code > 128 && code < 128 + 65) {
         const char* name = sigabbrev_np(code - 128);
         if (name != nullptr)
-          text += " (a shell's report of signal " + std::to_string(code - 128) + ", SIG" + name + ")";
+          text +=
+              " (a shell's report of signal " + std::to_string(code - 128) + ", SIG" + name + ")";
       }
       return text;
     }

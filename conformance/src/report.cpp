@@ -19,13 +19,30 @@ std::string readingText(kit::Variant v) {
   return std::string(kit::variantName(v));
 }
 
-std::string requirementText(const Requirement& r) {
-  if (r.byGraphicsApis)
-    return "its answer is required by the graphics APIs too: a driver bug";
-  std::string s = "its answer is required by this contract only (the APIs leave ";
-  for (std::size_t i = 0; i < r.latitudes.size(); ++i)
-    s += (i == 0 ? "" : (i + 1 == r.latitudes.size() ? " and " : ", ")) + r.latitudes[i];
-  return s + " to the implementation)";
+std::string latitudeList(const std::vector<std::string>& latitudes) {
+  std::string s;
+  for (std::size_t i = 0; i < latitudes.size(); ++i)
+    s += (i == 0 ? "" : (i + 1 == latitudes.size() ? " and " : ", ")) + latitudes[i];
+  return s;
+}
+
+// For the buffers that differ: a driver bug (the APIs require the answer) or a departure from
+// this contract only.
+std::string requirementText(const Requirement& r, bool depth, bool stencil) {
+  std::string s;
+  const auto one = [&](const char* buffer, const BufferRequirement& b) {
+    s += s.empty() ? "" : "; ";
+    s += std::string(buffer) + ": ";
+    s += b.byGraphicsApis ? "the graphics APIs require this answer too (on a native pipeline, a "
+                            "driver bug)"
+                          : "this contract's answer only (the APIs leave " +
+                                latitudeList(b.latitudes) + " to the implementation)";
+  };
+  if (depth)
+    one("depth", r.depth);
+  if (stencil)
+    one("stencil", r.stencil);
+  return s;
 }
 
 std::string pixelLine(const BadPixel& p) {
@@ -77,8 +94,12 @@ void printVector(std::ostream& out, const VectorReport& v, std::size_t pixels) {
   else
     out << ": " << v.depthPixels << " depth, " << v.stencilPixels << " stencil pixels differ";
   out << "\n        stage: " << toString(*v.stage) << ", " << contractSection(*v.stage) << '\n';
-  if (v.requirement)
-    out << "        " << requirementText(*v.requirement) << '\n';
+  if (v.requirement) {
+    const bool both = !v.refused.empty();
+    out << "        "
+        << requirementText(*v.requirement, both || v.depthPixels > 0, both || v.stencilPixels > 0)
+        << '\n';
+  }
   for (std::size_t i = 0; i < v.explained.size() && i < pixels; ++i) {
     const PixelExplanation& e = v.explained[i];
     out << "        " << pixelLine(e.pixel) << '\n';
@@ -201,16 +222,21 @@ json vectorJson(const VectorReport& v) {
   json j = {
       {"file", v.name},   {"status", toString(v.status)}, {"passed", v.status == Status::Passed},
       {"width", v.width}, {"height", v.height},           {"seconds", v.seconds}};
+  if (v.requirement) {
+    const auto by = [](const BufferRequirement& b) {
+      return b.byGraphicsApis ? "graphics APIs" : "contract only";
+    };
+    j["required_by"] = {{"depth", by(v.requirement->depth)},
+                        {"stencil", by(v.requirement->stencil)}};
+    j["api_latitudes"] = {{"depth", v.requirement->depth.latitudes},
+                          {"stencil", v.requirement->stencil.latitudes}};
+  }
   if (!v.stage)
     return j;
   j["stage"] = toString(*v.stage);
   j["contract_section"] = contractSection(*v.stage);
   if (!v.refused.empty())
     j["refused"] = v.refused;
-  if (v.requirement) {
-    j["required_by"] = v.requirement->byGraphicsApis ? "graphics APIs" : "contract only";
-    j["api_latitudes"] = v.requirement->latitudes;
-  }
   j["depth_pixels"] = v.depthPixels;
   j["stencil_pixels"] = v.stencilPixels;
   if (!v.badPixels.empty()) {

@@ -109,8 +109,6 @@ void explainFailure(const SuiteVector& v, const Answer& expected, const Answer& 
                     const SuiteOptions& options, VectorReport& r) {
   const raster::CommandStream& stream = v.golden.stream;
   r.refused = got.refused;
-  if (options.classify)
-    r.requirement = requirementOf(stream, expected);
   if (got.wasRefused()) {
     r.stage = Stage::Validation;
     return;
@@ -192,6 +190,8 @@ SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
       r.status = listed ? Status::ExpectedFailure : Status::Failed;
     else
       r.status = listed ? Status::UnexpectedPass : Status::Passed;
+    if (options.classify)
+      r.requirement = requirementOf(v.golden.stream, expected);
     if (fails)
       explainFailure(v, expected, got, options, r);
     if (onVector)

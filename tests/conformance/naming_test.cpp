@@ -98,3 +98,36 @@ TEST_CASE("a reading is named only when it also agrees where the back end passes
   CHECK(r.count(Status::Failed) == 1);
   CHECK(r.behavesLike.empty());
 }
+
+TEST_CASE("the graphics APIs require stencil answers, not ties or depth bits", "[requirement]") {
+  const auto requirement = [](const std::string& name) {
+    for (const SuiteVector& v : goldenSet()) {
+      if (v.name == name)
+        return requirementOf(v.golden.stream, {v.golden.depth, v.golden.stencil, {}});
+    }
+    FAIL("no vector " << name);
+    return Requirement{};
+  };
+  // Stencil ops and compare functions are the APIs' own; the depth bits of a sloped plane are
+  // not.
+  const Requirement ops = requirement("kit/compare_ops_0.json");
+  CHECK(ops.stencil.byGraphicsApis);
+  CHECK_FALSE(ops.depth.byGraphicsApis);
+  // Samples on shared edges: any consistent tie rule is allowed, so their stencil is ours.
+  const Requirement edges = requirement("kit/shared_edges_0.json");
+  CHECK_FALSE(edges.stencil.byGraphicsApis);
+  CHECK(std::find(edges.stencil.latitudes.begin(), edges.stencil.latitudes.end(),
+                  "the fill rule on ties") != edges.stencil.latitudes.end());
+  // A quantisation tie: the rounding is the implementation's.
+  const Requirement ties = requirement("kit/depth_ties_0.json");
+  CHECK_FALSE(ties.depth.byGraphicsApis);
+  CHECK(std::find(ties.depth.latitudes.begin(), ties.depth.latitudes.end(),
+                  "the depth arithmetic and its rounding") != ties.depth.latitudes.end());
+  // Wrapping, masks, clears and facing are not latitudes.
+  for (const Variant v : {Variant::IncrWraps, Variant::IgnoreValueMask,
+                          Variant::ClearIgnoresScissor, Variant::SwappedFacing, Variant::EdgeFloat})
+    CHECK_FALSE(apiLatitude(v));
+  for (const Variant v : {Variant::TopLeftFill, Variant::FmaPlane, Variant::QuantiseHalfUp,
+                          Variant::AnchorRotated, Variant::StrictLimits})
+    CHECK(apiLatitude(v));
+}

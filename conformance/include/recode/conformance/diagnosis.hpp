@@ -86,12 +86,19 @@ struct ReadingAnswer {
                                  const Answer& got, const std::vector<ReadingAnswer>& readings);
 
 // Whether the graphics APIs (Vulkan, OpenGL, WebGPU) require a vector's answer or only this
-// contract does. The APIs leave the tie rule, the depth arithmetic and its rounding, and the
-// guard band to the implementation: a vector whose answer any of the kit's readings of those
-// latitudes changes is contract-only, and `latitudes` lists which.
-struct Requirement {
+// contract does, buffer by buffer. The APIs leave the tie rule, the depth arithmetic and its
+// rounding, and the guard band to the implementation: a buffer whose answer one of the kit's
+// readings of those latitudes changes is contract-only, and `latitudes` lists which. A vector's
+// stencil is often required by the APIs where its depth bits are not.
+struct BufferRequirement {
   bool byGraphicsApis = true;
-  std::vector<std::string> latitudes;  // "fill rule on ties", "depth arithmetic", ...
+  std::vector<std::string> latitudes;  // "the fill rule on ties", ...
+};
+struct Requirement {
+  BufferRequirement depth, stencil;
+  [[nodiscard]] bool byGraphicsApis() const {
+    return depth.byGraphicsApis && stencil.byGraphicsApis;
+  }
 };
 [[nodiscard]] Requirement requirementOf(const raster::CommandStream& stream,
                                         const Answer& expected);

@@ -71,7 +71,7 @@ struct SuiteOptions {
   // Bad pixels of a failing vector explained with their history; 0 skips the explanations and
   // the wrong readings' answers they consult (the stage then comes from the history alone).
   std::size_t explainLimit = 64;
-  bool classify = true;  // say for each failing vector whether the graphics APIs require it
+  bool classify = true;  // say for each vector whether the graphics APIs require its answer
   int repeat = 1;        // runs of every vector (a failing one is always run twice)
   std::set<std::string> baseline;
   bool stopAtFirstFailure = false;  // --random: stop at the first failing stream
