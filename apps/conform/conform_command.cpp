@@ -70,7 +70,7 @@ std::unique_ptr<Backend> makeBackend(const ConformOptions& o) {
 // Reduces the first failing vector of the run and writes the minimal vector and its passing
 // twin into the directory.
 void reduceFirstFailure(const SuiteReport& report, const std::vector<SuiteVector>& vectors,
-                        Backend& backend, const fs::path& dir) {
+                        Backend& backend, const fs::path& dir, std::ostream& out) {
   for (const VectorReport& r : report.vectors) {
     if (r.status != Status::Failed && r.status != Status::ExpectedFailure)
       continue;
@@ -83,20 +83,20 @@ void reduceFirstFailure(const SuiteReport& report, const std::vector<SuiteVector
     const fs::path minimal = dir / (stem + "-minimal.json");
     writeFileAtomically(minimal, raster::goldenToJson(red.minimal, raster::GoldenLayout::Rows),
                         "--reduce");
-    std::cout << "reduced " << r.name << " in " << red.backendRuns << " runs to " << red.draws
+    out << "reduced " << r.name << " in " << red.backendRuns << " runs to " << red.draws
               << " draws, " << red.triangles << " triangles: " << minimal.string() << '\n';
     if (red.passingTwin) {
       const fs::path twin = dir / (stem + "-passing-twin.json");
       writeFileAtomically(twin, raster::goldenToJson(*red.passingTwin, raster::GoldenLayout::Rows),
                           "--reduce");
-      std::cout << "passing twin: " << twin.string() << '\n';
+      out << "passing twin: " << twin.string() << '\n';
     } else {
-      std::cout << "no passing twin: every single step from the minimal vector still fails\n";
+      out << "no passing twin: every single step from the minimal vector still fails\n";
     }
     created.keep();
     return;
   }
-  std::cout << "--reduce: nothing failed, nothing to reduce\n";
+  out << "--reduce: nothing failed, nothing to reduce\n";
 }
 
 int runConform(const ConformOptions& o) {
@@ -145,7 +145,7 @@ int runConform(const ConformOptions& o) {
     return 1;
   }
   if (!o.reduceDir.empty())
-    reduceFirstFailure(report, vectors, *backend, o.reduceDir);
+    reduceFirstFailure(report, vectors, *backend, o.reduceDir, o.json ? std::cerr : std::cout);
   return report.passed() ? 0 : 2;
 }
 
