@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -72,14 +73,15 @@ std::string rangeName(const char* what, std::size_t begin, std::size_t end) {
              : std::string(what) + "s " + std::to_string(begin) + " to " + std::to_string(end - 1);
 }
 
+// Enough digits to tell floats apart, and none more: 3 reads better than 3.000000.
 std::string number(double v) {
-  std::string s = std::to_string(v);
-  // std::to_string prints six decimals; the grid's values need at most eight, and the common
-  // ones none, so trailing zeros only hide which value it is.
-  char buffer[64];
+  char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.9g", v);
-  s = buffer;
-  return s;
+  return buffer;
+}
+
+std::string count(long long n, const char* what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
 struct Shape {
@@ -99,7 +101,7 @@ Shape shapeOf(const CommandStream& s) {
 
 std::string describe(const FailureSignature& s) {
   if (s.refused)
-    return "the back end refuses it (stage " + std::string(toString(s.stage)) + ")";
+    return "is refused by the back end (stage " + std::string(toString(s.stage)) + ")";
   const std::string buffers = s.depth && s.stencil ? "depth and stencil"
                               : s.depth            ? "depth"
                                                    : "stencil";
@@ -232,7 +234,6 @@ class Reducer {
   [[nodiscard]] const CommandStream& minimal() const { return current_; }
   [[nodiscard]] long long runs() const { return runs_; }
   [[nodiscard]] const std::optional<std::pair<CommandStream, Step>>& twin() const { return twin_; }
-  [[nodiscard]] const std::string& backendName() { return name_ = backend_.name(); }
 
  private:
   [[nodiscard]] bool budgetLeft() const { return runs_ < options_.maxBackendRuns; }
@@ -389,8 +390,8 @@ class Reducer {
       for (const std::uint32_t i : draw->indices)
         compact.indices.push_back(renumbered[i]);
       CommandStream c = current_;
-      const std::string what = std::to_string(removed) + " vertices no index names removed from " +
-                               commandName(current_, ci);
+      const std::string what = std::to_string(removed) + (removed == 1 ? " vertex" : " vertices") +
+                               " that no index names removed from " + commandName(current_, ci);
       c.commands[ci] = std::move(compact);
       if (attempt(std::move(c), {StepKind::Vertices, static_cast<long long>(removed), what}))
         changed = true;
@@ -424,7 +425,9 @@ class Reducer {
         // The clamped rectangle is what every device uses; its numbers are the frame's.
         const raster::PixelRect clamped = std::get<cmd::Scissor>(c).rect.intersect(whole);
         std::vector<raster::PixelRect> values{whole};
-        if (!(clamped == whole))
+        if (clamped.empty())
+          values.push_back({0, 0, 0, 0});
+        if (std::find(values.begin(), values.end(), clamped) == values.end())
           values.push_back(clamped);
         moved = moveField<cmd::Scissor>(
             ci, values, [](cmd::Scissor& s) -> raster::PixelRect& { return s.rect; }, "the rect");
@@ -566,7 +569,6 @@ class Reducer {
   FailureSignature signature_;
   long long runs_ = 0;
   std::optional<std::pair<CommandStream, Step>> twin_;
-  std::string name_;
 };
 
 raster::GoldenVector goldenOf(const CommandStream& s, std::string description) {
@@ -615,17 +617,17 @@ Reduction reduce(const raster::CommandStream& stream, Backend& backend,
   const Shape after = shapeOf(reducer.minimal());
   out.draws = after.draws;
   out.triangles = after.triangles;
-  const std::string name = reducer.backendName();
+  const std::string name = backend.name();
   const std::string failure = describe(out.signature);
-  out.minimal = goldenOf(
-      reducer.minimal(),
-      "Reduced by recode conform --reduce from a stream of " +
-          std::to_string(stream.commands.size()) + " commands (" + std::to_string(before.draws) +
-          " draws, " + std::to_string(before.triangles) + " triangles) on " +
-          std::to_string(stream.width) + " x " + std::to_string(stream.height) + " pixels that " +
-          name + " fails, to " + std::to_string(after.draws) + " draws and " +
-          std::to_string(after.triangles) + " triangles in " + std::to_string(out.backendRuns) +
-          " runs of the back end; it still " + failure + ".");
+  out.minimal =
+      goldenOf(reducer.minimal(),
+               "Reduced by recode conform --reduce from a stream of " +
+                   count(static_cast<long long>(stream.commands.size()), "command") + " (" +
+                   count(before.draws, "draw") + ", " + count(before.triangles, "triangle") +
+                   ") on " + std::to_string(stream.width) + " x " + std::to_string(stream.height) +
+                   " pixels that " + name + " fails, to " + count(after.draws, "draw") + " and " +
+                   count(after.triangles, "triangle") + " in " + count(out.backendRuns, "run") +
+                   " of the back end; it still " + failure + ".");
   if (const auto& twin = reducer.twin()) {
     out.passingTwin = goldenOf(twin->first,
                                "Passing twin of a vector reduced by recode conform "
