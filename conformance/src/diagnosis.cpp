@@ -135,7 +135,7 @@ void stageFromHistory(const PixelHistory& h, PixelExplanation& out) {
   bool anyClear = false;
   for (const HistoryEvent& e : h.events) {
     if (e.clear) {
-      anyClear = true;
+      anyClear = anyClear || !e.clear->outsideScissor;
       continue;
     }
     if (!e.triangle)
@@ -149,6 +149,71 @@ void stageFromHistory(const PixelHistory& h, PixelExplanation& out) {
       culled.push_back(&t);
     if (t.outcome == TriangleOutcome::OutsideScissor)
       scissored.push_back(&t);
+  }
+  // A clear the contract keeps from the pixel, or from one of its buffers, whose value the back
+  // end has: it cleared outside the scissor or through a write mask.
+  // A clear that the scissor keeps from the pixel, whose value the back end has: it cleared
+  // outside the scissor.
+  for (auto e = h.events.rbegin(); e != h.events.rend(); ++e) {
+    if (!e->clear || !e->clear->outsideScissor)
+      continue;
+    const ClearEvent& c = *e->clear;
+    const auto value = static_cast<std::uint8_t>(c.value);
+    if (c.depth
+            ? p.depthDiffers() && p.gotDepth == c.quantisation.q
+            : p.stencilDiffers() &&
+                  (p.gotStencil == value ||
+                   p.gotStencil == static_cast<std::uint8_t>((value & c.writeMask) |
+                                                             (c.stencilBefore & ~c.writeMask)))) {
+      out.stage = Stage::Clear;
+      out.why = "the clear of command " + std::to_string(e->command) +
+                " is outside the scissor here, and the back end has its value";
+      return;
+    }
+  }
+  // Only clears after the pixel's last fragment: a fragment after one would have changed what it
+  // left, so an equal value there is a coincidence more likely than not.
+  for (auto e = h.events.rbegin(); e != h.events.rend(); ++e) {
+    if (e->triangle && e->triangle->outcome == TriangleOutcome::Fragment)
+      break;
+    if (!e->clear)
+      continue;
+    const ClearEvent& c = *e->clear;
+    const auto value = static_cast<std::uint8_t>(c.value);
+    const bool depthHere = c.depth && p.depthDiffers() && p.gotDepth == c.quantisation.q;
+    const std::string which = "the clear of command " + std::to_string(e->command);
+    if (c.depth && c.skipped && depthHere) {
+      out.stage = Stage::Clear;
+      out.why = which + " runs while the depth write mask is off, and the back end has its value";
+      return;
+    }
+    if (!c.depth && !c.outsideScissor && c.writeMask != 255 && p.stencilDiffers() &&
+        p.gotStencil == value) {
+      out.stage = Stage::Clear;
+      out.why = which +
+                " writes through the stencil write mask, and the back end has the "
+                "unmasked value";
+      return;
+    }
+  }
+  // The event that left the final depth, when it is a clear at a rounding tie.
+  const ClearEvent* depthClear = nullptr;
+  for (const HistoryEvent& e : h.events) {
+    if (e.clear && e.clear->depth && !e.clear->skipped && !e.clear->outsideScissor)
+      depthClear = &*e.clear;
+    if (e.triangle && e.triangle->depthAfter != e.triangle->depthBefore)
+      depthClear = nullptr;
+  }
+  if (depthClear != nullptr && p.depthDiffers() && std::abs(p.depthUnits()) <= 2) {
+    const Quantisation& q = depthClear->quantisation;
+    const double frac = q.scaled - std::floor(q.scaled);
+    if (q.tie || std::abs(frac - 0.5) < 1e-3) {
+      out.stage = Stage::Quantisation;
+      out.why = "a depth clear leaves d * 16777215 at " +
+                (q.tie ? std::string("a tie") : std::string("almost a tie")) +
+                ", which the contract rounds to " + std::to_string(q.q);
+      return;
+    }
   }
   // The last fragment that wrote the final depth.
   const TriangleEvent* writer = nullptr;

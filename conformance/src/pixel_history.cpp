@@ -352,6 +352,12 @@ std::string testText(const char* what, const std::string& func, CompareFunc f,
 std::string describeClear(const HistoryEvent& ev) {
   const ClearEvent& c = *ev.clear;
   std::string out = commandText(ev.command) + ": ";
+  if (c.outsideScissor) {
+    return out +
+           (c.depth ? "clear_depth " + g17(c.value)
+                    : "clear_stencil " + byte(static_cast<std::uint8_t>(c.value))) +
+           ": outside the scissor, leaves the pixel as it is\n";
+  }
   if (c.depth) {
     out += "clear_depth " + g17(c.value);
     if (c.skipped)
@@ -518,29 +524,28 @@ PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
       if (!std::isfinite(c7->value))
         throw std::invalid_argument("pixelHistory: " + commandText(command) +
                                     ": clear_depth value is not finite");
-      if (!inside(st.scissor, x, y))
-        continue;
       ClearEvent clear;
       clear.depth = true;
       clear.value = c7->value;
       clear.skipped = !st.depthWrite;
+      clear.outsideScissor = !inside(st.scissor, x, y);
       clear.quantisation = quantise(c7->value);
       clear.depthBefore = depth;
       clear.stencilBefore = clear.stencilAfter = stencil;
-      if (!clear.skipped)
+      if (!clear.skipped && !clear.outsideScissor)
         depth = clear.quantisation.q;
       clear.depthAfter = depth;
       history.events.push_back({command, clear, std::nullopt});
     } else if (const auto* c8 = std::get_if<raster::cmd::ClearStencil>(&cmd)) {
-      if (!inside(st.scissor, x, y))
-        continue;
       ClearEvent clear;
       clear.depth = false;
       clear.value = static_cast<double>(c8->value);
       clear.writeMask = st.writeMask;
+      clear.outsideScissor = !inside(st.scissor, x, y);
       clear.depthBefore = clear.depthAfter = depth;
       clear.stencilBefore = stencil;
-      stencil = masked(c8->value, stencil, st.writeMask);
+      if (!clear.outsideScissor)
+        stencil = masked(c8->value, stencil, st.writeMask);
       clear.stencilAfter = stencil;
       history.events.push_back({command, clear, std::nullopt});
     } else if (const auto* draw = std::get_if<raster::cmd::Draw>(&cmd)) {

@@ -413,21 +413,30 @@ TEST_CASE("pixel history: culling, the scissor, clears and the frame", "[pixel_h
     s.commands.push_back(ccw);
 
     const PixelHistory in = pixelHistory(s, 2, 2);
-    REQUIRE(in.events.size() == 3);
+    REQUIRE(in.events.size() == 4);
     REQUIRE(in.events[0].clear);
+    CHECK_FALSE(in.events[0].clear->outsideScissor);
     CHECK(in.events[0].clear->stencilAfter == 7);
     REQUIRE(in.events[1].triangle);
     CHECK(in.events[1].triangle->outcome == TriangleOutcome::Fragment);
     CHECK(in.events[1].triangle->stencilAfter == 8);
-    REQUIRE(in.events[2].triangle);
-    CHECK(in.events[2].triangle->outcome == TriangleOutcome::OutsideScissor);
-    CHECK(in.events[2].triangle->scissor.x0 == in.events[2].triangle->scissor.x1);
+    // The depth clear under the empty scissor is recorded, and leaves the pixel as it is.
+    REQUIRE(in.events[2].clear);
+    CHECK(in.events[2].clear->outsideScissor);
+    CHECK(in.events[2].clear->depthAfter == in.events[2].clear->depthBefore);
+    REQUIRE(in.events[3].triangle);
+    CHECK(in.events[3].triangle->outcome == TriangleOutcome::OutsideScissor);
+    CHECK(in.events[3].triangle->scissor.x0 == in.events[3].triangle->scissor.x1);
     CHECK(in.finalStencil == 8);
     CHECK(chainProblem(in).empty());
 
     const PixelHistory out = pixelHistory(s, 3, 2);
     const auto ts = trianglesOf(out);
-    REQUIRE(out.events.size() == 2);  // neither clear reaches it
+    REQUIRE(out.events.size() == 4);  // neither clear reaches it: both are marked so
+    for (const conformance::HistoryEvent& e : out.events) {
+      if (e.clear)
+        CHECK(e.clear->outsideScissor);
+    }
     REQUIRE(ts.size() == 2);
     CHECK(ts[0]->outcome == TriangleOutcome::OutsideScissor);
     CHECK(ts[0]->scissor == raster::PixelRect{0, 0, 3, 3});

@@ -31,6 +31,7 @@ struct ClearEvent {
   bool skipped = false;          // clear_depth while the depth write mask is off: nothing written
   std::uint8_t writeMask = 255;  // clear_stencil: the stencil write mask applied
   Quantisation quantisation;     // clear_depth: the quantisation of value (also when skipped)
+  bool outsideScissor = false;   // the scissor excludes the pixel: the clear leaves it as it is
   std::uint32_t depthBefore = 0, depthAfter = 0;
   std::uint8_t stencilBefore = 0, stencilAfter = 0;
 };
@@ -108,7 +109,8 @@ struct PixelHistory {
 };
 
 // The history of pixel (x, y) (GL window coordinates, y = 0 the bottom row) under `stream`.
-// Records clears inside the scissor and every triangle with outcome Fragment, and the triangles
+// Records every clear (one the scissor keeps from the pixel marked outsideScissor: a back end
+// that ignores the scissor shows there) and every triangle with outcome Fragment, and the triangles
 // that would cover the sample but for culling, the scissor or the tie rule (not degenerate ones
 // or those that miss the sample). Throws std::invalid_argument for a pixel outside the frame,
 // a frame size outside 1..16384, and (as the device does, section 2) a draw that fails
