@@ -108,7 +108,7 @@ void printVector(std::ostream& out, const VectorReport& v, std::size_t pixels) {
     indented(out, describe(e.history), "            ");
   }
   if (v.badPixelCount > static_cast<long long>(std::min(pixels, v.explained.size()))) {
-    out << "        (" << v.badPixelCount << " bad pixels in all; --json and --html give every one"
+    out << "        (" << v.badPixelCount << " bad pixels in all; the JSON and HTML reports give every one"
         << ")\n";
   }
 }

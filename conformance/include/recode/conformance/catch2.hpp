@@ -132,7 +132,7 @@ class ConformsToMatcher final : public Catch::MatcherBase<Backend> {
 // and the verdict (report.hpp: the reading the backend behaves like, or the stages).
 [[nodiscard]] inline ConformsToMatcher ConformsTo(std::vector<SuiteVector> vectors,
                                                   std::size_t explained = 1,
-                                                  std::size_t shownVectors = 5) {
+                                                  std::size_t shownVectors = 3) {
   return ConformsToMatcher(std::move(vectors), explained, shownVectors);
 }
 
