@@ -1,5 +1,6 @@
 #include "conform/conform_command.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <iostream>
@@ -84,7 +85,7 @@ void reduceFirstFailure(const SuiteReport& report, const std::vector<SuiteVector
     writeFileAtomically(minimal, raster::goldenToJson(red.minimal, raster::GoldenLayout::Rows),
                         "--reduce");
     out << "reduced " << r.name << " in " << red.backendRuns << " runs to " << red.draws
-              << " draws, " << red.triangles << " triangles: " << minimal.string() << '\n';
+        << " draws, " << red.triangles << " triangles: " << minimal.string() << '\n';
     if (red.passingTwin) {
       const fs::path twin = dir / (stem + "-passing-twin.json");
       writeFileAtomically(twin, raster::goldenToJson(*red.passingTwin, raster::GoldenLayout::Rows),
@@ -124,10 +125,19 @@ int runConform(const ConformOptions& o) {
   }
   const SuiteReport report = runSuite(*backend, vectors, options, [&o](const VectorReport& v) {
     if (!o.json) {
-      printVector(std::cout, v, o.explain);
+      printVectorLine(std::cout, v);
       std::cout.flush();
     }
   });
+  // The failures explained once the run is whole: the reading it names decides their stages.
+  if (!o.json && std::any_of(report.vectors.begin(), report.vectors.end(), hasDetails)) {
+    std::cout << "\nFailures explained:\n";
+    for (const VectorReport& v : report.vectors) {
+      if (hasDetails(v))
+        printVector(std::cout, v, o.explain);
+    }
+    std::cout << '\n';
+  }
   if (o.json) {
     // Which back end ran: the registry's device, or the command.
     std::cout << toJson(report,

@@ -334,18 +334,23 @@ PixelExplanation explainPixel(const raster::CommandStream& stream, const BadPixe
     }
   }
   if (out.sameAsReading) {
-    out.stage = stageOf(*out.sameAsReading);
-    out.why = "the kit's wrong reading " + std::string(kit::variantName(*out.sameAsReading)) +
-              " gives the back end's values here";
-    // The history still says which event the stage concerns, for the report's reader.
-    PixelExplanation fromHistory = out;
-    stageFromHistory(out.history, fromHistory);
-    if (fromHistory.stage == out.stage)
-      out.why += ": " + fromHistory.why;
+    attributeToReading(out, *out.sameAsReading);
     return out;
   }
   stageFromHistory(out.history, out);
   return out;
+}
+
+void attributeToReading(PixelExplanation& e, Variant v) {
+  e.sameAsReading = v;
+  e.stage = stageOf(v);
+  e.why = "the kit's wrong reading " + std::string(kit::variantName(v)) +
+          " gives the back end's values here";
+  // The history still says which event the stage concerns, for the report's reader.
+  PixelExplanation fromHistory = e;
+  stageFromHistory(e.history, fromHistory);
+  if (fromHistory.stage == e.stage)
+    e.why += ": " + fromHistory.why;
 }
 
 Stage failingStage(const raster::CommandStream& stream, const Answer& expected, const Answer& got,

@@ -79,21 +79,30 @@ std::map<Stage, int> stageCounts(const SuiteReport& report) {
 
 }  // namespace
 
-void printVector(std::ostream& out, const VectorReport& v, std::size_t pixels) {
+void printVectorLine(std::ostream& out, const VectorReport& v) {
   out << "  " << toString(v.status) << "  " << v.name;
   if (v.status == Status::UnexpectedPass)
     out << ": passes, but the baseline lists it as failing (remove it from the baseline)";
   if (v.status == Status::Nondeterministic)
     out << ": two runs of the vector gave different answers";
-  if (!v.stage) {
-    out << '\n';
-    return;
+  if (v.stage) {
+    if (!v.refused.empty())
+      out << ": the back end refused the stream: " << v.refused;
+    else
+      out << ": " << v.depthPixels << " depth, " << v.stencilPixels << " stencil pixels differ";
   }
-  if (!v.refused.empty())
-    out << ": the back end refused the stream: " << v.refused;
-  else
-    out << ": " << v.depthPixels << " depth, " << v.stencilPixels << " stencil pixels differ";
-  out << "\n        stage: " << toString(*v.stage) << ", " << contractSection(*v.stage) << '\n';
+  out << '\n';
+}
+
+bool hasDetails(const VectorReport& v) {
+  return v.stage.has_value();
+}
+
+void printVector(std::ostream& out, const VectorReport& v, std::size_t pixels) {
+  printVectorLine(out, v);
+  if (!v.stage)
+    return;
+  out << "        stage: " << toString(*v.stage) << ", " << contractSection(*v.stage) << '\n';
   if (v.requirement) {
     const bool both = !v.refused.empty();
     out << "        "
@@ -108,7 +117,8 @@ void printVector(std::ostream& out, const VectorReport& v, std::size_t pixels) {
     indented(out, describe(e.history), "            ");
   }
   if (v.badPixelCount > static_cast<long long>(std::min(pixels, v.explained.size()))) {
-    out << "        (" << v.badPixelCount << " bad pixels in all; the JSON and HTML reports give every one"
+    out << "        (" << v.badPixelCount
+        << " bad pixels in all; the JSON and HTML reports give every one"
         << ")\n";
   }
 }

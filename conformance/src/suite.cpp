@@ -208,6 +208,18 @@ SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
   const bool anyFailed = std::find(failed.begin(), failed.end(), true) != failed.end();
   if (options.nameReadings && anyFailed)
     report.behavesLike = matchingReadings(run, answers, failed);
+  // The reading the back end behaves like gives its values at every pixel of every vector: it,
+  // rather than whichever reading a pixel happens to match first, says where each departs.
+  if (!report.behavesLike.empty()) {
+    const kit::Variant named = report.behavesLike.front();
+    for (VectorReport& r : report.vectors) {
+      if (!r.stage || r.status == Status::Nondeterministic)
+        continue;
+      r.stage = stageOf(named);
+      for (PixelExplanation& e : r.explained)
+        attributeToReading(e, named);
+    }
+  }
   return report;
 }
 

@@ -26,7 +26,7 @@ function(run_expecting status pattern)
 endfunction()
 
 run_expecting(2
-  "  pass  fill_fan.json\n  FAIL  fill_square.json: 0 depth, 1 stencil pixels differ\n[^\n]*stage: [^\n]*\n.*pixel \\(2, 2\\): stencil expected 7, got 1\n.*\n2 vectors: 1 passed, 1 failed"
+  "  pass  fill_fan.json\n  FAIL  fill_square.json: 0 depth, 1 stencil pixels differ\n\nFailures explained:\n  FAIL  fill_square.json: 0 depth, 1 stencil pixels differ\n        stage: [^\n]*\n.*pixel \\(2, 2\\): stencil expected 7, got 1\n.*\n2 vectors: 1 passed, 1 failed"
   conform --device cpu --golden ${OUT})
 run_expecting(2
   "\"failed\": 1,.*\"depth_pixels\": 0,\n.*\"file\": \"fill_square.json\",\n   \"first_difference\": {\n    \"buffer\": \"stencil\",\n    \"expected\": 7,\n    \"got\": 1,\n    \"x\": 2,\n    \"y\": 2\n   },\n.*\"passed\": false"

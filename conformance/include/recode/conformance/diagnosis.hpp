@@ -80,6 +80,10 @@ struct ReadingAnswer {
                                             const BadPixel& pixel,
                                             const std::vector<ReadingAnswer>& readings);
 
+// Attributes an explained pixel to a reading known to give the back end's values there (the one
+// a whole run behaves like): its stage, and why, with the history's own account when it agrees.
+void attributeToReading(PixelExplanation& e, kit::Variant v);
+
 // The stage at which a whole failing answer first departs: a refusal is Validation; else the
 // stage of its first bad pixel.
 [[nodiscard]] Stage failingStage(const raster::CommandStream& stream, const Answer& expected,

@@ -14,8 +14,14 @@
 
 namespace recode::conformance {
 
-// One vector's lines of the terminal report; `pixels`: how many bad pixels to explain.
+// One vector's lines of the terminal report: its status line, then for a failure the stage,
+// the section, what the APIs require and `pixels` bad pixels explained.
 void printVector(std::ostream& out, const VectorReport& v, std::size_t pixels);
+// The status line alone (what a run prints as each vector finishes: the stages are final only
+// once the whole run has named the reading a back end behaves like).
+void printVectorLine(std::ostream& out, const VectorReport& v);
+// Whether printVector says more than the status line.
+[[nodiscard]] bool hasDetails(const VectorReport& v);
 // The closing lines: counts, the named reading or the stages, the error.
 void printSummary(std::ostream& out, const SuiteReport& report);
 
