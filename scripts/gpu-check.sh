@@ -104,13 +104,18 @@ if os.path.exists(path):
             else:
                 cells.append(f"{float(r['mean_ms']):.3f}")
         print(f"| {s} | {t:,} | " + " | ".join(cells) + " |")
-    print("\nrecode-vulkan-compute, ms a frame: the device's share (the host waiting for it) and"
-          " the host's own work (the frame minus that wait):")
-    for r in rows:
-        if r["algorithm"] == "recode-vulkan-compute":
-            wait = float(r["device_wait_ms_per_frame"] or 0)
-            print(f"  {r['scene']} {int(r['triangles']):,}: device {wait:.3f},"
-                  f" host {float(r['mean_ms']) - wait:.3f}")
+    recode_columns = [c for c in columns if c.startswith("recode-")]
+    print("\nhost ms a frame (host_ms_per_frame: the frame minus the wait for the device, the"
+          " host's own work, which no GPU makes faster):")
+    print("| scene | triangles | " + " | ".join(recode_columns) + " |")
+    for e, s, t in keys:
+        cells = []
+        for c in recode_columns:
+            r = next((r for r in rows if (r["experiment"], r["scene"], int(r["triangles"]),
+                                          r["algorithm"]) == (e, s, t, c)), None)
+            cells.append(f"{float(r['host_ms_per_frame']):.3f}"
+                         if r is not None and r["host_ms_per_frame"] else "-")
+        print(f"| {s} | {t:,} | " + " | ".join(cells) + " |")
 PY
 
 if ((${#failed[@]})); then

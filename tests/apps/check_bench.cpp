@@ -46,7 +46,7 @@ const char* const kHeader =
     "experiment,scene,triangles_per_block,triangles,algorithm,frames,judged_frames,total_ms,"
     "mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
     "stencil_pixels_read,depth_pixels_read,seen_finer,submissions_per_frame,"
-    "readback_bytes_per_frame,device_wait_ms_per_frame";
+    "readback_bytes_per_frame,device_wait_ms_per_frame,host_ms_per_frame";
 
 struct Row {
   std::map<std::string, std::string> field;
@@ -139,7 +139,8 @@ void checkRow(const Row& r) {
   const bool recode = r.text("algorithm").rfind("recode-", 0) == 0;
   for (const char* key :
        {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
-        "submissions_per_frame", "readback_bytes_per_frame", "device_wait_ms_per_frame"})
+        "submissions_per_frame", "readback_bytes_per_frame", "device_wait_ms_per_frame",
+        "host_ms_per_frame"})
     if (r.text(key).empty() == recode)
       fail(id + ": " + key + (recode ? " missing" : " given for a peer"));
   // The device's share of the frame: none without a submission, and never more than the frame.
@@ -150,6 +151,15 @@ void checkRow(const Row& r) {
       fail(id + ": device wait " + r.text("device_wait_ms_per_frame") + " ms a frame with " +
            r.text("submissions_per_frame") + " submissions and " + r.text("mean_ms") +
            " ms a frame");
+  }
+  // The host's share is the rest of the frame (each rounded to 1e-4 ms).
+  if (recode) {
+    const double host = r.number("host_ms_per_frame");
+    const double wait = r.number("device_wait_ms_per_frame");
+    if (!(host >= 0.0) || std::abs(host + wait - mean) > 3e-4)
+      fail(id + ": host " + r.text("host_ms_per_frame") + " ms + device wait " +
+           r.text("device_wait_ms_per_frame") + " ms is not the frame's " + r.text("mean_ms") +
+           " ms");
   }
   if (recode && r.count("pair_tests") < r.count("contacts"))
     fail(id + ": more contacts than pair tests");
