@@ -274,7 +274,8 @@ TEST_CASE("pixel history: section 4's worked example on fill_square", "[pixel_hi
     for (int y = 0; y < 10; ++y)
       for (int x = 0; x < 10; ++x) {
         int here = 0;
-        for (const auto* t : trianglesOf(pixelHistory(g.stream, x, y)))
+        const PixelHistory h = pixelHistory(g.stream, x, y);  // outlives the pointers into it
+        for (const auto* t : trianglesOf(h))
           here += t->outcome == TriangleOutcome::Fragment ? 1 : 0;
         const bool inSquare = x >= 2 && x <= 5 && y >= 2 && y <= 5;
         CHECK(here == (inSquare ? 1 : 0));
