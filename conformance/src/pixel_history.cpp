@@ -16,8 +16,6 @@ namespace recode::conformance {
 namespace {
 
 using raster::CompareFunc;
-using raster::CullMode;
-using raster::Face;
 using raster::StencilOp;
 using raster::StencilOps;
 
@@ -129,39 +127,6 @@ std::uint8_t masked(std::uint8_t n, std::uint8_t s, std::uint8_t writeMask) {
   return static_cast<std::uint8_t>((n & writeMask) | (s & static_cast<std::uint8_t>(~writeMask)));
 }
 
-// The state a draw or a clear depends on, with GL's defaults (section 6).
-struct State {
-  raster::PixelRect scissor;  // clamped to the frame
-  CompareFunc depthFunc = CompareFunc::Less;
-  bool depthWrite = true;
-  CompareFunc stencilFunc = CompareFunc::Always;
-  std::uint8_t ref = 0;
-  std::uint8_t valueMask = 0xFF;
-  std::uint8_t writeMask = 0xFF;
-  StencilOps front;
-  StencilOps back;
-  CullMode cull = CullMode::None;
-};
-
-int clampInt(int v, int lo, int hi) {
-  return v < lo ? lo : (v > hi ? hi : v);
-}
-
-// Section 8's value ranges: the scissor is clamped to the framebuffer, and x1 < x0 or y1 < y0
-// gives an empty one.
-raster::PixelRect clampScissor(const raster::PixelRect& r, int width, int height) {
-  raster::PixelRect c;
-  c.x0 = clampInt(r.x0, 0, width);
-  c.x1 = clampInt(r.x1, 0, width);
-  c.y0 = clampInt(r.y0, 0, height);
-  c.y1 = clampInt(r.y1, 0, height);
-  if (c.x1 < c.x0)
-    c.x1 = c.x0;
-  if (c.y1 < c.y0)
-    c.y1 = c.y0;
-  return c;
-}
-
 bool inside(const raster::PixelRect& r, int x, int y) {
   return x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1;
 }
@@ -228,11 +193,11 @@ PlaneTerms planeAt(const TriangleEvent& t, long long xc, long long yc) {
 }
 
 // Section 6, for a covered sample inside the scissor; `t` holds the before-values.
-void fragment(TriangleEvent& t, const State& st) {
-  const StencilOps& ops = t.front ? st.front : st.back;
-  t.stencilRef = st.ref;
-  t.valueMask = st.valueMask;
-  t.writeMask = st.writeMask;
+void fragment(TriangleEvent& t, const raster::RenderState& st) {
+  const StencilOps& ops = st.opsFor(t.front);
+  t.stencilRef = st.stencilRef;
+  t.valueMask = st.stencilValueMask;
+  t.writeMask = st.stencilWriteMask;
   t.stencilFunc = std::string(raster::toString(st.stencilFunc));
   t.depthFunc = std::string(raster::toString(st.depthFunc));
   t.depthWrite = st.depthWrite;
@@ -240,8 +205,9 @@ void fragment(TriangleEvent& t, const State& st) {
   const std::uint32_t d = t.depthBefore;
   std::uint32_t newDepth = d;
   StencilOp op = ops.stencilFail;
-  t.stencilPassed = compare(st.stencilFunc, static_cast<std::uint32_t>(st.ref & st.valueMask),
-                            static_cast<std::uint32_t>(s & st.valueMask));
+  t.stencilPassed =
+      compare(st.stencilFunc, static_cast<std::uint32_t>(st.stencilRef & st.stencilValueMask),
+              static_cast<std::uint32_t>(s & st.stencilValueMask));
   if (!t.stencilPassed) {
     t.opSlot = "sfail";
   } else {
@@ -257,7 +223,7 @@ void fragment(TriangleEvent& t, const State& st) {
     }
   }
   t.op = std::string(raster::toString(op));
-  t.stencilAfter = masked(applyOp(op, s, st.ref), s, st.writeMask);
+  t.stencilAfter = masked(applyOp(op, s, st.stencilRef), s, st.stencilWriteMask);
   t.depthAfter = newDepth;
 }
 
@@ -492,7 +458,9 @@ PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
   history.y = y;
   std::uint32_t depth = kDepthOne;  // section 1's initial values
   std::uint8_t stencil = 0;
-  State st;
+  // The state as every device follows it (raster::applyToState: the scissor clamped to the
+  // frame); what the history explains is what the state does to the pixel.
+  raster::RenderState st;
   st.scissor = {0, 0, width, height};
   const long long xc = 256LL * x + 128;  // the sample: the pixel centre in 24.8
   const long long yc = 256LL * y + 128;
@@ -501,26 +469,9 @@ PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
   for (std::size_t ci = 0; ci < stream.commands.size(); ++ci) {
     const int command = static_cast<int>(ci);
     const raster::Command& cmd = stream.commands[ci];
-    if (const auto* c = std::get_if<raster::cmd::Scissor>(&cmd)) {
-      st.scissor = clampScissor(c->rect, width, height);
-    } else if (const auto* c1 = std::get_if<raster::cmd::DepthFunc>(&cmd)) {
-      st.depthFunc = c1->func;
-    } else if (const auto* c2 = std::get_if<raster::cmd::DepthWriteMask>(&cmd)) {
-      st.depthWrite = c2->write;
-    } else if (const auto* c3 = std::get_if<raster::cmd::StencilFunc>(&cmd)) {
-      st.stencilFunc = c3->func;
-      st.ref = c3->ref;
-      st.valueMask = c3->valueMask;
-    } else if (const auto* c4 = std::get_if<raster::cmd::StencilOpsCmd>(&cmd)) {
-      if (c4->face != Face::Back)
-        st.front = c4->ops;
-      if (c4->face != Face::Front)
-        st.back = c4->ops;
-    } else if (const auto* c5 = std::get_if<raster::cmd::StencilWriteMask>(&cmd)) {
-      st.writeMask = c5->mask;
-    } else if (const auto* c6 = std::get_if<raster::cmd::Cull>(&cmd)) {
-      st.cull = c6->mode;
-    } else if (const auto* c7 = std::get_if<raster::cmd::ClearDepth>(&cmd)) {
+    if (raster::applyToState(cmd, st, width, height))
+      continue;
+    if (const auto* c7 = std::get_if<raster::cmd::ClearDepth>(&cmd)) {
       if (!std::isfinite(c7->value))
         throw std::invalid_argument("pixelHistory: " + commandText(command) +
                                     ": clear_depth value is not finite");
@@ -540,12 +491,12 @@ PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
       ClearEvent clear;
       clear.depth = false;
       clear.value = static_cast<double>(c8->value);
-      clear.writeMask = st.writeMask;
+      clear.writeMask = st.stencilWriteMask;
       clear.outsideScissor = !inside(st.scissor, x, y);
       clear.depthBefore = clear.depthAfter = depth;
       clear.stencilBefore = stencil;
       if (!clear.outsideScissor)
-        stencil = masked(c8->value, stencil, st.writeMask);
+        stencil = masked(c8->value, stencil, st.stencilWriteMask);
       clear.stencilAfter = stencil;
       history.events.push_back({command, clear, std::nullopt});
     } else if (const auto* draw = std::get_if<raster::cmd::Draw>(&cmd)) {
@@ -591,9 +542,7 @@ PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
         t.scissor = st.scissor;
         t.depthBefore = t.depthAfter = depth;
         t.stencilBefore = t.stencilAfter = stencil;
-        const bool culled =
-            (st.cull == CullMode::Front && t.front) || (st.cull == CullMode::Back && !t.front);
-        if (culled) {
+        if (st.culls(t.front)) {
           t.outcome = TriangleOutcome::Culled;
         } else if (!inside(st.scissor, x, y)) {
           t.outcome = TriangleOutcome::OutsideScissor;

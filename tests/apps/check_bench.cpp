@@ -137,10 +137,9 @@ void checkRow(const Row& r) {
       std::abs(total - mean * static_cast<double>(frames)) > 1e-3 * static_cast<double>(frames))
     fail(id + ": total " + r.text("total_ms") + " ms is not mean x frames");
   const bool recode = r.text("algorithm").rfind("recode-", 0) == 0;
-  for (const char* key :
-       {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
-        "submissions_per_frame", "readback_bytes_per_frame", "device_wait_ms_per_frame",
-        "host_ms_per_frame"})
+  for (const char* key : {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
+                          "submissions_per_frame", "readback_bytes_per_frame",
+                          "device_wait_ms_per_frame", "host_ms_per_frame"})
     if (r.text(key).empty() == recode)
       fail(id + ": " + key + (recode ? " missing" : " given for a peer"));
   // The device's share of the frame: none without a submission, and never more than the frame.
