@@ -52,8 +52,9 @@ bool sameTriangles(const TriangleMesh& mesh, bool mirrored, const TriangleMesh& 
 void transformIntoImpl(const TriangleMesh& mesh, const Eigen::Matrix3d& linear,
                        const Eigen::Vector3d& translation, TriangleMesh& out) {
   out.vertices.resize(mesh.vertices.size());
+  const raster::Pose pose = rasterPose(linear, translation);
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    out.vertices[i] = posedPoint(linear, translation, mesh.vertices[i]);
+    out.vertices[i] = posedPoint(pose, mesh.vertices[i]);
   const bool mirrored = linear.determinant() < 0.0;
   if (sameTriangles(mesh, mirrored, out))
     return;

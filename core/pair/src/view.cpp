@@ -51,33 +51,59 @@ Eigen::Vector3d OrthoView::toPlane(const Eigen::Vector3d& p) const {
   return {p.x(), p.y(), p.z()};
 }
 
+raster::WindowMapping OrthoView::windowMapping() const {
+  raster::WindowMapping m;
+  switch (axis_) {  // toPlane's order
+    case ViewAxis::X:
+      m.axes = {1, 2, 0};
+      break;
+    case ViewAxis::Y:
+      m.axes = {2, 0, 1};
+      break;
+    case ViewAxis::Z:
+      m.axes = {0, 1, 2};
+      break;
+  }
+  m.umin = window_.umin;
+  m.urange = window_.umax - window_.umin;
+  m.width = width_;
+  m.vmin = window_.vmin;
+  m.vrange = window_.vmax - window_.vmin;
+  m.height = height_;
+  m.depthMax = depthMax_;
+  m.depthRange = depthMax_ - depthMin_;
+  return m;
+}
+
 raster::WindowVertex OrthoView::toWindow(const Eigen::Vector3d& world) const {
-  const Eigen::Vector3d q = toPlane(world);
-  const double x = (q.x() - window_.umin) / (window_.umax - window_.umin) * width_;
-  const double y = (q.y() - window_.vmin) / (window_.vmax - window_.vmin) * height_;
-  const double z = (depthMax_ - q.z()) / (depthMax_ - depthMin_);
+  return toWindow(windowMapping(), world);
+}
+
+raster::WindowVertex OrthoView::toWindow(const raster::WindowMapping& mapping,
+                                         const Eigen::Vector3d& world) const {
+  const raster::WindowPosition p = raster::mapToWindow(mapping, {world.x(), world.y(), world.z()});
+  if (raster::drawablePosition(p))
+    return raster::snapPosition(p);
   const double limit = static_cast<double>(raster::kMaxWindowCoordinate);
-  if (!(std::fabs(x) <= limit) || !(std::fabs(y) <= limit)) {
+  if (!(std::fabs(p.x) <= limit) || !(std::fabs(p.y) <= limit)) {
     std::ostringstream m;
     m << "point (" << world.x() << ", " << world.y() << ", " << world.z()
-      << ") maps to window position (" << x << ", " << y
+      << ") maps to window position (" << p.x << ", " << p.y
       << ") beyond the +-32768 pixel range of 24.8 fixed point";
     throw std::invalid_argument(m.str());
   }
-  if (!(z >= 0.0 && z <= 1.0)) {
-    std::ostringstream m;
-    m << "point (" << world.x() << ", " << world.y() << ", " << world.z()
-      << ") lies outside the view's depth range [" << depthMin_ << ", " << depthMax_ << "]";
-    throw std::invalid_argument(m.str());
-  }
-  return {raster::snapToSubpixel(x), raster::snapToSubpixel(y), static_cast<float>(z)};
+  std::ostringstream m;
+  m << "point (" << world.x() << ", " << world.y() << ", " << world.z()
+    << ") lies outside the view's depth range [" << depthMin_ << ", " << depthMax_ << "]";
+  throw std::invalid_argument(m.str());
 }
 
 std::vector<raster::WindowVertex> OrthoView::toWindow(const TriangleMesh& mesh) const {
   std::vector<raster::WindowVertex> out;
   out.reserve(mesh.vertices.size());
+  const raster::WindowMapping mapping = windowMapping();
   for (const Eigen::Vector3d& p : mesh.vertices)
-    out.push_back(toWindow(p));
+    out.push_back(toWindow(mapping, p));
   return out;
 }
 

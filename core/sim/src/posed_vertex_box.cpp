@@ -88,8 +88,9 @@ bool orderMatters(double extreme) {
 Aabb posedVertexBoxScalar(std::span<const Eigen::Vector3d> local, const Eigen::Matrix3d& linear,
                           const Eigen::Vector3d& translation) {
   Aabb box;
+  const raster::Pose pose = rasterPose(linear, translation);
   for (const Eigen::Vector3d& v : local)
-    box.extend(posedPoint(linear, translation, v));
+    box.extend(posedPoint(pose, v));
   return box;
 }
 

@@ -14,17 +14,9 @@
 #include "recode/raster/pixel_summary.hpp"
 #include "recode/raster/state.hpp"
 #include "recode/raster/triangle_source.hpp"
+#include "recode/raster/window_vertex.hpp"
 
 namespace recode::raster {
-
-// A vertex in GL window coordinates: x right, y up, pixel (i, j) has its centre at
-// (i + 0.5, j + 0.5), depth z in [0, 1]. x and y are expected on the 1/256-pixel grid
-// (see snapToSubpixel); a device snaps them to that grid itself with round-half-to-even.
-struct WindowVertex {
-  float x = 0.0f;  // pixels from the left edge
-  float y = 0.0f;  // pixels from the bottom edge
-  float z = 0.0f;  // depth, 0 nearest and 1 farthest
-};
 
 // What a device has handed to hardware and back since it was made: the cost a GPU pays per
 // frame beyond its drawing. A device that runs on the CPU counts nothing.

@@ -15,6 +15,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "recode/raster/vertex_stage.hpp"
+
 namespace recode::core {
 
 // The position of a vertex in TriangleMesh::vertices.
@@ -70,21 +72,33 @@ struct TriangleMesh {
 // vertices. Non-finite coordinates propagate into the box as the min/max operations give.
 [[nodiscard]] Aabb boundingBox(const TriangleMesh& mesh);
 
-// linear * v + translation, each product and sum rounded on its own in a fixed order: rows x
-// and y as ((l0 v0 + l1 v1) + l2 v2) + t, row z as (l0 v0 + (l1 v1 + l2 v2)) + t. That is the
-// order Eigen's Matrix3d * Vector3d took in the baseline x86-64 build every golden result was
-// made with; written out (and compiled without FMA contraction: core/geometry/CMakeLists.txt), it
-// no longer depends on how Eigen is vectorised in a given build, and a SIMD loop can repeat it lane
-// for lane (core/sim's posed vertex box). Code that calls it gets those bits only when it too is
-// built without contraction.
+// The pose (linear, translation) as the vertex stage of the rasterization contract takes it
+// (raster::Pose: the linear part row by row).
+[[nodiscard]] inline raster::Pose rasterPose(const Eigen::Matrix3d& linear,
+                                             const Eigen::Vector3d& translation) {
+  raster::Pose pose;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c)
+      pose.linear[static_cast<std::size_t>(3 * r + c)] = linear(r, c);
+    pose.translation[static_cast<std::size_t>(r)] = translation(r);
+  }
+  return pose;
+}
+
+// linear * v + translation by the contract's vertex stage (raster::poseVertex: each product and
+// sum rounded on its own, rows x and y as ((l0 v0 + l1 v1) + l2 v2) + t, row z as
+// (l0 v0 + (l1 v1 + l2 v2)) + t, the order Eigen's Matrix3d * Vector3d took in the baseline
+// x86-64 build every golden result was made with). A SIMD loop can repeat it lane for lane
+// (core/sim's posed vertex box). Code that calls it gets those bits only when it is built without
+// contraction, as everything linking recode_raster is.
+[[nodiscard]] inline Eigen::Vector3d posedPoint(const raster::Pose& pose, const Eigen::Vector3d& v) {
+  const std::array<double, 3> w = raster::poseVertex(pose, {v.x(), v.y(), v.z()});
+  return {w[0], w[1], w[2]};
+}
 [[nodiscard]] inline Eigen::Vector3d posedPoint(const Eigen::Matrix3d& linear,
                                                 const Eigen::Vector3d& translation,
                                                 const Eigen::Vector3d& v) {
-  const auto row = [&](int r) {
-    return (linear(r, 0) * v.x() + linear(r, 1) * v.y()) + linear(r, 2) * v.z();
-  };
-  const double z = linear(2, 0) * v.x() + (linear(2, 1) * v.y() + linear(2, 2) * v.z());
-  return {row(0) + translation.x(), row(1) + translation.y(), z + translation.z()};
+  return posedPoint(rasterPose(linear, translation), v);
 }
 
 // A copy with every vertex mapped by `transform` (posedPoint). The triangles are copied unchanged,

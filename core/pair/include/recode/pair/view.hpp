@@ -12,6 +12,7 @@
 #include "recode/geometry/mesh.hpp"
 #include "recode/geometry/projection.hpp"
 #include "recode/raster/device.hpp"
+#include "recode/raster/vertex_stage.hpp"
 
 namespace recode::core {
 
@@ -46,10 +47,18 @@ class OrthoView {
     return {q.x(), q.y(), q.z()};
   }
 
-  // World point -> window vertex, x and y snapped to 1/256 pixel, z in [0, 1]. Throws
+  // The view as the contract's vertex stage maps world to window (raster::WindowMapping,
+  // docs/rasterization.md section 2.1): toWindow's arithmetic.
+  [[nodiscard]] raster::WindowMapping windowMapping() const;
+
+  // World point -> window vertex by the vertex stage (raster::mapToWindow, then
+  // raster::snapPosition): x and y snapped to 1/256 pixel, z in [0, 1]. Throws
   // std::invalid_argument for a point beyond the device's coordinate range or outside the
   // depth range.
   [[nodiscard]] raster::WindowVertex toWindow(const Eigen::Vector3d& world) const;
+  // The same with windowMapping() made once by the caller.
+  [[nodiscard]] raster::WindowVertex toWindow(const raster::WindowMapping& mapping,
+                                              const Eigen::Vector3d& world) const;
   [[nodiscard]] std::vector<raster::WindowVertex> toWindow(const TriangleMesh& mesh) const;
 
   // Window position (pixels) and normalised depth -> world point: fromPlane of the three below.
