@@ -21,8 +21,10 @@ BatchCheck checkBatch(const std::vector<BatchPair>& pairs, const core::DeviceFac
   std::vector<raster::DepthStencilDevice*> devices;
   std::vector<core::PairJob> jobs;
   for (const BatchPair& p : pairs) {
-    blocks.emplace_back(*p.a);
-    blocks.emplace_back(*p.b);
+    // With hierarchies and object-space meshes: the devices that cull, and those that run the
+    // vertex stage themselves (posed draws), take their own paths.
+    blocks.push_back(core::PairBlock::withHierarchy(*p.a));
+    blocks.push_back(core::PairBlock::withHierarchy(*p.b));
     const core::FrameSpec& frame = p.request.frame;
     auto& device = bySize[{frame.width, frame.height}];
     if (!device)

@@ -34,17 +34,36 @@ void checkFramebufferSize(int width, int height) {
   }
 }
 
-void checkDraw(std::span<const WindowVertex> vertices, std::span<const std::uint32_t> indices) {
-  if (indices.size() % 3 != 0) {
-    throw std::invalid_argument("drawTriangles: index count " + std::to_string(indices.size()) +
+namespace {
+
+void checkIndexCount(std::size_t count) {
+  if (count % 3 != 0) {
+    throw std::invalid_argument("drawTriangles: index count " + std::to_string(count) +
                                 " is not a multiple of 3");
   }
+}
+
+void checkIndex(std::size_t vertexCount, std::uint32_t index, std::size_t position) {
+  if (index >= vertexCount) {
+    throw std::invalid_argument("drawTriangles: index " + std::to_string(index) + " at position " +
+                                std::to_string(position) + " is out of range (" +
+                                std::to_string(vertexCount) + " vertices)");
+  }
+}
+
+}  // namespace
+
+void checkIndices(std::size_t vertexCount, std::span<const std::uint32_t> indices) {
+  checkIndexCount(indices.size());
+  for (std::size_t k = 0; k < indices.size(); ++k)
+    checkIndex(vertexCount, indices[k], k);
+}
+
+void checkDraw(std::span<const WindowVertex> vertices, std::span<const std::uint32_t> indices) {
+  // Index by index, so that the first bad index or vertex is the one named.
+  checkIndexCount(indices.size());
   for (std::size_t k = 0; k < indices.size(); ++k) {
-    if (indices[k] >= vertices.size()) {
-      throw std::invalid_argument("drawTriangles: index " + std::to_string(indices[k]) +
-                                  " at position " + std::to_string(k) + " is out of range (" +
-                                  std::to_string(vertices.size()) + " vertices)");
-    }
+    checkIndex(vertices.size(), indices[k], k);
     checkVertex(vertices[indices[k]], indices[k]);
   }
 }

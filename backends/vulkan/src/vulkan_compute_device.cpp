@@ -114,11 +114,33 @@ struct VulkanComputeDevice::Impl {
   };
   static constexpr std::size_t kKeptMeshes = 8;
   std::array<Mesh, kKeptMeshes> meshes{};
+
+  // A posed block's mesh on the device (raster::PosedMesh), kept while its source says it lives:
+  // the object-space vertices from 0, the indices from indexOffset, the window vertices of the
+  // last pose and view from windowOffset, and that draw's transform from transformOffset.
+  struct Resident {
+    std::uint64_t key = 0;
+    std::weak_ptr<const void> alive;
+    std::uint32_t vertices = 0;
+    std::uint32_t triangles = 0;
+    VkDeviceSize indexOffset = 0;
+    VkDeviceSize windowOffset = 0;
+    VkDeviceSize transformOffset = 0;
+    // The content key whose window vertices the buffer holds (0: none yet): its later draws
+    // skip the vertex stage.
+    std::uint64_t windowsOf = 0;
+    detail::DeviceBuffer buffer;
+  };
+  std::vector<Resident> residents;
   std::uint64_t clock = 0;
   MeshCounters meshCounters;
+  long long posedDraws = 0;
   bool keepStages = false;
   std::shared_ptr<std::optional<DrawStages>> lastStages =
       std::make_shared<std::optional<DrawStages>>();
+  // The window vertices the posed draw being recorded copies back (keepDrawStages), for its
+  // DrawStages; null for a draw of window vertices.
+  std::shared_ptr<std::vector<raster::WindowVertex>> drawWindows;
 
   // Runs `call` on the recorder, counting what it made the recorder do as this device's.
   template <typename Call>
@@ -183,8 +205,129 @@ struct VulkanComputeDevice::Impl {
     return mesh;
   }
 
+  // Lets go of the meshes whose blocks are gone, once no recording that may use them is open.
+  void releaseExpired() {
+    std::erase_if(residents, [&](Resident& r) {
+      if (!r.alive.expired())
+        return false;
+      retired.emplace_back(r.buffer, recorder->recordingsRun());
+      return true;
+    });
+  }
+
+  // The resident copy of `posed`'s mesh, uploaded now when the device has none.
+  Resident& resident(const raster::PosedMesh& posed) {
+    for (Resident& r : residents)
+      if (r.key == posed.meshKey)
+        return r;
+    if (posed.localXyz.size() % 3 != 0)
+      throw std::invalid_argument("drawMesh: a posed mesh's coordinates are not three a vertex (" +
+                                  std::to_string(posed.localXyz.size()) + " doubles)");
+    raster::checkIndices(posed.localXyz.size() / 3, posed.indices);
+    Resident r;
+    r.key = posed.meshKey;
+    r.alive = posed.alive;
+    r.vertices = static_cast<std::uint32_t>(posed.localXyz.size() / 3);
+    r.triangles = static_cast<std::uint32_t>(posed.indices.size() / 3);
+    const VkDeviceSize localBytes = posed.localXyz.size_bytes();
+    const VkDeviceSize indexBytes = posed.indices.size_bytes();
+    r.indexOffset = aligned(std::max<VkDeviceSize>(localBytes, 4));
+    r.windowOffset = r.indexOffset + aligned(std::max<VkDeviceSize>(indexBytes, 4));
+    r.transformOffset = r.windowOffset + aligned(VkDeviceSize{r.vertices} * 12 + 4);
+    const VkDeviceSize transformBytes = detail::kTileTransformDoubles * 8;
+    ++meshCounters.uploads;
+    freeRetired();
+    r.buffer = context->createDeviceBuffer(r.transformOffset + transformBytes,
+                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    recorder->makeRoom(localBytes + indexBytes);
+    const detail::CommandRecorder::Staged local =
+        recorder->upload(posed.localXyz.data(), localBytes);
+    const detail::CommandRecorder::Staged indices =
+        recorder->upload(posed.indices.data(), indexBytes);
+    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
+      if (localBytes > 0) {
+        const VkBufferCopy localCopy{local.offset, 0, localBytes};
+        vkCmdCopyBuffer(cmd, local.buffer, r.buffer.buffer, 1, &localCopy);
+      }
+      if (indexBytes > 0) {
+        const VkBufferCopy indexCopy{indices.offset, r.indexOffset, indexBytes};
+        vkCmdCopyBuffer(cmd, indices.buffer, r.buffer.buffer, 1, &indexCopy);
+      }
+    });
+    residents.push_back(std::move(r));
+    return residents.back();
+  }
+
+  // Records the vertex stage of `posed` into its resident mesh's window vertices, unless they
+  // are already those of `contentKey` (a source's draws all have the same pose and view).
+  void recordVertexStage(Resident& r, const raster::PosedMesh& posed, std::uint64_t contentKey) {
+    if (contentKey != 0 && r.windowsOf == contentKey)
+      return;
+    r.windowsOf = 0;
+    const raster::VertexTransform& t = posed.transform;
+    std::array<double, detail::kTileTransformDoubles> words{};
+    std::copy(t.pose.linear.begin(), t.pose.linear.end(), words.begin());
+    std::copy(t.pose.translation.begin(), t.pose.translation.end(), words.begin() + 9);
+    const raster::WindowMapping& m = t.window;
+    const std::array<double, 8> mapping{m.umin,   m.urange, m.width,    m.vmin,
+                                        m.vrange, m.height, m.depthMax, m.depthRange};
+    std::copy(mapping.begin(), mapping.end(), words.begin() + 12);
+    for (int k = 0; k < 3; ++k) {
+      const int axis = m.axes[static_cast<std::size_t>(k)];
+      if (axis < 0 || axis > 2)
+        throw std::invalid_argument("drawMesh: a posed draw's window mapping names axis " +
+                                    std::to_string(axis) + " (must be 0, 1 or 2)");
+      words[static_cast<std::size_t>(20 + k)] = axis;
+    }
+    recorder->makeRoom(sizeof words);
+    const detail::CommandRecorder::Staged staged = recorder->upload(words.data(), sizeof words);
+    TileDrawConstants c;
+    c.triangleCount = r.vertices;
+    const TileBuffer local{TileBinding::LocalVertices, r.buffer.buffer, 0, r.indexOffset};
+    const TileBuffer transform{TileBinding::VertexTransform, r.buffer.buffer, r.transformOffset,
+                               sizeof words};
+    const TileBuffer windows{TileBinding::Vertices, r.buffer.buffer, r.windowOffset,
+                             r.transformOffset - r.windowOffset};
+    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
+      // The last draw of this mesh may still read its transform and window vertices.
+      detail::computeBarrier(cmd);
+      const VkBufferCopy copy{staged.offset, r.transformOffset, sizeof words};
+      vkCmdCopyBuffer(cmd, staged.buffer, r.buffer.buffer, 1, &copy);
+      detail::computeBarrier(cmd);
+      pipelines->dispatchLinear(cmd, pipelines->vertex, {local, transform, windows}, c,
+                                r.vertices);
+    });
+    r.windowsOf = contentKey;
+  }
+
+  // A posed draw: the vertex stage on the device, then the tile rasterizer over every triangle
+  // of the block (set-up leaves out those whose pixels miss the scissor).
+  void drawPosed(const raster::PosedMesh& posed, std::uint64_t contentKey) {
+    releaseExpired();
+    Resident& r = resident(posed);
+    ++posedDraws;
+    if (r.triangles == 0 || state->scissor.empty())
+      return;
+    recordVertexStage(r, posed, contentKey);
+    if (keepStages)
+      copyWindowsBack(r);
+    Mesh entry;
+    entry.triangles = r.triangles;
+    entry.indexOffset = r.indexOffset;
+    drawTiles(entry, r.buffer.buffer, r.windowOffset, r.transformOffset - r.windowOffset);
+  }
+
   // Records the tile rasterizer's five stages for `mesh` in the current state.
   void drawMeshEntry(const Mesh& mesh) {
+    drawTiles(mesh, mesh.buffer.buffer, 0, mesh.indexOffset);
+  }
+
+  // The five stages for `mesh`'s triangles, its indices at mesh.indexOffset of `buffer` and its
+  // window vertices at [vertexOffset, + vertexRange).
+  void drawTiles(const Mesh& mesh, VkBuffer buffer, VkDeviceSize vertexOffset,
+                 VkDeviceSize vertexRange) {
     const PixelRect& scissor = state->scissor;
     if (mesh.triangles == 0 || scissor.empty())
       return;
@@ -201,8 +344,8 @@ struct VulkanComputeDevice::Impl {
     reserve(work, layout.bytes);
     const VkBuffer w = work.buffer;
     const VkDeviceSize blockBytes = VkDeviceSize{blocks} * 4;
-    const TileBuffer vertices{TileBinding::Vertices, mesh.buffer.buffer, 0, mesh.indexOffset};
-    const TileBuffer indices{TileBinding::Indices, mesh.buffer.buffer, mesh.indexOffset,
+    const TileBuffer vertices{TileBinding::Vertices, buffer, vertexOffset, vertexRange};
+    const TileBuffer indices{TileBinding::Indices, buffer, mesh.indexOffset,
                              VkDeviceSize{mesh.triangles} * 12};
     const TileBuffer triangles{TileBinding::Triangles, w, 0, layout.countsOffset};
     const TileBuffer counts{TileBinding::BlockCounts, w, layout.countsOffset, blockBytes};
@@ -231,14 +374,38 @@ struct VulkanComputeDevice::Impl {
       copyStagesBack(layout, c);
   }
 
+  // Records a copy of a posed mesh's window vertices; they become the draw's DrawStages'
+  // windowVertices when the recording has run.
+  void copyWindowsBack(const Resident& r) {
+    drawWindows = std::make_shared<std::vector<raster::WindowVertex>>();
+    const VkDeviceSize bytes = VkDeviceSize{r.vertices} * sizeof(raster::WindowVertex);
+    recorder->makeRoom(bytes);
+    const std::size_t count = r.vertices;
+    const detail::CommandRecorder::Staged out =
+        recorder->results(bytes, [count, to = drawWindows](const std::uint8_t* data) {
+          to->resize(count);
+          std::memcpy(to->data(), data, count * sizeof(raster::WindowVertex));
+        });
+    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
+      detail::computeBarrier(cmd);
+      const VkBufferCopy copy{r.windowOffset, out.offset, bytes};
+      vkCmdCopyBuffer(cmd, r.buffer.buffer, out.buffer, 1, &copy);
+    });
+  }
+
   // Records a copy of the work buffer as the draw left it; its bytes become lastStages when the
   // recording has run.
   void copyStagesBack(const WorkLayout& layout, const TileDrawConstants& c) {
     const VkDeviceSize bytes = std::min(layout.bytes, work.size);
     recorder->makeRoom(bytes);
     const detail::CommandRecorder::Staged out =
-        recorder->results(bytes, [layout, c, last = lastStages](const std::uint8_t* words) {
+        recorder->results(bytes, [layout, c, last = lastStages,
+                                  windows = std::exchange(drawWindows, nullptr)](
+                                     const std::uint8_t* words) {
           *last = parseStages(words, layout, c);
+          // Delivered before this: the window vertices were copied first.
+          if (windows)
+            (*last)->windowVertices = std::move(*windows);
         });
     recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
       const VkBufferCopy copy{0, out.offset, bytes};
@@ -343,6 +510,8 @@ struct VulkanComputeDevice::Impl {
       context->destroyDeviceBuffer(buffer);
     for (Mesh& mesh : meshes)
       context->destroyDeviceBuffer(mesh.buffer);
+    for (Resident& r : residents)
+      context->destroyDeviceBuffer(r.buffer);
     context->destroyDeviceBuffer(work);
     context->destroyDeviceBuffer(framebuffer);
   }
@@ -384,7 +553,10 @@ std::string VulkanComputeDevice::renderer() const {
 }
 
 VulkanComputeDevice::MeshCounters VulkanComputeDevice::meshCounters() const {
-  return impl_->meshCounters;
+  MeshCounters counters = impl_->meshCounters;
+  counters.posedDraws = impl_->posedDraws;
+  counters.residentMeshes = static_cast<long long>(impl_->residents.size());
+  return counters;
 }
 
 void VulkanComputeDevice::keepDrawStages() {
@@ -426,6 +598,10 @@ void VulkanComputeDevice::drawMesh(const raster::TriangleSource& source) {
   const PixelRect& scissor = state_.scissor;
   const auto hold = d.recorder->hold();
   d.counted([&] {
+    if (const std::optional<raster::PosedMesh> posed = source.posedMesh()) {
+      d.drawPosed(*posed, key);
+      return;
+    }
     if (key != 0) {
       for (Impl::Mesh& mesh : d.meshes) {
         if (mesh.key == key && (mesh.whole || mesh.rect.intersect(scissor) == scissor)) {
@@ -535,6 +711,8 @@ raster::PendingRead<raster::PixelSummary> VulkanComputeDevice::summarizeLater(
 
 void VulkanComputeDevice::finish() {
   impl_->counted([&] { impl_->recorder->finish(); });
+  const auto hold = impl_->recorder->hold();
+  impl_->releaseExpired();
 }
 
 bool VulkanComputeDevice::defers() const {

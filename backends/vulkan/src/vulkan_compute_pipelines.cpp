@@ -23,6 +23,7 @@ using std::uint32_t;
 #include "tile_scatter.comp.h"
 #include "tile_setup.comp.h"
 #include "tile_sort.comp.h"
+#include "tile_vertex.comp.h"
 
 constexpr std::uint32_t kMaxGroupsPerRow = 65535;  // maxComputeWorkGroupCount's smallest bound
 
@@ -44,6 +45,7 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
     return createComputeStage(device, layout_, words,
                               (std::string("vkCreateComputePipelines (") + name + ")").c_str());
   };
+  vertex = createStage(k_tile_vertex_comp, "tile_vertex");
   setup = createStage(k_tile_setup_comp, "tile_setup");
   scan = createStage(k_tile_scan_comp, "tile_scan");
   scanSerial = createStage(k_tile_scan_serial_comp, "tile_scan_serial");

@@ -1,7 +1,7 @@
 #pragma once
 // The compute device's pipelines (shaders/compute/, docs/backends.md "The compute device"): the
-// tile rasterizer's five stages, the clears and the read-backs. All six share one pipeline
-// layout: nine storage buffers bound by push descriptors (VK_KHR_push_descriptor), so a
+// tile rasterizer's five stages, the vertex stage of a posed draw, the clears and the read-backs.
+// All share one pipeline layout: eleven storage buffers bound by push descriptors (VK_KHR_push_descriptor), so a
 // dispatch names its buffers as it is recorded and no descriptor set outlives it, and the
 // `Draw` push constants of tile_common.glsl.
 
@@ -25,8 +25,12 @@ enum class TileBinding : std::uint32_t {
   Pairs = 6,        // the blocks' lists, one after the other
   Framebuffer = 7,  // a word a pixel: q << 8 | stencil
   Output = 8,       // a read's destination
+  LocalVertices = 9,    // a posed draw's object-space vertices, three doubles each
+  VertexTransform = 10, // its pose and window mapping (tile_vertex.comp)
 };
-inline constexpr std::uint32_t kTileBindings = 9;
+inline constexpr std::uint32_t kTileBindings = 11;
+// Doubles of a VertexTransform as tile_vertex.comp reads it.
+inline constexpr std::uint32_t kTileTransformDoubles = 23;
 inline constexpr std::uint32_t kTileWordsPerTriangle = 16;
 
 // The push constants, in the layout of tile_common.glsl's `Draw`.
@@ -62,6 +66,7 @@ class TilePipelines {
   TilePipelines(const TilePipelines&) = delete;
   TilePipelines& operator=(const TilePipelines&) = delete;
 
+  VkPipeline vertex = VK_NULL_HANDLE;  // a posed draw's vertex stage
   VkPipeline setup = VK_NULL_HANDLE;
   VkPipeline scan = VK_NULL_HANDLE;
   VkPipeline scanSerial = VK_NULL_HANDLE;  // the same in one invocation, for CPU drivers

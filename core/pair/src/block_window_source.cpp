@@ -219,6 +219,18 @@ BlockWindowSource::BlockWindowSource(const PairBlock& block, const OrthoView& vi
     (void)allTriangles();
 }
 
+std::optional<raster::PosedMesh> BlockWindowSource::posedMesh() const {
+  const std::shared_ptr<const ObjectSpaceMesh>& local = block_.objectSpaceMesh();
+  if (!culls_ || !local)
+    return std::nullopt;
+  const Eigen::Isometry3d& pose = block_.localToWorld();
+  return raster::PosedMesh{local->xyz,
+                           local->indices,
+                           {rasterPose(pose.linear(), pose.translation()), view_.windowMapping()},
+                           local->key,
+                           local};
+}
+
 std::span<const WindowVertex> BlockWindowSource::extremes() const {
   if (culls_)
     return corners_;

@@ -36,6 +36,10 @@ class BlockWindowSource final : public raster::TriangleSource {
   // The block and the view are fixed for the source's life, so its draws are too: a device may
   // replay the first for the next (raster::DrawRecording).
   [[nodiscard]] std::uint64_t contentKey() const override { return key_; }
+  // The block's object-space mesh with its pose and the view's mapping, when the block has one
+  // (PairBlock::objectSpaceMesh) and can be drawn culled: then every vertex maps inside the
+  // view's range (the box corners do, and the mapping is monotonic).
+  [[nodiscard]] std::optional<raster::PosedMesh> posedMesh() const override;
 
  private:
   // Queries the hierarchy for `rect`: the base list every smaller rectangle is filtered from.

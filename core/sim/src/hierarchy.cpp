@@ -3,6 +3,7 @@
 #include "recode/sim/hierarchy.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -169,6 +170,16 @@ void ObjectTree::updateAabbs() {
   }
 }
 
+const Aabb* ObjectTree::currentLeafBox(int node) const {
+  const auto i = static_cast<std::size_t>(node);
+  const HierarchyNode& n = nodes_.at(i);
+  // Bit for bit: a box made at a pose with +0 where this one has -0 may differ in a zero's sign.
+  if (!n.isLeaf() || !boundsValid_[i] ||
+      std::memcmp(boundsAt_[i].matrix().data(), n.world.matrix().data(), sizeof(double) * 16) != 0)
+    return nullptr;
+  return &n.worldAabb;
+}
+
 Aabb ObjectTree::boxAroundObb() const {
   // The root's OBB holds every vertex up to the rounding of the fits and the transforms, which
   // is far below a relative 1e-9 of the box's world coordinates.
@@ -190,6 +201,14 @@ std::shared_ptr<const TriangleBvh> ObjectTree::triangleHierarchy(int node) const
   std::call_once(lazy.built,
                  [&] { lazy.hierarchy = std::make_shared<const TriangleBvh>(n.localMesh); });
   return lazy.hierarchy;
+}
+
+std::shared_ptr<const ObjectSpaceMesh> ObjectTree::objectSpaceMesh(int node) const {
+  const HierarchyNode& n = nodes_.at(static_cast<std::size_t>(node));
+  LazyHierarchy& lazy = *hierarchies_[static_cast<std::size_t>(node)];
+  std::call_once(lazy.flattened,
+                 [&] { lazy.objectSpace = std::make_shared<const ObjectSpaceMesh>(n.localMesh); });
+  return lazy.objectSpace;
 }
 
 bool nodeBoxesOverlap(const HierarchyNode& a, const HierarchyNode& b) {

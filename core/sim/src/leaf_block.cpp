@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "posed_vertex_box.hpp"
+
 namespace recode::core {
 
 namespace {
@@ -10,21 +12,30 @@ const HierarchyNode& leafNode(const ObjectTree& tree, int leaf) {
   return tree.nodes().at(static_cast<std::size_t>(leaf));
 }
 
+// The leaf's block at its current pose, its world mesh to be made in `storage` when asked for.
+PairBlock posedBlock(const ObjectTree& tree, int leaf, TriangleMesh& storage) {
+  const HierarchyNode& node = leafNode(tree, leaf);
+  const Aabb* current = tree.currentLeafBox(leaf);
+  const Aabb box = current != nullptr ? *current
+                                      : detail::posedVertexBox(node.localMesh.vertices,
+                                                               node.world.linear(),
+                                                               node.world.translation());
+  return PairBlock::posedLazily(node.localMesh, storage, tree.triangleHierarchy(leaf), node.world,
+                                box, node.localExtent, tree.objectSpaceMesh(leaf));
+}
+
 }  // namespace
 
 LeafBlock::LeafBlock(const ObjectTree& tree, int leaf)
-    : mesh(tree.worldMesh(leaf)),
-      pose(leafNode(tree, leaf).world),
-      block(mesh, tree.triangleHierarchy(leaf), pose) {}
+    : pose(leafNode(tree, leaf).world), block(posedBlock(tree, leaf, worldStorage)) {}
 
 void LeafBlock::moveTo(const ObjectTree& tree, int leaf) {
   const HierarchyNode& node = leafNode(tree, leaf);
   // Bit for bit: a -0 where there was a +0 could change the sign of a zero coordinate.
   if (std::memcmp(node.world.matrix().data(), pose.matrix().data(), sizeof(double) * 16) == 0)
     return;
-  transformInto(node.localMesh, node.world, mesh);
-  // The pose last: if anything above threw, the next call makes the mesh again.
-  block = PairBlock(mesh, tree.triangleHierarchy(leaf), node.world);
+  // The pose last: if anything above threw, the next call makes the block again.
+  block = posedBlock(tree, leaf, worldStorage);
   pose = node.world;
 }
 

@@ -2,6 +2,7 @@
 // The argument checks of the device interface (device.hpp), shared by every back end so that
 // all of them reject the same input with the same message.
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -16,6 +17,9 @@ void checkFramebufferSize(int width, int height);
 // of range, or a referenced vertex that is not finite, lies beyond kMaxWindowCoordinate or has
 // z outside [0, 1]. Checks the whole draw, so a device can validate before changing any pixel.
 void checkDraw(std::span<const WindowVertex> vertices, std::span<const std::uint32_t> indices);
+// The indices' part of checkDraw alone: a count that is a multiple of three, each below
+// vertexCount (a posed draw, whose vertices the source vouches for).
+void checkIndices(std::size_t vertexCount, std::span<const std::uint32_t> indices);
 
 // Throw std::invalid_argument ("<what>: unknown compare function 9") for a value outside its
 // enumeration: a setter checks before it changes any state (RenderStateDevice calls them).

@@ -4,20 +4,36 @@
 // drawTriangles(allTriangles()): a device that draws less must write the same bits.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 
 #include "recode/raster/state.hpp"
+#include "recode/raster/vertex_stage.hpp"
 
 namespace recode::raster {
-
-struct WindowVertex;
 
 // One indexed draw, as drawTriangles takes it. The spans stay valid while the source lives
 // and until its next call.
 struct TriangleDraw {
   std::span<const WindowVertex> vertices;
   std::span<const std::uint32_t> indices;
+};
+
+// A block's triangles before the vertex stage (vertex_stage.hpp): its object-space vertices,
+// which a device may keep for as long as the mesh lives, and the pose and window mapping of one
+// draw. Drawing it is drawTriangles of vertexStage(transform, v) for every vertex v, with these
+// indices.
+struct PosedMesh {
+  std::span<const double> localXyz;        // x, y, z of each vertex, in the block's coordinates
+  std::span<const std::uint32_t> indices;  // three a triangle, as allTriangles() gives them
+  VertexTransform transform;
+  // Names localXyz and indices (their values) for as long as `alive` has not expired, unique in
+  // the process (newTriangleSourceKey): a device that kept a copy under this key may draw from
+  // it instead of reading the spans again.
+  std::uint64_t meshKey = 0;
+  // Expires when the mesh is gone: a device lets its copy go then.
+  std::weak_ptr<const void> alive;
 };
 
 class TriangleSource {
@@ -46,6 +62,13 @@ class TriangleSource {
   // asked, so a device may keep what one draw of it rasterized for the next (CpuDevice does:
   // raster/draw_recording.hpp). 0, the default, promises nothing.
   [[nodiscard]] virtual std::uint64_t contentKey() const { return 0; }
+
+  // Optional: the block before the vertex stage, when the source knows that every vertex it
+  // lists maps to a position a draw takes (raster::drawablePosition), so that a device running
+  // the stage has nothing to refuse. Then allTriangles() is, bit for bit, the vertex stage of
+  // localXyz with the same indices. nullopt, the default: the source offers window vertices
+  // only.
+  [[nodiscard]] virtual std::optional<PosedMesh> posedMesh() const { return std::nullopt; }
 };
 
 // What a device that draws only what meets its scissor draws of `source`:

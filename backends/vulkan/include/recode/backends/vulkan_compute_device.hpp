@@ -5,7 +5,8 @@
 // in a storage buffer, a word a pixel; a draw's triangles are set up, binned into the
 // reference's 8x8 blocks and drawn block by block on the device, each block's list in index
 // order, so its buffers match raster::CpuDevice bit for bit. The host validates a draw and hands
-// over its window vertices and indices as they are, once per TriangleSource::contentKey. It
+// over its window vertices and indices as they are, once per TriangleSource::contentKey; a posed
+// block's object-space mesh stays on the device, and its draws take only the pose and the view. It
 // shares the exact Vulkan device's 64-bit context and recording: a frame's commands of every
 // Vulkan device go in one submission. No Vulkan type appears here.
 
@@ -39,8 +40,11 @@ class VulkanComputeDevice final : public raster::RenderStateDevice {
   // drawn on the device.
   void drawTriangles(std::span<const raster::WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override;
-  // The block's triangles that meet the scissor (TriangleSource::trianglesMeeting), uploaded
-  // once for every later draw of the same content key under a scissor inside that one.
+  // A posed block (TriangleSource::posedMesh): its object-space mesh uploaded once and kept
+  // while the source's `alive` has not expired, and per draw only the pose and the view; the
+  // vertex stage runs on the device (once per content key), then every triangle is drawn.
+  // Any other block: the triangles that meet the scissor (TriangleSource::trianglesMeeting),
+  // uploaded once for every later draw of the same content key under a scissor inside that one.
   void drawMesh(const raster::TriangleSource& source) override;
   // Each runs everything recorded so far (one submission) and returns the values.
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
@@ -68,10 +72,14 @@ class VulkanComputeDevice final : public raster::RenderStateDevice {
   [[nodiscard]] std::string renderer() const;
 
   // Triangle lists uploaded so far (a new content key, or a scissor its kept list does not
-  // cover), and draws that found their list on the device already.
+  // cover, or a posed mesh the device did not hold), draws that found their list on the device
+  // already, posed draws, and the posed meshes the device holds now (a mesh whose block is gone
+  // is let go at the next draw or finish()).
   struct MeshCounters {
     long long uploads = 0;
     long long reuses = 0;
+    long long posedDraws = 0;
+    long long residentMeshes = 0;
   };
   [[nodiscard]] MeshCounters meshCounters() const;
 
@@ -94,6 +102,9 @@ class VulkanComputeDevice final : public raster::RenderStateDevice {
     // marked in `overflowed` and drawn from every triangle instead.
     std::vector<std::vector<std::uint32_t>> blockLists;
     std::vector<bool> overflowed;
+    // A posed draw's vertex stage: the window vertices it made, one a vertex of the block
+    // (empty for a draw of window vertices).
+    std::vector<raster::WindowVertex> windowVertices;
   };
   // From now on, every draw also copies its stages' outputs back (a debugging aid: it costs a
   // read-back of the draw's work memory); lastDrawStages() runs what is recorded and returns

@@ -6,7 +6,10 @@
 // vertices are mapped to the window; the command stream and every result are those of the
 // block without one (docs/architecture.md, "The device seam").
 
+#include <cstdint>
 #include <memory>
+#include <mutex>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -14,6 +17,15 @@
 #include "recode/geometry/triangle_bvh.hpp"
 
 namespace recode::core {
+
+// A block's mesh in its own coordinates, flat, as a device that runs the vertex stage keeps it
+// (raster::PosedMesh): made once for as long as the mesh lives, under a key of its own.
+struct ObjectSpaceMesh {
+  explicit ObjectSpaceMesh(const TriangleMesh& local);
+  std::vector<double> xyz;             // x, y, z of each vertex
+  std::vector<std::uint32_t> indices;  // three a triangle, in the mesh's order
+  std::uint64_t key;                   // raster::newTriangleSourceKey()
+};
 
 class PairBlock {
  public:
@@ -25,26 +37,68 @@ class PairBlock {
   // from by `localToWorld` (core::transformed: the same triangles, the same vertices mapped).
   // With a hierarchy of another mesh the culled draws could leave out triangles that matter;
   // the triangle counts are checked (std::invalid_argument), the rest is the caller's promise.
+  // With `local`, the same mesh in its own coordinates (the one `world` was made from), a device
+  // may keep the block and take, per draw, the pose and the view instead of window vertices
+  // (BlockWindowSource offers it as raster::PosedMesh). Kept only for a drawable block whose pose
+  // does not mirror (a mirroring pose swaps the world triangles' winding); its vertex and
+  // triangle counts are checked (std::invalid_argument).
   PairBlock(const TriangleMesh& world, std::shared_ptr<const TriangleBvh> hierarchy,
-            const Eigen::Isometry3d& localToWorld);
+            const Eigen::Isometry3d& localToWorld,
+            std::shared_ptr<const ObjectSpaceMesh> local = nullptr);
 
-  // A block whose hierarchy is built here over `world` itself (identity pose).
+  // A block whose hierarchy and object-space mesh are made here from `world` itself (identity
+  // pose).
   [[nodiscard]] static PairBlock withHierarchy(const TriangleMesh& world);
 
-  [[nodiscard]] const TriangleMesh& mesh() const { return *mesh_; }
+  // The block of `local` moved by `localToWorld`, its world mesh made only when something asks
+  // for it (mesh(): transformInto `storage`, so transformed()'s vertices, once even when threads
+  // ask together), so that a device drawing the posed mesh never waits for it. `worldBox` must
+  // be the box of those vertices bit for bit (ObjectTree's leaf box at this pose, or
+  // posedVertexBox) and `localExtent` drawableExtent(local). Drawable when local is and no
+  // coordinate can overflow (else the world mesh is made now and checked). `local` and
+  // `storage` must outlive the block; the hierarchy and `objectSpace` are as the constructor's.
+  [[nodiscard]] static PairBlock posedLazily(const TriangleMesh& local, TriangleMesh& storage,
+                                             std::shared_ptr<const TriangleBvh> hierarchy,
+                                             const Eigen::Isometry3d& localToWorld,
+                                             const Aabb& worldBox, double localExtent,
+                                             std::shared_ptr<const ObjectSpaceMesh> objectSpace);
+
+  // The world mesh (made now when the block was made posedLazily and nobody asked yet).
+  [[nodiscard]] const TriangleMesh& mesh() const;
   [[nodiscard]] const Aabb& box() const { return box_; }  // boundingBox(mesh()), bit for bit
   // Every vertex finite and every index in range: the only meshes whose culled draws are
   // offered, so that a mesh the device refuses is refused exactly as before.
   [[nodiscard]] bool drawable() const { return drawable_; }
   [[nodiscard]] const TriangleBvh* hierarchy() const { return hierarchy_.get(); }
   [[nodiscard]] const Eigen::Isometry3d& localToWorld() const { return localToWorld_; }
+  // The mesh in its own coordinates, or null.
+  [[nodiscard]] const std::shared_ptr<const ObjectSpaceMesh>& objectSpaceMesh() const {
+    return local_;
+  }
 
  private:
-  const TriangleMesh* mesh_;
+  PairBlock() = default;
+  // Sets the hierarchy, the pose and the object-space mesh of a drawable block after checking
+  // their counts against `triangles` and `vertices`.
+  void attach(std::size_t vertices, std::size_t triangles,
+              std::shared_ptr<const TriangleBvh> hierarchy, const Eigen::Isometry3d& localToWorld,
+              std::shared_ptr<const ObjectSpaceMesh> local);
+
+  // A posedLazily block's world mesh, made on first use.
+  struct LazyWorld {
+    const TriangleMesh* local = nullptr;
+    TriangleMesh* storage = nullptr;
+    Eigen::Isometry3d pose;
+    std::once_flag made;
+  };
+
+  const TriangleMesh* mesh_ = nullptr;  // null while lazy_ has not made it
+  std::shared_ptr<LazyWorld> lazy_;
   Aabb box_;
   bool drawable_ = false;
   std::shared_ptr<const TriangleBvh> hierarchy_;
   Eigen::Isometry3d localToWorld_ = Eigen::Isometry3d::Identity();
+  std::shared_ptr<const ObjectSpaceMesh> local_;
 };
 
 }  // namespace recode::core

@@ -26,6 +26,7 @@
 #include "recode/geometry/mesh.hpp"
 #include "recode/geometry/obb.hpp"
 #include "recode/geometry/triangle_bvh.hpp"
+#include "recode/pair/pair_block.hpp"
 #include "recode/scene/motion.hpp"
 #include "recode/scene/scene.hpp"
 
@@ -77,6 +78,9 @@ class ObjectTree {
   // root's OBB (its AABB grown by a relative margin for rounding), so that it contains the
   // root's AABB as updateAabbs makes it. Cheaper than that AABB, and larger.
   [[nodiscard]] Aabb boxAroundObb() const;
+  // A leaf's world AABB when updateAabbs made it at the leaf's current transform (then it is the
+  // box of worldMesh(node)'s vertices bit for bit), else null.
+  [[nodiscard]] const Aabb* currentLeafBox(int node) const;
   // Both steps.
   void pose(int frame) {
     setFrame(frame);
@@ -90,6 +94,9 @@ class ObjectTree {
   // its triangles): built on first use, once even when threads ask at the same time, then
   // shared and never changed.
   [[nodiscard]] std::shared_ptr<const TriangleBvh> triangleHierarchy(int node) const;
+  // A leaf's mesh in its own coordinates, flat, for devices that keep it (PairBlock): made on
+  // first use, as the hierarchy, and shared while the tree or a block holds it.
+  [[nodiscard]] std::shared_ptr<const ObjectSpaceMesh> objectSpaceMesh(int node) const;
 
  private:
   int add(const SceneObject& object, int parent, const std::string& parentPath);
@@ -103,6 +110,8 @@ class ObjectTree {
   struct LazyHierarchy {
     std::once_flag built;
     std::shared_ptr<const TriangleBvh> hierarchy;
+    std::once_flag flattened;
+    std::shared_ptr<const ObjectSpaceMesh> objectSpace;
   };
   std::vector<std::shared_ptr<LazyHierarchy>> hierarchies_;  // per node
 };

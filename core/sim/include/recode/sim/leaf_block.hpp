@@ -1,8 +1,9 @@
 #pragma once
 // A leaf of an object tree made ready for the pair algorithm at the tree's current pose: its
-// world mesh, with the triangle hierarchy of its own mesh and its pose, so that a pair test
-// draws only the triangles near its MOR. The results are those of the bare world mesh, bit for
-// bit. Used by core::Simulation (which keeps a leaf's block from frame to frame while the leaf
+// world box, with the triangle hierarchy of its own mesh, its pose and its object-space mesh,
+// so that a pair test draws only the triangles near its MOR, or a device draws the posed mesh
+// it keeps. The world mesh is made only when something asks for it (PairBlock::posedLazily).
+// The results are those of the bare world mesh, bit for bit. Used by core::Simulation (which keeps a leaf's block from frame to frame while the leaf
 // is drawn) and by recode::collide.
 
 #include <Eigen/Geometry>
@@ -19,13 +20,13 @@ struct LeafBlock {
   LeafBlock& operator=(const LeafBlock&) = delete;
 
   // Brings the block to the leaf's current pose in `tree` (the tree and leaf it was made
-  // from): nothing when the pose is, bit for bit, the one the mesh was made at; else the world
-  // mesh is rewritten in place (transformInto: worldMesh's vertices, bit for bit, and no
-  // allocation) and the block made again over it.
+  // from): nothing when the pose is, bit for bit, the one the block was made at; else the block
+  // is made again at the new pose, its world mesh to be rewritten in place when asked for
+  // (transformInto: worldMesh's vertices, bit for bit, and no allocation).
   void moveTo(const ObjectTree& tree, int leaf);
 
-  TriangleMesh mesh;
-  Eigen::Isometry3d pose;  // the leaf's world pose that `mesh` was made at
+  TriangleMesh worldStorage;  // the world mesh's storage: read it through block.mesh()
+  Eigen::Isometry3d pose;     // the leaf's world pose that the block was made at
   PairBlock block;
 };
 

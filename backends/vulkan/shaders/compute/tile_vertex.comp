@@ -1,0 +1,94 @@
+#version 450
+#extension GL_ARB_gpu_shader_int64 : require
+#extension GL_GOOGLE_include_directive : require
+// Stage 0 of a posed draw (docs/rasterization.md section 2.1, raster/vertex_stage.hpp), one
+// invocation a vertex: the block's object-space vertex to world by the pose, to window by the
+// view's mapping, x and y snapped to the 1/256-pixel grid and z rounded to float. Every double
+// operation is `precise` and in the contract's order; the divisions are correctly rounded
+// (exact_contract.glsl) and the rounding to float is done on the bits, so no driver's
+// accuracy or denormal handling enters. The source promised that every vertex maps inside
+// the window's range (TriangleSource::posedMesh), so nothing here checks.
+
+layout(local_size_x = 64) in;
+
+#include "exact_contract.glsl"
+#include "tile_common.glsl"
+
+layout(std430, set = 0, binding = 0) writeonly buffer Vertices { float vertexData[]; };
+layout(std430, set = 0, binding = 9) readonly buffer LocalVertices { double localData[]; };
+// The draw's VertexTransform: the linear part row by row (0-8), the translation (9-11), umin,
+// urange, width (12-14), vmin, vrange, height (15-17), depthMax, depthRange (18, 19), and the
+// world coordinates of u, v and d as small whole numbers (20-22).
+layout(std430, set = 0, binding = 10) readonly buffer VertexTransform { double transform[]; };
+
+// a / b rounded to nearest even, the sign of a zero quotient kept (a zero numerator's sign
+// decides it, as in IEEE division).
+double quotient(double a, double b) {
+  if (a == 0.0) {
+    precise double zero = a / b;
+    return zero;
+  }
+  return divideRoundedToNearest(a, b);
+}
+
+// snapToSubpixel: nearbyint(x 256) / 256 as a float. |x 256| <= 2^23 (the source's promise), so
+// the result is exact in float; a zero keeps the sign nearbyint gives it (that of x).
+float snapToGrid(double x) {
+  precise double scaled = x * 256.0;
+  const int64_t steps = roundToNearestEven(scaled);
+  if (steps == 0l)
+    return doubleBitsToInt64(x) < 0l ? uintBitsToFloat(0x80000000u) : 0.0;
+  precise double snapped = double(steps) * 0.00390625;
+  return float(snapped);
+}
+
+// The float nearest to v, ties to even, from v's bits (0 <= |v| <= 1 here: no overflow).
+float nearestFloat(double v) {
+  const uint64_t bits = uint64_t(doubleBitsToInt64(v));
+  const uint sign = uint(bits >> 63) << 31;
+  const int exponent = int((bits >> 52) & 0x7FFul);
+  if (exponent == 0)  // zero, or a double denormal: far below the smallest float
+    return uintBitsToFloat(sign);
+  const uint64_t significand = (bits & 0xFFFFFFFFFFFFFul) | (1ul << 52);
+  // A float keeps 24 significant bits when normal; below 2^-126 fewer, down to none.
+  const int floatExponent = exponent - 1023 + 127;
+  const int shift = floatExponent >= 1 ? 29 : 29 + (1 - floatExponent);
+  if (shift > 54)
+    return uintBitsToFloat(sign);
+  const uint64_t kept = significand >> uint(shift);
+  const uint64_t rest = significand & ((1ul << uint(shift)) - 1ul);
+  const uint64_t halfway = 1ul << uint(shift - 1);
+  uint64_t rounded = kept + ((rest > halfway || (rest == halfway && (kept & 1ul) != 0ul)) ? 1ul : 0ul);
+  // Normal: the exponent above the 23 stored bits (a carry out of them raises it by one).
+  // Denormal: the kept bits are the whole encoding (a carry makes the smallest normal).
+  if (floatExponent >= 1)
+    rounded += uint64_t(floatExponent - 1) << 23;
+  return uintBitsToFloat(sign | uint(rounded));
+}
+
+void main() {
+  const uint i = linearInvocation();
+  if (i >= draw.triangleCount)  // the draw's vertex count
+    return;
+  const double p0 = localData[3u * i];
+  const double p1 = localData[3u * i + 1u];
+  const double p2 = localData[3u * i + 2u];
+  // poseVertex: rows x and y ((l0 p0 + l1 p1) + l2 p2) + t, row z (l0 p0 + (l1 p1 + l2 p2)) + t.
+  precise double wx = ((transform[0] * p0 + transform[1] * p1) + transform[2] * p2) + transform[9];
+  precise double wy = ((transform[3] * p0 + transform[4] * p1) + transform[5] * p2) + transform[10];
+  precise double wz = (transform[6] * p0 + (transform[7] * p1 + transform[8] * p2)) + transform[11];
+  const dvec3 world = dvec3(wx, wy, wz);
+  const double u = world[int(transform[20])];
+  const double v = world[int(transform[21])];
+  const double d = world[int(transform[22])];
+  // mapToWindow: x = (u - umin) / urange width, y likewise, z = (depthMax - d) / depthRange.
+  precise double du = u - transform[12];
+  precise double x = quotient(du, transform[13]) * transform[14];
+  precise double dv = v - transform[15];
+  precise double y = quotient(dv, transform[16]) * transform[17];
+  precise double dd = transform[18] - d;
+  const double z = quotient(dd, transform[19]);
+  vertexData[3u * i] = snapToGrid(x);
+  vertexData[3u * i + 1u] = snapToGrid(y);
+  vertexData[3u * i + 2u] = nearestFloat(z);
+}
