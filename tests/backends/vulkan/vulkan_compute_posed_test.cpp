@@ -172,7 +172,7 @@ TEST_CASE("a posed draw writes what the window vertices of the reference's verte
 TEST_CASE("the device's vertex stage rounds as the reference's: snap ties, signed zeros, float "
           "ties and denormal depths",
           "[vulkan-compute]") {
-  // The identity pose and a window of 256 world units onto 256 pixels: x = u exactly, so
+  // A window of 256 world units onto 256 pixels: x = u exactly, so
   // coordinates k/256 + 1/512 sit halfway between two snapped positions. Depth z = -d exactly
   // (depthMax 0, range 1): halfway between two floats, or below the smallest normal float.
   raster::WindowMapping m;
@@ -192,7 +192,7 @@ TEST_CASE("the device's vertex stage rounds as the reference's: snap ties, signe
   };
   const Case cases[] = {
       {10.0 + tie, 20.0 + 3 * tie, floatTie},  // ties to even: down, up
-      {-0.0, 0.0, 0.5},                        // a signed zero
+      {-0.0, -0.0, 0.5},                       // signed zeros (with the -0 translation)
       {-tie, tie, floatTieOdd},                // tiny values that snap to -0 and +0
       {100.0, 50.0, 1e-40},                    // a float denormal
       {200.0, 100.0, 3e-46},                   // below every float: 0
@@ -208,7 +208,11 @@ TEST_CASE("the device's vertex stage rounds as the reference's: snap ties, signe
     mesh->xyz.insert(mesh->xyz.end(), {128.0, 255.0, -0.25});
     mesh->indices.insert(mesh->indices.end(), {first, first + 1, first + 2});
   }
-  const PosedSource source(mesh, {raster::Pose{}, m});
+  // The identity with a -0 translation: a sum with any +0 term is +0, so only then do the
+  // signed zeros of case 1 reach the window.
+  raster::Pose pose;
+  pose.translation = {-0.0, -0.0, -0.0};
+  const PosedSource source(mesh, {pose, m});
   VulkanComputeDevice device(256, 256);
   device.keepDrawStages();
   device.drawMesh(source);
@@ -236,6 +240,7 @@ TEST_CASE("the device's vertex stage rounds as the reference's: snap ties, signe
   CHECK(source.windows()[0].y == static_cast<float>(20.0 + 4 * tie));
   CHECK(bitsOf(source.windows()[0].z) == bitsOf(0.75f));
   CHECK(std::signbit(source.windows()[3].x));
+  CHECK(std::signbit(source.windows()[3].y));
   CHECK(std::signbit(source.windows()[6].x));
   CHECK(bitsOf(source.windows()[6].z) == bitsOf(static_cast<float>(0.75 + std::ldexp(1.0, -23))));
   CHECK(std::fpclassify(source.windows()[9].z) == FP_SUBNORMAL);
