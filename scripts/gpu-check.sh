@@ -6,7 +6,10 @@
 #   2. recode verify --suite at 800 pixels on the exact Vulkan and GL devices, and on the compute
 #      device (per-command parity of 504 pairs, then the same pairs as one batch against the
 #      reference),
-#   3. recode bench table2 figure8 with the GPU columns (the CGAL judge, recode-cpu, the exact
+#   3. recode run on every built-in scene (two with QUICK) on the compute device (posed blocks: the vertex stage
+#      runs on the GPU) against the CPU device, byte for byte, and the compute device's own tests
+#      (the kit's vertex-stage vectors among them) when the build has them,
+#   4. recode bench table2 figure8 with the GPU columns (the CGAL judge, recode-cpu, the exact
 #      devices batched, Vulkan pair by pair, with speculative contact passes, the same concluded
 #      from 64-byte summaries made by a compute shader, and that on 16 devices a frame size
 #      (waves), the 32-bit Vulkan device, the compute device, FCL GJK, Bullet),
@@ -49,6 +52,31 @@ step "verify --suite --width 800" verify-800.json \
   "$recode" verify --suite --width 800 --vulkan --gl-exact --gl-platform egl --json
 step "verify --suite --vulkan-compute" verify-800-compute.json \
   "$recode" verify --suite --width 800 --vulkan-compute --json
+same_runs() {  # each built-in scene's `recode run --json --no-timing`, cpu against vulkan-compute
+  local scene status=0 scenes
+  if [[ -n $quick ]]; then
+    scenes="hand-grasp random-shapes"  # lavapipe's compute device is slow: two scenes
+  else
+    scenes=$("$recode" run --list | awk 'NR > 1 {print $1}')
+  fi
+  for scene in $scenes; do
+    "$recode" run "$scene" --json --no-timing > "$out/run-$scene-cpu.json" || status=1
+    "$recode" run "$scene" --json --no-timing --device vulkan-compute \
+      > "$out/run-$scene-vulkan-compute.json" || status=1
+    if cmp -s "$out/run-$scene-cpu.json" "$out/run-$scene-vulkan-compute.json"; then
+      echo "$scene: same bytes"
+    else
+      echo "$scene: DIFFERENT"
+      status=1
+    fi
+  done
+  return $status
+}
+step "run --device vulkan-compute (posed)" run-vulkan-compute.log same_runs
+compute_tests=$(dirname "$recode")/../tests/backends/recode_backends_vulkan_compute_tests
+if [[ -x $compute_tests ]]; then
+  step "vulkan-compute device tests" vulkan-compute-tests.log "$compute_tests"
+fi
 step "bench table2 figure8" bench.log \
   "$recode" bench table2 figure8 $quick --out "$out/bench" \
   --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-summaries,recode-vulkan-waves,recode-vulkan-32,recode-vulkan-compute,fcl-gjk,bullet

@@ -47,6 +47,7 @@ struct RunOptions {
   std::string contactSchedule = "after-verdict";  // --contact-schedule
   int batchDevices = 1;                           // --batch-devices
   bool summaries = false;                         // --summaries
+  std::string leafBoxes = "device";               // --leaf-boxes
 };
 
 std::string builtinNames() {
@@ -155,6 +156,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
                                 : core::ContactSchedule::AfterVerdict;
   options.batchDevicesPerSize = o.batchDevices;
   options.deviceSummaries = o.summaries;
+  options.leafBoxesOnDevice = o.leafBoxes == "device";
   core::Simulation sim = makeSimulation(o, scene, options);
 
   RunDescription run;
@@ -284,6 +286,12 @@ void addRunCommand(CLI::App& app, int& exitCode) {
                   "their own (on Vulkan one barrier a wave, not one a pair); the same output")
       ->check(CLI::Range(1, core::kMaxBatchDevicesPerSize))
       ->excludes(perPair)
+      ->capture_default_str();
+  cmd->add_option("--leaf-boxes", o->leafBoxes,
+                  "where the leaves' world boxes are made each frame: device (on a device that "
+                  "keeps the blocks, vulkan-compute: one submission more a frame, no vertex "
+                  "mapped on the host; elsewhere the host) or host; the same output")
+      ->check(CLI::IsMember({"device", "host"}))
       ->capture_default_str();
   addViewAxisOption(*cmd, o->viewAxis);
   cmd->add_option("--max-pair-tests", o->maxPairTests,

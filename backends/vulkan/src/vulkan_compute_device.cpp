@@ -97,6 +97,7 @@ struct VulkanComputeDevice::Impl {
   raster::TransferCounters transfers;
   detail::DeviceBuffer framebuffer;  // a word a pixel, rows from the bottom
   detail::DeviceBuffer work;         // the draw being recorded's WorkLayout (draws take turns)
+  detail::DeviceBuffer boxWork;      // posed boxes: the poses, then the boxes (posedBoxesLater)
   // Buffers replaced while a recording that may use them was open: freed once it has run.
   std::vector<std::pair<detail::DeviceBuffer, std::uint64_t>> retired;
 
@@ -300,6 +301,62 @@ struct VulkanComputeDevice::Impl {
                                 r.vertices);
     });
     r.windowsOf = contentKey;
+  }
+
+  // Records the boxes of `blocks` at their poses: the poses into boxWork, a workgroup a block,
+  // and the boxes (eight doubles each) copied back for `read`.
+  void recordBoxes(std::span<const raster::PosedMesh> blocks,
+                   raster::PendingRead<raster::PosedBox> read) {
+    releaseExpired();
+    for (const raster::PosedMesh& m : blocks)
+      (void)resident(m);  // may add entries: their addresses are taken below
+    const std::size_t n = blocks.size();
+    std::vector<double> poses(12 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const raster::Pose& pose = blocks[i].transform.pose;
+      std::copy(pose.linear.begin(), pose.linear.end(), poses.begin() + 12 * i);
+      std::copy(pose.translation.begin(), pose.translation.end(), poses.begin() + 12 * i + 9);
+    }
+    const VkDeviceSize poseBytes = poses.size() * sizeof(double);
+    const VkDeviceSize boxesOffset = aligned(poseBytes);
+    const VkDeviceSize boxBytes = VkDeviceSize{n} * 8 * sizeof(double);
+    reserve(boxWork, boxesOffset + boxBytes);
+    recorder->makeRoom(poseBytes + boxBytes);
+    const detail::CommandRecorder::Staged staged = recorder->upload(poses.data(), poseBytes);
+    const detail::CommandRecorder::Staged out =
+        recorder->results(boxBytes, [n, read](const std::uint8_t* bytes) mutable {
+          std::vector<raster::PosedBox> boxes(n);
+          for (std::size_t i = 0; i < n; ++i) {
+            double words[8];
+            std::memcpy(words, bytes + 64 * i, sizeof words);
+            std::copy(words, words + 3, boxes[i].min.begin());
+            std::copy(words + 3, words + 6, boxes[i].max.begin());
+            boxes[i].orderMatters = words[6] != 0.0;
+          }
+          read.deliver(std::move(boxes));
+        });
+    const TileBuffer posesBuffer{TileBinding::VertexTransform, boxWork.buffer, 0,
+                                 std::max<VkDeviceSize>(poseBytes, 8)};
+    const TileBuffer boxesBuffer{TileBinding::Output, boxWork.buffer, boxesOffset, boxBytes};
+    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
+      detail::computeBarrier(cmd);
+      const VkBufferCopy copy{staged.offset, 0, poseBytes};
+      vkCmdCopyBuffer(cmd, staged.buffer, boxWork.buffer, 1, &copy);
+      detail::computeBarrier(cmd);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Resident& r = *std::find_if(residents.begin(), residents.end(), [&](const Resident& e) {
+          return e.key == blocks[i].meshKey;
+        });
+        TileDrawConstants c;
+        c.triangleCount = r.vertices;
+        c.outWord = static_cast<std::uint32_t>(i);
+        const TileBuffer local{TileBinding::LocalVertices, r.buffer.buffer, 0, r.indexOffset};
+        pipelines->dispatch(cmd, pipelines->box, {local, posesBuffer, boxesBuffer}, c, 1, 1);
+      }
+      detail::computeBarrier(cmd);
+      const VkBufferCopy back{boxesOffset, out.offset, boxBytes};
+      vkCmdCopyBuffer(cmd, boxWork.buffer, out.buffer, 1, &back);
+    });
   }
 
   // A posed draw: the vertex stage on the device, then the tile rasterizer over every triangle
@@ -513,6 +570,7 @@ struct VulkanComputeDevice::Impl {
     for (Resident& r : residents)
       context->destroyDeviceBuffer(r.buffer);
     context->destroyDeviceBuffer(work);
+    context->destroyDeviceBuffer(boxWork);
     context->destroyDeviceBuffer(framebuffer);
   }
 };
@@ -617,6 +675,17 @@ void VulkanComputeDevice::drawMesh(const raster::TriangleSource& source) {
     const raster::TriangleDraw draw = near ? *near : source.allTriangles();
     d.drawMeshEntry(d.upload(draw, key, !near, scissor));
   });
+}
+
+raster::PendingRead<raster::PosedBox> VulkanComputeDevice::posedBoxesLater(
+    std::span<const raster::PosedMesh> meshes) {
+  Impl& d = *impl_;
+  if (meshes.empty())
+    return raster::PendingRead<raster::PosedBox>::ready({});
+  raster::PendingRead<raster::PosedBox> read = raster::PendingRead<raster::PosedBox>::waiting();
+  const auto hold = d.recorder->hold();
+  d.counted([&] { d.recordBoxes(meshes, read); });
+  return read;
 }
 
 raster::PendingRead<std::uint8_t> VulkanComputeDevice::readStencilLater(const PixelRect& rect) {

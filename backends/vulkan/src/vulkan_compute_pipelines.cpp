@@ -15,6 +15,7 @@ namespace recode::backends::detail {
 namespace {
 // glslangValidator --vn writes each module as `const uint32_t k_<stage>[] = {...};`.
 using std::uint32_t;
+#include "tile_box.comp.h"
 #include "tile_clear.comp.h"
 #include "tile_raster.comp.h"
 #include "tile_read.comp.h"
@@ -46,6 +47,7 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
                               (std::string("vkCreateComputePipelines (") + name + ")").c_str());
   };
   vertex = createStage(k_tile_vertex_comp, "tile_vertex");
+  box = createStage(k_tile_box_comp, "tile_box");
   setup = createStage(k_tile_setup_comp, "tile_setup");
   scan = createStage(k_tile_scan_comp, "tile_scan");
   scanSerial = createStage(k_tile_scan_serial_comp, "tile_scan_serial");

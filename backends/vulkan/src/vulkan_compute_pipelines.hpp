@@ -1,6 +1,7 @@
 #pragma once
 // The compute device's pipelines (shaders/compute/, docs/backends.md "The compute device"): the
-// tile rasterizer's five stages, the vertex stage of a posed draw, the clears and the read-backs.
+// tile rasterizer's five stages, the vertex stage of a posed draw, posed blocks' boxes, the clears
+// and the read-backs.
 // All share one pipeline layout: eleven storage buffers bound by push descriptors (VK_KHR_push_descriptor), so a
 // dispatch names its buffers as it is recorded and no descriptor set outlives it, and the
 // `Draw` push constants of tile_common.glsl.
@@ -67,6 +68,7 @@ class TilePipelines {
   TilePipelines& operator=(const TilePipelines&) = delete;
 
   VkPipeline vertex = VK_NULL_HANDLE;  // a posed draw's vertex stage
+  VkPipeline box = VK_NULL_HANDLE;     // a posed block's world box
   VkPipeline setup = VK_NULL_HANDLE;
   VkPipeline scan = VK_NULL_HANDLE;
   VkPipeline scanSerial = VK_NULL_HANDLE;  // the same in one invocation, for CPU drivers

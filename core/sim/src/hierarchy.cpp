@@ -170,6 +170,22 @@ void ObjectTree::updateAabbs() {
   }
 }
 
+bool ObjectTree::leafBoxStale(int node) const {
+  const auto i = static_cast<std::size_t>(node);
+  const HierarchyNode& n = nodes_.at(i);
+  return n.isLeaf() && (!boundsValid_[i] || boundsAt_[i].matrix() != n.world.matrix());
+}
+
+void ObjectTree::setLeafBox(int node, const Aabb& box) {
+  const auto i = static_cast<std::size_t>(node);
+  HierarchyNode& n = nodes_.at(i);
+  if (!n.isLeaf())
+    throw std::invalid_argument("setLeafBox: node " + std::to_string(node) + " is not a leaf");
+  n.worldAabb = box;
+  boundsAt_[i] = n.world;
+  boundsValid_[i] = true;
+}
+
 const Aabb* ObjectTree::currentLeafBox(int node) const {
   const auto i = static_cast<std::size_t>(node);
   const HierarchyNode& n = nodes_.at(i);

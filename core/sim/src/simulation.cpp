@@ -1,6 +1,7 @@
 // One frame of a scene: pose, boxes, sort and sweep, tree descent, pair algorithm per leaf pair.
 #include "recode/sim/simulation.hpp"
 
+#include "device_leaf_boxes.hpp"
 #include "frame_leaf_blocks.hpp"
 #include "pair_tests.hpp"
 #include "recode/refine/proven_apart.hpp"
@@ -37,9 +38,9 @@ int roundUpToGranule(int n) {
 // filtered. Every object's OBBs are brought up to its pose; the AABBs of the others are left
 // stale (nothing reads them this frame). The AABBs are made on the runner's threads: each
 // object's own, and with large meshes they are the frame's largest serial step.
-std::vector<std::pair<int, int>> overlappingObjects(std::vector<ObjectTree>& objects,
-                                                    SweepAndPrune& broadPhase,
-                                                    PairTestRunner& runner) {
+std::vector<std::pair<int, int>> overlappingObjects(
+    std::vector<ObjectTree>& objects, SweepAndPrune& broadPhase, PairTestRunner& runner,
+    const std::function<void(const std::vector<std::size_t>&)>& leafBoxesFirst) {
   std::vector<Aabb> around;
   around.reserve(objects.size());
   for (ObjectTree& object : objects) {
@@ -54,6 +55,10 @@ std::vector<std::pair<int, int>> overlappingObjects(std::vector<ObjectTree>& obj
   for (std::size_t i = 0; i < objects.size(); ++i)
     if (needed[i])
       inPairs.push_back(i);
+  // A device that keeps the blocks makes the stale leaves' boxes first; updateAabbs then makes
+  // the rest (every leaf's, without one) and the nodes above.
+  if (leafBoxesFirst)
+    leafBoxesFirst(inPairs);
   runner.forEach(inPairs.size(), [&](std::size_t k) { objects[inPairs[k]].updateAabbs(); });
   std::erase_if(pairs, [&objects](const std::pair<int, int>& p) {
     return !aabbsOverlap(objects[static_cast<std::size_t>(p.first)].root().worldAabb,
@@ -294,8 +299,30 @@ FrameReport Simulation::runFrame(int frame) {
     object.setFrame(frame);
   const Clock::time_point posed = Clock::now();
 
+  if (!boxDeviceTried_) {
+    boxDeviceTried_ = true;
+    if (options_.deviceFactory && options_.leafBoxesOnDevice) {
+      const Clock::time_point t = Clock::now();
+      boxDevice_ = options_.deviceFactory(8, 8);
+      boxReducer_ = dynamic_cast<raster::PosedBoxReducer*>(boxDevice_.get());
+      if (boxReducer_ == nullptr)
+        boxDevice_.reset();
+      else
+        detail::keepLeafMeshes(objects_, *boxDevice_, *boxReducer_);
+      report.deviceSetupUs += microseconds(t, Clock::now());
+    }
+  }
+  const raster::TransferCounters boxesBefore =
+      boxDevice_ ? boxDevice_->transfers() : raster::TransferCounters{};
+  std::function<void(const std::vector<std::size_t>&)> leafBoxesFirst;
+  if (boxReducer_ != nullptr)
+    leafBoxesFirst = [this](const std::vector<std::size_t>& which) {
+      (void)detail::reduceLeafBoxes(objects_, which, *boxDevice_, *boxReducer_);
+    };
   const std::vector<std::pair<int, int>> candidates =
-      overlappingObjects(objects_, broadPhase_, *pairTests_);
+      overlappingObjects(objects_, broadPhase_, *pairTests_, leafBoxesFirst);
+  const raster::TransferCounters boxesAfter =
+      boxDevice_ ? boxDevice_->transfers() : raster::TransferCounters{};
   report.objectPairs = static_cast<long long>(candidates.size());
   const std::vector<PairTask> tasks = listPairTasks(candidates, frame, report);
   const std::vector<char> skipped = provenApartTasks(objects_, tasks, options_, *pairTests_);
@@ -306,13 +333,16 @@ FrameReport Simulation::runFrame(int frame) {
   attachWorldBlocks(*leafBlocks_, objects_, *pairTests_, drawn);
 
   const PairTestRunner::DeviceSetup setup = pairTests_->reserveDevices(drawn);
-  report.deviceSetupUs = setup.us;
+  report.deviceSetupUs += setup.us;
   const raster::TransferCounters before = pairTests_->transfers();
   std::vector<PairOutcome> outcomes = pairTests_->run(drawn, setup.usable);
   const raster::TransferCounters after = pairTests_->transfers();
-  report.submissions = after.submissions - before.submissions;
-  report.readbackBytes = after.readbackBytes - before.readbackBytes;
-  report.deviceWaitUs = after.waitUs - before.waitUs;
+  // The boxes' round is the frame's too.
+  report.submissions = after.submissions - before.submissions + boxesAfter.submissions -
+                       boxesBefore.submissions;
+  report.readbackBytes = after.readbackBytes - before.readbackBytes + boxesAfter.readbackBytes -
+                         boxesBefore.readbackBytes;
+  report.deviceWaitUs = after.waitUs - before.waitUs + boxesAfter.waitUs - boxesBefore.waitUs;
   collectOutcomes(objects_, frame, tasks, skipped, outcomes, report);
   if (setup.error) {
     try {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <random>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "recode/kit/vertex_stage_vectors.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
+#include "recode/raster/posed_boxes.hpp"
 #include "recode/raster/triangle_source.hpp"
 #include "recode/raster/vertex_stage.hpp"
 
@@ -131,6 +133,12 @@ void expectSameBuffers(const raster::DepthStencilDevice& device,
 std::uint32_t bitsOf(float f) {
   std::uint32_t b = 0;
   std::memcpy(&b, &f, sizeof b);
+  return b;
+}
+
+std::uint64_t bitsOf(double d) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &d, sizeof b);
   return b;
 }
 
@@ -324,4 +332,101 @@ TEST_CASE("the device's vertex stage gives every vertex of the kit's vertex-stag
     expectSameBuffers(fresh, reference);
   }
   CHECK(vertices >= 200);
+}
+
+namespace {
+
+// The box of `mesh` at `pose` in any order of comparisons, and whether an extreme is a zero or
+// a coordinate NaN (what the device must flag).
+raster::PosedBox referenceBox(const LocalMesh& mesh, const raster::Pose& pose) {
+  raster::PosedBox box;
+  box.min.fill(std::numeric_limits<double>::infinity());
+  box.max.fill(-std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i + 2 < mesh.xyz.size(); i += 3) {
+    const std::array<double, 3> w =
+        raster::poseVertex(pose, {mesh.xyz[i], mesh.xyz[i + 1], mesh.xyz[i + 2]});
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (std::isnan(w[k])) {
+        box.orderMatters = true;
+        continue;
+      }
+      box.min[k] = std::min(box.min[k], w[k]);
+      box.max[k] = std::max(box.max[k], w[k]);
+    }
+  }
+  for (std::size_t k = 0; k < 3; ++k)
+    box.orderMatters = box.orderMatters || box.min[k] == 0.0 || box.max[k] == 0.0;
+  return box;
+}
+
+raster::PosedMesh posedOf(const std::shared_ptr<LocalMesh>& mesh, const raster::Pose& pose) {
+  raster::PosedMesh posed{mesh->xyz, mesh->indices, {}, mesh->key, mesh};
+  posed.transform.pose = pose;
+  return posed;
+}
+
+}  // namespace
+
+TEST_CASE("posed blocks' boxes reduced on the device are the reference's, zeros flagged",
+          "[vulkan-compute]") {
+  std::mt19937 rng(53);
+  std::vector<std::shared_ptr<LocalMesh>> meshes;
+  std::vector<raster::Pose> poses;
+  // Random blocks of 1 to 3,000 triangles (a workgroup's stride and its tree both matter).
+  for (const int triangles : {1, 7, 21, 22, 300, 3000}) {
+    meshes.push_back(randomMesh(rng, triangles));
+    poses.push_back(randomPose(rng));
+  }
+  // An infinite translation: infinite extremes are ordinary ones.
+  meshes.push_back(randomMesh(rng, 5));
+  poses.emplace_back();
+  poses.back().translation[0] = std::numeric_limits<double>::infinity();
+  // A block without vertices: +inf and -inf, unflagged.
+  meshes.push_back(std::make_shared<LocalMesh>());
+  poses.emplace_back();
+  // x = 5, -0, +0 at the identity with a -0 translation (each product with a negative y or z is
+  // -0, so the zeros keep their signs): a reduction in another order than the host's keeps the
+  // other zero, so the box must be flagged.
+  auto zeros = std::make_shared<LocalMesh>();
+  zeros->xyz = {5.0, -1.0, -1.0, -0.0, -1.0, -1.0, 0.0, -1.0, -1.0};
+  zeros->indices = {0, 1, 2};
+  meshes.push_back(zeros);
+  raster::Pose negativeZero;
+  negativeZero.translation = {-0.0, -0.0, -0.0};
+  poses.push_back(negativeZero);
+  // A NaN coordinate: flagged.
+  meshes.push_back(randomMesh(rng, 4));
+  meshes.back()->xyz[7] = std::numeric_limits<double>::quiet_NaN();
+  poses.push_back(randomPose(rng));
+
+  std::vector<raster::PosedMesh> posed;
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+    posed.push_back(posedOf(meshes[i], poses[i]));
+  VulkanComputeDevice device(8, 8);
+  raster::PendingRead<raster::PosedBox> read = device.posedBoxesLater(posed);
+  device.finish();
+  const std::vector<raster::PosedBox> boxes = read.take();
+  REQUIRE(boxes.size() == meshes.size());
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    INFO("block " << i);
+    const raster::PosedBox expected = referenceBox(*meshes[i], poses[i]);
+    CHECK(boxes[i].orderMatters == expected.orderMatters);
+    if (expected.orderMatters)
+      continue;
+    for (std::size_t k = 0; k < 3; ++k) {
+      CHECK(bitsOf(boxes[i].min[k]) == bitsOf(expected.min[k]));
+      CHECK(bitsOf(boxes[i].max[k]) == bitsOf(expected.max[k]));
+    }
+  }
+  CHECK(boxes[8].orderMatters);  // the zeros
+  CHECK(boxes[9].orderMatters);  // the NaN
+  CHECK_FALSE(boxes[6].orderMatters);
+  CHECK(boxes[6].min[0] == std::numeric_limits<double>::infinity());
+  CHECK_FALSE(boxes[7].orderMatters);
+  CHECK(boxes[7].min[0] == std::numeric_limits<double>::infinity());
+  // The meshes are kept as posed draws keep them: drawing one uploads nothing more.
+  CHECK(device.meshCounters().uploads == static_cast<long long>(meshes.size()));
+  const PosedSource source(meshes[4], {poses[4], viewAlong(2, 8, 8)});
+  device.drawMesh(source);
+  CHECK(device.meshCounters().uploads == static_cast<long long>(meshes.size()));
 }

@@ -16,11 +16,13 @@
 #include <string>
 #include <vector>
 
+#include "recode/raster/posed_boxes.hpp"
 #include "recode/raster/render_state_device.hpp"
 
 namespace recode::backends {
 
-class VulkanComputeDevice final : public raster::RenderStateDevice {
+class VulkanComputeDevice final : public raster::RenderStateDevice,
+                                  public raster::PosedBoxReducer {
  public:
   // A width x height framebuffer (depth 2^24 - 1, stencil 0, the interface's default state).
   // Throws std::invalid_argument unless 1 <= width, height <= 16384, and std::runtime_error
@@ -46,6 +48,10 @@ class VulkanComputeDevice final : public raster::RenderStateDevice {
   // Any other block: the triangles that meet the scissor (TriangleSource::trianglesMeeting),
   // uploaded once for every later draw of the same content key under a scissor inside that one.
   void drawMesh(const raster::TriangleSource& source) override;
+  // Posed blocks' world boxes on the device (tile_box.comp, a workgroup a block), each block
+  // kept as a posed draw keeps it: 64 bytes a block come back.
+  [[nodiscard]] raster::PendingRead<raster::PosedBox> posedBoxesLater(
+      std::span<const raster::PosedMesh> meshes) override;
   // Each runs everything recorded so far (one submission) and returns the values.
   [[nodiscard]] std::vector<std::uint8_t> readStencil(const raster::PixelRect& rect) const override;
   [[nodiscard]] std::vector<std::uint32_t> readDepth(const raster::PixelRect& rect) const override;

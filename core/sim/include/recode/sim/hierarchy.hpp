@@ -78,6 +78,13 @@ class ObjectTree {
   // root's OBB (its AABB grown by a relative margin for rounding), so that it contains the
   // root's AABB as updateAabbs makes it. Cheaper than that AABB, and larger.
   [[nodiscard]] Aabb boxAroundObb() const;
+  // Whether updateAabbs would make a leaf's box from its vertices (its transform changed since,
+  // or it has none yet).
+  [[nodiscard]] bool leafBoxStale(int node) const;
+  // Sets a leaf's world AABB as updateAabbs would make it at its current transform: `box` must
+  // be posedVertexBox's, bit for bit (a device's reduction, made again on the host where the
+  // order of the comparisons matters). updateAabbs then keeps it and makes the nodes above.
+  void setLeafBox(int node, const Aabb& box);
   // A leaf's world AABB when updateAabbs made it at the leaf's current transform (then it is the
   // box of worldMesh(node)'s vertices bit for bit), else null.
   [[nodiscard]] const Aabb* currentLeafBox(int node) const;

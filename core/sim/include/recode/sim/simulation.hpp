@@ -21,6 +21,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/pair/pair_batch.hpp"
 #include "recode/raster/device.hpp"
+#include "recode/raster/posed_boxes.hpp"
 #include "recode/refine/pair_mode.hpp"
 #include "recode/refine/view_axis_choice.hpp"
 #include "recode/scene/scene.hpp"
@@ -105,6 +106,11 @@ struct RunOptions {
   // back. The same reports. Off by default: on lavapipe and llvmpipe it is slower
   // (docs/benchmarks.md, "GPU devices on lavapipe").
   bool deviceSummaries = false;
+  // When the factory's devices keep blocks for posed draws and reduce boxes
+  // (raster::PosedBoxReducer, vulkan-compute): the stale leaves' world boxes are reduced on such
+  // a device each frame (one submission more), so the host maps no vertex; off, the host makes
+  // them (ObjectTree::updateAabbs). The same bits, so the same reports.
+  bool leafBoxesOnDevice = true;
 };
 
 inline constexpr int kMaxBatchDevicesPerSize = 64;  // the most batchDevicesPerSize may be
@@ -193,6 +199,12 @@ class Simulation {
   SweepAndPrune broadPhase_;
   std::unique_ptr<PairTestRunner> pairTests_;    // its devices and threads
   std::unique_ptr<FrameLeafBlocks> leafBlocks_;  // the drawn leaves, kept from frame to frame
+  // A device of options_.deviceFactory that reduces the leaves' world boxes where it keeps the
+  // blocks (raster::PosedBoxReducer), made at the first frame; null when there is no factory
+  // or its devices cannot, and then the host makes the boxes.
+  std::unique_ptr<raster::DepthStencilDevice> boxDevice_;
+  raster::PosedBoxReducer* boxReducer_ = nullptr;
+  bool boxDeviceTried_ = false;
 };
 
 // How many pair tests a simulation with these options runs at once: RunOptions::threads with
