@@ -297,8 +297,7 @@ struct VulkanComputeDevice::Impl {
       const VkBufferCopy copy{staged.offset, r.transformOffset, sizeof words};
       vkCmdCopyBuffer(cmd, staged.buffer, r.buffer.buffer, 1, &copy);
       detail::computeBarrier(cmd);
-      pipelines->dispatchLinear(cmd, pipelines->vertex, {local, transform, windows}, c,
-                                r.vertices);
+      pipelines->dispatchLinear(cmd, pipelines->vertex, {local, transform, windows}, c, r.vertices);
     });
     r.windowsOf = contentKey;
   }
@@ -344,9 +343,9 @@ struct VulkanComputeDevice::Impl {
       vkCmdCopyBuffer(cmd, staged.buffer, boxWork.buffer, 1, &copy);
       detail::computeBarrier(cmd);
       for (std::size_t i = 0; i < n; ++i) {
-        const Resident& r = *std::find_if(residents.begin(), residents.end(), [&](const Resident& e) {
-          return e.key == blocks[i].meshKey;
-        });
+        const Resident& r =
+            *std::find_if(residents.begin(), residents.end(),
+                          [&](const Resident& e) { return e.key == blocks[i].meshKey; });
         TileDrawConstants c;
         c.triangleCount = r.vertices;
         c.outWord = static_cast<std::uint32_t>(i);
@@ -377,9 +376,7 @@ struct VulkanComputeDevice::Impl {
   }
 
   // Records the tile rasterizer's five stages for `mesh` in the current state.
-  void drawMeshEntry(const Mesh& mesh) {
-    drawTiles(mesh, mesh.buffer.buffer, 0, mesh.indexOffset);
-  }
+  void drawMeshEntry(const Mesh& mesh) { drawTiles(mesh, mesh.buffer.buffer, 0, mesh.indexOffset); }
 
   // The five stages for `mesh`'s triangles, its indices at mesh.indexOffset of `buffer` and its
   // window vertices at [vertexOffset, + vertexRange).
@@ -455,10 +452,9 @@ struct VulkanComputeDevice::Impl {
   void copyStagesBack(const WorkLayout& layout, const TileDrawConstants& c) {
     const VkDeviceSize bytes = std::min(layout.bytes, work.size);
     recorder->makeRoom(bytes);
-    const detail::CommandRecorder::Staged out =
-        recorder->results(bytes, [layout, c, last = lastStages,
-                                  windows = std::exchange(drawWindows, nullptr)](
-                                     const std::uint8_t* words) {
+    const detail::CommandRecorder::Staged out = recorder->results(
+        bytes, [layout, c, last = lastStages,
+                windows = std::exchange(drawWindows, nullptr)](const std::uint8_t* words) {
           *last = parseStages(words, layout, c);
           // Delivered before this: the window vertices were copied first.
           if (windows)

@@ -2,9 +2,9 @@
 // The compute device's pipelines (shaders/compute/, docs/backends.md "The compute device"): the
 // tile rasterizer's five stages, the vertex stage of a posed draw, posed blocks' boxes, the clears
 // and the read-backs.
-// All share one pipeline layout: eleven storage buffers bound by push descriptors (VK_KHR_push_descriptor), so a
-// dispatch names its buffers as it is recorded and no descriptor set outlives it, and the
-// `Draw` push constants of tile_common.glsl.
+// All share one pipeline layout: eleven storage buffers bound by push descriptors
+// (VK_KHR_push_descriptor), so a dispatch names its buffers as it is recorded and no descriptor set
+// outlives it, and the `Draw` push constants of tile_common.glsl.
 
 #include <vulkan/vulkan_core.h>
 
@@ -23,11 +23,11 @@ enum class TileBinding : std::uint32_t {
   BlockCounts = 3,  // triangles a block's list holds
   BlockOffsets = 4,
   BlockCursors = 5,
-  Pairs = 6,        // the blocks' lists, one after the other
-  Framebuffer = 7,  // a word a pixel: q << 8 | stencil
-  Output = 8,       // a read's destination
-  LocalVertices = 9,    // a posed draw's object-space vertices, three doubles each
-  VertexTransform = 10, // its pose and window mapping (tile_vertex.comp)
+  Pairs = 6,             // the blocks' lists, one after the other
+  Framebuffer = 7,       // a word a pixel: q << 8 | stencil
+  Output = 8,            // a read's destination
+  LocalVertices = 9,     // a posed draw's object-space vertices, three doubles each
+  VertexTransform = 10,  // its pose and window mapping (tile_vertex.comp)
 };
 inline constexpr std::uint32_t kTileBindings = 11;
 // Doubles of a VertexTransform as tile_vertex.comp reads it.

@@ -220,8 +220,10 @@ BlockWindowSource::BlockWindowSource(const PairBlock& block, const OrthoView& vi
 }
 
 std::optional<raster::PosedMesh> BlockWindowSource::posedMesh() const {
-  const std::shared_ptr<const ObjectSpaceMesh>& local = block_.objectSpaceMesh();
-  if (!culls_ || !local)
+  if (!culls_)
+    return std::nullopt;
+  const std::shared_ptr<const ObjectSpaceMesh> local = block_.objectSpaceMesh();
+  if (!local)
     return std::nullopt;
   const Eigen::Isometry3d& pose = block_.localToWorld();
   return raster::PosedMesh{local->xyz,

@@ -16,8 +16,7 @@ bool allDrawable(const TriangleMesh& mesh) {
 
 }  // namespace
 
-ObjectSpaceMesh::ObjectSpaceMesh(const TriangleMesh& local)
-    : key(raster::newTriangleSourceKey()) {
+ObjectSpaceMesh::ObjectSpaceMesh(const TriangleMesh& local) : key(raster::newTriangleSourceKey()) {
   xyz.reserve(3 * local.vertices.size());
   for (const Eigen::Vector3d& v : local.vertices)
     xyz.insert(xyz.end(), {v.x(), v.y(), v.z()});
@@ -33,24 +32,26 @@ PairBlock::PairBlock(const TriangleMesh& world, std::shared_ptr<const TriangleBv
                      const Eigen::Isometry3d& localToWorld,
                      std::shared_ptr<const ObjectSpaceMesh> local)
     : PairBlock(world) {
-  attach(world.vertices.size(), world.triangles.size(), std::move(hierarchy), localToWorld,
-         std::move(local));
+  if (local && (local->xyz.size() != 3 * world.vertices.size() ||
+                local->indices.size() != 3 * world.triangles.size()))
+    throw std::invalid_argument("PairBlock: the object-space mesh has " +
+                                std::to_string(local->xyz.size() / 3) + " vertices and " +
+                                std::to_string(local->indices.size() / 3) +
+                                " triangles but the mesh has " +
+                                std::to_string(world.vertices.size()) + " and " +
+                                std::to_string(world.triangles.size()));
+  ObjectSpaceSource source;
+  if (local)
+    source = [local] { return local; };
+  attach(world.triangles.size(), std::move(hierarchy), localToWorld, std::move(source));
 }
 
-void PairBlock::attach(std::size_t vertices, std::size_t triangles,
-                       std::shared_ptr<const TriangleBvh> hierarchy,
-                       const Eigen::Isometry3d& localToWorld,
-                       std::shared_ptr<const ObjectSpaceMesh> local) {
+void PairBlock::attach(std::size_t triangles, std::shared_ptr<const TriangleBvh> hierarchy,
+                       const Eigen::Isometry3d& localToWorld, ObjectSpaceSource local) {
   if (hierarchy && hierarchy->triangleCount() != triangles)
     throw std::invalid_argument("PairBlock: the hierarchy has " +
                                 std::to_string(hierarchy->triangleCount()) +
                                 " triangles but the mesh has " + std::to_string(triangles));
-  if (local && (local->xyz.size() != 3 * vertices || local->indices.size() != 3 * triangles))
-    throw std::invalid_argument("PairBlock: the object-space mesh has " +
-                                std::to_string(local->xyz.size() / 3) + " vertices and " +
-                                std::to_string(local->indices.size() / 3) +
-                                " triangles but the mesh has " + std::to_string(vertices) +
-                                " and " + std::to_string(triangles));
   if (drawable_) {
     hierarchy_ = std::move(hierarchy);
     localToWorld_ = localToWorld;
@@ -64,7 +65,7 @@ PairBlock PairBlock::posedLazily(const TriangleMesh& local, TriangleMesh& storag
                                  std::shared_ptr<const TriangleBvh> hierarchy,
                                  const Eigen::Isometry3d& localToWorld, const Aabb& worldBox,
                                  double localExtent,
-                                 std::shared_ptr<const ObjectSpaceMesh> objectSpace) {
+                                 ObjectSpaceSource objectSpace) {
   PairBlock block;
   block.lazy_ = std::make_shared<LazyWorld>();
   block.lazy_->local = &local;
@@ -80,8 +81,7 @@ PairBlock PairBlock::posedLazily(const TriangleMesh& local, TriangleMesh& storag
     block.drawable_ = true;
   else
     block.drawable_ = allDrawable(block.mesh());
-  block.attach(local.vertices.size(), local.triangles.size(), std::move(hierarchy), localToWorld,
-               std::move(objectSpace));
+  block.attach(local.triangles.size(), std::move(hierarchy), localToWorld, std::move(objectSpace));
   return block;
 }
 
@@ -89,8 +89,7 @@ const TriangleMesh& PairBlock::mesh() const {
   if (mesh_ != nullptr)
     return *mesh_;
   LazyWorld& lazy = *lazy_;
-  std::call_once(lazy.made,
-                 [&lazy] { transformInto(*lazy.local, lazy.pose, *lazy.storage); });
+  std::call_once(lazy.made, [&lazy] { transformInto(*lazy.local, lazy.pose, *lazy.storage); });
   return *lazy.storage;
 }
 
@@ -98,7 +97,7 @@ PairBlock PairBlock::withHierarchy(const TriangleMesh& world) {
   PairBlock block(world);
   if (block.drawable_) {
     block.hierarchy_ = std::make_shared<const TriangleBvh>(world);
-    block.local_ = std::make_shared<const ObjectSpaceMesh>(world);
+    block.local_ = [local = std::make_shared<const ObjectSpaceMesh>(world)] { return local; };
   }
   return block;
 }

@@ -83,6 +83,13 @@ std::unique_ptr<raster::DepthStencilDevice> DevicePool::reuseOrMakeCpuDevice(int
   return device;
 }
 
+const raster::DepthStencilDevice* DevicePool::anyHeld() const {
+  for (const auto& [size, devices] : bySize_)
+    if (!devices.made.empty())
+      return devices.made.front().get();
+  return nullptr;
+}
+
 raster::DepthStencilDevice& DevicePool::at(int width, int height, int index) {
   return *bySize_.at({width, height}).made.at(static_cast<std::size_t>(index));
 }

@@ -39,6 +39,9 @@ class DevicePool {
   // What the devices held now have handed to hardware and back since they were made.
   [[nodiscard]] raster::TransferCounters transfers() const;
 
+  // Some device held now (the first of the smallest size), or null when none is.
+  [[nodiscard]] const raster::DepthStencilDevice* anyHeld() const;
+
   // Device `index` (below reserve's count) of this size.
   [[nodiscard]] raster::DepthStencilDevice& at(int width, int height, int index);
 

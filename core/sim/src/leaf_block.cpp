@@ -16,12 +16,13 @@ const HierarchyNode& leafNode(const ObjectTree& tree, int leaf) {
 PairBlock posedBlock(const ObjectTree& tree, int leaf, TriangleMesh& storage) {
   const HierarchyNode& node = leafNode(tree, leaf);
   const Aabb* current = tree.currentLeafBox(leaf);
-  const Aabb box = current != nullptr ? *current
-                                      : detail::posedVertexBox(node.localMesh.vertices,
-                                                               node.world.linear(),
-                                                               node.world.translation());
+  const Aabb box = current != nullptr
+                       ? *current
+                       : detail::posedVertexBox(node.localMesh.vertices, node.world.linear(),
+                                                node.world.translation());
   return PairBlock::posedLazily(node.localMesh, storage, tree.triangleHierarchy(leaf), node.world,
-                                box, node.localExtent, tree.objectSpaceMesh(leaf));
+                                box, node.localExtent,
+                                [&tree, leaf] { return tree.objectSpaceMesh(leaf); });
 }
 
 }  // namespace

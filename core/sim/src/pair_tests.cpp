@@ -205,6 +205,10 @@ std::vector<PairOutcome> PairTestRunner::run(const std::vector<PairTask>& tasks,
   return outcomes;
 }
 
+const raster::DepthStencilDevice* PairTestRunner::anyDevice() const {
+  return impl_->pool.anyHeld();
+}
+
 raster::TransferCounters PairTestRunner::transfers() const {
   return impl_->pool.transfers();
 }

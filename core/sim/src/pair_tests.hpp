@@ -74,6 +74,10 @@ class PairTestRunner {
 
   static constexpr long long kTestsPerExtraDevice = 32;
 
+  // One of the runner's devices held now, or null before any was made: what kind of device the
+  // factory makes.
+  [[nodiscard]] const raster::DepthStencilDevice* anyDevice() const;
+
   // What the runner's devices held now have handed to hardware and back since they were made.
   [[nodiscard]] raster::TransferCounters transfers() const;
 

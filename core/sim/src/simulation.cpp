@@ -299,9 +299,13 @@ FrameReport Simulation::runFrame(int frame) {
     object.setFrame(frame);
   const Clock::time_point posed = Clock::now();
 
-  if (!boxDeviceTried_) {
+  // Once the factory has made a device for a pair test, and it is one that reduces boxes where
+  // it keeps the blocks: a device of its own for the leaves' boxes from this frame on, with
+  // every leaf's mesh put on it now (counted as device set-up, as making devices is).
+  if (!boxDeviceTried_ && options_.deviceFactory && options_.leafBoxesOnDevice &&
+      pairTests_->anyDevice() != nullptr) {
     boxDeviceTried_ = true;
-    if (options_.deviceFactory && options_.leafBoxesOnDevice) {
+    if (dynamic_cast<const raster::PosedBoxReducer*>(pairTests_->anyDevice()) != nullptr) {
       const Clock::time_point t = Clock::now();
       boxDevice_ = options_.deviceFactory(8, 8);
       boxReducer_ = dynamic_cast<raster::PosedBoxReducer*>(boxDevice_.get());
@@ -338,8 +342,8 @@ FrameReport Simulation::runFrame(int frame) {
   std::vector<PairOutcome> outcomes = pairTests_->run(drawn, setup.usable);
   const raster::TransferCounters after = pairTests_->transfers();
   // The boxes' round is the frame's too.
-  report.submissions = after.submissions - before.submissions + boxesAfter.submissions -
-                       boxesBefore.submissions;
+  report.submissions =
+      after.submissions - before.submissions + boxesAfter.submissions - boxesBefore.submissions;
   report.readbackBytes = after.readbackBytes - before.readbackBytes + boxesAfter.readbackBytes -
                          boxesBefore.readbackBytes;
   report.deviceWaitUs = after.waitUs - before.waitUs + boxesAfter.waitUs - boxesBefore.waitUs;

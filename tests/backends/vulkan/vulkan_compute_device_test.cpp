@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "compute_device_test_support.hpp"
 #include "recode/backends/vulkan_compute_device.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/fixed_point.hpp"
@@ -28,6 +29,8 @@ using raster::Face;
 using raster::PixelRect;
 using raster::StencilOp;
 using raster::WindowVertex;
+using test::countingState;
+using test::expectSameBuffers;
 
 namespace {
 
@@ -47,22 +50,6 @@ Draw randomTriangles(std::mt19937& rng, int count, float x0, float y0, float x1,
     d.indices.push_back(static_cast<std::uint32_t>(t));
   }
   return d;
-}
-
-// The state under which every fragment's order shows: LEQUAL with depth writes, and a stencil
-// that counts front fragments that pass and inverts on back ones that fail.
-void countingState(raster::DepthStencilDevice& device) {
-  device.setDepthFunc(CompareFunc::LEqual);
-  device.setStencilFunc(CompareFunc::Always, 0, 0xFF);
-  device.setStencilOps(Face::Front, {StencilOp::Keep, StencilOp::Invert, StencilOp::IncrWrap});
-  device.setStencilOps(Face::Back, {StencilOp::Keep, StencilOp::Invert, StencilOp::DecrWrap});
-}
-
-void expectSameBuffers(const raster::DepthStencilDevice& device,
-                       const raster::CpuDevice& reference) {
-  const PixelRect all{0, 0, reference.width(), reference.height()};
-  CHECK(device.readDepth(all) == reference.readDepth(all));
-  CHECK(device.readStencil(all) == reference.readStencil(all));
 }
 
 // `d` drawn in countingState (under `scissor` when there is one) on the compute device and on the

@@ -16,6 +16,7 @@
 #include <random>
 #include <vector>
 
+#include "compute_device_test_support.hpp"
 #include "recode/backends/vulkan_compute_device.hpp"
 #include "recode/kit/vertex_stage_vectors.hpp"
 #include "recode/raster/cpu_device.hpp"
@@ -32,6 +33,8 @@ using raster::PixelRect;
 using raster::StencilOp;
 using raster::VertexTransform;
 using raster::WindowVertex;
+using test::countingState;
+using test::expectSameBuffers;
 
 namespace {
 
@@ -116,20 +119,6 @@ raster::WindowMapping viewAlong(int axis, int width, int height) {
   return m;
 }
 
-void countingState(raster::DepthStencilDevice& device) {
-  device.setDepthFunc(CompareFunc::LEqual);
-  device.setStencilFunc(CompareFunc::Always, 0, 0xFF);
-  device.setStencilOps(Face::Front, {StencilOp::Keep, StencilOp::Invert, StencilOp::IncrWrap});
-  device.setStencilOps(Face::Back, {StencilOp::Keep, StencilOp::Invert, StencilOp::DecrWrap});
-}
-
-void expectSameBuffers(const raster::DepthStencilDevice& device,
-                       const raster::CpuDevice& reference) {
-  const PixelRect all{0, 0, reference.width(), reference.height()};
-  CHECK(device.readDepth(all) == reference.readDepth(all));
-  CHECK(device.readStencil(all) == reference.readStencil(all));
-}
-
 std::uint32_t bitsOf(float f) {
   std::uint32_t b = 0;
   std::memcpy(&b, &f, sizeof b);
@@ -158,12 +147,12 @@ TEST_CASE("a posed draw writes what the window vertices of the reference's verte
     const std::shared_ptr<LocalMesh> meshes[2] = {randomMesh(rng, 60), randomMesh(rng, 25)};
     for (int round = 0; round < 3; ++round) {
       const PixelRect scissor = round == 1 ? PixelRect{5, 3, 71, 77} : PixelRect{0, 0, 96, 80};
-      const raster::CullMode cull =
-          round == 2 ? raster::CullMode::Back : raster::CullMode::None;
+      const raster::CullMode cull = round == 2 ? raster::CullMode::Back : raster::CullMode::None;
       for (const auto& mesh : meshes) {
         const PosedSource source(mesh, {randomPose(rng), viewAlong(axis, kWidth, kHeight)});
-        for (raster::DepthStencilDevice* d : {static_cast<raster::DepthStencilDevice*>(&device),
-                                              static_cast<raster::DepthStencilDevice*>(&reference)}) {
+        for (raster::DepthStencilDevice* d :
+             {static_cast<raster::DepthStencilDevice*>(&device),
+              static_cast<raster::DepthStencilDevice*>(&reference)}) {
           d->setScissor(scissor);
           d->setCullMode(cull);
           d->drawMesh(source);
@@ -177,9 +166,10 @@ TEST_CASE("a posed draw writes what the window vertices of the reference's verte
   CHECK(counters.uploads == 6);  // each mesh once, whatever its poses
 }
 
-TEST_CASE("the device's vertex stage rounds as the reference's: snap ties, signed zeros, float "
-          "ties and denormal depths",
-          "[vulkan-compute]") {
+TEST_CASE(
+    "the device's vertex stage rounds as the reference's: snap ties, signed zeros, float "
+    "ties and denormal depths",
+    "[vulkan-compute]") {
   // A window of 256 world units onto 256 pixels: x = u exactly, so
   // coordinates k/256 + 1/512 sit halfway between two snapped positions. Depth z = -d exactly
   // (depthMax 0, range 1): halfway between two floats, or below the smallest normal float.

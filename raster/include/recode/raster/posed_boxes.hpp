@@ -32,7 +32,8 @@ class PosedBoxReducer {
   // The box of each mesh at its transform's pose (the window mapping is not used), in order,
   // delivered by the device's finish(). The meshes are kept as posed draws keep them (their
   // meshKey and alive), so a block whose box was reduced is drawn without another upload.
-  [[nodiscard]] virtual PendingRead<PosedBox> posedBoxesLater(std::span<const PosedMesh> meshes) = 0;
+  [[nodiscard]] virtual PendingRead<PosedBox> posedBoxesLater(
+      std::span<const PosedMesh> meshes) = 0;
 };
 
 }  // namespace recode::raster

@@ -21,8 +21,7 @@
 
 namespace recode::backends {
 
-class VulkanComputeDevice final : public raster::RenderStateDevice,
-                                  public raster::PosedBoxReducer {
+class VulkanComputeDevice final : public raster::RenderStateDevice, public raster::PosedBoxReducer {
  public:
   // A width x height framebuffer (depth 2^24 - 1, stencil 0, the interface's default state).
   // Throws std::invalid_argument unless 1 <= width, height <= 16384, and std::runtime_error

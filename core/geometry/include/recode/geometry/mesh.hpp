@@ -91,10 +91,12 @@ struct TriangleMesh {
 // x86-64 build every golden result was made with). A SIMD loop can repeat it lane for lane
 // (core/sim's posed vertex box). Code that calls it gets those bits only when it is built without
 // contraction, as everything linking recode_raster is.
-[[nodiscard]] inline Eigen::Vector3d posedPoint(const raster::Pose& pose, const Eigen::Vector3d& v) {
+[[nodiscard]] inline Eigen::Vector3d posedPoint(const raster::Pose& pose,
+                                                const Eigen::Vector3d& v) {
   const std::array<double, 3> w = raster::poseVertex(pose, {v.x(), v.y(), v.z()});
   return {w[0], w[1], w[2]};
 }
+// posedPoint with the pose as Eigen's linear part and translation.
 [[nodiscard]] inline Eigen::Vector3d posedPoint(const Eigen::Matrix3d& linear,
                                                 const Eigen::Vector3d& translation,
                                                 const Eigen::Vector3d& v) {

@@ -7,6 +7,7 @@
 // block without one (docs/architecture.md, "The device seam").
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -26,6 +27,11 @@ struct ObjectSpaceMesh {
   std::vector<std::uint32_t> indices;  // three a triangle, in the mesh's order
   std::uint64_t key;                   // raster::newTriangleSourceKey()
 };
+
+// Makes (or finds) a block's object-space mesh when a device first asks for it, so that a run
+// on a device that never does (the CPU device) does not copy its meshes
+// (ObjectTree::objectSpaceMesh is one: made once, then shared).
+using ObjectSpaceSource = std::function<std::shared_ptr<const ObjectSpaceMesh>()>;
 
 class PairBlock {
  public:
@@ -56,12 +62,13 @@ class PairBlock {
   // be the box of those vertices bit for bit (ObjectTree's leaf box at this pose, or
   // posedVertexBox) and `localExtent` drawableExtent(local). Drawable when local is and no
   // coordinate can overflow (else the world mesh is made now and checked). `local` and
-  // `storage` must outlive the block; the hierarchy and `objectSpace` are as the constructor's.
+  // `storage` must outlive the block; the hierarchy is as the constructor's, and `objectSpace`
+  // gives the constructor's `local` when asked (its counts are the caller's promise).
   [[nodiscard]] static PairBlock posedLazily(const TriangleMesh& local, TriangleMesh& storage,
                                              std::shared_ptr<const TriangleBvh> hierarchy,
                                              const Eigen::Isometry3d& localToWorld,
                                              const Aabb& worldBox, double localExtent,
-                                             std::shared_ptr<const ObjectSpaceMesh> objectSpace);
+                                             ObjectSpaceSource objectSpace);
 
   // The world mesh (made now when the block was made posedLazily and nobody asked yet).
   [[nodiscard]] const TriangleMesh& mesh() const;
@@ -71,18 +78,17 @@ class PairBlock {
   [[nodiscard]] bool drawable() const { return drawable_; }
   [[nodiscard]] const TriangleBvh* hierarchy() const { return hierarchy_.get(); }
   [[nodiscard]] const Eigen::Isometry3d& localToWorld() const { return localToWorld_; }
-  // The mesh in its own coordinates, or null.
-  [[nodiscard]] const std::shared_ptr<const ObjectSpaceMesh>& objectSpaceMesh() const {
-    return local_;
+  // The mesh in its own coordinates (made now when its source has not made it yet), or null.
+  [[nodiscard]] std::shared_ptr<const ObjectSpaceMesh> objectSpaceMesh() const {
+    return local_ ? local_() : nullptr;
   }
 
  private:
   PairBlock() = default;
-  // Sets the hierarchy, the pose and the object-space mesh of a drawable block after checking
-  // their counts against `triangles` and `vertices`.
-  void attach(std::size_t vertices, std::size_t triangles,
-              std::shared_ptr<const TriangleBvh> hierarchy, const Eigen::Isometry3d& localToWorld,
-              std::shared_ptr<const ObjectSpaceMesh> local);
+  // Sets the hierarchy, the pose and the object-space mesh's source of a drawable block after
+  // checking the hierarchy's count against `triangles`.
+  void attach(std::size_t triangles, std::shared_ptr<const TriangleBvh> hierarchy,
+              const Eigen::Isometry3d& localToWorld, ObjectSpaceSource local);
 
   // A posedLazily block's world mesh, made on first use.
   struct LazyWorld {
@@ -98,7 +104,7 @@ class PairBlock {
   bool drawable_ = false;
   std::shared_ptr<const TriangleBvh> hierarchy_;
   Eigen::Isometry3d localToWorld_ = Eigen::Isometry3d::Identity();
-  std::shared_ptr<const ObjectSpaceMesh> local_;
+  ObjectSpaceSource local_;  // empty: none
 };
 
 }  // namespace recode::core

@@ -3,8 +3,8 @@
 // world box, with the triangle hierarchy of its own mesh, its pose and its object-space mesh,
 // so that a pair test draws only the triangles near its MOR, or a device draws the posed mesh
 // it keeps. The world mesh is made only when something asks for it (PairBlock::posedLazily).
-// The results are those of the bare world mesh, bit for bit. Used by core::Simulation (which keeps a leaf's block from frame to frame while the leaf
-// is drawn) and by recode::collide.
+// The results are those of the bare world mesh, bit for bit. Used by core::Simulation (which keeps
+// a leaf's block from frame to frame while the leaf is drawn) and by recode::collide.
 
 #include <Eigen/Geometry>
 

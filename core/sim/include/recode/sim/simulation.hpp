@@ -107,9 +107,10 @@ struct RunOptions {
   // (docs/benchmarks.md, "GPU devices on lavapipe").
   bool deviceSummaries = false;
   // When the factory's devices keep blocks for posed draws and reduce boxes
-  // (raster::PosedBoxReducer, vulkan-compute): the stale leaves' world boxes are reduced on such
-  // a device each frame (one submission more), so the host maps no vertex; off, the host makes
-  // them (ObjectTree::updateAabbs). The same bits, so the same reports.
+  // (raster::PosedBoxReducer, vulkan-compute): from the frame after the first pair test, the
+  // stale leaves' world boxes are reduced on such a device (one submission more a frame), so the
+  // host maps no vertex; off, the host makes them (ObjectTree::updateAabbs). The same bits, so
+  // the same reports.
   bool leafBoxesOnDevice = true;
 };
 
@@ -200,8 +201,9 @@ class Simulation {
   std::unique_ptr<PairTestRunner> pairTests_;    // its devices and threads
   std::unique_ptr<FrameLeafBlocks> leafBlocks_;  // the drawn leaves, kept from frame to frame
   // A device of options_.deviceFactory that reduces the leaves' world boxes where it keeps the
-  // blocks (raster::PosedBoxReducer), made at the first frame; null when there is no factory
-  // or its devices cannot, and then the host makes the boxes.
+  // blocks (raster::PosedBoxReducer), made at the first frame after the factory made a device
+  // for a pair test of that kind; null before, and when there is no factory or its devices
+  // cannot: then the host makes the boxes.
   std::unique_ptr<raster::DepthStencilDevice> boxDevice_;
   raster::PosedBoxReducer* boxReducer_ = nullptr;
   bool boxDeviceTried_ = false;
