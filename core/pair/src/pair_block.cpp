@@ -34,12 +34,11 @@ PairBlock::PairBlock(const TriangleMesh& world, std::shared_ptr<const TriangleBv
     : PairBlock(world) {
   if (local && (local->xyz.size() != 3 * world.vertices.size() ||
                 local->indices.size() != 3 * world.triangles.size()))
-    throw std::invalid_argument("PairBlock: the object-space mesh has " +
-                                std::to_string(local->xyz.size() / 3) + " vertices and " +
-                                std::to_string(local->indices.size() / 3) +
-                                " triangles but the mesh has " +
-                                std::to_string(world.vertices.size()) + " and " +
-                                std::to_string(world.triangles.size()));
+    throw std::invalid_argument(
+        "PairBlock: the object-space mesh has " + std::to_string(local->xyz.size() / 3) +
+        " vertices and " + std::to_string(local->indices.size() / 3) +
+        " triangles but the mesh has " + std::to_string(world.vertices.size()) + " and " +
+        std::to_string(world.triangles.size()));
   ObjectSpaceSource source;
   if (local)
     source = [local] { return local; };
@@ -64,8 +63,7 @@ void PairBlock::attach(std::size_t triangles, std::shared_ptr<const TriangleBvh>
 PairBlock PairBlock::posedLazily(const TriangleMesh& local, TriangleMesh& storage,
                                  std::shared_ptr<const TriangleBvh> hierarchy,
                                  const Eigen::Isometry3d& localToWorld, const Aabb& worldBox,
-                                 double localExtent,
-                                 ObjectSpaceSource objectSpace) {
+                                 double localExtent, ObjectSpaceSource objectSpace) {
   PairBlock block;
   block.lazy_ = std::make_shared<LazyWorld>();
   block.lazy_->local = &local;
