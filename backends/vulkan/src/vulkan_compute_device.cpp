@@ -13,6 +13,7 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 #include "recode/backends/summary_layout.hpp"
@@ -85,6 +86,13 @@ TileDrawConstants stateConstants(const raster::RenderState& s, int width, int he
   return c;
 }
 
+// A pose as tile_vertex.comp and tile_box.comp read it: 12 doubles, the linear part row by row,
+// then the translation.
+void packPose(const raster::Pose& pose, double* out) {
+  std::copy(pose.linear.begin(), pose.linear.end(), out);
+  std::copy(pose.translation.begin(), pose.translation.end(), out + 9);
+}
+
 }  // namespace
 
 struct VulkanComputeDevice::Impl {
@@ -120,7 +128,6 @@ struct VulkanComputeDevice::Impl {
   // the object-space vertices from 0, the indices from indexOffset, the window vertices of the
   // last pose and view from windowOffset, and that draw's transform from transformOffset.
   struct Resident {
-    std::uint64_t key = 0;
     std::weak_ptr<const void> alive;
     std::uint32_t vertices = 0;
     std::uint32_t triangles = 0;
@@ -132,7 +139,8 @@ struct VulkanComputeDevice::Impl {
     std::uint64_t windowsOf = 0;
     detail::DeviceBuffer buffer;
   };
-  std::vector<Resident> residents;
+  // By meshKey (an entry stays where it is while others come and go).
+  std::unordered_map<std::uint64_t, Resident> residents;
   std::uint64_t clock = 0;
   MeshCounters meshCounters;
   long long posedDraws = 0;
@@ -208,25 +216,23 @@ struct VulkanComputeDevice::Impl {
 
   // Lets go of the meshes whose blocks are gone, once no recording that may use them is open.
   void releaseExpired() {
-    std::erase_if(residents, [&](Resident& r) {
-      if (!r.alive.expired())
+    std::erase_if(residents, [&](const std::pair<const std::uint64_t, Resident>& entry) {
+      if (!entry.second.alive.expired())
         return false;
-      retired.emplace_back(r.buffer, recorder->recordingsRun());
+      retired.emplace_back(entry.second.buffer, recorder->recordingsRun());
       return true;
     });
   }
 
   // The resident copy of `posed`'s mesh, uploaded now when the device has none.
   Resident& resident(const raster::PosedMesh& posed) {
-    for (Resident& r : residents)
-      if (r.key == posed.meshKey)
-        return r;
+    if (const auto found = residents.find(posed.meshKey); found != residents.end())
+      return found->second;
     if (posed.localXyz.size() % 3 != 0)
       throw std::invalid_argument("drawMesh: a posed mesh's coordinates are not three a vertex (" +
                                   std::to_string(posed.localXyz.size()) + " doubles)");
     raster::checkIndices(posed.localXyz.size() / 3, posed.indices);
     Resident r;
-    r.key = posed.meshKey;
     r.alive = posed.alive;
     r.vertices = static_cast<std::uint32_t>(posed.localXyz.size() / 3);
     r.triangles = static_cast<std::uint32_t>(posed.indices.size() / 3);
@@ -257,8 +263,7 @@ struct VulkanComputeDevice::Impl {
         vkCmdCopyBuffer(cmd, indices.buffer, r.buffer.buffer, 1, &indexCopy);
       }
     });
-    residents.push_back(std::move(r));
-    return residents.back();
+    return residents.emplace(posed.meshKey, std::move(r)).first->second;
   }
 
   // Records the vertex stage of `posed` into its resident mesh's window vertices, unless they
@@ -269,8 +274,7 @@ struct VulkanComputeDevice::Impl {
     r.windowsOf = 0;
     const raster::VertexTransform& t = posed.transform;
     std::array<double, detail::kTileTransformDoubles> words{};
-    std::copy(t.pose.linear.begin(), t.pose.linear.end(), words.begin());
-    std::copy(t.pose.translation.begin(), t.pose.translation.end(), words.begin() + 9);
+    packPose(t.pose, words.data());
     const raster::WindowMapping& m = t.window;
     const std::array<double, 8> mapping{m.umin,   m.urange, m.width,    m.vmin,
                                         m.vrange, m.height, m.depthMax, m.depthRange};
@@ -307,14 +311,12 @@ struct VulkanComputeDevice::Impl {
   void recordBoxes(std::span<const raster::PosedMesh> blocks,
                    raster::PendingRead<raster::PosedBox> read) {
     releaseExpired();
-    for (const raster::PosedMesh& m : blocks)
-      (void)resident(m);  // may add entries: their addresses are taken below
     const std::size_t n = blocks.size();
+    std::vector<const Resident*> kept;
     std::vector<double> poses(12 * n);
     for (std::size_t i = 0; i < n; ++i) {
-      const raster::Pose& pose = blocks[i].transform.pose;
-      std::copy(pose.linear.begin(), pose.linear.end(), poses.begin() + 12 * i);
-      std::copy(pose.translation.begin(), pose.translation.end(), poses.begin() + 12 * i + 9);
+      kept.push_back(&resident(blocks[i]));
+      packPose(blocks[i].transform.pose, poses.data() + 12 * i);
     }
     const VkDeviceSize poseBytes = poses.size() * sizeof(double);
     const VkDeviceSize boxesOffset = aligned(poseBytes);
@@ -343,9 +345,7 @@ struct VulkanComputeDevice::Impl {
       vkCmdCopyBuffer(cmd, staged.buffer, boxWork.buffer, 1, &copy);
       detail::computeBarrier(cmd);
       for (std::size_t i = 0; i < n; ++i) {
-        const Resident& r =
-            *std::find_if(residents.begin(), residents.end(),
-                          [&](const Resident& e) { return e.key == blocks[i].meshKey; });
+        const Resident& r = *kept[i];
         TileDrawConstants c;
         c.triangleCount = r.vertices;
         c.outWord = static_cast<std::uint32_t>(i);
@@ -563,7 +563,7 @@ struct VulkanComputeDevice::Impl {
       context->destroyDeviceBuffer(buffer);
     for (Mesh& mesh : meshes)
       context->destroyDeviceBuffer(mesh.buffer);
-    for (Resident& r : residents)
+    for (auto& [key, r] : residents)
       context->destroyDeviceBuffer(r.buffer);
     context->destroyDeviceBuffer(work);
     context->destroyDeviceBuffer(boxWork);

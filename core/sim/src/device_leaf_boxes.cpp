@@ -7,10 +7,8 @@
 
 namespace recode::core::detail {
 
-DeviceLeafBoxesCount reduceLeafBoxes(std::vector<ObjectTree>& objects,
-                                     const std::vector<std::size_t>& which,
-                                     raster::DepthStencilDevice& device,
-                                     raster::PosedBoxReducer& reducer) {
+void reduceLeafBoxes(std::vector<ObjectTree>& objects, const std::vector<std::size_t>& which,
+                     raster::DepthStencilDevice& device, raster::PosedBoxReducer& reducer) {
   struct Leaf {
     std::size_t object;
     int node;
@@ -31,9 +29,8 @@ DeviceLeafBoxesCount reduceLeafBoxes(std::vector<ObjectTree>& objects,
       leaves.push_back({o, leaf, std::move(mesh)});
     }
   }
-  DeviceLeafBoxesCount count;
   if (leaves.empty())
-    return count;
+    return;
   raster::PendingRead<raster::PosedBox> read = reducer.posedBoxesLater(meshes);
   device.finish();
   const std::vector<raster::PosedBox> boxes = read.take();
@@ -44,15 +41,12 @@ DeviceLeafBoxesCount reduceLeafBoxes(std::vector<ObjectTree>& objects,
     if (boxes[i].orderMatters) {
       box = posedVertexBoxScalar(node.localMesh.vertices, node.world.linear(),
                                  node.world.translation());
-      ++count.redone;
     } else {
       box.min = {boxes[i].min[0], boxes[i].min[1], boxes[i].min[2]};
       box.max = {boxes[i].max[0], boxes[i].max[1], boxes[i].max[2]};
     }
     tree.setLeafBox(leaves[i].node, box);
-    ++count.reduced;
   }
-  return count;
 }
 
 void keepLeafMeshes(const std::vector<ObjectTree>& objects, raster::DepthStencilDevice& device,

@@ -14,17 +14,10 @@
 
 namespace recode::core::detail {
 
-struct DeviceLeafBoxesCount {
-  long long reduced = 0;  // boxes the device made
-  long long redone = 0;   // of those, boxes made again on the host (a zero extreme or a NaN)
-};
-
 // Sets the box of every stale leaf of objects[i] for each i in `which` (ObjectTree::
 // setLeafBox), reducing them on `device` (which is `reducer`) and running it once (finish()).
-DeviceLeafBoxesCount reduceLeafBoxes(std::vector<ObjectTree>& objects,
-                                     const std::vector<std::size_t>& which,
-                                     raster::DepthStencilDevice& device,
-                                     raster::PosedBoxReducer& reducer);
+void reduceLeafBoxes(std::vector<ObjectTree>& objects, const std::vector<std::size_t>& which,
+                     raster::DepthStencilDevice& device, raster::PosedBoxReducer& reducer);
 
 // Puts every leaf's mesh on `device` now (the boxes of the current poses, thrown away), so that
 // no frame pays for an upload, as the hierarchies are built before the first frame.

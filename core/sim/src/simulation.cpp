@@ -321,7 +321,7 @@ FrameReport Simulation::runFrame(int frame) {
   std::function<void(const std::vector<std::size_t>&)> leafBoxesFirst;
   if (boxReducer_ != nullptr)
     leafBoxesFirst = [this](const std::vector<std::size_t>& which) {
-      (void)detail::reduceLeafBoxes(objects_, which, *boxDevice_, *boxReducer_);
+      detail::reduceLeafBoxes(objects_, which, *boxDevice_, *boxReducer_);
     };
   const std::vector<std::pair<int, int>> candidates =
       overlappingObjects(objects_, broadPhase_, *pairTests_, leafBoxesFirst);
