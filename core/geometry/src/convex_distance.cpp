@@ -239,7 +239,8 @@ class PosedSet {
       : local_(points.local),
         linear_(points.pose.linear()),
         transposed_(linear_.transpose()),
-        translation_(points.pose.translation()) {}
+        translation_(points.pose.translation()),
+        pose_(rasterPose(linear_, translation_)) {}
   [[nodiscard]] std::size_t size() const { return local_.size(); }
   [[nodiscard]] Eigen::Vector3d first() const { return world(local_[0]); }
   [[nodiscard]] Eigen::Vector3d furthest(const Eigen::Vector3d& d, std::size_t stride) const {
@@ -259,11 +260,12 @@ class PosedSet {
 
  private:
   [[nodiscard]] Eigen::Vector3d world(const Eigen::Vector3d& p) const {
-    return posedPoint(linear_, translation_, p);
+    return posedPoint(pose_, p);
   }
   std::span<const Eigen::Vector3d> local_;
   Eigen::Matrix3d linear_, transposed_;
   Eigen::Vector3d translation_;
+  raster::Pose pose_;  // linear_ and translation_ as posedPoint takes them, made once
 };
 
 // The width of the empty slab across unit direction n between conv(a) grown by the box

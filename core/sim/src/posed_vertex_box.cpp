@@ -26,9 +26,9 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // Over the first count - count % lanes vertices (xyz interleaved): the smallest and largest
 // world coordinate per axis, and whether any was NaN. Returns how many vertices it covered.
-// m: the linear part row by row, then the translation.
-std::size_t PosedVertexBoxLanes(const double* xyz, std::size_t count, const double* m, double* lo,
-                                double* hi, bool* sawNaN) {
+// linear: row by row (raster::Pose's layout); translation: three.
+std::size_t PosedVertexBoxLanes(const double* xyz, std::size_t count, const double* linear,
+                                const double* translation, double* lo, double* hi, bool* sawNaN) {
   const hn::ScalableTag<double> d;
   const std::size_t lanes = hn::Lanes(d);
   using V = hn::Vec<decltype(d)>;
@@ -45,11 +45,11 @@ std::size_t PosedVertexBoxLanes(const double* xyz, std::size_t count, const doub
     for (std::size_t k = 0; k < 3; ++k) {
       // posedPoint's order: the x and y rows ((l0 x + l1 y) + l2 z) + t, the z row
       // (l0 x + (l1 y + l2 z)) + t.
-      const V c0 = hn::Mul(hn::Set(d, m[3 * k]), x);
-      const V c1 = hn::Mul(hn::Set(d, m[3 * k + 1]), y);
-      const V c2 = hn::Mul(hn::Set(d, m[3 * k + 2]), z);
+      const V c0 = hn::Mul(hn::Set(d, linear[3 * k]), x);
+      const V c1 = hn::Mul(hn::Set(d, linear[3 * k + 1]), y);
+      const V c2 = hn::Mul(hn::Set(d, linear[3 * k + 2]), z);
       const V sum = k < 2 ? hn::Add(hn::Add(c0, c1), c2) : hn::Add(c0, hn::Add(c1, c2));
-      const V w = hn::Add(sum, hn::Set(d, m[9 + k]));
+      const V w = hn::Add(sum, hn::Set(d, translation[k]));
       min[k] = hn::Min(min[k], w);
       max[k] = hn::Max(max[k], w);
       nan = hn::Or(nan, hn::VecFromMask(d, hn::IsNaN(w)));
@@ -100,16 +100,12 @@ Aabb posedVertexBox(std::span<const Eigen::Vector3d> local, const Eigen::Matrix3
   if (local.empty())
     return Aabb{};  // (and no vertex to take the address of)
   static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "vertices must be packed xyz");
-  std::array<double, 12> m{};
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c)
-      m[static_cast<std::size_t>(3 * r + c)] = linear(r, c);
-    m[static_cast<std::size_t>(9 + r)] = translation(r);
-  }
+  const raster::Pose pose = rasterPose(linear, translation);
   Aabb box;
   bool sawNaN = false;
   const std::size_t done = HWY_DYNAMIC_DISPATCH(PosedVertexBoxLanes)(
-      local.data()->data(), local.size(), m.data(), box.min.data(), box.max.data(), &sawNaN);
+      local.data()->data(), local.size(), pose.linear.data(), pose.translation.data(),
+      box.min.data(), box.max.data(), &sawNaN);
   box.extend(posedVertexBoxScalar(local.subspan(done), linear, translation));
   bool redo = sawNaN;
   for (int k = 0; k < 3; ++k)
