@@ -11,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "cli/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 
 extern char** environ;
 

@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli/timing_fields.hpp"
+#include "output/timing_fields.hpp"
 
 namespace recode::app {
 

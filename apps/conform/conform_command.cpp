@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
 #include "cli/device_option.hpp"
+#include "output/atomic_file.hpp"
 #include "recode/conformance/process_backend.hpp"
 #include "recode/conformance/reduce.hpp"
 #include "recode/conformance/report.hpp"

@@ -1,4 +1,5 @@
-// `recode explain`: its command-line options, and the run that ties recorder, pictures and page.
+// `recode explain`: its command-line options; the pages are written by the explain library
+// (explain/).
 #include "explain/explain_command.hpp"
 
 #include <cstdint>
@@ -8,26 +9,21 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
-#include "explain/explain_format.hpp"
 #include "explain/explain_gallery.hpp"
 #include "explain/explain_hierarchy.hpp"
-#include "explain/explain_page.hpp"
-#include "explain/explain_pictures.hpp"
-#include "explain/explain_rays.hpp"
 #include "explain/explain_recorder.hpp"
-#include "explain/explain_sections.hpp"
-#include "explain/explain_text.hpp"
 #include "explain/interactive_page.hpp"
+#include "explain/static_page.hpp"
+#include "explain/wasm_module_asset.hpp"
+#include "output/atomic_file.hpp"
 #include "pair/pair_setup.hpp"
+#include "recode/io/printable.hpp"
 #include "recode/pair/frame.hpp"
 #include "recode/pair/pair.hpp"
-#include "recode/raster/cpu_device.hpp"
-
-#include "recode/io/printable.hpp"
 
 namespace recode::app {
 
@@ -47,52 +43,24 @@ struct ExplainOptions {
   int frame = 0;             // --frame K, with --pair
 };
 
-}  // namespace
-
-ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morName, bool boxTest,
-                               const fs::path& dir, const std::string& descentHtml) {
-  const core::FrameSpec& f = setup.frame;
-  if (f.width > kMaxExplainSide || f.height > kMaxExplainSide)
-    throw std::invalid_argument("the frame is " + std::to_string(f.width) + "x" +
-                                std::to_string(f.height) + "; recode explain draws at most " +
-                                std::to_string(kMaxExplainSide) +
-                                " pixels a side (use --resolution)");
-  // Run the pair, keeping the buffers after every step.
-  core::PairRequest request;
-  request.frame = f;
-  request.mor = core::parseMorMode(morName).value();  // CLI11 checked the name
-  request.contact = true;
-  request.boxTest = boxTest;
-  raster::CpuDevice device(f.width, f.height);
-  explain::StepRecorder recorder;
-  ExplainSummary summary;
-  summary.result = core::collidePair(device, setup.a, setup.b, request, &recorder);
-  const core::PairResult& result = summary.result;
-  explain::ExplainedRun run = explain::explainRun(setup, result, recorder.snapshots(), request.mor,
-                                                  boxTest, dir, nullptr, descentHtml);
-  const std::vector<explain::Section>& sections = run.sections;
-  const nlohmann::json rayData = explain::rayDataJson(std::move(run.rays));
-
-  const explain::Page page{setup, morName, result, run.scale, run.view, sections, rayData};
-  explain::writeIndexHtml(dir, page);
-  explain::writeExplainJson(dir, page);
-  for (const explain::Section& s : sections)
-    for (const explain::Picture& p : s.pictures) {
-      ++summary.pictures;
-      if (p.kind == "cases" || (p.kind == "silhouettes" && summary.thumbnail.empty()))
-        summary.thumbnail = p.file;
-    }
-  return summary;
+// The WebAssembly module the interactive page runs, embedded at build time; a build without
+// emscripten has none and says what to install.
+std::string_view interactiveModule() {
+#if RECODE_HAVE_WASM_MODULE
+  return kRecodeWasmJs;
+#else
+  throw std::runtime_error(
+      "this build has no WebAssembly module for the interactive page: install emscripten "
+      "(apt-get install emscripten, or scripts/setup.sh) and rebuild (RECODE_WITH_WASM)");
+#endif
 }
-
-namespace {
 
 int runExplain(const ExplainOptions& options) {
   if (options.interactive) {
     const fs::path dir(options.out);
     // Removed again if the page cannot be written (a build without the module included).
     CreatedDirectory created(dir, "--out " + options.out);
-    explain::writeInteractivePage(dir);
+    explain::writeInteractivePage(dir, interactiveModule());
     created.keep();
     std::cout << "recode explain --interactive: wrote " << (dir / "index.html").string()
               << " (open it in a browser; it runs the reference in WebAssembly)\n";
@@ -129,8 +97,8 @@ int runExplain(const ExplainOptions& options) {
   // Removed again, with what was written into it, if anything below fails.
   const fs::path dir(options.out);
   CreatedDirectory created(dir, "--out " + options.out);
-  const ExplainSummary summary =
-      explainPairInto(setup, options.mor, options.boxTest, dir, chosen.descentHtml);
+  const explain::ExplainSummary summary =
+      explain::explainPairInto(setup, options.mor, options.boxTest, dir, chosen.descentHtml);
   const core::PairResult& result = summary.result;
   created.keep();
   const std::size_t written = summary.pictures;
@@ -165,7 +133,7 @@ void addExplainCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str();
   cmd->add_option("--resolution", opts->resolution,
                   "W or WxH pixels (W alone: square pixels); overrides the scene; at most " +
-                      std::to_string(kMaxExplainSide) + " a side");
+                      std::to_string(explain::kMaxExplainSide) + " a side");
   cmd->add_flag("!--no-box-test", opts->boxTest,
                 "run the passes even when the blocks' boxes are apart (shows cases 1, 2, 7, 8)");
   CLI::Option* pair = cmd->add_option(

@@ -7,8 +7,8 @@
 #include "cli/device_option.hpp"
 #include "cli/frame_options.hpp"
 #include "cli/no_timing.hpp"
-#include "cli/pgm.hpp"
 #include "cli/view_axis_option.hpp"
+#include "output/pgm.hpp"
 #include "pair/pair_run.hpp"
 
 namespace recode::app {

@@ -6,8 +6,8 @@
 #include <span>
 #include <stdexcept>
 
-#include "cli/atomic_file.hpp"
-#include "cli/pgm.hpp"
+#include "output/atomic_file.hpp"
+#include "output/pgm.hpp"
 #include "recode/kit/buffer_diff.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/raster/golden.hpp"

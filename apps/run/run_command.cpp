@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "cli/atomic_file.hpp"
 #include "cli/device_option.hpp"
 #include "cli/frame_options.hpp"
 #include "cli/no_timing.hpp"
@@ -15,6 +14,7 @@
 #include "cli/streamed_json.hpp"
 #include "cli/threads_option.hpp"
 #include "cli/view_axis_option.hpp"
+#include "output/atomic_file.hpp"
 #include "recode/scene/experiment_scenes.hpp"
 #include "recode/scene/scene.hpp"
 #include "recode/sim/run_statistics.hpp"

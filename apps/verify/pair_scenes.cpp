@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "cli/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 #include "recode/io/double_text.hpp"
 #include "recode/pair/view.hpp"
 

@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
-#include "cli/pgm.hpp"
 #include "golden_check.hpp"
 #include "gpu_commands.hpp"
 #include "live_page.hpp"
+#include "output/pgm.hpp"
 #include "pair_request.hpp"
 #include "recode/raster/cpu_device.hpp"
 

@@ -4,17 +4,16 @@
 #include <string>
 #include <string_view>
 
-#include "cli/atomic_file.hpp"
 #include "explain/explain_inspector.hpp"
 #include "explain/page_assets.hpp"
+#include "output/atomic_file.hpp"
 
 namespace recode::app::explain {
 
 namespace {
 
-// A script's text inside <script>...</script>: it must not close the element itself. Unused in a
-// build without the WebAssembly module (the page is then not written).
-[[maybe_unused]] std::string_view scriptText(std::string_view text, const char* what) {
+// A script's text inside <script>...</script>: it must not close the element itself.
+std::string_view scriptText(std::string_view text, const char* what) {
   if (text.find("</script") != std::string_view::npos)
     throw std::runtime_error(std::string(what) + " contains \"</script\" and cannot be inlined");
   return text;
@@ -42,8 +41,7 @@ constexpr const char* kSummary =
 
 }  // namespace
 
-void writeInteractivePage(const std::filesystem::path& dir) {
-#if RECODE_HAVE_WASM_MODULE
+void writeInteractivePage(const std::filesystem::path& dir, std::string_view wasmModuleJs) {
   std::string h =
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
       "<title>RECODE, live</title><link rel=\"icon\" href=\"data:,\"><style>\n";
@@ -59,17 +57,11 @@ void writeInteractivePage(const std::filesystem::path& dir) {
   h += "<script>";
   h += scriptText(kInspectorJs, "page/inspector.js");
   h += "</script>\n<script>";
-  h += scriptText(kRecodeWasmJs, "the WebAssembly module");
+  h += scriptText(wasmModuleJs, "the WebAssembly module");
   h += "</script>\n<script>";
   h += scriptText(kInteractiveJs, "page/interactive.js");
   h += "</script>\n</body></html>\n";
   writeFileAtomically(dir / "index.html", h);
-#else
-  (void)dir;
-  throw std::runtime_error(
-      "this build has no WebAssembly module for the interactive page: install emscripten "
-      "(apt-get install emscripten, or scripts/setup.sh) and rebuild (RECODE_WITH_WASM)");
-#endif
 }
 
 }  // namespace recode::app::explain

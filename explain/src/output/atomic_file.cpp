@@ -1,5 +1,5 @@
 // AtomicFile: mkstemp beside the target, checked writes, checked close, rename.
-#include "cli/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -1,6 +1,6 @@
 #pragma once
-// The explain pages' style sheets and scripts, written as files in apps/explain/page/ and
-// embedded into the program at build time (cmake/embed_text.cmake), so the pages need no file
+// The explain pages' style sheets and scripts, written as files in explain/page/ and embedded
+// into the library at build time (cmake/embed_text_files.cmake), so the pages need no file
 // beside the program and the files stay readable, lintable CSS and JavaScript.
 
 namespace recode::app::explain {
@@ -10,9 +10,5 @@ extern const char* const kInspectorCss;    // page/inspector.css: the ray inspec
 extern const char* const kInspectorJs;     // page/inspector.js: the ray inspector
 extern const char* const kInteractiveCss;  // page/interactive.css: the interactive page
 extern const char* const kInteractiveJs;   // page/interactive.js: the interactive page
-#if RECODE_HAVE_WASM_MODULE
-// wasm/'s module (recode-wasm.js, the module embedded), built by cmake/wasm_module.cmake.
-extern const char* const kRecodeWasmJs;
-#endif
 
 }  // namespace recode::app::explain

@@ -6,10 +6,10 @@
 #include <string>
 #include <string_view>
 
-#include "cli/atomic_file.hpp"
-#include "explain/explain_command.hpp"
 #include "explain/explain_format.hpp"
 #include "explain/explain_palette.hpp"
+#include "explain/static_page.hpp"
+#include "output/atomic_file.hpp"
 #include "pair/pair_setup.hpp"
 #include "recode/pair/pair_cases.hpp"
 #include "recode/scene/scene.hpp"

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "cli/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 
 namespace recode::app {
 

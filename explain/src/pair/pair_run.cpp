@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "cli/timing_fields.hpp"
+#include "output/timing_fields.hpp"
 #include "recode/refine/adaptive.hpp"
 #include "recode/refine/proven_apart.hpp"
 

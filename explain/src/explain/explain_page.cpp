@@ -6,12 +6,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "cli/atomic_file.hpp"
 #include "explain/explain_format.hpp"
 #include "explain/explain_inspector.hpp"
 #include "explain/explain_palette.hpp"
 #include "explain/explain_text.hpp"
 #include "explain/page_assets.hpp"
+#include "output/atomic_file.hpp"
 
 namespace recode::app::explain {
 

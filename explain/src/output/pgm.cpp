@@ -1,8 +1,8 @@
-#include "cli/pgm.hpp"
+#include "output/pgm.hpp"
 
 #include <string>
 
-#include "cli/atomic_file.hpp"
+#include "output/atomic_file.hpp"
 
 namespace recode::app {
 

@@ -1,4 +1,4 @@
-#include "cli/timing_fields.hpp"
+#include "output/timing_fields.hpp"
 
 #include <array>
 #include <string>
