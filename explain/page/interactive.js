@@ -24,13 +24,17 @@
       {name: 'B', shape: 'cone', sizes: {radius: 1, height: 2}, position: [0, 0, 3.75],
        rotation: [180, 0, 0], obj: null},
     ],
-    axis: 'x', resolution: 256, mor: 'min', drag: 1, sweepAxis: 'z', sweep: 0, sweepRange: 1.5,
+    axis: 'x', resolution: 256, mor: 'min', boxTest: true, drag: 1, sweepAxis: 'z', sweep: 0,
+    sweepRange: 1.5,
   };
   const $ = function (id) { return document.getElementById(id); };
   let module = null, runPage = null, lastError = null;
   let dirty = true, playing = false, playDirection = 1;
+  let view3d = null, rayPixel = null, fixedRay = false;
   const page = window.recodePage = {ready: false, updates: 0, lastMs: 0, moduleMs: 0, times: [],
-    error: null, pair: null, sceneText: sceneText, state: state, update: update,
+    error: null, pair: null, rayData: null, scene3d: null, sceneText: sceneText, state: state,
+    update: update, load: load, signature: signature, showRay: showRay, view3d: null,
+    onUpdate: [],  // functions called with the ray data after every update (page/predict.js)
     pending: function () { return dirty || drag !== null || playing; }};
 
   function number(v) { return Math.round(v * 1e6) / 1e6; }
@@ -57,6 +61,21 @@
     return JSON.stringify(scene, null, 2) + '\n';
   }
 
+  // What the page runs: the scene file and the options that change the answer.
+  function signature() { return sceneText() + state.mor + state.boxTest; }
+
+  // Another pose and options (an exercise's): the blocks, view axis, resolution, MOR and box
+  // test; the sweep back to 0. The controls show them and the next frame runs them.
+  function load(s) {
+    if (s.blocks) state.blocks = JSON.parse(JSON.stringify(s.blocks));
+    ['axis', 'resolution', 'mor', 'boxTest'].forEach(function (k) {
+      if (s[k] !== undefined && s[k] !== null) state[k] = s[k];
+    });
+    state.sweep = 0;
+    buildControls();
+    changed();
+  }
+
   // Runs the pair on the current scene; paints what the module answers.
   function update() {
     dirty = false;
@@ -67,10 +86,13 @@
     state.blocks.forEach(function (b) {
       if (b.shape === 'obj' && b.obj) module.FS.writeFile('/page/' + b.name + '.obj', b.obj);
     });
-    const request = JSON.stringify({scene: '/page/scene.json', mor: state.mor});
+    const request = JSON.stringify({scene: '/page/scene.json', mor: state.mor,
+      box_test: state.boxTest});
     const answer = runPage(request);
     const moduleMs = performance.now() - started;
     $('scene-text').value = text;
+    $('pair-command').textContent = 'recode pair scene.json --mor ' + state.mor +
+      (state.boxTest ? '' : ' --no-box-test');
     if (!answer) {
       page.error = lastError();
       $('live-error').textContent = page.error;
@@ -86,9 +108,16 @@
     parsed.innerHTML = result.body;
     paintPictures(parsed.content, result.pictures);
     $('live-result').replaceChildren(parsed.content);
-    window.recodeInspector.attach(rayData(result));
+    page.rayData = rayData(result);
+    window.recodeInspector.attach(page.rayData);
     page.pair = result.pair;
+    page.scene3d = result.scene3d;
     showSummary(result.pair);
+    if (view3d) {
+      view3d.setScene(sceneOf(result.scene3d));
+      drawRay();
+    }
+    page.onUpdate.forEach(function (f) { f(page.rayData); });
     const ms = performance.now() - started;
     page.updates += 1;
     page.lastMs = ms;
@@ -161,6 +190,84 @@
     $('case-counts').innerHTML = row + '</tr>' + counts + '</tr>';
     $('live-interfering').textContent = pair.interfering_pixels + ' interfering pixels, frame ' +
       pair.frame.resolution.join(' x ') + ' along ' + pair.frame.axis;
+  }
+
+  // --- the 3-D view (page/scene3d.js) ---------------------------------------------------------
+
+  function sceneOf(s) {
+    return {axis: s.axis, window: s.window, resolution: s.resolution, depthRange: s.depth_range,
+      mor: s.mor, blocks: s.blocks};
+  }
+
+  // The ray through `rayPixel` with where it enters and leaves each block: the 24-bit depths
+  // the inspector shows (the reference's own face depths), so that the picture and the
+  // buffers agree. Outside the inspector's crop the page has no depths: the line alone.
+  function drawRay() {
+    if (!view3d) return;
+    const d = page.rayData;
+    if (!rayPixel || !d) { view3d.setRay(null); return; }
+    const c = d.crop, x = rayPixel[0], y = rayPixel[1];
+    const inCrop = x >= c[0] && x < c[2] && y >= c[1] && y < c[3];
+    const i = inCrop ? (y - c[1]) * (c[2] - c[0]) + (x - c[0]) : -1;
+    view3d.setRay({pixel: [x, y],
+      a: i >= 0 && (d.coverage[i] & 1) ? [d.a_front[i], d.a_back[i]] : null,
+      b: i >= 0 && (d.coverage[i] & 2) ? [d.b_front[i], d.b_back[i]] : null});
+  }
+
+  // A pixel chosen by the page (an exercise), or null: the ray follows the inspector again.
+  function showRay(pixel) {
+    fixedRay = pixel !== null;
+    rayPixel = pixel;
+    drawRay();
+  }
+
+  // The ray follows the inspector's pixel: its title names it ("pixel (x, y)") whenever it
+  // shows one, so the view and the inspector's table are about the same ray.
+  function followInspector() {
+    const body = $('inspector-body');
+    new MutationObserver(function () {
+      if (fixedRay) return;
+      const t = $('inspector-title');
+      const m = t && /^pixel \((\d+), (\d+)\)$/.exec(t.textContent);
+      const p = m ? [Number(m[1]), Number(m[2])] : null;
+      if (p && rayPixel && p[0] === rayPixel[0] && p[1] === rayPixel[1]) return;
+      rayPixel = p;
+      drawRay();
+    }).observe(body, {childList: true, subtree: true});
+  }
+
+  function setUpView3d() {
+    const canvas = $('view3d');
+    try {
+      view3d = page.view3d = window.recodeScene3d(canvas);
+    } catch (e) {
+      $('view3d-note').textContent = 'No 3-D view in this browser: ' + e.message;
+      canvas.hidden = true;
+      return;
+    }
+    const shown = {A: true, B: true, axes: true, window: true, mor: true, ray: true};
+    const names = {A: 'block A', B: 'block B', axes: 'view axis', window: 'window', mor: 'MOR',
+      ray: 'ray'};
+    const options = $('view3d-options');
+    Object.keys(shown).forEach(function (k) {
+      const box = document.createElement('input');
+      box.type = 'checkbox';
+      box.checked = true;
+      box.id = 'view3d-show-' + k;
+      box.addEventListener('change', function () {
+        const v = {};
+        v[k] = box.checked;
+        view3d.setVisible(v);
+      });
+      options.appendChild(field(names[k], box));
+    });
+    const along = document.createElement('button');
+    along.type = 'button';
+    along.id = 'view3d-along';
+    along.textContent = 'Look along the view axis';
+    along.addEventListener('click', function () { view3d.lookAlongAxis(); });
+    options.appendChild(along);
+    followInspector();
   }
 
   // --- the controls --------------------------------------------------------------------------
@@ -267,6 +374,13 @@
       function (v) { state.resolution = Number(v); }, 'resolution')));
     box.appendChild(field('MOR', select(['min', 'max', 'full'], state.mor,
       function (v) { state.mor = v; }, 'mor')));
+    const boxTest = document.createElement('input');
+    boxTest.type = 'checkbox';
+    boxTest.id = 'box-test';
+    boxTest.checked = state.boxTest;
+    boxTest.addEventListener('change', function () { state.boxTest = boxTest.checked; changed(); });
+    box.appendChild(field('box test (off: the passes run even when the boxes are apart)',
+      boxTest));
     box.appendChild(field('drag moves block', select(['A', 'B'], state.blocks[state.drag].name,
       function (v) { state.drag = v === 'A' ? 0 : 1; }, 'drag-block')));
     const sweep = document.createElement('input');
@@ -391,6 +505,7 @@
   }
 
   buildControls();
+  setUpView3d();
   createRecodeModule().then(function (m) {
     module = m;
     module.FS.mkdirTree('/page');

@@ -9,6 +9,7 @@
 #include "explain/explain_rays.hpp"
 #include "explain/explain_recorder.hpp"
 #include "explain/explain_sections.hpp"
+#include "explain/scene_view.hpp"
 #include "recode/raster/cpu_device.hpp"
 
 namespace recode::wasm {
@@ -51,6 +52,7 @@ LivePage livePage(const PairRequestText& request) {
   j["pair"] = app::pairRunJson(run, !request.timing);
   j["body"] = app::explain::pageBodyHtml(shown);
   j["ray_data"] = arrays.scalars;
+  j["scene3d"] = app::explain::sceneViewJson(setup, run.result);
   j["ray_arrays"] = {{"offset", reinterpret_cast<std::uintptr_t>(page.rays.data())},
                      {"pixels", arrays.cases.size()},
                      {"order",

@@ -10,5 +10,7 @@ extern const char* const kInspectorCss;    // page/inspector.css: the ray inspec
 extern const char* const kInspectorJs;     // page/inspector.js: the ray inspector
 extern const char* const kInteractiveCss;  // page/interactive.css: the interactive page
 extern const char* const kInteractiveJs;   // page/interactive.js: the interactive page
+extern const char* const kScene3dJs;       // page/scene3d.js: its 3-D view (WebGL2)
+extern const char* const kPredictJs;       // page/predict.js: its exercises
 
 }  // namespace recode::app::explain
