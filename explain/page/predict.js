@@ -85,13 +85,17 @@ window.recodePredict = (function () {
       intro: 'B lies wholly in front of A, the box test off again.', sections: [1, 2, 3, 4]},
     {id: 'touching', title: 'Touching', want: 6, pick: {touching: true}, mor: 'min',
       blocks: [A2, box('B', [1, 1, 2], [0.3, 0.2, 2])],
-      intro: 'B\u2019s back face lies exactly on A\u2019s front face: the two intervals share one ' +
-        'depth. Do the comparisons count equal depths?', sections: [1, 3, 4]},
+      intro: 'B\u2019s back face lies exactly on A\u2019s front face: the two intervals share ' +
+        'one depth. Do the comparisons count equal depths?', sections: [1, 3, 4]},
     {id: 'own-pixel', title: 'Your own pixel', want: null, pick: {own: true}, mor: null,
       blocks: null,
-      intro: 'Any pose: shape and move the blocks first (or keep this one), then click a pixel on ' +
-        'the silhouettes picture below.', sections: [1, 3, 4]},
+      intro: 'Any pose: shape and move the blocks first (or keep this one), then click a ' +
+        'pixel on the silhouettes picture below.', sections: [1, 3, 4]},
   ];
+
+  // docs/algorithm.md's sections an exercise practises (its table in section 12).
+  const SECTIONS = {1: 'the nine cases', 2: 'the box test and the MOR', 3: 'the passes',
+    4: 'the stencil encoding'};
 
   let current = null;    // {exercise, pixel, index, truth, signature}
   let choosing = false;  // the own-pixel exercise waits for a click
@@ -246,8 +250,13 @@ window.recodePredict = (function () {
       'buffers are hidden until you answer. Predict the stencil after each pass and the case, ' +
       'then check.</p><div id="predict-list-wrap">' + listHtml() + '</div>';
     if (current) {
+      const practises = current.exercise.sections.map(function (n) {
+        return SECTIONS[n] + ' (' + n + ')';
+      }).join(', ');
       h += '<div id="predict-exercise"><h3>' + esc(current.exercise.title) + '</h3><p>' +
-        current.exercise.intro + '</p>' + question(page.rayData, current.index,
+        current.exercise.intro + '</p><p class="practises">Practises ' + practises +
+        ': docs/algorithm.md, and the page\u2019s sections below once answered.</p>' +
+        question(page.rayData, current.index,
           current.pixel[0], current.pixel[1]) + '</div>';
     } else if (choosing) {
       h += '<div id="predict-exercise"><h3>Your own pixel</h3><p>' +
@@ -297,7 +306,8 @@ window.recodePredict = (function () {
       }
     } else {
       document.body.classList.remove('predicting');
-      h += '<p>The buffers are shown again; the ray inspector has the pixel\u2019s whole story.</p>';
+      h += '<p>The buffers are shown again; the ray inspector has the pixel\u2019s whole ' +
+        'story.</p>';
       $('predict-list-wrap').innerHTML = listHtml();
       bindList();
     }

@@ -171,6 +171,22 @@ def check_silhouettes(dt, scene):
           % (scene["axis"], len(cover), other, "; ".join(report)))
 
 
+def click_pixel(dt, selector, x, y):
+    """A mouse click at the centre of frame pixel (x, y) on the picture `selector` names (its
+    data-region is the frame rectangle it shows, rows from the top)."""
+    pos = dt.evaluate("(function () { const c = document.querySelector(%s);"
+                      " c.scrollIntoView({block: 'center'});"
+                      " const r = c.dataset.region.split(',').map(Number);"
+                      " const b = c.getBoundingClientRect();"
+                      " return {x: b.left + (%d - r[0] + 0.5) * b.width / (r[2] - r[0]),"
+                      " y: b.top + (r[3] - 1 - %d + 0.5) * b.height / (r[3] - r[1])}; })()"
+                      % (json.dumps(selector), x, y))
+    for kind in ("mousePressed", "mouseReleased"):
+        dt.call("Input.dispatchMouseEvent", type=kind, x=pos["x"], y=pos["y"], button="left",
+                buttons=1 if kind == "mousePressed" else 0, clickCount=1)
+    time.sleep(0.2)
+
+
 def ray_hits(positions, triangles, origin, direction):
     """(t, triangle's corners) where origin + t * direction crosses the mesh's triangles
     (Moller-Trumbore, in doubles)."""
@@ -179,7 +195,8 @@ def ray_hits(positions, triangles, origin, direction):
         p = [positions[3 * triangles[k + j]: 3 * triangles[k + j] + 3] for j in range(3)]
         e1 = [p[1][i] - p[0][i] for i in range(3)]
         e2 = [p[2][i] - p[0][i] for i in range(3)]
-        q = [direction[1] * e2[2] - direction[2] * e2[1], direction[2] * e2[0] - direction[0] * e2[2],
+        q = [direction[1] * e2[2] - direction[2] * e2[1],
+             direction[2] * e2[0] - direction[0] * e2[2],
              direction[0] * e2[1] - direction[1] * e2[0]]
         det = sum(e1[i] * q[i] for i in range(3))
         if abs(det) < 1e-15:
@@ -217,22 +234,15 @@ def check_ray(dt, scene):
     d = dt.evaluate("(function () { const d = recodePage.rayData; const w = d.crop[2] - d.crop[0];"
                     " let best = null; for (let i = 0; i < d['case'].length; ++i) {"
                     " if (d['case'][i] >= 3 && d['case'][i] <= 6) { best = i; break; } }"
-                    " return {i: best, x: d.crop[0] + best % w, y: d.crop[1] + Math.floor(best / w),"
+                    " return {i: best, x: d.crop[0] + best % w,"
+                    " y: d.crop[1] + Math.floor(best / w),"
                     " a: [d.a_front[best], d.a_back[best]], b: [d.b_front[best], d.b_back[best]]};"
                     " })()")
     if d["i"] is None:
         fail("the loaded pose has no interfering pixel to inspect")
     x, y = d["x"], d["y"]
-    # A click at the pixel on the case map (the inspector pins it; the 3-D view follows).
-    pos = dt.evaluate("(function () { const c = document.querySelector('#live-result canvas"
-                      "[data-region]'); c.scrollIntoView({block: 'center'}); const r ="
-                      " c.dataset.region.split(',').map(Number); const b = c.getBoundingClientRect();"
-                      " return {x: b.left + (%d - r[0] + 0.5) * b.width / (r[2] - r[0]),"
-                      " y: b.top + (r[3] - 1 - %d + 0.5) * b.height / (r[3] - r[1])}; })()" % (x, y))
-    for kind in ("mousePressed", "mouseReleased"):
-        dt.call("Input.dispatchMouseEvent", type=kind, x=pos["x"], y=pos["y"], button="left",
-                buttons=1 if kind == "mousePressed" else 0, clickCount=1)
-    time.sleep(0.2)
+    # A click at the pixel on the first picture (the inspector pins it; the 3-D view follows).
+    click_pixel(dt, "#live-result canvas[data-region]", x, y)
     title = dt.evaluate("document.getElementById('inspector-title').textContent")
     if title != "pixel (%d, %d)" % (x, y):
         fail("the click pinned %r, not pixel (%d, %d)" % (title, x, y))
@@ -246,7 +256,6 @@ def check_ray(dt, scene):
     dmin, dmax = scene["depth_range"]
     u, v = pixel_centre(scene, x, y)
     step = (dmax - dmin) / DEPTH_ONE
-    blocks = {b["name"]: b for b in scene["blocks"]}
     worst = 0.0
     for key, z in want.items():
         p = got[key]
@@ -257,8 +266,7 @@ def check_ray(dt, scene):
             fail("%s %s: the 3-D point %s, the inspector's depth puts it at %s"
                  % (key + (p["world"], expected)))
         # Independent of both: where the pixel's ray crosses the block's triangles.
-        name = "A" if key[0] == "A" else "B"
-        block = blocks[name] if name in blocks else scene["blocks"][0 if key[0] == "A" else 1]
+        block = scene["blocks"][0 if key[0] == "A" else 1]
         origin = world(scene["axis"], u, v, 0.0)
         direction = world(scene["axis"], 0.0, 0.0, 1.0)
         ts = ray_hits(block["positions"], block["triangles"], origin, direction)
@@ -403,16 +411,7 @@ def check_exercises(recode, work, dt):
                          " d.crop[0]; for (let i = 0; i < d['case'].length; ++i) if (d['case'][i]"
                          " >= 0) return [d.crop[0] + i % w, d.crop[1] + Math.floor(i / w)];"
                          " return null; })()")
-    pos = dt.evaluate("(function () { const c = document.querySelector('#silhouettes canvas');"
-                      " c.scrollIntoView({block: 'center'}); const r ="
-                      " c.dataset.region.split(',').map(Number); const b = c.getBoundingClientRect();"
-                      " return {x: b.left + (%d - r[0] + 0.5) * b.width / (r[2] - r[0]),"
-                      " y: b.top + (r[3] - 1 - %d + 0.5) * b.height / (r[3] - r[1])}; })()"
-                      % tuple(target))
-    for kind in ("mousePressed", "mouseReleased"):
-        dt.call("Input.dispatchMouseEvent", type=kind, x=pos["x"], y=pos["y"], button="left",
-                buttons=1 if kind == "mousePressed" else 0, clickCount=1)
-    time.sleep(0.2)
+    click_pixel(dt, "#silhouettes canvas[data-region]", *target)
     cur = dt.evaluate("(function () { const c = recodePredict.current(); return c && {pixel:"
                       " c.pixel, truth: c.truth}; })()")
     if not cur or cur["pixel"] != target:
@@ -428,29 +427,41 @@ def check_exercises(recode, work, dt):
     return len(exercises)
 
 
-def timing(dt):
-    """An update after a drag on a picture (module, pictures and the 3-D view), and a turn of
-    the 3-D view alone, in the page's own clock; medians of 7."""
+def drag_timing(dt):
+    """Updates after a drag on a picture (the module, the pictures and the 3-D view) in the
+    page's own clock: the median of 7."""
     box = dt.evaluate("(function () { const c = document.querySelector('#live-result canvas');"
                       " c.scrollIntoView({block: 'center'}); const b = c.getBoundingClientRect();"
                       " return {x: b.left + b.width / 2, y: b.top + b.height / 2}; })()")
     updates, after_drag = dt.evaluate("recodePage.updates"), []
     for k in range(7):
         x, y = box["x"], box["y"]
+        step = 4 if k % 2 == 0 else -4
         dt.call("Input.dispatchMouseEvent", type="mousePressed", x=x, y=y, button="left",
                 buttons=1, clickCount=1)
-        step = 4 if k % 2 == 0 else -4
         dt.call("Input.dispatchMouseEvent", type="mouseMoved", x=x + step, y=y, button="left",
                 buttons=1)
         dt.call("Input.dispatchMouseEvent", type="mouseReleased", x=x + step, y=y, button="left",
                 buttons=0, clickCount=1)
         updates = settle(dt, updates)
         after_drag.append(dt.evaluate("recodePage.lastMs"))
+    return statistics.median(after_drag)
+
+
+def timing(dt):
+    """A redraw after a drag at the page's 256 pixels and at its largest, 512, and a turn of
+    the 3-D view alone (median of 7)."""
+    at256 = drag_timing(dt)
+    updates = dt.evaluate("recodePage.updates")
+    dt.evaluate("(function () { const s = document.getElementById('resolution'); s.value = '512';"
+                " s.dispatchEvent(new Event('change')); })()")
+    settle(dt, updates)
+    at512 = drag_timing(dt)
     turns = []
     for k in range(7):
         dt.evaluate("recodePage.view3d.turn(%d, 3); 0" % (5 if k % 2 == 0 else -5))
         turns.append(dt.evaluate("recodePage.view3d.lastDrawMs"))
-    return statistics.median(after_drag), statistics.median(turns)
+    return at256, at512, statistics.median(turns)
 
 
 def main():
@@ -494,7 +505,7 @@ def main():
         check_ray(dt, scene)
         dt.evaluate("recodePage.view3d.turn(35, 20); 0")
         dt.screenshot(os.path.join(work, "view3d.png"))
-        drag_ms, turn_ms = timing(dt)
+        drag256, drag512, turn_ms = timing(dt)
         count = check_exercises(recode, work, dt)
         dt.screenshot(os.path.join(work, "exercise.png"))
         # Progress is kept by the browser: a reload lists every exercise as solved.
@@ -514,8 +525,9 @@ def main():
     finally:
         proc.kill()
         shutil.rmtree(profile, ignore_errors=True)
-    print("redraw after a drag (median of 7, in the page, 256 px): %.1f ms; a turn of the 3-D "
-          "view alone: %.1f ms; page %d bytes" % (drag_ms, turn_ms, size))
+    print("redraw after a drag (median of 7, in the page): %.1f ms at 256 px, %.1f ms at 512 px; "
+          "a turn of the 3-D view alone: %.1f ms; page %d bytes"
+          % (drag256, drag512, turn_ms, size))
     print("interactive teaching OK: 3-D view and %d exercises, screenshots in %s" % (count, work))
     return 0
 
