@@ -386,6 +386,12 @@ window.recodePredict = (function () {
     const x = r[0] + Math.floor((ev.clientX - b.left) / b.width * (r[2] - r[0]));
     const y = r[3] - 1 - Math.floor((ev.clientY - b.top) / b.height * (r[3] - r[1]));
     const c = rays.crop;
+    if (!rays.steps.length) {
+      $('predict-exercise').insertAdjacentHTML('beforeend', '<p class="wrong">No pass ran on ' +
+        'this pose (the box test found the blocks apart): move them together, or switch the ' +
+        'box test off, and click again.</p>');
+      return;
+    }
     if (!inRect(c, x, y)) {
       $('predict-exercise').insertAdjacentHTML('beforeend', '<p class="wrong">No ray data at (' +
         x + ', ' + y + '): choose a pixel in [' + c.join(', ') + ') (the MOR and a margin).</p>');

@@ -51,6 +51,35 @@ def settle(dt, updates_before):
     fail("the page did not update within %d s" % TIMEOUT_S)
 
 
+def write_page(recode, page_dir):
+    """`recode explain --interactive --out page_dir`; the path of the index.html it wrote."""
+    r = subprocess.run([recode, "explain", "--interactive", "--out", page_dir],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        fail("recode explain --interactive: " + r.stderr.strip())
+    return os.path.join(page_dir, "index.html")
+
+
+def open_page(dt, index_html, downloads=None):
+    """Opens the page from file://, waits for the module's first answer and the update after
+    it, and requires a clean console; returns the page's update count."""
+    for domain in ("Runtime", "Log", "Network", "Page"):
+        dt.call(domain + ".enable")
+    if downloads:
+        dt.call("Page.setDownloadBehavior", behavior="allow", downloadPath=downloads)
+    dt.call("Page.navigate", url="file://" + index_html)
+    dt.wait_event("Page.loadEventFired")
+    deadline = time.time() + TIMEOUT_S
+    while not dt.evaluate("!!(window.recodePage && recodePage.ready)"):
+        if time.time() > deadline:
+            fail("the page's module did not answer within %d s" % TIMEOUT_S)
+        time.sleep(0.1)
+    updates = settle(dt, 0)
+    if dt.problems():
+        fail("on load: " + "; ".join(dt.problems()))
+    return updates
+
+
 SHOWN_JS = """
 (function () {
   const counts = {};
@@ -123,32 +152,16 @@ def main():
     chromium = chromium_and_fresh_workdir(work, "the interactive page")
     if chromium is None:
         return 77
-    page_dir = os.path.join(work, "page")
     downloads = os.path.join(work, "downloads")
     os.makedirs(downloads)
-    r = subprocess.run([recode, "explain", "--interactive", "--out", page_dir],
-                       capture_output=True, text=True)
-    if r.returncode != 0:
-        fail("recode explain --interactive: " + r.stderr.strip())
-    size = os.path.getsize(os.path.join(page_dir, "index.html"))
+    index_html = write_page(recode, os.path.join(work, "page"))
+    size = os.path.getsize(index_html)
 
     profile = tempfile.mkdtemp(prefix="recode-chromium-")
     proc, ws_url = start_chromium(chromium, profile)
     try:
         dt = DevTools(ws_url)
-        for domain in ("Runtime", "Log", "Network", "Page"):
-            dt.call(domain + ".enable")
-        dt.call("Page.setDownloadBehavior", behavior="allow", downloadPath=downloads)
-        dt.call("Page.navigate", url="file://" + os.path.join(page_dir, "index.html"))
-        dt.wait_event("Page.loadEventFired")
-        deadline = time.time() + TIMEOUT_S
-        while not dt.evaluate("!!(window.recodePage && recodePage.ready)"):
-            if time.time() > deadline:
-                fail("the page's module did not answer within %d s" % TIMEOUT_S)
-            time.sleep(0.1)
-        updates = settle(dt, 0)
-        if dt.problems():
-            fail("on load: " + "; ".join(dt.problems()))
+        updates = open_page(dt, index_html, downloads)
         dt.screenshot(os.path.join(work, "loaded.png"))
         first = compare_with_native(recode, dt, export_scene(dt, downloads, "pose-0.json"),
                                     "as loaded")

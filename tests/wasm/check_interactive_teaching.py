@@ -29,9 +29,12 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "apps"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "apps"))
+sys.path.insert(0, HERE)
 from check_explain_browser import (  # noqa: E402
     DevTools, chromium_and_fresh_workdir, fail, start_chromium)
+from check_interactive_browser import open_page, settle, write_page  # noqa: E402
 
 TIMEOUT_S = 60
 MAX_PAGE_BYTES = 3 * 1024 * 1024
@@ -39,18 +42,6 @@ DEPTH_ONE = 16777215
 PERM = {"x": (1, 2, 0), "y": (2, 0, 1), "z": (0, 1, 2)}  # world index of (u, v, d)
 PASS_IDS = ["set_z", "test_z", "load_amin", "test_amin_front", "test_amin_back"]
 PASS_BITS = [1, 1, 1, 4, 8]  # what a broken rule flips when no other pass's value differs
-
-
-def settle(dt, updates_before):
-    deadline = time.time() + TIMEOUT_S
-    while time.time() < deadline:
-        s = dt.evaluate("({u: recodePage.updates, p: recodePage.pending(), e: recodePage.error})")
-        if s["e"]:
-            fail("the page reports an error: " + s["e"])
-        if s["u"] > updates_before and not s["p"]:
-            return s["u"]
-        time.sleep(0.05)
-    fail("the page did not update within %d s" % TIMEOUT_S)
 
 
 def world(axis, u, v, d):
@@ -65,6 +56,12 @@ def pixel_centre(scene, x, y):
     w, h = scene["resolution"]
     return umin + (x + 0.5) * (umax - umin) / w, vmin + (y + 0.5) * (vmax - vmin) / h
 
+
+SECOND_POSE = {"axis": "y", "resolution": 128, "mor": "min", "blocks": [
+    {"name": "A", "shape": "ellipsoid", "sizes": {"radii": [1, 0.6, 0.4]},
+     "position": [0, 0, 0], "rotation": [20, 30, 10], "obj": None},
+    {"name": "B", "shape": "capped_cone", "sizes": {"radius0": 0.6, "radius1": 0.3, "height": 2},
+     "position": [0.3, 0.5, 0.2], "rotation": [40, -10, 25], "obj": None}]}
 
 # --- the 3-D view ---------------------------------------------------------------------------------
 
@@ -472,31 +469,15 @@ def main():
     chromium = chromium_and_fresh_workdir(work, "the interactive page's 3-D view and exercises")
     if chromium is None:
         return 77
-    page_dir = os.path.join(work, "page")
-    r = subprocess.run([recode, "explain", "--interactive", "--out", page_dir],
-                       capture_output=True, text=True)
-    if r.returncode != 0:
-        fail("recode explain --interactive: " + r.stderr.strip())
-    size = os.path.getsize(os.path.join(page_dir, "index.html"))
+    index_html = write_page(recode, os.path.join(work, "page"))
+    size = os.path.getsize(index_html)
     if size >= MAX_PAGE_BYTES:
         fail("the page is %d bytes, over its budget of %d" % (size, MAX_PAGE_BYTES))
     profile = tempfile.mkdtemp(prefix="recode-chromium-")
     proc, ws_url = start_chromium(chromium, profile)
     try:
         dt = DevTools(ws_url)
-        for domain in ("Runtime", "Log", "Network", "Page"):
-            dt.call(domain + ".enable")
-        url = "file://" + os.path.join(page_dir, "index.html")
-        dt.call("Page.navigate", url=url)
-        dt.wait_event("Page.loadEventFired")
-        deadline = time.time() + TIMEOUT_S
-        while not dt.evaluate("!!(window.recodePage && recodePage.ready)"):
-            if time.time() > deadline:
-                fail("the page's module did not answer within %d s" % TIMEOUT_S)
-            time.sleep(0.1)
-        settle(dt, 0)
-        if dt.problems():
-            fail("on load: " + "; ".join(dt.problems()))
+        open_page(dt, index_html)
         if not dt.evaluate("!!recodePage.view3d"):
             fail("the page has no 3-D view: " + dt.evaluate(
                 "document.getElementById('view3d-note').textContent"))
@@ -506,6 +487,11 @@ def main():
         dt.evaluate("recodePage.view3d.turn(35, 20); 0")
         dt.screenshot(os.path.join(work, "view3d.png"))
         drag256, drag512, turn_ms = timing(dt)
+        # A second pose: other shapes, turned about every axis, seen along y at 128 pixels.
+        updates = dt.evaluate("recodePage.updates")
+        dt.evaluate("recodePage.load(%s); 0" % json.dumps(SECOND_POSE))
+        settle(dt, updates)
+        check_silhouettes(dt, dt.evaluate("recodePage.scene3d"))
         count = check_exercises(recode, work, dt)
         dt.screenshot(os.path.join(work, "exercise.png"))
         # Progress is kept by the browser: a reload lists every exercise as solved.
