@@ -226,7 +226,13 @@ window.recodePredict = (function () {
       'choose</option>';
     for (let c = 0; c <= 8; ++c) h += '<option value="' + c + '">case ' + c + '</option>';
     h += '<option value="-1">not examined (outside the MOR)</option></select></td></tr>';
-    h += '</table><button type="submit" id="predict-check">Check</button> ' +
+    h += '</table>';
+    h += '<details id="predict-rules"><summary>The rules of the passes and of the ' +
+      'read-back</summary><ol>' + PASSES.concat([DECODE]).map(function (p) {
+      return '<li><b>' + esc(p.title) + '</b>: ' + esc(p.rule) + '</li>';
+    }).join('') + '</ol><p>Depth tests compare 24-bit values; equal depths pass both LEQUAL ' +
+      'and GEQUAL. The stencil test 1 &le; count reads bits 0-1 only.</p></details>';
+    h += '<button type="submit" id="predict-check">Check</button> ' +
       '<button type="button" id="predict-close">Leave the exercise</button></form>' +
       '<div id="predict-feedback" aria-live="polite"></div>';
     return h;
