@@ -222,8 +222,8 @@ window.recodePredict = (function () {
         'step="1" id="predict-stencil-' + (k + 1) + '" required> <span class="bits" ' +
         'id="predict-bits-' + (k + 1) + '"></span></td></tr>';
     });
-    h += '<tr><td>the case read back</td><td><select id="predict-case"><option value="">' +
-      'choose</option>';
+    h += '<tr><td>the case read back</td><td><select id="predict-case" required>' +
+      '<option value="">choose</option>';
     for (let c = 0; c <= 8; ++c) h += '<option value="' + c + '">case ' + c + '</option>';
     h += '<option value="-1">not examined (outside the MOR)</option></select></td></tr>';
     h += '</table>';

@@ -345,10 +345,14 @@ def check_exercise(recode, work, dt, e):
     if kase != e["want"]:
         fail("exercise %s: its pixel (%d, %d) is case %d, the exercise is about case %d"
              % (e["id"], x, y, kase, e["want"]))
-    hidden = dt.evaluate("(function () { const visible = function (id) { const n ="
-                         " document.getElementById(id); return !!n && n.offsetParent !== null; };"
-                         " return ['inspector', 'case-counts', 'set_z', 'test_amin_back']"
-                         ".filter(visible); })()")
+    hidden = dt.evaluate("(function () { const visible = function (n) {"
+                         " return !!n && n.offsetParent !== null; };"
+                         " const shown = ['inspector', 'case-counts', 'set_z', 'test_amin_back',"
+                         " 'read_stencil', 'verdict'].filter(function (id) {"
+                         " return visible(document.getElementById(id)); });"
+                         " if (visible(document.querySelector('#live-result > p.verdict')))"
+                         " shown.push('the verdict under the title');"
+                         " return shown; })()")
     if hidden:
         fail("exercise %s: the answer is not hidden: %s visible" % (e["id"], hidden))
     n_stencil, n_case = native_pixel(recode, work, dt, x, y)
