@@ -150,7 +150,8 @@ void addExplainCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--interactive", opts->interactive,
                 "write one self-contained page (index.html) on which two blocks can be shaped, "
                 "dragged and turned, every step recomputed in the browser by the reference "
-                "compiled to WebAssembly (docs/wasm.md)")
+                "compiled to WebAssembly, with a 3-D view of the blocks and exercises that "
+                "check a student's prediction of every pass (docs/wasm.md)")
       ->excludes(cmd->get_option("scene"))
       ->excludes(cmd->get_option("--pair"))
       ->excludes(cmd->get_option("--gallery"))
