@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The library suites under AddressSanitizer and UndefinedBehaviorSanitizer: raster (with the
 # pipeline's invariants on), the kit's reference model and the golden vectors, the JSON layer,
-# the core layers and the collision API. Run by CI after the main suite; anything the sanitizers
-# find fails the run. The programs, the oracles and the GPU-API devices are left out: they call
-# into Embree, CGAL and Mesa, whose own code is not built with the sanitizers.
+# the core layers, the collision API and the explain library's data for the interactive page.
+# Run by CI after the main suite; anything the sanitizers find fails the run. The programs, the
+# oracles and the GPU-API devices are left out: they call into Embree, CGAL and Mesa, whose own
+# code is not built with the sanitizers.
 #
 #   scripts/sanitize.sh [BUILD_DIR]     (default build-sanitize)
 set -euo pipefail
@@ -23,7 +24,7 @@ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRECODE_WERROR=
   -DRECODE_BUILD_EXAMPLES=OFF >/dev/null
 suites=(recode_raster_tests recode_raster_invariant_tests recode_geometry_tests recode_pair_tests
         recode_refine_tests recode_scene_tests recode_sim_tests recode_api_tests
-        recode_backends_exact_tests)
+        recode_backends_exact_tests recode_explain_tests)
 cmake --build "$dir" -j "$jobs" --target "${suites[@]}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
