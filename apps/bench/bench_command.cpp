@@ -202,7 +202,7 @@ std::string writeSummary(const std::filesystem::path& path, const BenchOptions& 
   context.recodeThreads = core::pairTestThreads(cpu);
   std::ostringstream summary;
   writeBenchSummary(summary, experiments, rows, context);
-  writeFileAtomically(path, summary.str());
+  output::writeFileAtomically(path, summary.str());
   return summary.str();
 }
 
@@ -223,9 +223,9 @@ int runBench(const BenchOptions& o) {
   // runs, so that a directory that cannot be written fails at once rather than after the whole
   // bench. A directory made here is removed again if the bench fails.
   const std::filesystem::path dir(o.out);
-  CreatedDirectory created(dir, "--out " + o.out);
+  output::CreatedDirectory created(dir, "--out " + o.out);
   const std::filesystem::path csvPath = dir / "bench.csv";
-  AtomicFile csv(csvPath);
+  output::AtomicFile csv(csvPath);
 
   const auto started = std::chrono::steady_clock::now();
   const std::vector<BenchRow> rows = runCases(cases, o.threads);

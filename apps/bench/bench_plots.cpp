@@ -135,8 +135,8 @@ PlotOutcome writeBenchPlots(const std::filesystem::path& dir,
         }
         std::ostringstream script;
         writeScript(script, dat, png, id == scene ? scene : scene + " (" + e->name + ")", series);
-        writeFileAtomically(dat, data.str());
-        writeFileAtomically(gp, script.str());
+        output::writeFileAtomically(dat, data.str());
+        output::writeFileAtomically(gp, script.str());
       }
       outcome.scripts.push_back(gp);
       if (!outcome.problem.empty())

@@ -28,7 +28,7 @@ const CLI::Validator kPositiveFiniteNumber(
 core::FrameOverrides FrameOptions::overrides() const {
   core::FrameOverrides o;
   if (!resolution.empty())
-    o = parseResolution(resolution);
+    o = explain::parseResolution(resolution);
   if (pixelSize > 0.0)
     o.pixelSize = pixelSize;
   return o;

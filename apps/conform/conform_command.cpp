@@ -79,17 +79,17 @@ void reduceFirstFailure(const SuiteReport& report, const std::vector<SuiteVector
                                 [&](const SuiteVector& s) { return s.name == r.name; });
     std::cerr << "recode conform: reducing " << r.name << " ...\n";
     const Reduction red = reduce(v->golden.stream, backend);
-    CreatedDirectory created(dir, "--reduce");
+    output::CreatedDirectory created(dir, "--reduce");
     std::string stem = fs::path(r.name).stem().string();
     const fs::path minimal = dir / (stem + "-minimal.json");
-    writeFileAtomically(minimal, raster::goldenToJson(red.minimal, raster::GoldenLayout::Rows),
-                        "--reduce");
+    output::writeFileAtomically(
+        minimal, raster::goldenToJson(red.minimal, raster::GoldenLayout::Rows), "--reduce");
     out << "reduced " << r.name << " in " << red.backendRuns << " runs to " << red.draws
         << " draws, " << red.triangles << " triangles: " << minimal.string() << '\n';
     if (red.passingTwin) {
       const fs::path twin = dir / (stem + "-passing-twin.json");
-      writeFileAtomically(twin, raster::goldenToJson(*red.passingTwin, raster::GoldenLayout::Rows),
-                          "--reduce");
+      output::writeFileAtomically(
+          twin, raster::goldenToJson(*red.passingTwin, raster::GoldenLayout::Rows), "--reduce");
       out << "passing twin: " << twin.string() << '\n';
     } else {
       out << "no passing twin: every single step from the minimal vector still fails\n";
@@ -146,9 +146,9 @@ int runConform(const ConformOptions& o) {
     printSummary(std::cout, report);
   }
   if (!o.junit.empty())
-    writeFileAtomically(o.junit, toJunit(report), "--junit");
+    output::writeFileAtomically(o.junit, toJunit(report), "--junit");
   if (!o.html.empty())
-    writeFileAtomically(o.html, toHtml(report), "--html");
+    output::writeFileAtomically(o.html, toHtml(report), "--html");
   if (!report.error.empty()) {
     if (o.json)
       std::cerr << "recode conform: error: " << report.error << '\n';

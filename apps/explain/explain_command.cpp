@@ -59,7 +59,7 @@ int runExplain(const ExplainOptions& options) {
   if (options.interactive) {
     const fs::path dir(options.out);
     // Removed again if the page cannot be written (a build without the module included).
-    CreatedDirectory created(dir, "--out " + options.out);
+    output::CreatedDirectory created(dir, "--out " + options.out);
     explain::writeInteractivePage(dir, interactiveModule());
     created.keep();
     std::cout << "recode explain --interactive: wrote " << (dir / "index.html").string()
@@ -70,33 +70,35 @@ int runExplain(const ExplainOptions& options) {
     if (!options.scene.empty())
       throw std::invalid_argument("--gallery runs its own pairs; leave out the scene " +
                                   options.scene);
-    const core::FrameOverrides overrides =
-        options.resolution.empty() ? core::FrameOverrides{} : parseResolution(options.resolution);
+    const core::FrameOverrides overrides = options.resolution.empty()
+                                               ? core::FrameOverrides{}
+                                               : explain::parseResolution(options.resolution);
     const fs::path dir(options.out);
-    CreatedDirectory created(dir, "--out " + options.out);
+    output::CreatedDirectory created(dir, "--out " + options.out);
     const std::size_t pages = explain::writeGallery(dir, overrides);
     created.keep();
     std::cout << "recode explain --gallery: wrote " << pages << " pages and index.html to "
               << dir.string() << '\n';
     return 0;
   }
-  const core::FrameOverrides overrides =
-      options.resolution.empty() ? core::FrameOverrides{} : parseResolution(options.resolution);
+  const core::FrameOverrides overrides = options.resolution.empty()
+                                             ? core::FrameOverrides{}
+                                             : explain::parseResolution(options.resolution);
   explain::HierarchyPair chosen;
   if (!options.pair.empty()) {
     if (options.scene.empty())
       throw std::invalid_argument("--pair " + options.pair + ": needs a scene file");
     chosen = explain::hierarchyPair(options.scene, options.frame, options.pair, overrides);
   } else {
-    chosen.setup = loadPairSetup(
+    chosen.setup = explain::loadPairSetup(
         options.scene.empty() ? std::nullopt : std::optional<std::string>(options.scene),
         overrides);
   }
-  const PairSetup& setup = chosen.setup;
+  const explain::PairSetup& setup = chosen.setup;
   const core::FrameSpec& f = setup.frame;
   // Removed again, with what was written into it, if anything below fails.
   const fs::path dir(options.out);
-  CreatedDirectory created(dir, "--out " + options.out);
+  output::CreatedDirectory created(dir, "--out " + options.out);
   const explain::ExplainSummary summary =
       explain::explainPairInto(setup, options.mor, options.boxTest, dir, chosen.descentHtml);
   const core::PairResult& result = summary.result;

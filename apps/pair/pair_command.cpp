@@ -32,7 +32,7 @@ struct PairOptions {
 };
 
 int runPairCommand(const PairOptions& o) {
-  PairRunOptions options;
+  explain::PairRunOptions options;
   if (!o.scene.empty())
     options.scene = o.scene;
   options.overrides = o.frame.overrides();
@@ -43,15 +43,15 @@ int runPairCommand(const PairOptions& o) {
   options.pixel = o.pixel;
   options.mode = *core::parsePairMode(o.mode);  // CLI11 checked the name
   options.axisRule = viewAxisRule(o.viewAxis);
-  const PairRun run = runPair(
+  const explain::PairRun run = explain::runPair(
       options, [&](int width, int height) { return makeNamedDevice(o.device, width, height); });
   if (!o.dumpCases.empty())
-    writePgmBottomUp(o.dumpCases, run.setup.frame.width, run.setup.frame.height,
-                     frameCaseImage(run.setup.frame, run.result));
+    output::writePgmBottomUp(o.dumpCases, run.setup.frame.width, run.setup.frame.height,
+                             explain::frameCaseImage(run.setup.frame, run.result));
   if (o.json)
-    std::cout << pairRunJson(run, o.noTiming).dump(2) << '\n';
+    std::cout << explain::pairRunJson(run, o.noTiming).dump(2) << '\n';
   else
-    printPairRun(std::cout, run, o.picture);
+    explain::printPairRun(std::cout, run, o.picture);
   return 0;
 }
 

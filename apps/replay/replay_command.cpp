@@ -28,7 +28,7 @@ struct ReplayOptions {
 // The whole depth buffer as little-endian uint32, bottom row first: the 24-bit values exactly,
 // for tools that cannot read the golden JSON (width * height * 4 bytes, no header).
 void writeDepthRaw(const std::string& path, std::span<const std::uint32_t> depth) {
-  AtomicFile out(path, "--dump-depth-raw " + path);
+  output::AtomicFile out(path, "--dump-depth-raw " + path);
   std::string bytes;
   bytes.reserve(depth.size() * 4);
   for (const std::uint32_t d : depth) {
@@ -69,13 +69,14 @@ int runReplay(const ReplayOptions& o) {
   const long long depthDiff = cmp.depthPixels, stencilDiff = cmp.stencilPixels;
   const auto& c = dev.counters();
   if (!o.dumpStencil.empty()) {
-    writePgmBottomUp(o.dumpStencil, dev.width(), dev.height(), {stencil.begin(), stencil.end()});
+    output::writePgmBottomUp(o.dumpStencil, dev.width(), dev.height(),
+                             {stencil.begin(), stencil.end()});
   }
   if (!o.dumpDepth.empty()) {
     std::vector<std::uint8_t> top8(depth.size());
     for (std::size_t i = 0; i < depth.size(); ++i)
       top8[i] = static_cast<std::uint8_t>(depth[i] >> 16);
-    writePgmBottomUp(o.dumpDepth, dev.width(), dev.height(), top8);
+    output::writePgmBottomUp(o.dumpDepth, dev.width(), dev.height(), top8);
   }
   if (!o.dumpDepthRaw.empty())
     writeDepthRaw(o.dumpDepthRaw, depth);

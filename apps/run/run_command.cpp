@@ -102,7 +102,7 @@ SceneChoice chooseScene(const RunOptions& o) {
 // Runs the frames, each reported as the options ask, up to the first contact with
 // --stop-on-contact; under --json each frame's object goes to `json` as soon as it is done.
 core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulation& sim,
-                              AtomicFile* csv, StreamedJsonObject* json) {
+                              output::AtomicFile* csv, StreamedJsonObject* json) {
   core::RunStatisticsAccumulator stats;
   ProgressBar progress(frameCount);
   for (int k = 0; k < frameCount; ++k) {
@@ -113,7 +113,7 @@ core::RunStatistics runFrames(const RunOptions& o, int frameCount, core::Simulat
     if (json) {
       nlohmann::ordered_json frame = frameToJson(sim, report);
       if (o.noTiming)
-        removeTimingFields(frame);
+        output::removeTimingFields(frame);
       json->add(frame);
     } else if (!o.quiet)
       printFrame(std::cout, sim, report);
@@ -168,7 +168,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
 
   // Written beside the target and renamed at the end: a run that fails midway leaves no
   // partial CSV (and an earlier one as it was).
-  std::optional<AtomicFile> csv;
+  std::optional<output::AtomicFile> csv;
   if (!o.csv.empty()) {
     csv.emplace(o.csv, "--csv " + o.csv);
     csv->write(csvHeader(options.pairMode));
@@ -180,7 +180,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
   if (o.json) {
     nlohmann::ordered_json head = runToJson(run, sim);
     if (o.noTiming)
-      removeTimingFields(head);
+      output::removeTimingFields(head);
     json.emplace(std::cout, head, "frames");
   } else {
     printRunHeader(std::cout, run, sim);
@@ -198,7 +198,7 @@ void simulate(const RunOptions& o, const core::Scene& scene, bool isFile) {
     nlohmann::ordered_json tail;
     tail["stats"] = statisticsToJson(result, options.pairMode);
     if (o.noTiming)
-      removeTimingFields(tail);
+      output::removeTimingFields(tail);
     json->finish(tail);
   } else {
     printStatistics(std::cout, result, options.pairMode);
@@ -214,8 +214,8 @@ int runRunCommand(const RunOptions& o) {
   }
   const SceneChoice choice = chooseScene(o);
   if (!o.writeScene.empty()) {
-    writeFileAtomically(o.writeScene, core::builtinSceneJson(o.scene, choice.triangles),
-                        "--write-scene " + o.writeScene);
+    output::writeFileAtomically(o.writeScene, core::builtinSceneJson(o.scene, choice.triangles),
+                                "--write-scene " + o.writeScene);
     std::cerr << "recode run: wrote " << o.scene << " to " << o.writeScene << "\n";
     return 0;
   }

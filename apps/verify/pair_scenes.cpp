@@ -33,8 +33,8 @@ std::size_t savePairScenes(const VerifyPairs& pairs, const std::filesystem::path
     char stem[32];
     std::snprintf(stem, sizeof stem, "pair-%03zu", written);
     const std::string name(stem);
-    writeFileAtomically(dir / (name + "-a.off"), offText(*pair.a));
-    writeFileAtomically(dir / (name + "-b.off"), offText(*pair.b));
+    output::writeFileAtomically(dir / (name + "-a.off"), offText(*pair.a));
+    output::writeFileAtomically(dir / (name + "-b.off"), offText(*pair.b));
     const core::ViewWindow& w = pair.frame.window;
     nlohmann::ordered_json scene;
     scene["view"] = {{"axis", core::toString(pair.frame.axis)},
@@ -43,7 +43,7 @@ std::size_t savePairScenes(const VerifyPairs& pairs, const std::filesystem::path
     const auto label = [&](const char* block) { return pair.label + " " + block; };
     scene["objects"] = {{{"name", label("A")}, {"mesh", name + "-a.off"}},
                         {{"name", label("B")}, {"mesh", name + "-b.off"}}};
-    writeFileAtomically(dir / (name + ".json"), scene.dump(2) + "\n");
+    output::writeFileAtomically(dir / (name + ".json"), scene.dump(2) + "\n");
     ++written;
   }
   return written;

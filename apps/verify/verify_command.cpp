@@ -196,7 +196,7 @@ int runVerifyCommand(const VerifyOptions& o) {
   if (o.json) {
     nlohmann::ordered_json j = verifyRunToJson(run);
     if (o.noTiming)
-      removeTimingFields(j);
+      output::removeTimingFields(j);
     std::cout << j.dump(2) << '\n';
   } else
     printVerifyReport(std::cout, run, o.verbose);

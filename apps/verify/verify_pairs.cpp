@@ -50,7 +50,7 @@ VerifyPairs scenePairs(const core::Scene& scene, const core::FrameOverrides& ove
           p.b = meshes[j][lb];
           core::Aabb bounds = core::boundingBox(*p.a);
           bounds.extend(core::boundingBox(*p.b));
-          p.frame = resolveFrameNamed(scene, bounds, overrides);
+          p.frame = explain::resolveFrameNamed(scene, bounds, overrides);
           out.pairs.push_back(std::move(p));
         }
   return out;

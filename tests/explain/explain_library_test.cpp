@@ -23,7 +23,7 @@
 namespace {
 
 using namespace recode;
-using app::PairSetup;
+using explain::PairSetup;
 
 bool sameBits(double a, double b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
@@ -38,12 +38,12 @@ PairSetup turnedBoxes(const char* axis) {
        "rotation_deg": [20, 35, 10]},
       {"name": "B", "shape": {"type": "cylinder", "radius": 0.5, "height": 2},
        "position": [0.3, 0.4, 0.2], "rotation_deg": [-15, 5, 40]}]})";
-  return app::pairSetupFromScene(core::parseScene(json, "test scene", "."), {});
+  return explain::pairSetupFromScene(core::parseScene(json, "test scene", "."), {});
 }
 
 struct Run {
   core::PairResult result;
-  app::explain::StepRecorder recorder;
+  explain::StepRecorder recorder;
 };
 
 std::unique_ptr<Run> runRecorded(const PairSetup& setup, core::MorMode mor) {
@@ -67,7 +67,7 @@ TEST_CASE(
     const PairSetup setup = turnedBoxes(axis);
     const auto run = runRecorded(setup, core::MorMode::Min);
     const nlohmann::json j =
-        nlohmann::json::parse(app::explain::sceneViewJson(setup, run->result).dump());
+        nlohmann::json::parse(explain::sceneViewJson(setup, run->result).dump());
     CHECK(j["axis"] == axis);
     const core::FrameSpec& f = setup.frame;
     CHECK(j["resolution"] == nlohmann::json{f.width, f.height});
@@ -112,10 +112,10 @@ TEST_CASE(
       CAPTURE(axis, core::toString(mor));
       const PairSetup setup = turnedBoxes(axis);
       const auto run = runRecorded(setup, mor);
-      std::vector<app::explain::KeptPicture> pictures;  // kept in memory, no file written
-      const app::explain::ExplainedRun explained = app::explain::explainRun(
+      std::vector<explain::KeptPicture> pictures;  // kept in memory, no file written
+      const explain::ExplainedRun explained = explain::explainRun(
           setup, run->result, run->recorder.snapshots(), mor, true, {}, &pictures, {});
-      const app::explain::RayArrays& rays = explained.rays;
+      const explain::RayArrays& rays = explained.rays;
       const std::vector<std::string> steps = [&] {
         std::vector<std::string> ids;
         for (const auto& s : rays.scalars["steps"])

@@ -19,8 +19,8 @@ struct LivePage {
   // the data lies in the module's memory: the ray inspector's per-pixel arrays as 32-bit
   // integers, a picture's RGB bytes (rows from the top).
   std::string json;
-  std::vector<app::explain::KeptPicture> pictures;  // what the pictures' offsets point into
-  std::vector<std::int32_t> rays;                   // what ray_arrays.offset points into
+  std::vector<explain::KeptPicture> pictures;  // what the pictures' offsets point into
+  std::vector<std::int32_t> rays;              // what ray_arrays.offset points into
 };
 
 // Runs the pair of the request on the CPU device, recording every step. Throws what loading

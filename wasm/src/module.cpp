@@ -43,13 +43,15 @@ extern "C" {
 EMSCRIPTEN_KEEPALIVE const char* recode_pair(const char* request) {
   return answer([&] {
     const recode::wasm::PairRequestText r = recode::wasm::readPairRequest(request);
-    const recode::app::PairRun run = recode::app::runPair(r.options, [](int width, int height) {
-      return std::make_unique<recode::raster::CpuDevice>(width, height);
-    });
+    const recode::explain::PairRun run =
+        recode::explain::runPair(r.options, [](int width, int height) {
+          return std::make_unique<recode::raster::CpuDevice>(width, height);
+        });
     if (!r.dumpCases.empty())
-      recode::app::writePgmBottomUp(r.dumpCases, run.setup.frame.width, run.setup.frame.height,
-                                    recode::app::frameCaseImage(run.setup.frame, run.result));
-    return recode::app::pairRunJson(run, !r.timing).dump(2) + "\n";
+      recode::output::writePgmBottomUp(
+          r.dumpCases, run.setup.frame.width, run.setup.frame.height,
+          recode::explain::frameCaseImage(run.setup.frame, run.result));
+    return recode::explain::pairRunJson(run, !r.timing).dump(2) + "\n";
   });
 }
 

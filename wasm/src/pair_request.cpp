@@ -36,13 +36,13 @@ PairRequestText readPairRequest(const std::string& json) {
   if (request.is_discarded() || !request.is_object())
     throw std::invalid_argument("request: expected one JSON object");
   PairRequestText r;
-  app::PairRunOptions& o = r.options;
+  explain::PairRunOptions& o = r.options;
   for (const auto& [key, value] : request.items()) {
     if (key == "scene") {
       if (!value.is_null())
         o.scene = text(value, key);
     } else if (key == "resolution") {
-      const core::FrameOverrides size = app::parseResolution(text(value, key));
+      const core::FrameOverrides size = explain::parseResolution(text(value, key));
       o.overrides.width = size.width;
       o.overrides.height = size.height;
     } else if (key == "pixel_size") {

@@ -9,7 +9,7 @@
 namespace recode::wasm {
 
 struct PairRequestText {
-  app::PairRunOptions options;
+  explain::PairRunOptions options;
   bool timing = true;     // false: the JSON without its wall-clock fields (--no-timing)
   std::string dumpCases;  // --dump-cases: the frame's case map as a PGM file at this path
 };

@@ -9,7 +9,7 @@
 #include "recode/pair/view.hpp"
 #include "recode/raster/state.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 [[nodiscard]] std::string escapeHtml(std::string_view text);
 // Six significant digits.
@@ -21,4 +21,4 @@ namespace recode::app::explain {
 // An HTML colour swatch for legends and tables.
 [[nodiscard]] std::string swatch(Rgb c);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -7,11 +7,11 @@
 
 #include "recode/pair/frame.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 // Writes DIR/<pair>/ (index.html, explain.json, pictures) for every gallery pair and
 // DIR/index.html linking them; `overrides` replaces the pairs' own 48 x 48 frame. Returns
 // the number of pair pages. DIR must exist.
 std::size_t writeGallery(const std::filesystem::path& dir, const core::FrameOverrides& overrides);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -8,7 +8,7 @@
 #include "pair/pair_setup.hpp"
 #include "recode/pair/frame.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 struct HierarchyPair {
   PairSetup setup;
@@ -22,4 +22,4 @@ struct HierarchyPair {
                                           const std::string& pairSpec,
                                           const core::FrameOverrides& overrides);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

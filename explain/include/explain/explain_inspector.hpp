@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 // CSS for the inspector panel, the step slider, the picture markers and printing.
 [[nodiscard]] std::string_view inspectorStyle();
@@ -22,4 +22,4 @@ namespace recode::app::explain {
 // JSON made safe inside <script>: no "</" that could close the element early.
 [[nodiscard]] std::string scriptSafe(const std::string& json);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

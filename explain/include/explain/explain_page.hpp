@@ -10,7 +10,7 @@
 #include "pair/pair_setup.hpp"
 #include "recode/pair/pair.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 struct Section {
   std::string id;
@@ -43,4 +43,4 @@ void writeIndexHtml(const std::filesystem::path& dir, const Page& page);
 // std::runtime_error naming the file on failure.
 void writeExplainJson(const std::filesystem::path& dir, const Page& page);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -6,7 +6,7 @@
 #include "explain/png_image.hpp"
 #include "recode/pair/pair_cases.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 // One set for every picture so the page reads consistently.
 inline constexpr Rgb kEmpty{17, 17, 17};         // nothing here
@@ -67,4 +67,4 @@ inline constexpr std::array<Rgb, core::kCaseCount> kCasePalette = {{
     {42, 157, 143},   // 8 B only
 }};
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -13,7 +13,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/state.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 struct LegendEntry {
   Rgb colour;
@@ -139,4 +139,4 @@ class PictureWriter {
   std::optional<Painter> zoom_;
 };
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

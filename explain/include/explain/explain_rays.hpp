@@ -10,7 +10,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/pixel_buffer.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 // At most this many pixels of ray data go into the page (8 steps x 2 buffers each, about
 // 2.5 MB of JSON at the limit); a larger crop is cut to a window around where both blocks are.
@@ -51,4 +51,4 @@ struct RayArrays {
 // object (the inline data of `recode explain`'s page).
 [[nodiscard]] nlohmann::json rayDataJson(RayArrays arrays);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -10,7 +10,7 @@
 #include "recode/raster/pixel_buffer.hpp"
 #include "recode/raster/state.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 // Every step is kept as a full-frame copy of both buffers, so the frame is limited to keep
 // that (and one picture pixel per framebuffer pixel) reasonable.
@@ -57,4 +57,4 @@ struct FaceDepths {
 [[nodiscard]] FaceDepths faceDepths(const PairSetup& setup, const core::TriangleMesh& mesh,
                                     double depthMin, double depthMax);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -12,7 +12,7 @@
 #include "explain/explain_recorder.hpp"
 #include "recode/pair/pair.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 // The silhouettes, the box descent when `descentHtml` is not empty, one section per recorded
 // step and, when the blocks collide, the contact region; their pictures are made by
@@ -41,4 +41,4 @@ struct ExplainedRun {
                                       std::vector<KeptPicture>* kept,
                                       const std::string& descentHtml);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

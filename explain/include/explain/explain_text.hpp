@@ -8,7 +8,7 @@
 #include "recode/pair/pair.hpp"
 #include "recode/raster/state.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 inline constexpr std::string_view kSilhouettesTitle = "The two blocks and the MOR";
 inline constexpr std::string_view kContactTitle = "The contact region";
@@ -36,4 +36,4 @@ inline constexpr std::string_view kContactTitle = "The contact region";
 // "The blocks collide" or "No collision", with the numbers behind it.
 [[nodiscard]] std::string verdictHtml(const core::PairResult& result);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

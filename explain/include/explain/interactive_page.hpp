@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <string_view>
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 // Writes DIR/index.html into the existing directory `dir`, with `wasmModuleJs` (wasm/'s
 // recode-wasm.js) inlined. Throws std::runtime_error naming the file on a write error, or a
 // script that cannot be inlined.
 void writeInteractivePage(const std::filesystem::path& dir, std::string_view wasmModuleJs);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

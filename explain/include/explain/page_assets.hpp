@@ -3,7 +3,7 @@
 // into the library at build time (cmake/embed_text_files.cmake), so the pages need no file
 // beside the program and the files stay readable, lintable CSS and JavaScript.
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 extern const char* const kPageCss;         // page/page.css: text, figures, legends, tables
 extern const char* const kInspectorCss;    // page/inspector.css: the ray inspector's panel
@@ -13,4 +13,4 @@ extern const char* const kInteractiveJs;   // page/interactive.js: the interacti
 extern const char* const kScene3dJs;       // page/scene3d.js: its 3-D view (WebGL2)
 extern const char* const kPredictJs;       // page/predict.js: its exercises
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

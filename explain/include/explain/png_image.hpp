@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace recode::app {
+namespace recode::explain {
 
 struct Rgb {
   std::uint8_t r = 0;
@@ -74,4 +74,4 @@ void outlineRect(RgbImage& image, const ImageRect& rect, Rgb colour, int thickne
 // Writes `image` as an 8-bit RGB PNG. Throws std::runtime_error naming the file on failure.
 void writePng(const std::filesystem::path& path, const RgbImage& image);
 
-}  // namespace recode::app
+}  // namespace recode::explain

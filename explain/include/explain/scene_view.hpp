@@ -9,7 +9,7 @@
 #include "pair/pair_setup.hpp"
 #include "recode/pair/pair.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 // {"axis": "x"|"y"|"z", "window": [umin, vmin, umax, vmax], "resolution": [W, H],
 //  "depth_range": [dmin, dmax], "mor": [x0, y0, x1, y1] or null,
@@ -18,4 +18,4 @@ namespace recode::app::explain {
 // are over; positions are the meshes' vertices exactly as the pair ran on them.
 [[nodiscard]] nlohmann::json sceneViewJson(const PairSetup& setup, const core::PairResult& result);
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

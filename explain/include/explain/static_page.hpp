@@ -9,7 +9,7 @@
 #include "pair/pair_setup.hpp"
 #include "recode/pair/pair.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 struct ExplainSummary {
   core::PairResult result;
@@ -25,4 +25,4 @@ ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morNam
                                const std::filesystem::path& dir,
                                const std::string& descentHtml = {});
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-namespace recode::app {
+namespace recode::output {
 
 class AtomicFile {
  public:
@@ -64,4 +64,4 @@ class CreatedDirectory {
   std::filesystem::path created_;  // the outermost directory made here; empty: none
 };
 
-}  // namespace recode::app
+}  // namespace recode::output

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace recode::app {
+namespace recode::output {
 void writePgmBottomUp(const std::filesystem::path& path, int width, int height,
                       const std::vector<std::uint8_t>& pixels);
 }

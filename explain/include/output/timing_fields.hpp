@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace recode::app {
+namespace recode::output {
 
 // The keys that hold wall-clock times, wherever they appear in those outputs: pair's
 // timing_us and timing_steps_us; run's frame_us and collision_us per frame and TTF_s, ATF_ms,
@@ -13,4 +13,4 @@ namespace recode::app {
 // those outputs is a count or a result, the same on every run.
 void removeTimingFields(nlohmann::ordered_json& j);
 
-}  // namespace recode::app
+}  // namespace recode::output

@@ -7,7 +7,7 @@
 #include "pair/pair_setup.hpp"
 #include "recode/pair/pair.hpp"
 
-namespace recode::app {
+namespace recode::explain {
 
 // The object printed by `recode pair --json` (keys documented in docs/cli.md).
 [[nodiscard]] nlohmann::ordered_json pairResultToJson(const PairSetup& setup,
@@ -38,4 +38,4 @@ void printPairReport(std::ostream& out, const PairSetup& setup, const core::Pair
 [[nodiscard]] std::vector<std::uint8_t> frameCaseImage(const core::FrameSpec& frame,
                                                        const core::PairResult& result);
 
-}  // namespace recode::app
+}  // namespace recode::explain

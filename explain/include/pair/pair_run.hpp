@@ -17,7 +17,7 @@
 #include "recode/refine/pair_mode.hpp"
 #include "recode/refine/view_axis_choice.hpp"
 
-namespace recode::app {
+namespace recode::explain {
 
 struct PairRunOptions {
   std::optional<std::string> scene;  // a scene file; none: the built-in pair
@@ -56,4 +56,4 @@ struct PairRun {
 // The report `recode pair` prints without --json.
 void printPairRun(std::ostream& out, const PairRun& run, bool picture);
 
-}  // namespace recode::app
+}  // namespace recode::explain

@@ -10,7 +10,7 @@
 #include "recode/pair/frame.hpp"
 #include "recode/scene/scene.hpp"
 
-namespace recode::app {
+namespace recode::explain {
 
 struct PairSetup {
   std::string source;  // the scene file, or "built-in pair"
@@ -36,4 +36,4 @@ struct PairSetup {
 // "--resolution W" or "WxH" into overrides; throws std::invalid_argument naming the text.
 [[nodiscard]] core::FrameOverrides parseResolution(const std::string& text);
 
-}  // namespace recode::app
+}  // namespace recode::explain

@@ -4,7 +4,7 @@
 #include <iomanip>
 #include <sstream>
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 std::string escapeHtml(std::string_view text) {
   std::string out;
@@ -54,4 +54,4 @@ std::string swatch(Rgb c) {
   return "<span class=\"sw\" style=\"background:" + hexColour(c) + "\"></span>";
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

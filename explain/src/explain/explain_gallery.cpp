@@ -14,7 +14,7 @@
 #include "recode/pair/pair_cases.hpp"
 #include "recode/scene/scene.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 namespace {
 
@@ -119,7 +119,7 @@ std::size_t writeGallery(const fs::path& dir, const core::FrameOverrides& overri
   for (const GalleryPair& pair : kPairs) {
     const PairSetup setup = gallerySetup(pair, overrides);
     const fs::path sub = dir / std::string(pair.id);
-    CreatedDirectory created(sub, "--out " + sub.string());
+    output::CreatedDirectory created(sub, "--out " + sub.string());
     const ExplainSummary s = explainPairInto(setup, std::string(pair.mor), pair.boxTest, sub);
     created.keep();
     ++pages;
@@ -143,8 +143,8 @@ std::size_t writeGallery(const fs::path& dir, const core::FrameOverrides& overri
       << " case map\"></a></td></tr>\n";
   }
   h << "</table>\n</body></html>\n";
-  writeFileAtomically(dir / "index.html", h.str());
+  output::writeFileAtomically(dir / "index.html", h.str());
   return pages;
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

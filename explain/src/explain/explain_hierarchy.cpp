@@ -11,7 +11,7 @@
 #include "recode/sim/hierarchy.hpp"
 #include "recode/sim/simulation.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 namespace {
 
@@ -170,4 +170,4 @@ HierarchyPair hierarchyPair(const std::string& scenePath, int frame, const std::
   return out;
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -6,7 +6,7 @@
 
 #include "explain/page_assets.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 std::string scriptSafe(const std::string& json) {
   std::string out;
@@ -43,4 +43,4 @@ std::string inspectorHtml(const nlohmann::json& rayData) {
   return h;
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -13,7 +13,7 @@
 #include "explain/page_assets.hpp"
 #include "output/atomic_file.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 namespace {
 
@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 using raster::PixelRect;
 
 void writeText(const fs::path& path, const std::string& text) {
-  writeFileAtomically(path, text);
+  output::writeFileAtomically(path, text);
 }
 
 nlohmann::json colourJson(Rgb c) {
@@ -261,4 +261,4 @@ void writeExplainJson(const fs::path& dir, const Page& page) {
   writeText(dir / "explain.json", j.dump(2) + "\n");
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

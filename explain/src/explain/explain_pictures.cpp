@@ -15,7 +15,7 @@
 #include "explain/explain_text.hpp"
 #include "recode/pair/pair_cases.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 using core::PairStep;
 using raster::PixelRect;
@@ -444,4 +444,4 @@ Picture PictureWriter::contactPicture(const Painter& painter, int number) {
   return p;
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

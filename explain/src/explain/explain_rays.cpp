@@ -7,7 +7,7 @@
 
 #include "recode/pair/pair_cases.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 namespace {
 
@@ -111,4 +111,4 @@ nlohmann::json rayDataJson(RayArrays r) {
   return j;
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

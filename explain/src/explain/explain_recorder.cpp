@@ -5,7 +5,7 @@
 #include "recode/pair/view.hpp"
 #include "recode/raster/cpu_device.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 void StepRecorder::afterStep(core::PairStep step, raster::DepthStencilDevice& device) {
   const raster::PixelRect all{0, 0, device.width(), device.height()};
@@ -66,4 +66,4 @@ FaceDepths faceDepths(const PairSetup& setup, const core::TriangleMesh& mesh, do
   return d;
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -5,7 +5,7 @@
 
 #include "explain/explain_text.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 namespace {
 
@@ -129,4 +129,4 @@ ExplainedRun explainRun(const PairSetup& setup, const core::PairResult& result,
   return run;
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -9,7 +9,7 @@
 #include "recode/pair/pair_cases.hpp"
 #include "recode/raster/state.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 namespace {
 
@@ -349,4 +349,4 @@ std::string verdictHtml(const core::PairResult& result) {
   return t.str();
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -8,7 +8,7 @@
 #include "explain/page_assets.hpp"
 #include "output/atomic_file.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 namespace {
 
@@ -80,7 +80,7 @@ void writeInteractivePage(const std::filesystem::path& dir, std::string_view was
   h += "</script>\n<script>";
   h += scriptText(kPredictJs, "page/predict.js");
   h += "</script>\n</body></html>\n";
-  writeFileAtomically(dir / "index.html", h);
+  output::writeFileAtomically(dir / "index.html", h);
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -10,7 +10,7 @@
 
 #include "output/atomic_file.hpp"
 
-namespace recode::app {
+namespace recode::explain {
 
 Rgb dimmed(Rgb colour, double factor) {
   const auto scale = [factor](std::uint8_t c) {
@@ -114,7 +114,7 @@ void writePng(const std::filesystem::path& path, const RgbImage& image) {
   if (stbi_write_png_to_func(append, &png, image.width(), image.height(), 3, image.bytes().data(),
                              3 * image.width()) == 0)
     throw std::runtime_error(path.string() + ": cannot encode the PNG picture");
-  writeFileAtomically(path, png);
+  output::writeFileAtomically(path, png);
 }
 
-}  // namespace recode::app
+}  // namespace recode::explain

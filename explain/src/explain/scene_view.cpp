@@ -6,7 +6,7 @@
 #include "recode/pair/frame.hpp"
 #include "recode/pair/view.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 namespace {
 
@@ -39,4 +39,4 @@ nlohmann::json sceneViewJson(const PairSetup& setup, const core::PairResult& res
           {"blocks", {blockJson(setup.nameA, setup.a), blockJson(setup.nameB, setup.b)}}};
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

@@ -15,7 +15,7 @@
 #include "recode/pair/frame.hpp"
 #include "recode/raster/cpu_device.hpp"
 
-namespace recode::app::explain {
+namespace recode::explain {
 
 ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morName, bool boxTest,
                                const std::filesystem::path& dir, const std::string& descentHtml) {
@@ -53,4 +53,4 @@ ExplainSummary explainPairInto(const PairSetup& setup, const std::string& morNam
   return summary;
 }
 
-}  // namespace recode::app::explain
+}  // namespace recode::explain

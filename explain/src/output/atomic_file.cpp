@@ -12,7 +12,7 @@
 #include <system_error>
 #include <vector>
 
-namespace recode::app {
+namespace recode::output {
 
 namespace fs = std::filesystem;
 
@@ -157,4 +157,4 @@ CreatedDirectory::~CreatedDirectory() {
   }
 }
 
-}  // namespace recode::app
+}  // namespace recode::output

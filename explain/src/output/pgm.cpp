@@ -4,7 +4,7 @@
 
 #include "output/atomic_file.hpp"
 
-namespace recode::app {
+namespace recode::output {
 
 void writePgmBottomUp(const std::filesystem::path& path, int width, int height,
                       const std::vector<std::uint8_t>& pixels) {
@@ -18,4 +18,4 @@ void writePgmBottomUp(const std::filesystem::path& path, int width, int height,
   out.commit();
 }
 
-}  // namespace recode::app
+}  // namespace recode::output

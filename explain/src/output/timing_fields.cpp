@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace recode::app {
+namespace recode::output {
 
 namespace {
 
@@ -25,4 +25,4 @@ void removeTimingFields(nlohmann::ordered_json& j) {
   }
 }
 
-}  // namespace recode::app
+}  // namespace recode::output

@@ -5,7 +5,7 @@
 
 #include "recode/io/printable.hpp"
 
-namespace recode::app {
+namespace recode::explain {
 
 namespace {
 
@@ -198,4 +198,4 @@ std::vector<std::uint8_t> frameCaseImage(const core::FrameSpec& frame, const cor
   return std::move(image.data);
 }
 
-}  // namespace recode::app
+}  // namespace recode::explain

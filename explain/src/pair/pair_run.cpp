@@ -9,7 +9,7 @@
 #include "recode/refine/adaptive.hpp"
 #include "recode/refine/proven_apart.hpp"
 
-namespace recode::app {
+namespace recode::explain {
 
 namespace {
 
@@ -153,7 +153,7 @@ nlohmann::ordered_json pairRunJson(const PairRun& run, bool noTiming) {
     j["view_axis"] = core::toString(run.setup.frame.axis);
   }
   if (noTiming)
-    removeTimingFields(j);
+    output::removeTimingFields(j);
   if (run.probe)
     j["pixel"] = run.probe->toJson(run.result);
   return j;
@@ -168,4 +168,4 @@ void printPairRun(std::ostream& out, const PairRun& run, bool picture) {
     printMode(out, *run.modeReport);
 }
 
-}  // namespace recode::app
+}  // namespace recode::explain

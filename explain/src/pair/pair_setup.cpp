@@ -5,7 +5,7 @@
 
 #include "recode/scene/builtin_scenes.hpp"
 
-namespace recode::app {
+namespace recode::explain {
 
 core::FrameSpec resolveFrameNamed(const core::Scene& scene, const core::Aabb& bounds,
                                   const core::FrameOverrides& overrides) {
@@ -76,4 +76,4 @@ core::FrameOverrides parseResolution(const std::string& text) {
   return o;
 }
 
-}  // namespace recode::app
+}  // namespace recode::explain
