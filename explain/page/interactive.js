@@ -33,7 +33,8 @@
   let view3d = null, rayPixel = null, fixedRay = false;
   const page = window.recodePage = {ready: false, updates: 0, lastMs: 0, moduleMs: 0, times: [],
     error: null, pair: null, rayData: null, scene3d: null, sceneText: sceneText, state: state,
-    update: update, load: load, signature: signature, showRay: showRay, view3d: null,
+    update: update, load: load, signature: signature, showRay: showRay, rayIndex: rayIndex,
+    view3d: null,
     onUpdate: [],  // functions called with the ray data after every update (page/predict.js)
     pending: function () { return dirty || drag !== null || playing; }};
 
@@ -199,6 +200,16 @@
       mor: s.mor, blocks: s.blocks};
   }
 
+  // Where pixel (x, y) is in the ray data's per-pixel arrays (rows of the crop, bottom row
+  // first), or -1 outside the crop, where the page has no data.
+  function rayIndex(x, y) {
+    const d = page.rayData;
+    if (!d) return -1;
+    const c = d.crop;
+    const inCrop = x >= c[0] && x < c[2] && y >= c[1] && y < c[3];
+    return inCrop ? (y - c[1]) * (c[2] - c[0]) + (x - c[0]) : -1;
+  }
+
   // The ray through `rayPixel` with where it enters and leaves each block: the 24-bit depths
   // the inspector shows (the reference's own face depths), so that the picture and the
   // buffers agree. Outside the inspector's crop the page has no depths: the line alone.
@@ -206,9 +217,8 @@
     if (!view3d) return;
     const d = page.rayData;
     if (!rayPixel || !d) { view3d.setRay(null); return; }
-    const c = d.crop, x = rayPixel[0], y = rayPixel[1];
-    const inCrop = x >= c[0] && x < c[2] && y >= c[1] && y < c[3];
-    const i = inCrop ? (y - c[1]) * (c[2] - c[0]) + (x - c[0]) : -1;
+    const x = rayPixel[0], y = rayPixel[1];
+    const i = rayIndex(x, y);
     view3d.setRay({pixel: [x, y],
       a: i >= 0 && (d.coverage[i] & 1) ? [d.a_front[i], d.a_back[i]] : null,
       b: i >= 0 && (d.coverage[i] & 2) ? [d.b_front[i], d.b_back[i]] : null});

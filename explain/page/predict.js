@@ -98,15 +98,16 @@ window.recodePredict = (function () {
     4: 'the stencil encoding'};
 
   let current = null;    // {exercise, pixel, index, truth, signature}
+  let pending = null;    // the exercise whose pose the page is running
   let choosing = false;  // the own-pixel exercise waits for a click
   const progress = load();
 
   function load() {
     try {
       const p = JSON.parse(window.localStorage.getItem(STORE) || '{}');
-      return {solved: p.solved || {}, tries: p.tries || {}};
+      return {solved: p.solved || {}};
     } catch (e) {
-      return {solved: {}, tries: {}};  // storage off or unreadable: progress for this visit only
+      return {solved: {}};  // storage off or unreadable: progress for this visit only
     }
   }
   function save() {
@@ -189,10 +190,10 @@ window.recodePredict = (function () {
     if (verdict.correct && Number(answers.kase) !== t.kase)
       verdict = {correct: false, pass: 6, title: DECODE.title, rule: DECODE.rule,
         stepId: 'read_stencil'};
-    const id = current.exercise.id;
-    progress.tries[id] = (progress.tries[id] || 0) + 1;
-    if (verdict.correct) progress.solved[id] = true;
-    save();
+    if (verdict.correct) {
+      progress.solved[current.exercise.id] = true;
+      save();
+    }
     verdict.message = verdict.correct
       ? 'Right: every pass and the case agree with the reference.'
       : 'Pass ' + verdict.title + ': its rule was misapplied here (the passes before it are ' +
@@ -339,8 +340,6 @@ window.recodePredict = (function () {
     render();
   }
 
-  let pending = null;  // the exercise whose pose the page is running
-
   function open(e, pixel, rays) {
     current = {exercise: e, pixel: [pixel[0], pixel[1]], index: pixel[2],
       truth: truthAt(rays, pixel[2]), signature: page.signature()};
@@ -391,20 +390,21 @@ window.recodePredict = (function () {
     const b = img.getBoundingClientRect();
     const x = r[0] + Math.floor((ev.clientX - b.left) / b.width * (r[2] - r[0]));
     const y = r[3] - 1 - Math.floor((ev.clientY - b.top) / b.height * (r[3] - r[1]));
-    const c = rays.crop;
     if (!rays.steps.length) {
       $('predict-exercise').insertAdjacentHTML('beforeend', '<p class="wrong">No pass ran on ' +
         'this pose (the box test found the blocks apart): move them together, or switch the ' +
         'box test off, and click again.</p>');
       return;
     }
-    if (!inRect(c, x, y)) {
+    const i = page.rayIndex(x, y);
+    if (i < 0) {
       $('predict-exercise').insertAdjacentHTML('beforeend', '<p class="wrong">No ray data at (' +
-        x + ', ' + y + '): choose a pixel in [' + c.join(', ') + ') (the MOR and a margin).</p>');
+        x + ', ' + y + '): choose a pixel in [' + rays.crop.join(', ') + ') (the MOR and a ' +
+        'margin).</p>');
       return;
     }
     choosing = false;
-    open(EXERCISES[EXERCISES.length - 1], [x, y, (y - c[1]) * (c[2] - c[0]) + (x - c[0])], rays);
+    open(EXERCISES[EXERCISES.length - 1], [x, y, i], rays);
   }, true);
 
   render();

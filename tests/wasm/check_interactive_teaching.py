@@ -119,8 +119,8 @@ def check_silhouettes(dt, scene):
     corners = dt.evaluate("[%s, %s].map(function (p) { return recodePage.view3d.project(p); })"
                           % (json.dumps(world(scene["axis"], umin, vmin, dmid)),
                              json.dumps(world(scene["axis"], umax, vmax, dmid))))
-    size = dt.evaluate("[recodePage.view3d.readPixels().width, recodePage.view3d.readPixels()"
-                       ".height]")
+    size = dt.evaluate("[document.getElementById('view3d').width,"
+                       " document.getElementById('view3d').height]")
     want = [[0, size[1]], [size[0], 0]]
     if any(abs(corners[i][k] - want[i][k]) > 1e-6 for i in range(2) for k in range(2)):
         fail("along the axis the window's corners are drawn at %s, not %s" % (corners, want))
@@ -163,7 +163,6 @@ def check_silhouettes(dt, scene):
         report.append("%s %d covered, %d exact, %d within a pixel" % (name, covered, exact, near))
     dt.evaluate("recodePage.view3d.setVisible({A: true, B: true, axes: true, window: true,"
                 " mor: true, ray: true}); 0")
-    w, h, drawn = view_pixels(dt)
     print("3-D silhouettes along %s (%d pixels compared, %d under the MOR outline): %s"
           % (scene["axis"], len(cover), other, "; ".join(report)))
 
