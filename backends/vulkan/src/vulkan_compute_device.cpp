@@ -1,9 +1,10 @@
 // VulkanComputeDevice: the contract as a tile rasterizer in compute shaders
 // (shaders/compute/). The host validates a draw and copies its window vertices and indices to
-// the device as they are; each draw then records five dispatches (set-up, the blocks' prefix
-// sum, binning, sorting each block's list, the blocks' fragments) and the framebuffer stays a
-// storage buffer that clears, read-backs and summaries address directly. Everything is recorded
-// into the shared recording of the 64-bit Vulkan context (vulkan_recorder.hpp) and run by finish().
+// the device as they are (a posed block's mesh once, for as long as the block lives); its
+// clears, draws and reads then go into the frame (tile_frame.hpp), the job list that every
+// compute device of the process shares and that runs as a fixed set of dispatches just before
+// the shared recording (vulkan_recorder.hpp) is submitted by finish(). The framebuffer is a
+// storage buffer the frame reaches by its address.
 
 #include "recode/backends/vulkan_compute_device.hpp"
 
@@ -19,6 +20,7 @@
 #include "recode/backends/summary_layout.hpp"
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
+#include "tile_frame.hpp"
 #include "vulkan_compute_pipelines.hpp"
 #include "vulkan_context.hpp"
 #include "vulkan_recorder.hpp"
@@ -28,62 +30,15 @@ namespace recode::backends {
 
 namespace {
 
-using detail::TileBinding;
-using detail::TileBuffer;
-using detail::TileDrawConstants;
+using detail::TileReadForm;
 using raster::PixelRect;
 
-// Offsets of the regions a dispatch binds: the largest minStorageBufferOffsetAlignment the
-// specification allows, so no device needs asking.
+// Offsets of the regions a mesh's parts start at: the largest minStorageBufferOffsetAlignment
+// the specification allows.
 constexpr VkDeviceSize kBindAlignment = 256;
 
 VkDeviceSize aligned(VkDeviceSize bytes) {
   return (bytes + kBindAlignment - 1) / kBindAlignment * kBindAlignment;
-}
-
-// The form a read writes (tile_read.comp).
-enum class ReadForm : std::uint32_t { DepthWords = 0, StencilBytes = 1, DepthFloats = 2 };
-
-// What a draw's work buffer holds, for `triangles` triangles under a scissor of `blocks` 8x8
-// blocks: the set-up triangles, the blocks' counts, offsets and cursors, and the lists.
-struct WorkLayout {
-  WorkLayout(std::uint32_t triangles, std::uint32_t blocks)
-      : pairCapacity(4 * triangles + 2 * blocks + 4096) {
-    countsOffset = aligned(VkDeviceSize{triangles} * detail::kTileWordsPerTriangle * 4);
-    offsetsOffset = countsOffset + aligned(VkDeviceSize{blocks} * 4);
-    cursorsOffset = offsetsOffset + aligned(VkDeviceSize{blocks} * 4);
-    pairsOffset = cursorsOffset + aligned(VkDeviceSize{blocks} * 4);
-    bytes = pairsOffset + VkDeviceSize{pairCapacity} * 4;
-  }
-  // Entries the blocks' lists hold in all: a block whose list would pass the end is drawn from
-  // every triangle of the draw instead (tile_raster.comp), so this bounds memory, not results.
-  std::uint32_t pairCapacity;
-  VkDeviceSize countsOffset = 0;
-  VkDeviceSize offsetsOffset = 0;
-  VkDeviceSize cursorsOffset = 0;
-  VkDeviceSize pairsOffset = 0;
-  VkDeviceSize bytes = 0;
-};
-
-// The interface's state as the shaders read it (tile_common.glsl's Draw).
-TileDrawConstants stateConstants(const raster::RenderState& s, int width, int height) {
-  TileDrawConstants c;
-  c.scissor[0] = s.scissor.x0;
-  c.scissor[1] = s.scissor.y0;
-  c.scissor[2] = s.scissor.x1;
-  c.scissor[3] = s.scissor.y1;
-  c.width = static_cast<std::uint32_t>(width);
-  c.height = static_cast<std::uint32_t>(height);
-  const auto bits = [](auto value) { return static_cast<std::uint32_t>(value); };
-  c.tests = bits(s.depthFunc) | (s.depthWrite ? 8u : 0u) | (bits(s.stencilFunc) << 4) |
-            (bits(s.cull) << 7);
-  c.stencil =
-      bits(s.stencilRef) | (bits(s.stencilValueMask) << 8) | (bits(s.stencilWriteMask) << 16);
-  const auto ops = [&](const raster::StencilOps& o) {
-    return bits(o.stencilFail) | (bits(o.depthFail) << 3) | (bits(o.depthPass) << 6);
-  };
-  c.ops = ops(s.frontOps) | (ops(s.backOps) << 9);
-  return c;
 }
 
 // A pose as tile_vertex.comp and tile_box.comp read it: 12 doubles, the linear part row by row,
@@ -100,12 +55,11 @@ struct VulkanComputeDevice::Impl {
   int height = 0;
   const raster::RenderState* state = nullptr;  // the device's (RenderStateDevice::state_)
   detail::VulkanContext* context = nullptr;
-  const detail::TilePipelines* pipelines = nullptr;
   detail::CommandRecorder* recorder = nullptr;
+  detail::TileFrame* frame = nullptr;
+  std::uint32_t target = 0;  // the framebuffer's id in the frame
   raster::TransferCounters transfers;
   detail::DeviceBuffer framebuffer;  // a word a pixel, rows from the bottom
-  detail::DeviceBuffer work;         // the draw being recorded's WorkLayout (draws take turns)
-  detail::DeviceBuffer boxWork;      // posed boxes: the poses, then the boxes (posedBoxesLater)
   // Buffers replaced while a recording that may use them was open: freed once it has run.
   std::vector<std::pair<detail::DeviceBuffer, std::uint64_t>> retired;
 
@@ -120,24 +74,22 @@ struct VulkanComputeDevice::Impl {
     VkDeviceSize indexOffset = 0;
     detail::DeviceBuffer buffer;  // vertices from 0, indices from indexOffset
     std::uint64_t lastUse = 0;
+    // The recording whose frame last drew from the buffer: while it is open, new bytes go to a
+    // new buffer (the frame draws when the recording is submitted, from what the buffer holds).
+    std::uint64_t drawnIn = ~std::uint64_t{0};
   };
   static constexpr std::size_t kKeptMeshes = 8;
   std::array<Mesh, kKeptMeshes> meshes{};
 
   // A posed block's mesh on the device (raster::PosedMesh), kept while its source says it lives:
-  // the object-space vertices from 0, the indices from indexOffset, the window vertices of the
-  // last pose and view from windowOffset, and that draw's transform from transformOffset.
+  // the object-space vertices from 0 and the indices from indexOffset; never written again.
   struct Resident {
     std::weak_ptr<const void> alive;
     std::uint32_t vertices = 0;
     std::uint32_t triangles = 0;
     VkDeviceSize indexOffset = 0;
-    VkDeviceSize windowOffset = 0;
-    VkDeviceSize transformOffset = 0;
-    // The content key whose window vertices the buffer holds (0: none yet): its later draws
-    // skip the vertex stage.
-    std::uint64_t windowsOf = 0;
     detail::DeviceBuffer buffer;
+    VkDeviceAddress address = 0;
   };
   // By meshKey (an entry stays where it is while others come and go).
   std::unordered_map<std::uint64_t, Resident> residents;
@@ -147,9 +99,6 @@ struct VulkanComputeDevice::Impl {
   bool keepStages = false;
   std::shared_ptr<std::optional<DrawStages>> lastStages =
       std::make_shared<std::optional<DrawStages>>();
-  // The window vertices the posed draw being recorded copies back (keepDrawStages), for its
-  // DrawStages; null for a draw of window vertices.
-  std::shared_ptr<std::vector<raster::WindowVertex>> drawWindows;
 
   // Runs `call` on the recorder, counting what it made the recorder do as this device's.
   template <typename Call>
@@ -167,17 +116,10 @@ struct VulkanComputeDevice::Impl {
     });
   }
 
-  // `buffer` with room for `bytes`: a larger one (the old one retired) when it has too little.
-  void reserve(detail::DeviceBuffer& buffer, VkDeviceSize bytes) {
-    if (buffer.buffer != VK_NULL_HANDLE && buffer.size >= bytes)
-      return;
-    freeRetired();
-    if (buffer.buffer != VK_NULL_HANDLE)
-      retired.emplace_back(buffer, recorder->recordingsRun());
-    buffer = context->createDeviceBuffer(std::max(bytes, buffer.size * 2),
-                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                             VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  detail::DeviceBuffer storage(VkDeviceSize bytes) {
+    return context->createDeviceBuffer(bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
   }
 
   // The entry to draw `draw` from, for `key` under `rect`: uploaded now, validated first.
@@ -196,8 +138,15 @@ struct VulkanComputeDevice::Impl {
     ++meshCounters.uploads;
     if (mesh.triangles == 0)
       return mesh;
-    reserve(mesh.buffer, mesh.indexOffset + indexBytes);
     recorder->makeRoom(vertexBytes + indexBytes);
+    const VkDeviceSize bytes = mesh.indexOffset + indexBytes;
+    if (mesh.buffer.buffer == VK_NULL_HANDLE || mesh.buffer.size < bytes ||
+        mesh.drawnIn == recorder->recordingsRun()) {
+      freeRetired();
+      if (mesh.buffer.buffer != VK_NULL_HANDLE)
+        retired.emplace_back(mesh.buffer, recorder->recordingsRun());
+      mesh.buffer = storage(std::max(bytes, mesh.buffer.size));
+    }
     const detail::CommandRecorder::Staged vertices =
         recorder->upload(draw.vertices.data(), vertexBytes);
     const detail::CommandRecorder::Staged indices =
@@ -239,15 +188,10 @@ struct VulkanComputeDevice::Impl {
     const VkDeviceSize localBytes = posed.localXyz.size_bytes();
     const VkDeviceSize indexBytes = posed.indices.size_bytes();
     r.indexOffset = aligned(std::max<VkDeviceSize>(localBytes, 4));
-    r.windowOffset = r.indexOffset + aligned(std::max<VkDeviceSize>(indexBytes, 4));
-    r.transformOffset = r.windowOffset + aligned(VkDeviceSize{r.vertices} * 12 + 4);
-    const VkDeviceSize transformBytes = detail::kTileTransformDoubles * 8;
     ++meshCounters.uploads;
     freeRetired();
-    r.buffer = context->createDeviceBuffer(r.transformOffset + transformBytes,
-                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    r.buffer = storage(r.indexOffset + std::max<VkDeviceSize>(indexBytes, 4));
+    r.address = context->address(r.buffer.buffer);
     recorder->makeRoom(localBytes + indexBytes);
     const detail::CommandRecorder::Staged local =
         recorder->upload(posed.localXyz.data(), localBytes);
@@ -266,287 +210,109 @@ struct VulkanComputeDevice::Impl {
     return residents.emplace(posed.meshKey, std::move(r)).first->second;
   }
 
-  // Records the vertex stage of `posed` into its resident mesh's window vertices, unless they
-  // are already those of `contentKey` (a source's draws all have the same pose and view).
-  void recordVertexStage(Resident& r, const raster::PosedMesh& posed, std::uint64_t contentKey) {
-    if (contentKey != 0 && r.windowsOf == contentKey)
-      return;
-    r.windowsOf = 0;
+  // The frame's vertex job for `posed` at its pose and view (tile_vertex.comp's 23 doubles).
+  static detail::TileVertices posedVertices(const Resident& r, const raster::PosedMesh& posed,
+                                            std::uint64_t contentKey) {
+    detail::TileVertices v;
+    v.local = r.address;
+    v.vertexCount = r.vertices;
+    v.contentKey = contentKey;
     const raster::VertexTransform& t = posed.transform;
-    std::array<double, detail::kTileTransformDoubles> words{};
-    packPose(t.pose, words.data());
+    packPose(t.pose, v.transform.data());
     const raster::WindowMapping& m = t.window;
     const std::array<double, 8> mapping{m.umin,   m.urange, m.width,    m.vmin,
                                         m.vrange, m.height, m.depthMax, m.depthRange};
-    std::copy(mapping.begin(), mapping.end(), words.begin() + 12);
+    std::copy(mapping.begin(), mapping.end(), v.transform.begin() + 12);
     for (int k = 0; k < 3; ++k) {
       const int axis = m.axes[static_cast<std::size_t>(k)];
       if (axis < 0 || axis > 2)
         throw std::invalid_argument("drawMesh: a posed draw's window mapping names axis " +
                                     std::to_string(axis) + " (must be 0, 1 or 2)");
-      words[static_cast<std::size_t>(20 + k)] = axis;
+      v.transform[static_cast<std::size_t>(20 + k)] = axis;
     }
-    recorder->makeRoom(sizeof words);
-    const detail::CommandRecorder::Staged staged = recorder->upload(words.data(), sizeof words);
-    TileDrawConstants c;
-    c.triangleCount = r.vertices;
-    const TileBuffer local{TileBinding::LocalVertices, r.buffer.buffer, 0, r.indexOffset};
-    const TileBuffer transform{TileBinding::VertexTransform, r.buffer.buffer, r.transformOffset,
-                               sizeof words};
-    const TileBuffer windows{TileBinding::Vertices, r.buffer.buffer, r.windowOffset,
-                             r.transformOffset - r.windowOffset};
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      // The last draw of this mesh may still read its transform and window vertices.
-      detail::computeBarrier(cmd);
-      const VkBufferCopy copy{staged.offset, r.transformOffset, sizeof words};
-      vkCmdCopyBuffer(cmd, staged.buffer, r.buffer.buffer, 1, &copy);
-      detail::computeBarrier(cmd);
-      pipelines->dispatchLinear(cmd, pipelines->vertex, {local, transform, windows}, c, r.vertices);
-    });
-    r.windowsOf = contentKey;
+    return v;
   }
 
-  // Records the boxes of `blocks` at their poses: the poses into boxWork, a workgroup a block,
-  // and the boxes (eight doubles each) copied back for `read`.
-  void recordBoxes(std::span<const raster::PosedMesh> blocks,
-                   raster::PendingRead<raster::PosedBox> read) {
-    releaseExpired();
-    const std::size_t n = blocks.size();
-    std::vector<const Resident*> kept;
-    std::vector<double> poses(12 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-      kept.push_back(&resident(blocks[i]));
-      packPose(blocks[i].transform.pose, poses.data() + 12 * i);
-    }
-    const VkDeviceSize poseBytes = poses.size() * sizeof(double);
-    const VkDeviceSize boxesOffset = aligned(poseBytes);
-    const VkDeviceSize boxBytes = VkDeviceSize{n} * 8 * sizeof(double);
-    reserve(boxWork, boxesOffset + boxBytes);
-    recorder->makeRoom(poseBytes + boxBytes);
-    const detail::CommandRecorder::Staged staged = recorder->upload(poses.data(), poseBytes);
-    const detail::CommandRecorder::Staged out =
-        recorder->results(boxBytes, [n, read](const std::uint8_t* bytes) mutable {
-          std::vector<raster::PosedBox> boxes(n);
-          for (std::size_t i = 0; i < n; ++i) {
-            double words[8];
-            std::memcpy(words, bytes + 64 * i, sizeof words);
-            std::copy(words, words + 3, boxes[i].min.begin());
-            std::copy(words + 3, words + 6, boxes[i].max.begin());
-            boxes[i].orderMatters = words[6] != 0.0;
-          }
-          read.deliver(std::move(boxes));
-        });
-    const TileBuffer posesBuffer{TileBinding::VertexTransform, boxWork.buffer, 0,
-                                 std::max<VkDeviceSize>(poseBytes, 8)};
-    const TileBuffer boxesBuffer{TileBinding::Output, boxWork.buffer, boxesOffset, boxBytes};
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      detail::computeBarrier(cmd);
-      const VkBufferCopy copy{staged.offset, 0, poseBytes};
-      vkCmdCopyBuffer(cmd, staged.buffer, boxWork.buffer, 1, &copy);
-      detail::computeBarrier(cmd);
-      for (std::size_t i = 0; i < n; ++i) {
-        const Resident& r = *kept[i];
-        TileDrawConstants c;
-        c.triangleCount = r.vertices;
-        c.outWord = static_cast<std::uint32_t>(i);
-        const TileBuffer local{TileBinding::LocalVertices, r.buffer.buffer, 0, r.indexOffset};
-        pipelines->dispatch(cmd, pipelines->box, {local, posesBuffer, boxesBuffer}, c, 1, 1);
-      }
-      detail::computeBarrier(cmd);
-      const VkBufferCopy back{boxesOffset, out.offset, boxBytes};
-      vkCmdCopyBuffer(cmd, boxWork.buffer, out.buffer, 1, &back);
-    });
-  }
-
-  // A posed draw: the vertex stage on the device, then the tile rasterizer over every triangle
-  // of the block (set-up leaves out those whose pixels miss the scissor).
+  // A posed draw: the vertex stage on the device, then every triangle of the block (set-up
+  // leaves out those whose pixels miss the scissor).
   void drawPosed(const raster::PosedMesh& posed, std::uint64_t contentKey) {
     releaseExpired();
     Resident& r = resident(posed);
     ++posedDraws;
     if (r.triangles == 0 || state->scissor.empty())
       return;
-    recordVertexStage(r, posed, contentKey);
-    if (keepStages)
-      copyWindowsBack(r);
-    Mesh entry;
-    entry.triangles = r.triangles;
-    entry.indexOffset = r.indexOffset;
-    drawTiles(entry, r.buffer.buffer, r.windowOffset, r.transformOffset - r.windowOffset);
+    frame->draw(target, *state, posedVertices(r, posed, contentKey), r.address + r.indexOffset,
+                r.triangles);
+    captureIfKept();
   }
 
-  // Records the tile rasterizer's five stages for `mesh` in the current state.
-  void drawMeshEntry(const Mesh& mesh) { drawTiles(mesh, mesh.buffer.buffer, 0, mesh.indexOffset); }
-
-  // The five stages for `mesh`'s triangles, its indices at mesh.indexOffset of `buffer` and its
-  // window vertices at [vertexOffset, + vertexRange).
-  void drawTiles(const Mesh& mesh, VkBuffer buffer, VkDeviceSize vertexOffset,
-                 VkDeviceSize vertexRange) {
-    const PixelRect& scissor = state->scissor;
-    if (mesh.triangles == 0 || scissor.empty())
+  // A draw of `mesh`'s triangles in the current state.
+  void drawMeshEntry(Mesh& mesh) {
+    if (mesh.triangles == 0 || state->scissor.empty())
       return;
-    TileDrawConstants c = stateConstants(*state, width, height);
-    c.triangleCount = mesh.triangles;
-    c.gridWidth = static_cast<std::uint32_t>(((scissor.x1 - 1) >> 3) - (scissor.x0 >> 3) + 1);
-    c.gridHeight = static_cast<std::uint32_t>(((scissor.y1 - 1) >> 3) - (scissor.y0 >> 3) + 1);
-    const std::uint32_t blocks = c.gridWidth * c.gridHeight;
-    const WorkLayout layout(mesh.triangles, blocks);
-    c.pairCapacity = layout.pairCapacity;
-    // Eight blocks a workgroup on a GPU; on a CPU driver, where each workgroup has a fixed cost
-    // of several microseconds, a row of blocks.
-    c.blocksPerGroup = context->cpuDriver() ? std::max(c.gridWidth, 8u) : 8u;
-    reserve(work, layout.bytes);
-    const VkBuffer w = work.buffer;
-    const VkDeviceSize blockBytes = VkDeviceSize{blocks} * 4;
-    const TileBuffer vertices{TileBinding::Vertices, buffer, vertexOffset, vertexRange};
-    const TileBuffer indices{TileBinding::Indices, buffer, mesh.indexOffset,
-                             VkDeviceSize{mesh.triangles} * 12};
-    const TileBuffer triangles{TileBinding::Triangles, w, 0, layout.countsOffset};
-    const TileBuffer counts{TileBinding::BlockCounts, w, layout.countsOffset, blockBytes};
-    const TileBuffer offsets{TileBinding::BlockOffsets, w, layout.offsetsOffset, blockBytes};
-    const TileBuffer cursors{TileBinding::BlockCursors, w, layout.cursorsOffset, blockBytes};
-    const TileBuffer pairs{TileBinding::Pairs, w, layout.pairsOffset,
-                           VkDeviceSize{layout.pairCapacity} * 4};
-    const TileBuffer pixels{TileBinding::Framebuffer, framebuffer.buffer, 0, VK_WHOLE_SIZE};
-    const detail::TilePipelines& p = *pipelines;
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      vkCmdFillBuffer(cmd, w, layout.countsOffset, blockBytes, 0);
-      detail::computeBarrier(cmd);
-      p.dispatchLinear(cmd, p.setup, {vertices, indices, triangles, counts}, c, mesh.triangles);
-      detail::computeBarrier(cmd);
-      p.dispatch(cmd, context->cpuDriver() ? p.scanSerial : p.scan, {counts, offsets, cursors}, c,
-                 1, 1);
-      detail::computeBarrier(cmd);
-      p.dispatchLinear(cmd, p.scatter, {triangles, cursors, pairs}, c, mesh.triangles);
-      detail::computeBarrier(cmd);
-      p.dispatchLinear(cmd, p.sort, {counts, offsets, pairs}, c, blocks);
-      detail::computeBarrier(cmd);
-      p.dispatch(cmd, p.raster, {triangles, counts, offsets, pairs, pixels}, c,
-                 (c.gridWidth + c.blocksPerGroup - 1) / c.blocksPerGroup, c.gridHeight);
-    });
-    if (keepStages)
-      copyStagesBack(layout, c);
+    mesh.drawnIn = recorder->recordingsRun();
+    const VkDeviceAddress address = context->address(mesh.buffer.buffer);
+    detail::TileVertices vertices;
+    vertices.window = address;
+    frame->draw(target, *state, vertices, address + mesh.indexOffset, mesh.triangles);
+    captureIfKept();
   }
 
-  // Records a copy of a posed mesh's window vertices; they become the draw's DrawStages'
-  // windowVertices when the recording has run.
-  void copyWindowsBack(const Resident& r) {
-    drawWindows = std::make_shared<std::vector<raster::WindowVertex>>();
-    const VkDeviceSize bytes = VkDeviceSize{r.vertices} * sizeof(raster::WindowVertex);
-    recorder->makeRoom(bytes);
-    const std::size_t count = r.vertices;
-    const detail::CommandRecorder::Staged out =
-        recorder->results(bytes, [count, to = drawWindows](const std::uint8_t* data) {
-          to->resize(count);
-          std::memcpy(to->data(), data, count * sizeof(raster::WindowVertex));
+  // With keepDrawStages: the draw just recorded is copied back after its frame.
+  void captureIfKept() {
+    if (!keepStages)
+      return;
+    frame->captureLastDraw(
+        target, [last = lastStages, scissor = state->scissor](detail::TileDrawCapture c) {
+          *last = stagesOf(c, scissor);
         });
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      detail::computeBarrier(cmd);
-      const VkBufferCopy copy{r.windowOffset, out.offset, bytes};
-      vkCmdCopyBuffer(cmd, r.buffer.buffer, out.buffer, 1, &copy);
-    });
   }
 
-  // Records a copy of the work buffer as the draw left it; its bytes become lastStages when the
-  // recording has run.
-  void copyStagesBack(const WorkLayout& layout, const TileDrawConstants& c) {
-    const VkDeviceSize bytes = std::min(layout.bytes, work.size);
-    recorder->makeRoom(bytes);
-    const detail::CommandRecorder::Staged out = recorder->results(
-        bytes, [layout, c, last = lastStages,
-                windows = std::exchange(drawWindows, nullptr)](const std::uint8_t* words) {
-          *last = parseStages(words, layout, c);
-          // Delivered before this: the window vertices were copied first.
-          if (windows)
-            (*last)->windowVertices = std::move(*windows);
-        });
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      const VkBufferCopy copy{0, out.offset, bytes};
-      vkCmdCopyBuffer(cmd, work.buffer, out.buffer, 1, &copy);
-    });
-  }
-
-  static DrawStages parseStages(const std::uint8_t* bytes, const WorkLayout& layout,
-                                const TileDrawConstants& c) {
-    const auto word = [&](VkDeviceSize byteOffset) {
-      std::uint32_t w = 0;
-      std::memcpy(&w, bytes + byteOffset, 4);
-      return w;
-    };
+  static DrawStages stagesOf(const detail::TileDrawCapture& c, const PixelRect& scissor) {
     DrawStages s;
-    s.scissor = {c.scissor[0], c.scissor[1], c.scissor[2], c.scissor[3]};
+    s.scissor = scissor;
+    s.gridX0 = c.gridOrigin[0];
+    s.gridY0 = c.gridOrigin[1];
     s.gridWidth = static_cast<int>(c.gridWidth);
     s.gridHeight = static_cast<int>(c.gridHeight);
-    for (std::uint32_t t = 0; t < c.triangleCount; ++t) {
-      const VkDeviceSize base = VkDeviceSize{t} * detail::kTileWordsPerTriangle * 4;
+    const std::size_t count = c.triangleWords.size() / detail::kTileWordsPerTriangle;
+    for (std::size_t t = 0; t < count; ++t) {
+      const std::uint32_t* w = c.triangleWords.data() + t * detail::kTileWordsPerTriangle;
       SetUpTriangle tri;
       for (int k = 0; k < 6; ++k)
-        tri.fixed[k] = static_cast<std::int32_t>(word(base + 4 * k));
-      tri.frontFacing = word(base + 24) != 0;
-      tri.candidates = {static_cast<int>(word(base + 28)), static_cast<int>(word(base + 32)),
-                        static_cast<int>(word(base + 36)), static_cast<int>(word(base + 40))};
-      std::memcpy(&tri.z0, bytes + base + 44, 4);
-      std::memcpy(&tri.dzdx, bytes + base + 48, 8);
-      std::memcpy(&tri.dzdy, bytes + base + 56, 8);
+        tri.fixed[k] = static_cast<std::int32_t>(w[k]);
+      tri.frontFacing = w[6] != 0;
+      tri.candidates = {static_cast<int>(w[7]), static_cast<int>(w[8]), static_cast<int>(w[9]),
+                        static_cast<int>(w[10])};
+      std::memcpy(&tri.z0, w + 11, 4);
+      std::memcpy(&tri.dzdx, w + 12, 8);
+      std::memcpy(&tri.dzdy, w + 14, 8);
       s.triangles.push_back(tri);
     }
-    const std::uint32_t blocks = c.gridWidth * c.gridHeight;
-    for (std::uint32_t b = 0; b < blocks; ++b) {
-      const std::uint32_t count = word(layout.countsOffset + 4 * b);
-      const std::uint32_t offset = word(layout.offsetsOffset + 4 * b);
-      const bool overflowed = offset + count > layout.pairCapacity;
-      s.overflowed.push_back(overflowed);
+    // The job lists hold every draw of the epoch: this draw's entries, in its own numbering.
+    const std::uint32_t end = c.firstTriangle + static_cast<std::uint32_t>(count);
+    for (std::size_t b = 0; b < c.jobLists.size(); ++b) {
       std::vector<std::uint32_t> list;
-      for (std::uint32_t k = 0; k < count && !overflowed; ++k)
-        list.push_back(word(layout.pairsOffset + 4 * (VkDeviceSize{offset} + k)));
+      for (const std::uint32_t t : c.jobLists[b])
+        if (t >= c.firstTriangle && t < end)
+          list.push_back(t - c.firstTriangle);
       s.blockLists.push_back(std::move(list));
     }
+    s.overflowed = c.overflowed;
+    for (std::size_t v = 0; v + 2 < c.windowVertices.size(); v += 3)
+      s.windowVertices.push_back(
+          {c.windowVertices[v], c.windowVertices[v + 1], c.windowVertices[v + 2]});
     return s;
   }
 
-  // Records a clear of the scissor (tile_clear.comp): `stencil` false for depth.
-  void clear(bool stencil, std::uint32_t value) {
-    const PixelRect& s = state->scissor;
-    TileDrawConstants c = stateConstants(*state, width, height);
-    c.triangleCount = value;
-    c.outWord = stencil ? 1 : 0;
-    const TileBuffer pixels{TileBinding::Framebuffer, framebuffer.buffer, 0, VK_WHOLE_SIZE};
-    const auto hold = recorder->hold();
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      pipelines->dispatch(cmd, pipelines->clear, {pixels}, c,
-                          static_cast<std::uint32_t>((s.width() + 7) / 8),
-                          static_cast<std::uint32_t>((s.height() + 7) / 8));
-    });
-  }
-
-  // Records a copy of `r` (inside the framebuffer) in `form` into `out` from byte `offset`.
-  void recordRead(const PixelRect& r, ReadForm form, VkBuffer out, VkDeviceSize offset) {
-    TileDrawConstants c;
-    c.scissor[0] = r.x0;
-    c.scissor[1] = r.y0;
-    c.scissor[2] = r.x1;
-    c.scissor[3] = r.y1;
-    c.width = static_cast<std::uint32_t>(width);
-    c.height = static_cast<std::uint32_t>(height);
-    c.triangleCount = static_cast<std::uint32_t>(form);
-    c.outWord = static_cast<std::uint32_t>(offset / 4);
-    const auto pixels = static_cast<std::uint64_t>(r.area());
-    const std::uint64_t invocations = form == ReadForm::StencilBytes ? (pixels + 3) / 4 : pixels;
-    const TileBuffer in{TileBinding::Framebuffer, framebuffer.buffer, 0, VK_WHOLE_SIZE};
-    const TileBuffer to{TileBinding::Output, out, 0, VK_WHOLE_SIZE};
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      pipelines->dispatchLinear(cmd, pipelines->read, {in, to}, c, invocations);
-    });
-  }
-
-  // A read of `r` whose `bytes` go to `deliver` when the recording has run.
-  void readInto(const PixelRect& r, ReadForm form, std::size_t bytes,
+  // A read of `r` in `form` whose `bytes` go to `deliver` when the recording has run.
+  void readInto(const PixelRect& r, TileReadForm form, std::size_t bytes,
                 std::function<void(const std::uint8_t*)> deliver) {
     const auto hold = recorder->hold();
     counted([&] {
       recorder->makeRoom(bytes);
       const detail::CommandRecorder::Staged out = recorder->results(bytes, std::move(deliver));
-      recordRead(r, form, out.buffer, out.offset);
+      frame->read(target, r, form, out.buffer, out.offset);
     });
   }
 
@@ -554,10 +320,14 @@ struct VulkanComputeDevice::Impl {
     if (context == nullptr)
       return;
     // Commands recorded for this framebuffer must run before it goes: they are in the shared
-    // recording, beside other devices' commands.
+    // frame, beside other devices' commands.
     try {
       recorder->finish();
     } catch (...) {  // NOLINT(bugprone-empty-catch): a destructor must not throw
+    }
+    {
+      const auto hold = recorder->hold();
+      frame->removeTarget(target);
     }
     for (auto& [buffer, recording] : retired)
       context->destroyDeviceBuffer(buffer);
@@ -565,8 +335,6 @@ struct VulkanComputeDevice::Impl {
       context->destroyDeviceBuffer(mesh.buffer);
     for (auto& [key, r] : residents)
       context->destroyDeviceBuffer(r.buffer);
-    context->destroyDeviceBuffer(work);
-    context->destroyDeviceBuffer(boxWork);
     context->destroyDeviceBuffer(framebuffer);
   }
 };
@@ -578,15 +346,17 @@ VulkanComputeDevice::VulkanComputeDevice(int width, int height)
   d.width = width;
   d.height = height;
   d.state = &state_;
-  d.pipelines = &detail::tilePipelines();  // makes the context too
+  d.frame = &detail::tileFrame();  // makes the pipelines, the context and the recorder too
   d.context = &detail::VulkanContext::instance(ShaderArithmetic::Native64);
   d.recorder = &detail::sharedRecorder(ShaderArithmetic::Native64);
   const VkDeviceSize bytes =
       VkDeviceSize{4} * static_cast<VkDeviceSize>(width) * static_cast<VkDeviceSize>(height);
   d.framebuffer = d.context->createDeviceBuffer(
       bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  // The start state of CpuDevice: depth 2^24 - 1, stencil 0 everywhere.
+  // The start state of CpuDevice: depth 2^24 - 1, stencil 0 everywhere (recorded before any
+  // command of this framebuffer, so before the frame that runs them).
   const auto hold = d.recorder->hold();
+  d.target = d.frame->addTarget(d.framebuffer.buffer, width, height);
   d.recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
     vkCmdFillBuffer(cmd, d.framebuffer.buffer, 0, VK_WHOLE_SIZE, raster::kDepthMax << 8);
   });
@@ -630,13 +400,15 @@ void VulkanComputeDevice::clearDepth(double depth) {
   // The depth write mask applies to clears: with it off, a depth clear changes nothing.
   if (!state_.depthWrite || state_.scissor.empty())
     return;
-  impl_->clear(false, raster::quantizeDepth(depth));
+  const auto hold = impl_->recorder->hold();
+  impl_->frame->clearDepth(impl_->target, state_.scissor, raster::quantizeDepth(depth));
 }
 
 void VulkanComputeDevice::clearStencil(std::uint8_t value) {
   if (state_.stencilWriteMask == 0 || state_.scissor.empty())
     return;
-  impl_->clear(true, value);
+  const auto hold = impl_->recorder->hold();
+  impl_->frame->clearStencil(impl_->target, state_.scissor, value, state_.stencilWriteMask);
 }
 
 void VulkanComputeDevice::drawTriangles(std::span<const raster::WindowVertex> vertices,
@@ -680,7 +452,32 @@ raster::PendingRead<raster::PosedBox> VulkanComputeDevice::posedBoxesLater(
     return raster::PendingRead<raster::PosedBox>::ready({});
   raster::PendingRead<raster::PosedBox> read = raster::PendingRead<raster::PosedBox>::waiting();
   const auto hold = d.recorder->hold();
-  d.counted([&] { d.recordBoxes(meshes, read); });
+  d.counted([&] {
+    d.releaseExpired();
+    const std::size_t n = meshes.size();
+    std::vector<detail::TileFrame::BoxRequest> blocks(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Impl::Resident& r = d.resident(meshes[i]);
+      blocks[i].local = r.address;
+      blocks[i].vertexCount = r.vertices;
+      packPose(meshes[i].transform.pose, blocks[i].pose.data());
+    }
+    const VkDeviceSize bytes = VkDeviceSize{n} * 8 * sizeof(double);
+    d.recorder->makeRoom(bytes);
+    const detail::CommandRecorder::Staged out =
+        d.recorder->results(bytes, [n, read](const std::uint8_t* data) mutable {
+          std::vector<raster::PosedBox> boxes(n);
+          for (std::size_t i = 0; i < n; ++i) {
+            double words[8];
+            std::memcpy(words, data + 64 * i, sizeof words);
+            std::copy(words, words + 3, boxes[i].min.begin());
+            std::copy(words + 3, words + 6, boxes[i].max.begin());
+            boxes[i].orderMatters = words[6] != 0.0;
+          }
+          read.deliver(std::move(boxes));
+        });
+    d.frame->boxes(blocks, out.buffer, out.offset);
+  });
   return read;
 }
 
@@ -691,7 +488,7 @@ raster::PendingRead<std::uint8_t> VulkanComputeDevice::readStencilLater(const Pi
     return raster::PendingRead<std::uint8_t>::ready({});
   raster::PendingRead<std::uint8_t> read = raster::PendingRead<std::uint8_t>::waiting();
   const auto pixels = static_cast<std::size_t>(r.area());
-  d.readInto(r, ReadForm::StencilBytes, (pixels + 3) / 4 * 4,
+  d.readInto(r, TileReadForm::StencilBytes, (pixels + 3) / 4 * 4,
              [read, pixels](const std::uint8_t* bytes) mutable {
                read.deliver(std::vector<std::uint8_t>(bytes, bytes + pixels));
              });
@@ -705,7 +502,7 @@ raster::PendingRead<std::uint32_t> VulkanComputeDevice::readDepthLater(const Pix
     return raster::PendingRead<std::uint32_t>::ready({});
   raster::PendingRead<std::uint32_t> read = raster::PendingRead<std::uint32_t>::waiting();
   const auto pixels = static_cast<std::size_t>(r.area());
-  d.readInto(r, ReadForm::DepthWords, 4 * pixels,
+  d.readInto(r, TileReadForm::DepthWords, 4 * pixels,
              [read, pixels](const std::uint8_t* bytes) mutable {
                std::vector<std::uint32_t> depth(pixels);
                std::memcpy(depth.data(), bytes, 4 * pixels);
@@ -727,7 +524,7 @@ std::shared_ptr<const raster::KeptDepth> VulkanComputeDevice::keepDepthLater(
     d.recorder->makeRoom(bytes);
     const detail::CommandRecorder::Scratch region = d.recorder->scratch(bytes);
     kept = std::make_shared<detail::VulkanKeptDepth>(*d.recorder, impl_.get(), r, region);
-    d.recordRead(r, ReadForm::DepthFloats, region.buffer, region.offset);
+    d.frame->read(d.target, r, TileReadForm::DepthFloats, region.buffer, region.offset);
   });
   return kept;
 }
@@ -759,9 +556,10 @@ raster::PendingRead<raster::PixelSummary> VulkanComputeDevice::summarizeLater(
     const SummaryParameters parameters =
         summaryParameters(r, classes, withDepth, true, region.offset,
                           withDepth ? kept->region().offset : 0, out.offset);
-    d.recordRead(r, ReadForm::StencilBytes, region.buffer, region.offset);
+    d.frame->read(d.target, r, TileReadForm::StencilBytes, region.buffer, region.offset);
     if (withDepth)
-      d.recordRead(r, ReadForm::DepthFloats, region.buffer, region.offset + inputs.farOffset());
+      d.frame->read(d.target, r, TileReadForm::DepthFloats, region.buffer,
+                    region.offset + inputs.farOffset());
     d.recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
       vkCmdUpdateBuffer(cmd, region.buffer, region.offset + inputs.tableOffset(), inputs.tableBytes,
                         classes.classOf.data());

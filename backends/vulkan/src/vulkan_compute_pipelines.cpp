@@ -16,9 +16,8 @@ namespace {
 // glslangValidator --vn writes each module as `const uint32_t k_<stage>[] = {...};`.
 using std::uint32_t;
 #include "tile_box.comp.h"
-#include "tile_clear.comp.h"
 #include "tile_raster.comp.h"
-#include "tile_read.comp.h"
+#include "tile_resolve.comp.h"
 #include "tile_scan.comp.h"
 #include "tile_scan_serial.comp.h"
 #include "tile_scatter.comp.h"
@@ -38,7 +37,7 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
                              "binds its buffers with");
   const VkDevice device = context.device();
   const ComputePipeline layout =
-      createComputeLayout(device, kTileBindings, sizeof(TileDrawConstants),
+      createComputeLayout(device, kTileBindings, sizeof(TileFrameConstants),
                           VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR);
   setLayout_ = layout.setLayout;
   layout_ = layout.layout;
@@ -54,13 +53,12 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
   scatter = createStage(k_tile_scatter_comp, "tile_scatter");
   sort = createStage(k_tile_sort_comp, "tile_sort");
   raster = createStage(k_tile_raster_comp, "tile_raster");
-  clear = createStage(k_tile_clear_comp, "tile_clear");
-  read = createStage(k_tile_read_comp, "tile_read");
+  resolve = createStage(k_tile_resolve_comp, "tile_resolve");
 }
 
 void TilePipelines::dispatch(VkCommandBuffer cmd, VkPipeline pipeline,
                              std::initializer_list<TileBuffer> buffers,
-                             const TileDrawConstants& constants, std::uint32_t groupsX,
+                             const TileFrameConstants& constants, std::uint32_t groupsX,
                              std::uint32_t groupsY) const {
   std::array<VkDescriptorBufferInfo, kTileBindings> infos{};
   std::array<VkWriteDescriptorSet, kTileBindings> writes{};
@@ -82,7 +80,7 @@ void TilePipelines::dispatch(VkCommandBuffer cmd, VkPipeline pipeline,
 
 void TilePipelines::dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
                                    std::initializer_list<TileBuffer> buffers,
-                                   const TileDrawConstants& constants, std::uint64_t count) const {
+                                   const TileFrameConstants& constants, std::uint64_t count) const {
   if (count == 0)
     return;
   const std::uint64_t groups = (count + 63) / 64;

@@ -1,8 +1,7 @@
 #pragma once
 // The compute device's pipelines (shaders/compute/, docs/backends.md "The compute device"): the
-// tile rasterizer's five stages, the vertex stage of a posed draw, posed blocks' boxes, the clears
-// and the read-backs.
-// All share one pipeline layout: eleven storage buffers bound by push descriptors
+// stages of a frame (tile_frame.hpp): boxes, vertex, set-up, scan, scatter, sort, raster,
+// resolve. All share one pipeline layout: sixteen storage buffers bound by push descriptors
 // (VK_KHR_push_descriptor), so a dispatch names its buffers as it is recorded and no descriptor set
 // outlives it, and the `Draw` push constants of tile_common.glsl.
 
@@ -15,41 +14,48 @@ namespace recode::backends::detail {
 
 class VulkanContext;
 
-// The bindings of the shared layout (tile_common.glsl and the stages declare the same numbers).
+// The bindings of the shared layout (tile_frame_inputs.glsl and the stages declare the same
+// numbers; tile_frame_layout.hpp has the records).
 enum class TileBinding : std::uint32_t {
-  Vertices = 0,     // a draw's window vertices, three floats each
-  Indices = 1,      // its indices, three a triangle
-  Triangles = 2,    // set-up triangles, kTileWordsPerTriangle words each
-  BlockCounts = 3,  // triangles a block's list holds
-  BlockOffsets = 4,
-  BlockCursors = 5,
-  Pairs = 6,             // the blocks' lists, one after the other
-  Framebuffer = 7,       // a word a pixel: q << 8 | stencil
-  Output = 8,            // a read's destination
-  LocalVertices = 9,     // a posed draw's object-space vertices, three doubles each
-  VertexTransform = 10,  // its pose and window mapping (tile_vertex.comp)
+  Targets = 0,     // TileTarget a device's framebuffer
+  Epochs = 1,      // TileEpoch
+  Commands = 2,    // TileCommand
+  Draws = 3,       // TileDrawSource
+  VertexJobs = 4,  // TileVertexJob
+  Transforms = 5,  // doubles: 23 a vertex job's transform, or 12 a box job's pose
+  Triangles = 6,   // set-up triangles, kTileWordsPerTriangle words each
+  BinCounts = 7,   // triangles a job's list holds
+  BinOffsets = 8,
+  BinCursors = 9,
+  Pairs = 10,          // the jobs' lists, one after the other
+  JobFinal = 11,       // 64 words a job: its pixels at the end of its epoch
+  ReadArena = 12,      // the reads' words, before they are copied to their destinations
+  ResolveRanges = 13,  // TileResolveRange
+  BoxJobs = 14,        // TileBoxJob
+  Boxes = 15,          // eight doubles a box job
 };
-inline constexpr std::uint32_t kTileBindings = 11;
-// Doubles of a VertexTransform as tile_vertex.comp reads it.
+inline constexpr std::uint32_t kTileBindings = 16;
+// Doubles of a vertex job's transform as tile_vertex.comp reads it, and of a box job's pose.
 inline constexpr std::uint32_t kTileTransformDoubles = 23;
+inline constexpr std::uint32_t kTilePoseDoubles = 12;
 inline constexpr std::uint32_t kTileWordsPerTriangle = 16;
 
-// The push constants, in the layout of tile_common.glsl's `Draw`.
-struct TileDrawConstants {
-  std::int32_t scissor[4] = {0, 0, 0, 0};
-  std::uint32_t width = 0;
-  std::uint32_t height = 0;
+// The push constants, in the layout of tile_common.glsl's `Frame`: one set for every stage of
+// a frame.
+struct TileFrameConstants {
+  std::uint32_t vertexCount = 0;
+  std::uint32_t vertexJobs = 0;
   std::uint32_t triangleCount = 0;
-  std::uint32_t tests = 0;
-  std::uint32_t stencil = 0;
-  std::uint32_t ops = 0;
-  std::uint32_t gridWidth = 0;
-  std::uint32_t gridHeight = 0;
+  std::uint32_t drawCount = 0;
+  std::uint32_t jobCount = 0;
+  std::uint32_t epochCount = 0;
   std::uint32_t pairCapacity = 0;
-  std::uint32_t outWord = 0;
-  std::uint32_t blocksPerGroup = 1;
+  std::uint32_t jobsPerGroup = 8;
+  std::uint32_t resolvePixels = 0;
+  std::uint32_t resolveRanges = 0;
+  std::uint32_t boxJobs = 0;
 };
-static_assert(sizeof(TileDrawConstants) == 60, "tile_common.glsl's Draw is 15 words");
+static_assert(sizeof(TileFrameConstants) == 44, "tile_common.glsl's Frame is 11 words");
 
 // A buffer range at a binding.
 struct TileBuffer {
@@ -67,26 +73,25 @@ class TilePipelines {
   TilePipelines(const TilePipelines&) = delete;
   TilePipelines& operator=(const TilePipelines&) = delete;
 
-  VkPipeline vertex = VK_NULL_HANDLE;  // a posed draw's vertex stage
-  VkPipeline box = VK_NULL_HANDLE;     // a posed block's world box
+  VkPipeline box = VK_NULL_HANDLE;     // posed blocks' world boxes
+  VkPipeline vertex = VK_NULL_HANDLE;  // posed meshes' window vertices
   VkPipeline setup = VK_NULL_HANDLE;
   VkPipeline scan = VK_NULL_HANDLE;
   VkPipeline scanSerial = VK_NULL_HANDLE;  // the same in one invocation, for CPU drivers
   VkPipeline scatter = VK_NULL_HANDLE;
   VkPipeline sort = VK_NULL_HANDLE;
   VkPipeline raster = VK_NULL_HANDLE;
-  VkPipeline clear = VK_NULL_HANDLE;
-  VkPipeline read = VK_NULL_HANDLE;
+  VkPipeline resolve = VK_NULL_HANDLE;
 
   // Binds `pipeline`, pushes `buffers` and `constants`, and dispatches `groups` workgroups.
   void dispatch(VkCommandBuffer cmd, VkPipeline pipeline, std::initializer_list<TileBuffer> buffers,
-                const TileDrawConstants& constants, std::uint32_t groupsX,
+                const TileFrameConstants& constants, std::uint32_t groupsX,
                 std::uint32_t groupsY) const;
   // The same for `count` invocations of a 64-wide stage that reads linearInvocation(): rows of
   // at most 65535 workgroups. Nothing when count is 0.
   void dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
-                      std::initializer_list<TileBuffer> buffers, const TileDrawConstants& constants,
-                      std::uint64_t count) const;
+                      std::initializer_list<TileBuffer> buffers,
+                      const TileFrameConstants& constants, std::uint64_t count) const;
 
  private:
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;

@@ -42,6 +42,12 @@ std::string unsuitable(VkPhysicalDevice physical, ShaderArithmetic arithmetic,
     return "dynamicRendering is missing";
   if (!v13.maintenance4)  // required of Vulkan 1.3 devices; checked for a driver that forgets
     return "maintenance4 is missing";
+  VkPhysicalDeviceVulkan12Features v12{};
+  v12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+  features2.pNext = &v12;
+  vkGetPhysicalDeviceFeatures2(physical, &features2);
+  if (arithmetic == ShaderArithmetic::Native64 && !v12.bufferDeviceAddress)
+    return "bufferDeviceAddress is missing";  // required of Vulkan 1.3 devices too
   VkFormatProperties format{};
   vkGetPhysicalDeviceFormatProperties(physical, kExactDepthStencilFormat, &format);
   const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT |
@@ -147,12 +153,19 @@ void VulkanContext::choosePhysicalDevice() {
       queueFamily_ = family;
       name_ = properties.deviceName;
       cpuDriver_ = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+      timestampPeriodNs_ = static_cast<double>(properties.limits.timestampPeriod);
     }
   }
   if (physical_ == VK_NULL_HANDLE)
     throw std::runtime_error("Vulkan device: no physical device has what the exact device needs" +
                              reasons);
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  std::uint32_t families = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &families, nullptr);
+  std::vector<VkQueueFamilyProperties> familyProperties(families);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &families, familyProperties.data());
+  timestamps_ = queueFamily_ < families && familyProperties[queueFamily_].timestampValidBits > 0 &&
+                timestampPeriodNs_ > 0.0;
 }
 
 void VulkanContext::createDevice() {
@@ -169,10 +182,18 @@ void VulkanContext::createDevice() {
   v13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
   v13.dynamicRendering = VK_TRUE;
   v13.maintenance4 = VK_TRUE;
+  // Buffer device addresses (required of Vulkan 1.3 devices) for Native64: the compute device's
+  // frame reaches every draw's vertices and every framebuffer through them
+  // (tile_frame.hpp), so one dispatch serves all of a frame's draws.
+  const VkBool32 native = arithmetic_ == ShaderArithmetic::Native64 ? VK_TRUE : VK_FALSE;
+  VkPhysicalDeviceVulkan12Features v12{};
+  v12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+  v12.bufferDeviceAddress = native;
+  v13.pNext = &v12;
+  addresses_ = native == VK_TRUE;
   VkPhysicalDeviceFeatures2 features{};
   features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
   features.pNext = &v13;
-  const VkBool32 native = arithmetic_ == ShaderArithmetic::Native64 ? VK_TRUE : VK_FALSE;
   features.features.shaderFloat64 = native;
   features.features.shaderInt64 = native;
   // Push descriptors where the driver has them: the compute device binds its buffers with them
@@ -204,12 +225,16 @@ void VulkanContext::createDevice() {
 }
 
 VkDeviceMemory VulkanContext::allocate(const VkMemoryRequirements& requirements,
-                                       VkMemoryPropertyFlags properties) const {
+                                       VkMemoryPropertyFlags properties, bool addressed) const {
   for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
     if ((requirements.memoryTypeBits & (1u << i)) &&
         (memory_.memoryTypes[i].propertyFlags & properties) == properties) {
+      VkMemoryAllocateFlagsInfo flags{};
+      flags.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO;
+      flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
       VkMemoryAllocateInfo info{};
       info.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+      info.pNext = addressed ? &flags : nullptr;
       info.allocationSize = requirements.size;
       info.memoryTypeIndex = i;
       VkDeviceMemory memory = VK_NULL_HANDLE;
@@ -223,6 +248,10 @@ VkDeviceMemory VulkanContext::allocate(const VkMemoryRequirements& requirements,
 VkBuffer VulkanContext::createBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage,
                                      VkMemoryPropertyFlags properties,
                                      VkDeviceMemory& memory) const {
+  // Every buffer of a context with addresses can be reached by one: storage buffers are
+  // the compute device's, and addressing costs nothing until used.
+  if (addresses_ && (usage & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) != 0)
+    usage |= VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
   VkBufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
   info.size = bytes;
@@ -232,7 +261,8 @@ VkBuffer VulkanContext::createBuffer(VkDeviceSize bytes, VkBufferUsageFlags usag
   vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer), "vkCreateBuffer");
   VkMemoryRequirements requirements{};
   vkGetBufferMemoryRequirements(device_, buffer, &requirements);
-  memory = allocate(requirements, properties);
+  memory =
+      allocate(requirements, properties, (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0);
   vkCheck(vkBindBufferMemory(device_, buffer, memory, 0), "vkBindBufferMemory");
   return buffer;
 }
@@ -260,6 +290,15 @@ DeviceBuffer VulkanContext::createDeviceBuffer(VkDeviceSize bytes, VkBufferUsage
   buffer.buffer = createBuffer(bytes, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, buffer.memory);
   buffer.size = bytes;
   return buffer;
+}
+
+VkDeviceAddress VulkanContext::address(VkBuffer buffer) const {
+  if (!addresses_)
+    throw std::logic_error("Vulkan context: buffer addresses are enabled for Native64 only");
+  VkBufferDeviceAddressInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO;
+  info.buffer = buffer;
+  return vkGetBufferDeviceAddress(device_, &info);
 }
 
 void VulkanContext::destroyDeviceBuffer(DeviceBuffer& buffer) const {

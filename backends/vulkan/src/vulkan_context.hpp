@@ -50,9 +50,11 @@ class VulkanContext {
   // fewer, larger pieces.
   [[nodiscard]] bool cpuDriver() const { return cpuDriver_; }
 
-  // Device-local memory for an image or buffer with these requirements.
+  // Memory with these properties for an image or buffer with these requirements (`addressed`:
+  // for a buffer reached by its device address).
   [[nodiscard]] VkDeviceMemory allocate(const VkMemoryRequirements& requirements,
-                                        VkMemoryPropertyFlags properties) const;
+                                        VkMemoryPropertyFlags properties,
+                                        bool addressed = false) const;
 
   // A command pool and a fence of the caller's own (the recording's), destroyed by the caller.
   [[nodiscard]] VkCommandPool createCommandPool() const;
@@ -63,6 +65,12 @@ class VulkanContext {
   // A new device-local buffer of `bytes`; destroyDeviceBuffer frees it.
   [[nodiscard]] DeviceBuffer createDeviceBuffer(VkDeviceSize bytes, VkBufferUsageFlags usage) const;
   void destroyDeviceBuffer(DeviceBuffer& buffer) const;
+  // The device address of a storage buffer made by this context (Native64 only: every storage
+  // buffer of that context can be addressed; throws std::logic_error on the other).
+  [[nodiscard]] VkDeviceAddress address(VkBuffer buffer) const;
+  // Nanoseconds a timestamp tick lasts, and whether the queue writes timestamps at all.
+  [[nodiscard]] double timestampPeriodNs() const { return timestampPeriodNs_; }
+  [[nodiscard]] bool timestamps() const { return timestamps_; }
 
   // vkCmdPushDescriptorSetKHR when the driver has VK_KHR_push_descriptor (enabled then), else
   // null: the compute device's way of binding its buffers.
@@ -94,6 +102,9 @@ class VulkanContext {
   std::mutex queueLock_;
   std::string name_;
   bool cpuDriver_ = false;
+  bool addresses_ = false;  // storage buffers are made addressable (Native64)
+  double timestampPeriodNs_ = 0.0;
+  bool timestamps_ = false;
   PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
 };
 

@@ -72,6 +72,11 @@ void CommandRecorder::begin() {
   recording_ = true;
 }
 
+void CommandRecorder::open() {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  begin();
+}
+
 void CommandRecorder::closeRendering() {
   if (!renderingOpen_)
     return;
@@ -192,9 +197,17 @@ CommandRecorder::Staged CommandRecorder::upload(const void* data, std::size_t by
   return copyIn(results_, kResultsUsage, data, bytes);
 }
 
-void CommandRecorder::setBeforeSubmit(std::function<void(VkCommandBuffer)> hook) {
+void CommandRecorder::addSubmitHooks(int order, std::function<void(VkCommandBuffer)> beforeSubmit,
+                                     std::function<void()> afterRun) {
   const std::lock_guard<std::recursive_mutex> hold(lock_);
-  beforeSubmit_ = std::move(hook);
+  const auto at = std::find_if(hooks_.begin(), hooks_.end(),
+                               [order](const SubmitHooks& h) { return h.order > order; });
+  hooks_.insert(at, SubmitHooks{order, std::move(beforeSubmit), std::move(afterRun)});
+}
+
+void CommandRecorder::count(const raster::TransferCounters& more) {
+  const std::lock_guard<std::recursive_mutex> hold(lock_);
+  counters_ += more;
 }
 
 void CommandRecorder::holdScratch() {
@@ -218,8 +231,8 @@ void CommandRecorder::finish() {
   if (!recording_)
     return;
   closeRendering();
-  if (beforeSubmit_)
-    beforeSubmit_(commands_);
+  for (const SubmitHooks& h : hooks_)
+    h.beforeSubmit(commands_);
   // Everything recorded is visible to the host once the fence says it is done.
   VkMemoryBarrier barrier{};
   barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
@@ -248,6 +261,9 @@ void CommandRecorder::finish() {
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - submitted)
           .count();
   ++counters_.submissions;
+  for (const SubmitHooks& h : hooks_)
+    if (h.afterRun)
+      h.afterRun();
   // Every read-back gets its values even when one of them throws; the first error is passed on.
   std::exception_ptr error;
   for (PendingCopy& copy : copies) {

@@ -81,9 +81,17 @@ class CommandRecorder {
   // Host-visible memory holding `bytes` of host data a shader reads (its parameters), for the
   // recording being made; not a read-back.
   [[nodiscard]] Staged upload(const void* data, std::size_t bytes);
-  // Called by finish() with the command buffer just before it is submitted, outside any
-  // rendering: the summaries record their one dispatch there.
-  void setBeforeSubmit(std::function<void(VkCommandBuffer)> hook);
+  // Opens a recording when none is open, so that finish() runs its hooks: for work that only a
+  // hook records (the compute device's frame).
+  void open();
+  // Hooks finish() calls, in increasing `order`: `beforeSubmit` with the command buffer just
+  // before it is submitted, outside any rendering (the compute device's frame records its
+  // stages there, order 0, then the summaries their dispatch, order 1), and `afterRun` once the
+  // submission has run, before the read-backs are delivered (may be empty).
+  void addSubmitHooks(int order, std::function<void(VkCommandBuffer)> beforeSubmit,
+                      std::function<void()> afterRun = {});
+  // Adds what a hook did (dispatches, stage times) to the recorder's counters.
+  void count(const raster::TransferCounters& more);
   void holdScratch();
   void releaseScratch();
   // Runs the recording first when `bytes` more would pass kFlushBytes.
@@ -155,8 +163,13 @@ class CommandRecorder {
   Chunks<HostBuffer> results_;
   Chunks<DeviceBuffer> scratch_;
   int scratchHolds_ = 0;
-  std::function<void(VkCommandBuffer)> beforeSubmit_;
-  std::vector<VkImage> touched_;  // images commands touched since the last barrier
+  struct SubmitHooks {
+    int order = 0;
+    std::function<void(VkCommandBuffer)> beforeSubmit;
+    std::function<void()> afterRun;
+  };
+  std::vector<SubmitHooks> hooks_;  // by order
+  std::vector<VkImage> touched_;    // images commands touched since the last barrier
   std::size_t pendingBytes_ = 0;
   std::vector<PendingCopy> copies_;
   raster::TransferCounters counters_;
@@ -174,12 +187,7 @@ decltype(auto) countedOn(CommandRecorder& recorder, raster::TransferCounters& co
     CommandRecorder& recorder;
     raster::TransferCounters& counters;
     const raster::TransferCounters& before;
-    ~Count() {
-      const raster::TransferCounters after = recorder.counters();
-      counters.submissions += after.submissions - before.submissions;
-      counters.readbackBytes += after.readbackBytes - before.readbackBytes;
-      counters.waitUs += after.waitUs - before.waitUs;
-    }
+    ~Count() { counters += recorder.counters().since(before); }
   } count{recorder, counters, before};
   return call();
 }

@@ -19,7 +19,7 @@ SummaryPipeline::SummaryPipeline(VkDevice device, CommandRecorder& recorder)
   pipeline_ = createComputePipeline(
       device_, spirvModules(ShaderArithmetic::Native64).summaryCompute, kBindings,
       sizeof(std::uint32_t), "vkCreateComputePipelines (the summary shader)");
-  recorder_.setBeforeSubmit([this](VkCommandBuffer cmd) { dispatchPending(cmd); });
+  recorder_.addSubmitHooks(1, [this](VkCommandBuffer cmd) { dispatchPending(cmd); });
 }
 
 VkDescriptorSet SummaryPipeline::descriptorSet(const Buffers& key) {
@@ -76,6 +76,9 @@ void SummaryPipeline::dispatchPending(VkCommandBuffer cmd) {
                        &firstWord);
     vkCmdDispatch(cmd, static_cast<std::uint32_t>(summaries.size()), 1, 1);
   }
+  raster::TransferCounters dispatched;
+  dispatched.dispatches = static_cast<long long>(pending_.size());
+  recorder_.count(dispatched);
   pending_.clear();
 }
 

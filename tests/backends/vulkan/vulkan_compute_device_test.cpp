@@ -245,8 +245,7 @@ TEST_CASE(
       REQUIRE_FALSE(stages.overflowed[b]);
       const std::vector<std::uint32_t>& list = stages.blockLists[b];
       CHECK(std::adjacent_find(list.begin(), list.end(), std::greater_equal<>()) == list.end());
-      const PixelRect block =
-          PixelRect{(scissor.x0 & ~7) + 8 * bx, (scissor.y0 & ~7) + 8 * by, 0, 0};
+      const PixelRect block = PixelRect{stages.gridX0 + 8 * bx, stages.gridY0 + 8 * by, 0, 0};
       const PixelRect area =
           PixelRect{block.x0, block.y0, block.x0 + 8, block.y0 + 8}.intersect(scissor);
       for (std::size_t t = 0; t < 300; ++t) {

@@ -3,8 +3,7 @@
 // same blocks). Each edge function is linear, so its largest value over the block's 64 centres is
 // at one of the four corner centres; a block where some edge is below its fill-rule bias at all
 // four (E' < 0, docs/rasterization.md section 4) holds no covered centre and is left out, which
-// drops most of the blocks of a long sliver's bounding box. Needs GL_ARB_gpu_shader_int64 and
-// tile_common.glsl.
+// drops most of the blocks of a long sliver's bounding box. Needs GL_ARB_gpu_shader_int64.
 
 // The largest of E' = dx (Y - Ya) - dy (X - Xa) - bias over the corner centres of the block whose
 // lower-left pixel is `corner`, for the directed edge a -> b of a counter-clockwise triangle.
@@ -18,10 +17,9 @@ int64_t largestEdgeValue(i64vec2 a, i64vec2 b, ivec2 corner) {
   return dx * (y - a.y) - dy * (x - a.x) - bias;
 }
 
-// Whether the counter-clockwise triangle (v0, p1, p2) may cover a centre of block `block` of the
-// scissor's grid.
-bool blockMeetsTriangle(i64vec2 v0, i64vec2 p1, i64vec2 p2, uvec2 block) {
-  const ivec2 corner = ivec2(draw.scissor.x & ~7, draw.scissor.y & ~7) + ivec2(block * 8u);
+// Whether the counter-clockwise triangle (v0, p1, p2) may cover a centre of the 8x8 block whose
+// lower-left pixel is `corner`.
+bool blockMeetsTriangle(i64vec2 v0, i64vec2 p1, i64vec2 p2, ivec2 corner) {
   return largestEdgeValue(v0, p1, corner) >= 0l && largestEdgeValue(p1, p2, corner) >= 0l &&
          largestEdgeValue(p2, v0, corner) >= 0l;
 }

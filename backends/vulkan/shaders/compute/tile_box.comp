@@ -1,7 +1,10 @@
 #version 450
 #extension GL_ARB_gpu_shader_int64 : require
 #extension GL_GOOGLE_include_directive : require
-// A posed block's world box (raster/posed_boxes.hpp), one workgroup a block: every vertex to
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
+// The frame's box stage: posed blocks' world boxes (raster/posed_boxes.hpp), one workgroup a
+// block (BoxJob): every vertex to
 // world by the pose as the vertex stage does (docs/rasterization.md section 2.1: each operation
 // `precise`, in the contract's order), then per axis the smallest and largest coordinate, a
 // stride of the vertices an invocation and a tree over the workgroup. A minimum or maximum of
@@ -12,28 +15,32 @@ layout(local_size_x = 64) in;
 
 #include "tile_common.glsl"
 
-layout(std430, set = 0, binding = 8) writeonly buffer Boxes { double boxes[]; };
-layout(std430, set = 0, binding = 9) readonly buffer LocalVertices { double localData[]; };
+layout(std430, set = 0, binding = 14) readonly buffer BoxJobs { BoxJob boxJobs[]; };
 // Twelve doubles a block: its pose's linear part row by row, then its translation.
-layout(std430, set = 0, binding = 10) readonly buffer Poses { double poses[]; };
+layout(std430, set = 0, binding = 5) readonly buffer Poses { double poses[]; };
+layout(std430, set = 0, binding = 15) writeonly buffer Boxes { double boxes[]; };
 
 shared double lows[3][64];
 shared double highs[3][64];
 shared uint sawNaN[64];
 
 void main() {
-  const uint block = draw.outWord;
-  const uint vertices = draw.triangleCount;
+  const uint block = linearWorkgroup();
+  if (block >= frame.boxJobs)
+    return;  // uniform over the workgroup: no barrier is skipped by some invocations only
+  const BoxJob job = boxJobs[block];
+  DoubleWords localData = DoubleWords(job.local);
+  const uint vertices = job.vertexCount;
   const uint lane = gl_LocalInvocationID.x;
-  const uint p = 12u * block;
+  const uint p = 12u * job.pose;
   const double infinity = int64BitsToDouble(0x7FF0000000000000l);
   dvec3 low = dvec3(infinity);
   dvec3 high = dvec3(-infinity);
   bool nan = false;
   for (uint v = lane; v < vertices; v += 64u) {
-    const double p0 = localData[3u * v];
-    const double p1 = localData[3u * v + 1u];
-    const double p2 = localData[3u * v + 2u];
+    const double p0 = localData.values[3u * v];
+    const double p1 = localData.values[3u * v + 1u];
+    const double p2 = localData.values[3u * v + 2u];
     precise double wx = ((poses[p] * p0 + poses[p + 1u] * p1) + poses[p + 2u] * p2) + poses[p + 9u];
     precise double wy =
         ((poses[p + 3u] * p0 + poses[p + 4u] * p1) + poses[p + 5u] * p2) + poses[p + 10u];

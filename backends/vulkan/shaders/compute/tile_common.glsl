@@ -1,24 +1,132 @@
 // What every stage of the vulkan-compute device's tile rasterizer shares (docs/backends.md,
-// "The compute device"): the draw's parameters, the layout of a set-up triangle, and the
-// framebuffer's packing. Included after the stage's #version and extensions.
+// "The compute device"): the frame's parameters, its records (defined once here; the host's
+// mirror is tile_frame_layout.hpp, whose static_asserts keep the two in step), and the
+// framebuffer's packing. Included after the stage's #version and extensions; needs
+// GL_EXT_buffer_reference and GL_EXT_buffer_reference_uvec2.
 //
-// The framebuffer is one 32-bit word a pixel, rows from the bottom (GL window order): the
+// A frame is everything one submission runs: commands (draws, clears, reads) of every device,
+// grouped by device and cut into epochs, runs of commands that depend on nothing before them
+// (or, the first of a device's, on its framebuffer as the last frame left it). A job is one
+// 8x8 block of one epoch's grid; the stages are: vertex (posed draws), set-up (every triangle
+// of every draw), binning (count, scan, scatter, sort: each job's list of triangles in command
+// order), raster (a job's commands on its 64 pixels, kept in registers), resolve (each pixel's
+// final value from the last epoch that touched it).
+//
+// A framebuffer is one 32-bit word a pixel, rows from the bottom (GL window order): the
 // contract's 24-bit depth q in the high bits and the 8-bit stencil in the low byte.
 
-layout(push_constant) uniform Draw {
-  ivec4 scissor;       // x0, y0, x1, y1: the state's scissor, clamped to the framebuffer
-  uint width;          // framebuffer width in pixels
-  uint height;         // framebuffer height in pixels
-  uint triangleCount;  // triangles of the draw; for a clear, its value; for a read, its mode
-  uint tests;          // depth func (bits 0-2), depth write (3), stencil func (4-6), cull (7-8)
-  uint stencil;        // ref (bits 0-7), value mask (8-15), write mask (16-23)
-  uint ops;            // front sfail, dpfail, dppass (3 bits each), then back's, from bit 9
-  uint gridWidth;      // 8x8 blocks per row of the scissor's grid
-  uint gridHeight;     // rows of blocks
+layout(push_constant) uniform Frame {
+  uint vertexCount;    // posed vertices of the frame, over every vertex job
+  uint vertexJobs;     // posed meshes whose window vertices the vertex stage makes
+  uint triangleCount;  // set-up triangles of the frame, over every draw
+  uint drawCount;
+  uint jobCount;       // (epoch, 8x8 block) jobs
+  uint epochCount;
   uint pairCapacity;   // entries the bins' list holds
-  uint outWord;        // a read's first word in its output
-  uint blocksPerGroup; // the raster stage's blocks a workgroup, along a row of the grid
-} draw;
+  uint jobsPerGroup;   // the raster stage's jobs a workgroup
+  uint resolvePixels;  // pixels the resolve stage visits, over every range
+  uint resolveRanges;
+  uint boxJobs;        // posed blocks whose world boxes the box stage makes
+} frame;
+
+layout(buffer_reference, std430, buffer_reference_align = 4) buffer PixelWords { uint pixels[]; };
+layout(buffer_reference, std430, buffer_reference_align = 4) buffer FloatWords { float values[]; };
+layout(buffer_reference, std430, buffer_reference_align = 4) buffer IndexWords { uint indices[]; };
+layout(buffer_reference, std430, buffer_reference_align = 8) buffer DoubleWords { double values[]; };
+
+// A device's framebuffer.
+struct Target {
+  uvec2 pixels;  // its address
+  uint width;
+  uint height;
+};
+
+// Command kinds.
+const uint kDraw = 0u;
+const uint kClearDepth = 1u;
+const uint kClearStencil = 2u;
+const uint kRead = 3u;
+
+// Read forms: the depth q a word, the stencil a byte (four a word, packed by atomicOr into
+// words the frame zeroed), the depth as the float q 2^-24 a word (what the summary shader
+// and the other Vulkan device's copies hold; exact, since q < 2^24).
+const uint kReadDepthWords = 0u;
+const uint kReadStencilBytes = 1u;
+const uint kReadDepthFloats = 2u;
+
+struct Command {
+  ivec4 rect;   // x0, y0, x1, y1: a draw's or clear's scissor, a read's rectangle (inside the target)
+  uint kind;
+  uint target;
+  uint tests;   // depth func (bits 0-2), depth write (3), stencil func (4-6), cull (7-8)
+  uint stencil; // ref (bits 0-7), value mask (8-15), write mask (16-23); a stencil clear's mask too
+  uint ops;     // front sfail, dpfail, dppass (3 bits each), then back's, from bit 9
+  uint first;   // a draw's first triangle in the frame; a read's first word in the read arena
+  uint count;   // a draw's triangles; a read's form
+  uint value;   // a clear's value: q, or the stencil byte
+  uint pad0;
+  uint pad1;
+  uint pad2;
+  uint pad3;
+};
+
+// An epoch: the commands [firstCommand, commandEnd) of one target, drawn over a grid of 8x8
+// blocks from gridOrigin, one job each from firstJob on.
+const uint kEpochLoads = 1u;   // starts from the framebuffer (else from its own first clears)
+const uint kEpochStores = 2u;  // no other epoch of the frame meets its footprint: stores directly
+struct Epoch {
+  ivec4 footprint;  // the pixels it may change, inside the target
+  ivec2 gridOrigin; // the first block's lower-left pixel (multiples of 8)
+  uint gridWidth;
+  uint gridHeight;
+  uint target;
+  uint firstJob;
+  uint firstCommand;
+  uint commandEnd;
+  uint flags;
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// A draw's triangles: vertices (three floats each) and indices (three a triangle) by address.
+struct DrawSource {
+  uvec2 vertices;
+  uvec2 indices;
+  uint firstTriangle;
+  uint triangleCount;
+  uint command;
+  uint epoch;
+};
+
+// A posed mesh to take to the window: object-space vertices (three doubles each) in, window
+// vertices (three floats each) out, by the transform at transforms[23 transform].
+struct VertexJob {
+  uvec2 local;
+  uvec2 windows;
+  uint firstVertex;
+  uint vertexCount;
+  uint transform;
+  uint pad;
+};
+
+// Pixels the resolve stage gives their final value: a rectangle of one target whose epochs are
+// [firstEpoch, epochEnd), the range's pixels numbered from firstPixel.
+struct ResolveRange {
+  ivec4 rect;
+  uint target;
+  uint firstEpoch;
+  uint epochEnd;
+  uint firstPixel;
+};
+
+// A posed block whose world box the box stage makes: its object-space vertices, and its pose at
+// poses[12 pose] (the linear part row by row, then the translation).
+struct BoxJob {
+  uvec2 local;
+  uint vertexCount;
+  uint pose;
+};
 
 const uint kWordsPerTriangle = 16u;
 // A set-up triangle's words (Triangles[]):
@@ -27,11 +135,11 @@ const uint kWordsPerTriangle = 16u;
 //  7-10  candidate pixels inside the scissor, half-open x0, y0, x1, y1 (empty: draws nothing)
 //  11    z0's float bits
 //  12-13 dzdx's double bits, low word first; 14-15 dzdy's
-
-// The 8x8 block of the scissor's grid that holds pixel (x, y) (x, y inside the scissor).
-uvec2 blockOf(int x, int y) {
-  return uvec2(uint(x - (draw.scissor.x & ~7)) >> 3, uint(y - (draw.scissor.y & ~7)) >> 3);
-}
+const uint kTriangleX0 = 0u;
+const uint kTriangleFront = 6u;
+const uint kTriangleCandidates = 7u;
+const uint kTriangleZ0 = 11u;
+const uint kTriangleSlopes = 12u;
 
 uint packPixel(uint q, uint s) {
   return (q << 8) | (s & 0xFFu);
@@ -45,9 +153,17 @@ uint stencilOf(uint word) {
   return word & 0xFFu;
 }
 
+bool insideRect(ivec4 r, int x, int y) {
+  return x >= r.x && x < r.z && y >= r.y && y < r.w;
+}
+
 // The invocation's index in a one-dimensional dispatch of 64-wide workgroups that the host
 // spread over rows of at most 65535 workgroups (the smallest limit a device may have).
 uint linearInvocation() {
   return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u +
          gl_LocalInvocationID.x;
+}
+
+uint linearWorkgroup() {
+  return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
 }

@@ -1,11 +1,15 @@
 #version 450
 #extension GL_ARB_gpu_shader_int64 : require
 #extension GL_GOOGLE_include_directive : require
-// Stage 5 of the compute device's tile rasterizer: the fragments of each 8x8 block of the
-// scissor's grid, in the order of the block's list (sorted by tile_sort.comp). Eight invocations
-// draw a block, one a column of its pixels, keeping the column's eight depths and stencils in
-// registers; a workgroup of 64 draws eight blocks side by side (and, on a CPU driver, more along
-// the row: Draw.blocksPerGroup). Per triangle, an invocation works out its column's part once
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
+// The frame's raster stage: every job (an 8x8 block of an epoch's grid) runs its epoch's
+// commands in order on its 64 pixels, kept in registers from the first command to the last:
+// clears, reads (into the read arena) and draws (the job's sorted list: the draw's triangles
+// that may cover a centre of the block, in index order). Eight invocations take a job, one a
+// column of its pixels; a workgroup of 64 takes eight jobs side by side (and, on a CPU driver,
+// more: Frame.jobsPerGroup). Jobs of different epochs never share a pixel's state, so every
+// job of the frame runs at once. Per triangle, an invocation works out its column's part once
 // and steps down the rows the triangle's candidates reach, with the same operations in the same
 // order as section 5 and 7 of docs/rasterization.md:
 //   coverage: each edge function E = dx (Yc - Ya) - dy (Xc - Xa) at the first row, then plus
@@ -13,18 +17,22 @@
 //   depth: z = (z0 + tx) + ty with tx = dzdx (Xc - X0) for the column and ty = dzdy (Yc - Y0)
 //   for the row, each rounded on its own, then quantised (5);
 //   then the stencil test, the depth test, the face's ops and the write masks (6).
+// At the end a job that owns its pixels outright (kEpochStores) writes them to the
+// framebuffer; any other keeps them in JobFinal for the resolve stage.
 
 layout(local_size_x = 64) in;
 
 #include "exact_contract.glsl"
 #include "tile_common.glsl"
+#include "tile_frame_inputs.glsl"
 
 // The set-up triangles (tile_common.glsl's layout) read four words at a time.
-layout(std430, set = 0, binding = 2) readonly buffer Triangles { uvec4 triangles[]; };
-layout(std430, set = 0, binding = 3) readonly buffer BlockCounts { uint blockCounts[]; };
-layout(std430, set = 0, binding = 4) readonly buffer BlockOffsets { uint blockOffsets[]; };
-layout(std430, set = 0, binding = 6) readonly buffer Pairs { uint pairs[]; };
-layout(std430, set = 0, binding = 7) buffer Framebuffer { uint pixels[]; };
+layout(std430, set = 0, binding = 6) readonly buffer Triangles { uvec4 triangles[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint binCounts[]; };
+layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint binOffsets[]; };
+layout(std430, set = 0, binding = 10) readonly buffer Pairs { uint pairs[]; };
+layout(std430, set = 0, binding = 11) writeonly buffer JobFinal { uint jobFinal[]; };
+layout(std430, set = 0, binding = 12) buffer ReadArena { uint readArena[]; };
 
 bool compare(uint func, uint incoming, uint stored) {
   switch (func) {
@@ -52,12 +60,33 @@ uint applyStencilOp(uint op, uint s, uint ref) {
   }
 }
 
-// This invocation's column of the block being drawn: its x, its first row, and the eight
-// pixels' depth and stencil.
+// This invocation's column of the job being run: its x, its first row, and the eight pixels'
+// depth and stencil.
 int column;
 int firstRow;
 uint depth[8];
 uint stencil[8];
+
+// The state of the draw being run, from its command.
+uint ref;
+uint valueMask;
+uint writeMask;
+uint frontOps;
+uint backOps;
+uint depthFunc;
+uint stencilFunc;
+bool depthWrite;
+
+void takeState(Command c) {
+  ref = c.stencil & 0xFFu;
+  valueMask = (c.stencil >> 8) & 0xFFu;
+  writeMask = (c.stencil >> 16) & 0xFFu;
+  frontOps = c.ops & 0x1FFu;
+  backOps = (c.ops >> 9) & 0x1FFu;
+  depthFunc = c.tests & 7u;
+  stencilFunc = (c.tests >> 4) & 7u;
+  depthWrite = (c.tests & 8u) != 0u;
+}
 
 // The edge a -> b of a counter-clockwise triangle at the centre (xc, yc): E minus the fill
 // rule's bias (0 on an inclusive edge, 1 on another), so that a centre is covered when the
@@ -69,7 +98,7 @@ int64_t biasedEdge(i64vec2 a, i64vec2 b, int64_t xc, int64_t yc) {
   return dx * (yc - a.y) - dy * (xc - a.x) - bias;
 }
 
-// Triangle t's fragments in this column.
+// Frame triangle t's fragments in this column.
 void shade(uint t) {
   const uvec4 rectWords = triangles[4u * t + 1u];  // X2, Y2, front, x0
   const uvec4 moreWords = triangles[4u * t + 2u];  // y0, x1, y1, z0
@@ -100,13 +129,7 @@ void shade(uint t) {
   const double dzdy = packDouble2x32(slopeWords.zw);
   precise double tx = dzdx * double(xc - v0.x);
   precise double zx = z0 + tx;  // the plane's column part, as CpuDevice keeps it per block
-  const uint ref = draw.stencil & 0xFFu;
-  const uint valueMask = (draw.stencil >> 8) & 0xFFu;
-  const uint writeMask = (draw.stencil >> 16) & 0xFFu;
-  const uint ops = front ? (draw.ops & 0x1FFu) : ((draw.ops >> 9) & 0x1FFu);
-  const uint depthFunc = draw.tests & 7u;
-  const uint stencilFunc = (draw.tests >> 4) & 7u;
-  const bool depthWrite = (draw.tests & 8u) != 0u;
+  const uint ops = front ? frontOps : backOps;
   for (int row = rowStart; row < rowEnd; ++row) {
     if (e0 >= 0l && e1 >= 0l && e2 >= 0l) {
       const int k = row - firstRow;
@@ -135,46 +158,99 @@ void shade(uint t) {
   }
 }
 
-// Draws block (bx, by) of the scissor's grid: this invocation's column of it.
-void drawBlock(uint bx, uint by) {
-  const uint block = by * draw.gridWidth + bx;
-  const uint count = blockCounts[block];
-  if (count == 0u)
-    return;
-  column = (draw.scissor.x & ~7) + int(bx * 8u) + int(gl_LocalInvocationID.x & 7u);
-  firstRow = (draw.scissor.y & ~7) + int(by * 8u);
-  // Pixels outside the scissor are read and written back unchanged (no candidate reaches them).
-  const bool inColumn = column >= draw.scissor.x && column < draw.scissor.z;
+// A clear of this column's pixels inside the command's scissor.
+void clear(Command c) {
   for (int k = 0; k < 8; ++k) {
-    const int row = firstRow + k;
-    const bool inside = inColumn && row >= draw.scissor.y && row < draw.scissor.w;
-    const uint word = inside ? pixels[uint(row) * draw.width + uint(column)] : 0u;
-    depth[k] = depthOf(word);
-    stencil[k] = stencilOf(word);
-  }
-  const uint offset = blockOffsets[block];
-  if (offset + count > draw.pairCapacity) {
-    // The list did not fit: every triangle of the draw, in index order (a set-up triangle that
-    // misses this column is skipped by its candidate rectangle).
-    for (uint t = 0u; t < draw.triangleCount; ++t)
-      shade(t);
-  } else {
-    for (uint k = 0u; k < count; ++k)
-      shade(pairs[offset + k]);
-  }
-  for (int k = 0; k < 8; ++k) {
-    const int row = firstRow + k;
-    if (inColumn && row >= draw.scissor.y && row < draw.scissor.w)
-      pixels[uint(row) * draw.width + uint(column)] = packPixel(depth[k], stencil[k]);
+    if (!insideRect(c.rect, column, firstRow + k))
+      continue;
+    if (c.kind == kClearDepth) {
+      depth[k] = c.value;
+    } else {
+      const uint mask = (c.stencil >> 16) & 0xFFu;
+      stencil[k] = (c.value & mask) | (stencil[k] & ~mask & 0xFFu);
+    }
   }
 }
 
-// Invocation i draws column i % 8 of every eighth block of the workgroup's span of the row,
-// from block i / 8 on: eight blocks side by side, and Draw.blocksPerGroup blocks in all.
+// A read of this column's pixels inside the command's rectangle, rows from the bottom, into the
+// read arena from word c.first on.
+void read(Command c) {
+  const uint rectWidth = uint(c.rect.z - c.rect.x);
+  for (int k = 0; k < 8; ++k) {
+    const int row = firstRow + k;
+    if (!insideRect(c.rect, column, row))
+      continue;
+    const uint at = uint(row - c.rect.y) * rectWidth + uint(column - c.rect.x);
+    if (c.count == kReadStencilBytes)
+      atomicOr(readArena[c.first + at / 4u], stencil[k] << (8u * (at % 4u)));
+    else if (c.count == kReadDepthWords)
+      readArena[c.first + at] = depth[k];
+    else
+      readArena[c.first + at] = floatBitsToUint(float(depth[k]) * (1.0 / 16777216.0));
+  }
+}
+
+// Runs job j: this invocation's column of it.
+void runJob(uint j) {
+  const uint e = epochOfJob(j);
+  const Epoch epoch = epochs[e];
+  const Target target = targets[epoch.target];
+  PixelWords framebuffer = PixelWords(target.pixels);
+  const uint block = j - epoch.firstJob;
+  column = epoch.gridOrigin.x + int((block % epoch.gridWidth) * 8u + (gl_LocalInvocationID.x & 7u));
+  firstRow = epoch.gridOrigin.y + int((block / epoch.gridWidth) * 8u);
+  const bool loads = (epoch.flags & kEpochLoads) != 0u;
+  for (int k = 0; k < 8; ++k) {
+    const int row = firstRow + k;
+    // An epoch that starts from its own clears reads nothing: its pixels outside them are
+    // never touched (every command of such an epoch lies inside the clears' rectangle).
+    const bool inside = loads && column < int(target.width) && row < int(target.height);
+    const uint word = inside ? framebuffer.pixels[uint(row) * target.width + uint(column)]
+                             : packPixel(0xFFFFFFu, 0u);
+    depth[k] = depthOf(word);
+    stencil[k] = stencilOf(word);
+  }
+  uint cursor = binOffsets[j];
+  const uint listEnd = cursor + binCounts[j];
+  const bool overflowed = listEnd > frame.pairCapacity;
+  for (uint ci = epoch.firstCommand; ci < epoch.commandEnd; ++ci) {
+    const Command c = commands[ci];
+    if (c.kind == kDraw) {
+      takeState(c);
+      const uint drawEnd = c.first + c.count;
+      if (overflowed) {
+        // The list did not fit: every triangle of the draw, in index order (a set-up triangle
+        // that misses this column is skipped by its candidate rectangle).
+        for (uint t = c.first; t < drawEnd; ++t)
+          shade(t);
+      } else {
+        // The list is in frame order, which is command order: this draw's entries are next.
+        for (; cursor < listEnd && pairs[cursor] < drawEnd; ++cursor)
+          shade(pairs[cursor]);
+      }
+    } else if (c.kind == kRead) {
+      read(c);
+    } else {
+      clear(c);
+    }
+  }
+  if ((epoch.flags & kEpochStores) != 0u) {
+    for (int k = 0; k < 8; ++k)
+      if (insideRect(epoch.footprint, column, firstRow + k))
+        framebuffer.pixels[uint(firstRow + k) * target.width + uint(column)] =
+            packPixel(depth[k], stencil[k]);
+  } else {
+    for (int k = 0; k < 8; ++k)
+      jobFinal[j * 64u + uint(k) * 8u + (gl_LocalInvocationID.x & 7u)] =
+          packPixel(depth[k], stencil[k]);
+  }
+}
+
+// Invocation i runs column i % 8 of every eighth job of the workgroup's span, from job i / 8 on:
+// eight jobs side by side, and Frame.jobsPerGroup jobs in all.
 void main() {
-  const uint span = draw.blocksPerGroup;
-  const uint first = gl_WorkGroupID.x * span;
-  const uint end = min(first + span, draw.gridWidth);
-  for (uint bx = first + (gl_LocalInvocationID.x >> 3); bx < end; bx += 8u)
-    drawBlock(bx, gl_WorkGroupID.y);
+  const uint first = linearWorkgroup() * frame.jobsPerGroup;
+  const uint end = min(first + frame.jobsPerGroup, frame.jobCount);
+  for (uint j = first + (gl_LocalInvocationID.x >> 3); j < end; j += 8u)
+    runJob(j);
 }

@@ -1,22 +1,24 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Stage 2 of the compute device's tile rasterizer: the exclusive prefix sum of the blocks'
-// counts, in one workgroup: each block's list starts where the lists of the blocks before it
-// end, so the bins' list is the blocks' lists one after the other. The scatter's cursors start
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
+// The frame's binning, after the set-up: the exclusive prefix sum of the jobs'
+// counts, in one workgroup: each job's list starts where the lists of the jobs before it
+// end, so the bins' list is the jobs' lists one after the other. The scatter's cursors start
 // at the same offsets.
 
 layout(local_size_x = 256) in;
 
 #include "tile_common.glsl"
 
-layout(std430, set = 0, binding = 3) readonly buffer BlockCounts { uint blockCounts[]; };
-layout(std430, set = 0, binding = 4) writeonly buffer BlockOffsets { uint blockOffsets[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer BlockCursors { uint blockCursors[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint blockCounts[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer BinOffsets { uint blockOffsets[]; };
+layout(std430, set = 0, binding = 9) writeonly buffer BinCursors { uint blockCursors[]; };
 
 shared uint partial[256];
 
 void main() {
-  const uint blocks = draw.gridWidth * draw.gridHeight;
+  const uint blocks = frame.jobCount;
   const uint lane = gl_LocalInvocationID.x;
   const uint span = (blocks + 255u) / 256u;  // consecutive blocks per invocation
   const uint first = min(lane * span, blocks);

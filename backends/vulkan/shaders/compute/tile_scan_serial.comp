@@ -1,5 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
 // tile_scan.comp's prefix sum in one invocation, for CPU drivers: there a workgroup with
 // barriers runs its invocations as coroutines, which costs more than adding a few thousand
 // counts in a row (the device picks it on lavapipe; a GPU runs tile_scan.comp).
@@ -8,12 +10,12 @@ layout(local_size_x = 1) in;
 
 #include "tile_common.glsl"
 
-layout(std430, set = 0, binding = 3) readonly buffer BlockCounts { uint blockCounts[]; };
-layout(std430, set = 0, binding = 4) writeonly buffer BlockOffsets { uint blockOffsets[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer BlockCursors { uint blockCursors[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint blockCounts[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer BinOffsets { uint blockOffsets[]; };
+layout(std430, set = 0, binding = 9) writeonly buffer BinCursors { uint blockCursors[]; };
 
 void main() {
-  const uint blocks = draw.gridWidth * draw.gridHeight;
+  const uint blocks = frame.jobCount;
   uint offset = 0u;
   for (uint b = 0u; b < blocks; ++b) {
     blockOffsets[b] = offset;

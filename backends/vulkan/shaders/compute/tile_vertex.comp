@@ -1,8 +1,10 @@
 #version 450
 #extension GL_ARB_gpu_shader_int64 : require
 #extension GL_GOOGLE_include_directive : require
-// Stage 0 of a posed draw (docs/rasterization.md section 2.1, raster/vertex_stage.hpp), one
-// invocation a vertex: the block's object-space vertex to world by the pose, to window by the
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_buffer_reference_uvec2 : require
+// The frame's vertex stage (docs/rasterization.md section 2.1, raster/vertex_stage.hpp), one
+// invocation a vertex of every posed mesh the frame draws (VertexJob): the block's object-space vertex to world by the pose, to window by the
 // view's mapping, x and y snapped to the 1/256-pixel grid and z rounded to float. Every double
 // operation is `precise` and in the contract's order; the divisions are correctly rounded
 // (exact_contract.glsl) and the rounding to float is done on the bits, so no driver's
@@ -13,13 +15,34 @@ layout(local_size_x = 64) in;
 
 #include "exact_contract.glsl"
 #include "tile_common.glsl"
+#include "tile_frame_inputs.glsl"
 
-layout(std430, set = 0, binding = 0) writeonly buffer Vertices { float vertexData[]; };
-layout(std430, set = 0, binding = 9) readonly buffer LocalVertices { double localData[]; };
-// The draw's VertexTransform: the linear part row by row (0-8), the translation (9-11), umin,
-// urange, width (12-14), vmin, vrange, height (15-17), depthMax, depthRange (18, 19), and the
-// world coordinates of u, v and d as small whole numbers (20-22).
-layout(std430, set = 0, binding = 10) readonly buffer VertexTransform { double transform[]; };
+layout(std430, set = 0, binding = 4) readonly buffer VertexJobs { VertexJob vertexJobs[]; };
+// Each VertexJob's transform, 23 doubles: the linear part row by row (0-8), the translation
+// (9-11), umin, urange, width (12-14), vmin, vrange, height (15-17), depthMax, depthRange (18,
+// 19), and the world coordinates of u, v and d as small whole numbers (20-22).
+layout(std430, set = 0, binding = 5) readonly buffer Transforms { double transforms[]; };
+
+uint transformAt;  // this invocation's transform's first double
+
+// Word k of this invocation's transform.
+double T(int k) {
+  return transforms[transformAt + uint(k)];
+}
+
+// The job that holds frame vertex i: the last whose firstVertex <= i.
+uint jobOfVertex(uint i) {
+  uint low = 0u;
+  uint high = frame.vertexJobs;
+  while (high - low > 1u) {
+    const uint middle = (low + high) / 2u;
+    if (vertexJobs[middle].firstVertex <= i)
+      low = middle;
+    else
+      high = middle;
+  }
+  return low;
+}
 
 // a / b rounded to nearest even, the sign of a zero quotient kept (a zero numerator's sign
 // decides it, as in IEEE division).
@@ -67,28 +90,33 @@ float nearestFloat(double v) {
 }
 
 void main() {
-  const uint i = linearInvocation();
-  if (i >= draw.triangleCount)  // the draw's vertex count
+  const uint frameVertex = linearInvocation();
+  if (frameVertex >= frame.vertexCount)
     return;
-  const double p0 = localData[3u * i];
-  const double p1 = localData[3u * i + 1u];
-  const double p2 = localData[3u * i + 2u];
+  const VertexJob job = vertexJobs[jobOfVertex(frameVertex)];
+  const uint i = frameVertex - job.firstVertex;
+  transformAt = 23u * job.transform;
+  DoubleWords localData = DoubleWords(job.local);
+  FloatWords vertexData = FloatWords(job.windows);
+  const double p0 = localData.values[3u * i];
+  const double p1 = localData.values[3u * i + 1u];
+  const double p2 = localData.values[3u * i + 2u];
   // poseVertex: rows x and y ((l0 p0 + l1 p1) + l2 p2) + t, row z (l0 p0 + (l1 p1 + l2 p2)) + t.
-  precise double wx = ((transform[0] * p0 + transform[1] * p1) + transform[2] * p2) + transform[9];
-  precise double wy = ((transform[3] * p0 + transform[4] * p1) + transform[5] * p2) + transform[10];
-  precise double wz = (transform[6] * p0 + (transform[7] * p1 + transform[8] * p2)) + transform[11];
+  precise double wx = ((T(0) * p0 + T(1) * p1) + T(2) * p2) + T(9);
+  precise double wy = ((T(3) * p0 + T(4) * p1) + T(5) * p2) + T(10);
+  precise double wz = (T(6) * p0 + (T(7) * p1 + T(8) * p2)) + T(11);
   const dvec3 world = dvec3(wx, wy, wz);
-  const double u = world[int(transform[20])];
-  const double v = world[int(transform[21])];
-  const double d = world[int(transform[22])];
+  const double u = world[int(T(20))];
+  const double v = world[int(T(21))];
+  const double d = world[int(T(22))];
   // mapToWindow: x = (u - umin) / urange width, y likewise, z = (depthMax - d) / depthRange.
-  precise double du = u - transform[12];
-  precise double x = quotient(du, transform[13]) * transform[14];
-  precise double dv = v - transform[15];
-  precise double y = quotient(dv, transform[16]) * transform[17];
-  precise double dd = transform[18] - d;
-  const double z = quotient(dd, transform[19]);
-  vertexData[3u * i] = snapToGrid(x);
-  vertexData[3u * i + 1u] = snapToGrid(y);
-  vertexData[3u * i + 2u] = nearestFloat(z);
+  precise double du = u - T(12);
+  precise double x = quotient(du, T(13)) * T(14);
+  precise double dv = v - T(15);
+  precise double y = quotient(dv, T(16)) * T(17);
+  precise double dd = T(18) - d;
+  const double z = quotient(dd, T(19));
+  vertexData.values[3u * i] = snapToGrid(x);
+  vertexData.values[3u * i + 1u] = snapToGrid(y);
+  vertexData.values[3u * i + 2u] = nearestFloat(z);
 }

@@ -5,6 +5,8 @@
 // interface, so the same command stream runs on all of them. The exact semantics are in
 // docs/rasterization.md.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -27,6 +29,36 @@ struct TransferCounters {
   // where the API waits inside the read, read it back): of a frame's time, what the device
   // took rather than the host's own work of recording the commands and using their results.
   double waitUs = 0.0;
+  // Compute dispatches recorded (the vulkan-compute device's stages; 0 where a device draws
+  // through a graphics pipeline or on the CPU).
+  long long dispatches = 0;
+  // Device time of the vulkan-compute device's stages, in microseconds, from timestamp
+  // queries: kStageNames says which entry is which (0 where nothing measures them).
+  static constexpr std::size_t kStages = 5;
+  static constexpr std::array<const char*, kStages> kStageNames = {"vertex", "setup", "binning",
+                                                                   "raster", "reads"};
+  std::array<double, kStages> stageUs{};
+
+  TransferCounters& operator+=(const TransferCounters& other) {
+    submissions += other.submissions;
+    readbackBytes += other.readbackBytes;
+    waitUs += other.waitUs;
+    dispatches += other.dispatches;
+    for (std::size_t k = 0; k < kStages; ++k)
+      stageUs[k] += other.stageUs[k];
+    return *this;
+  }
+  // What was counted between `earlier` and this.
+  [[nodiscard]] TransferCounters since(const TransferCounters& earlier) const {
+    TransferCounters d = *this;
+    d.submissions -= earlier.submissions;
+    d.readbackBytes -= earlier.readbackBytes;
+    d.waitUs -= earlier.waitUs;
+    d.dispatches -= earlier.dispatches;
+    for (std::size_t k = 0; k < kStages; ++k)
+      d.stageUs[k] -= earlier.stageUs[k];
+    return d;
+  }
 };
 
 // A depth over a rectangle kept by keepDepthLater for a later summarizeLater; what it holds

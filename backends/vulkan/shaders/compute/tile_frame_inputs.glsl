@@ -1,0 +1,40 @@
+// The frame's records as the stages bind them (tile_common.glsl defines each; a stage includes
+// this after it and uses what it needs). Every record array is read-only: the host wrote them.
+
+layout(std430, set = 0, binding = 0) readonly buffer Targets { Target targets[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Epochs { Epoch epochs[]; };
+layout(std430, set = 0, binding = 2) readonly buffer Commands { Command commands[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Draws { DrawSource draws[]; };
+
+// The draw that holds frame triangle t: the last whose firstTriangle <= t (t < triangleCount).
+uint drawOfTriangle(uint t) {
+  uint low = 0u;
+  uint high = frame.drawCount;  // draws[low].firstTriangle <= t < draws[high].firstTriangle
+  while (high - low > 1u) {
+    const uint middle = (low + high) / 2u;
+    if (draws[middle].firstTriangle <= t)
+      low = middle;
+    else
+      high = middle;
+  }
+  return low;
+}
+
+// The epoch that holds job j: the last whose firstJob <= j (j < jobCount).
+uint epochOfJob(uint j) {
+  uint low = 0u;
+  uint high = frame.epochCount;
+  while (high - low > 1u) {
+    const uint middle = (low + high) / 2u;
+    if (epochs[middle].firstJob <= j)
+      low = middle;
+    else
+      high = middle;
+  }
+  return low;
+}
+
+// The block of epoch e's grid that holds pixel (x, y) (inside the grid).
+uvec2 blockOf(Epoch e, int x, int y) {
+  return uvec2(uint(x - e.gridOrigin.x) >> 3, uint(y - e.gridOrigin.y) >> 3);
+}

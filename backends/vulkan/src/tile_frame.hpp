@@ -1,0 +1,111 @@
+#pragma once
+// The vulkan-compute device's frame: everything the devices of the 64-bit context record between
+// two submissions, kept on the host as a job list and run, just before the submission, as a fixed
+// sequence of dispatches whatever it holds (docs/backends.md, "The compute device"):
+//
+//   boxes    posed blocks' world boxes (one workgroup a block)
+//   vertex   every posed draw's window vertices (one invocation a vertex)
+//   set-up   every triangle of every draw (one invocation a triangle), counting it into the
+//            jobs it may cover a centre of
+//   binning  scan, scatter and sort: each job's list of triangles, in command order
+//   raster   every job at once: an 8x8 block of one epoch, its commands in order on its pixels
+//   resolve  each pixel's final value from the last epoch that touched it
+//
+// An epoch is a run of one framebuffer's commands that depends on nothing recorded before it:
+// it starts with a depth clear and a stencil clear (all bits) of one rectangle, and every later
+// command of it lies inside that rectangle; a framebuffer's commands before its first such epoch
+// (or that reach outside their epoch's rectangle) form an epoch that starts from the framebuffer
+// as the last submission left it. So a frame's pair tests, each of which clears its MOR first,
+// are epochs of their own and run side by side, however many share a framebuffer.
+//
+// Reads (read-backs, the summaries' copies and kept depths) are commands too: the raster stage
+// writes them into a read arena at their place in the command order, and a copy takes them to
+// their destination after the frame. Not thread-safe on its own: every call is made under the
+// recorder's lock (CommandRecorder::hold), which the hook runs under too.
+
+#include <vulkan/vulkan_core.h>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "recode/raster/render_state_device.hpp"
+#include "tile_frame_layout.hpp"
+#include "vulkan_context.hpp"
+
+namespace recode::backends::detail {
+
+class CommandRecorder;
+class TilePipelines;
+
+// Where a draw's window vertices come from: a buffer of them (by address), or a posed mesh whose
+// object-space vertices the vertex stage takes to the window with `transform` (23 doubles:
+// tile_vertex.comp). Draws of one content key (not 0) in one frame share one vertex job.
+struct TileVertices {
+  VkDeviceAddress window = 0;  // three floats a vertex; 0 for a posed mesh
+  VkDeviceAddress local = 0;   // three doubles a vertex
+  std::uint32_t vertexCount = 0;
+  std::array<double, 23> transform{};
+  std::uint64_t contentKey = 0;
+};
+
+// What the stages made of one draw, copied back for tests (VulkanComputeDevice::DrawStages):
+// the words of its set-up triangles, its epoch's grid and each job's list, in frame numbering.
+struct TileDrawCapture {
+  std::vector<std::uint32_t> triangleWords;  // kTileWordsPerTriangle a triangle of the draw
+  std::int32_t gridOrigin[2] = {0, 0};
+  std::uint32_t gridWidth = 0;
+  std::uint32_t gridHeight = 0;
+  std::uint32_t firstTriangle = 0;
+  std::vector<std::vector<std::uint32_t>> jobLists;  // frame triangle indices, in list order
+  std::vector<bool> overflowed;
+  std::vector<float> windowVertices;  // a posed draw's: three floats a vertex
+};
+
+class TileFrame {
+ public:
+  TileFrame(VulkanContext& context, CommandRecorder& recorder, const TilePipelines& pipelines);
+  ~TileFrame();
+  TileFrame(const TileFrame&) = delete;
+  TileFrame& operator=(const TileFrame&) = delete;
+
+  // A framebuffer (a word a pixel, rows from the bottom) the frame may draw into; its id for
+  // the calls below. Release it after the recording that used it has run.
+  [[nodiscard]] std::uint32_t addTarget(VkBuffer framebuffer, int width, int height);
+  void removeTarget(std::uint32_t target);
+
+  // Commands, in the order they are to take effect on their target. `scissor` and `rect` lie
+  // inside the target and are not empty.
+  void clearDepth(std::uint32_t target, const raster::PixelRect& scissor, std::uint32_t q);
+  void clearStencil(std::uint32_t target, const raster::PixelRect& scissor, std::uint8_t value,
+                    std::uint8_t writeMask);
+  void draw(std::uint32_t target, const raster::RenderState& state, const TileVertices& vertices,
+            VkDeviceAddress indices, std::uint32_t triangles);
+  // The rectangle's pixels in `form` (rows from the bottom; stencil bytes packed four a word, the
+  // last word padded with zeros) copied to `destination` from `offset` after the frame.
+  void read(std::uint32_t target, const raster::PixelRect& rect, TileReadForm form,
+            VkBuffer destination, VkDeviceSize offset);
+  // Posed blocks' world boxes (eight doubles each: min, max, the order-matters flag, 0) copied to
+  // `destination` from `offset` after the box stage.
+  struct BoxRequest {
+    VkDeviceAddress local = 0;
+    std::uint32_t vertexCount = 0;
+    std::array<double, 12> pose{};
+  };
+  void boxes(const std::vector<BoxRequest>& blocks, VkBuffer destination, VkDeviceSize offset);
+  // The last draw recorded on `target` is copied back after the frame and handed to `sink`.
+  void captureLastDraw(std::uint32_t target, std::function<void(TileDrawCapture)> sink);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The frame of the 64-bit context's recorder, made on first use and never destroyed (as the
+// context and the recorder).
+[[nodiscard]] TileFrame& tileFrame();
+
+}  // namespace recode::backends::detail

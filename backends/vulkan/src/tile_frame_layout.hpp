@@ -1,0 +1,96 @@
+#pragma once
+// The frame's records as the host writes them: the mirror of tile_common.glsl's structs (std430,
+// every field a 32-bit word, addresses as two words, low first). Field names and order are the
+// shader's; the sizes are checked here, the order by the stages' tests.
+
+#include <cstdint>
+
+namespace recode::backends::detail {
+
+// Command kinds and read forms (tile_common.glsl's kDraw..., kRead...).
+enum class TileCommandKind : std::uint32_t { Draw = 0, ClearDepth = 1, ClearStencil = 2, Read = 3 };
+enum class TileReadForm : std::uint32_t { DepthWords = 0, StencilBytes = 1, DepthFloats = 2 };
+// Epoch flags.
+inline constexpr std::uint32_t kTileEpochLoads = 1;
+inline constexpr std::uint32_t kTileEpochStores = 2;
+
+struct TileAddress {
+  std::uint32_t low = 0;
+  std::uint32_t high = 0;
+  static TileAddress of(std::uint64_t address) {
+    return {static_cast<std::uint32_t>(address), static_cast<std::uint32_t>(address >> 32)};
+  }
+};
+
+struct TileTarget {
+  TileAddress pixels;
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+};
+static_assert(sizeof(TileTarget) == 16);
+
+struct TileCommand {
+  std::int32_t rect[4] = {0, 0, 0, 0};
+  TileCommandKind kind = TileCommandKind::Draw;
+  std::uint32_t target = 0;
+  std::uint32_t tests = 0;
+  std::uint32_t stencil = 0;
+  std::uint32_t ops = 0;
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+  std::uint32_t value = 0;
+  std::uint32_t pad[4] = {0, 0, 0, 0};
+};
+static_assert(sizeof(TileCommand) == 64);
+
+struct TileEpoch {
+  std::int32_t footprint[4] = {0, 0, 0, 0};
+  std::int32_t gridOrigin[2] = {0, 0};
+  std::uint32_t gridWidth = 0;
+  std::uint32_t gridHeight = 0;
+  std::uint32_t target = 0;
+  std::uint32_t firstJob = 0;
+  std::uint32_t firstCommand = 0;
+  std::uint32_t commandEnd = 0;
+  std::uint32_t flags = 0;
+  std::uint32_t pad[3] = {0, 0, 0};
+};
+static_assert(sizeof(TileEpoch) == 64);
+
+struct TileDrawSource {
+  TileAddress vertices;
+  TileAddress indices;
+  std::uint32_t firstTriangle = 0;
+  std::uint32_t triangleCount = 0;
+  std::uint32_t command = 0;
+  std::uint32_t epoch = 0;
+};
+static_assert(sizeof(TileDrawSource) == 32);
+
+struct TileVertexJob {
+  TileAddress local;
+  TileAddress windows;
+  std::uint32_t firstVertex = 0;
+  std::uint32_t vertexCount = 0;
+  std::uint32_t transform = 0;
+  std::uint32_t pad = 0;
+};
+static_assert(sizeof(TileVertexJob) == 32);
+
+struct TileResolveRange {
+  std::int32_t rect[4] = {0, 0, 0, 0};
+  std::uint32_t target = 0;
+  std::uint32_t firstEpoch = 0;
+  std::uint32_t epochEnd = 0;
+  std::uint32_t firstPixel = 0;
+};
+static_assert(sizeof(TileResolveRange) == 32);
+
+struct TileBoxJob {
+  TileAddress local;
+  std::uint32_t vertexCount = 0;
+  std::uint32_t pose = 0;
+};
+static_assert(sizeof(TileBoxJob) == 16);
+
+}  // namespace recode::backends::detail
