@@ -144,6 +144,18 @@ if os.path.exists(path):
             cells.append(f"{float(r['host_ms_per_frame']):.3f}"
                          if r is not None and r["host_ms_per_frame"] else "-")
         print(f"| {s} | {t:,} | " + " | ".join(cells) + " |")
+    stages = ("vertex", "setup", "binning", "raster", "reads")
+    print("\nrecode-vulkan-compute, where its device time goes (ms a frame, from timestamps;"
+          " dispatches and submissions a frame):")
+    print("| scene | triangles | " + " | ".join(stages) + " | dispatches | submissions |")
+    for e, s, t in keys:
+        r = next((r for r in rows if (r["experiment"], r["scene"], int(r["triangles"]),
+                                      r["algorithm"]) == (e, s, t, "recode-vulkan-compute")), None)
+        if r is None or not r.get("dispatches_per_frame"):
+            continue
+        cells = [f"{float(r['stage_ms_' + k]):.3f}" for k in stages]
+        print(f"| {s} | {t:,} | " + " | ".join(cells) +
+              f" | {float(r['dispatches_per_frame']):.1f} | {float(r['submissions_per_frame']):.1f} |")
 PY
 
 if ((${#failed[@]})); then

@@ -170,7 +170,10 @@ void writeBenchCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
   out << "experiment,scene,triangles_per_block,triangles,algorithm,frames,judged_frames,"
          "total_ms,mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
          "stencil_pixels_read,depth_pixels_read,seen_finer,submissions_per_frame,"
-         "readback_bytes_per_frame,device_wait_ms_per_frame,host_ms_per_frame\n";
+         "readback_bytes_per_frame,device_wait_ms_per_frame,host_ms_per_frame,dispatches_per_frame";
+  for (const char* name : raster::TransferCounters::kStageNames)
+    out << ",stage_ms_" << name;
+  out << '\n';
   for (const BenchRow& r : rows) {
     out << r.experiment << ',' << r.scene << ',' << r.trianglesPerBlock << ',' << r.triangles << ','
         << r.algorithm << ',' << r.frames << ',' << r.judgedFrames << ',' << fixed(r.totalMs, 4)
@@ -191,9 +194,14 @@ void writeBenchCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
       out << fixed(static_cast<double>(r.recode->submissions) / frames, 2) << ','
           << fixed(static_cast<double>(r.recode->readbackBytes) / frames, 1) << ','
           << fixed(r.recode->deviceWaitUs / 1000.0 / frames, 4) << ','
-          << fixed(hostMsPerFrame(r), 4);
+          << fixed(hostMsPerFrame(r), 4) << ','
+          << fixed(static_cast<double>(r.recode->dispatches) / frames, 2);
+      for (const double us : r.recode->stageUs)
+        out << ',' << fixed(us / 1000.0 / frames, 4);
     } else {
-      out << ",,,";
+      out << ",,,,";
+      for (std::size_t k = 0; k < raster::TransferCounters::kStages; ++k)
+        out << ',';
     }
     out << '\n';
   }

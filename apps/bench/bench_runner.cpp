@@ -63,6 +63,9 @@ void addCounters(RecodeCounters& sum, const core::FrameReport& r) {
   sum.submissions += r.submissions;
   sum.readbackBytes += r.readbackBytes;
   sum.deviceWaitUs += r.deviceWaitUs;
+  sum.dispatches += r.dispatches;
+  for (std::size_t k = 0; k < sum.stageUs.size(); ++k)
+    sum.stageUs[k] += r.stageUs[k];
 }
 
 // What every detector of one case shares: the scene and its object trees, which each run poses

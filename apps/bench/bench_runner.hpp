@@ -3,12 +3,14 @@
 // frames first; then every algorithm of the experiment runs the whole motion on the same
 // object trees, is timed frame by frame, and is scored against the judge.
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "bench/bench_experiments.hpp"
+#include "recode/raster/device.hpp"
 #include "recode/verify/detection_score.hpp"
 
 namespace recode::app {
@@ -22,6 +24,8 @@ struct RecodeCounters {
   long long submissions = 0;    // FrameReport::submissions: 0 on the CPU device
   long long readbackBytes = 0;  // FrameReport::readbackBytes
   double deviceWaitUs = 0.0;    // FrameReport::deviceWaitUs
+  long long dispatches = 0;     // FrameReport::dispatches
+  std::array<double, raster::TransferCounters::kStages> stageUs{};  // FrameReport::stageUs
 };
 
 struct BenchRow {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "recode/io/printable.hpp"
+#include "recode/raster/device.hpp"
 
 namespace recode::app {
 
@@ -21,6 +22,14 @@ const core::HierarchyNode& leaf(const core::Simulation& sim, int object, int nod
 
 const std::string& objectName(const core::Simulation& sim, int object) {
   return sim.objects()[static_cast<std::size_t>(object)].name();
+}
+
+// The vulkan-compute device's stage times, one column each (in milliseconds).
+std::string stageColumns() {
+  std::string columns;
+  for (const char* name : raster::TransferCounters::kStageNames)
+    columns += std::string(columns.empty() ? "" : ",") + "stage_ms_" + name;
+  return columns;
 }
 
 }  // namespace
@@ -176,7 +185,8 @@ void printStatistics(std::ostream& out, const core::RunStatistics& s, core::Pair
 std::string csvHeader(core::PairMode mode) {
   return std::string("frame,frame_us,collision_us,object_pairs,box_tests,pair_tests,") +
          (mode == core::PairMode::SkipApart ? "pair_tests_skipped," : "") +
-         "stencil_pixels_read,depth_pixels_read,contacts,device_wait_us\n";
+         "stencil_pixels_read,depth_pixels_read,contacts,device_wait_us,submissions,dispatches," +
+         stageColumns() + "\n";
 }
 
 std::string csvRow(const core::FrameReport& f, core::PairMode mode) {
@@ -186,7 +196,10 @@ std::string csvRow(const core::FrameReport& f, core::PairMode mode) {
   if (mode == core::PairMode::SkipApart)
     row << f.pairTestsSkipped << ',';
   row << f.stencilPixelsRead << ',' << f.depthPixelsRead << ',' << f.contacts.size() << ','
-      << f.deviceWaitUs << '\n';
+      << f.deviceWaitUs << ',' << f.submissions << ',' << f.dispatches;
+  for (const double us : f.stageUs)
+    row << ',' << us / 1000.0;
+  row << '\n';
   return row.str();
 }
 

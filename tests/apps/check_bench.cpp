@@ -46,7 +46,8 @@ const char* const kHeader =
     "experiment,scene,triangles_per_block,triangles,algorithm,frames,judged_frames,total_ms,"
     "mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
     "stencil_pixels_read,depth_pixels_read,seen_finer,submissions_per_frame,"
-    "readback_bytes_per_frame,device_wait_ms_per_frame,host_ms_per_frame";
+    "readback_bytes_per_frame,device_wait_ms_per_frame,host_ms_per_frame,dispatches_per_frame,"
+    "stage_ms_vertex,stage_ms_setup,stage_ms_binning,stage_ms_raster,stage_ms_reads";
 
 struct Row {
   std::map<std::string, std::string> field;
@@ -137,9 +138,11 @@ void checkRow(const Row& r) {
       std::abs(total - mean * static_cast<double>(frames)) > 1e-3 * static_cast<double>(frames))
     fail(id + ": total " + r.text("total_ms") + " ms is not mean x frames");
   const bool recode = r.text("algorithm").rfind("recode-", 0) == 0;
-  for (const char* key : {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
-                          "submissions_per_frame", "readback_bytes_per_frame",
-                          "device_wait_ms_per_frame", "host_ms_per_frame"})
+  for (const char* key :
+       {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
+        "submissions_per_frame", "readback_bytes_per_frame", "device_wait_ms_per_frame",
+        "host_ms_per_frame", "dispatches_per_frame", "stage_ms_vertex", "stage_ms_setup",
+        "stage_ms_binning", "stage_ms_raster", "stage_ms_reads"})
     if (r.text(key).empty() == recode)
       fail(id + ": " + key + (recode ? " missing" : " given for a peer"));
   // The device's share of the frame: none without a submission, and never more than the frame.
@@ -307,8 +310,31 @@ int main(int argc, char** argv) {
         // The CPU device hands nothing to hardware.
         const auto cpuRow = rows.find(prefix + "recode-cpu");
         if (cpuRow != rows.end() && (cpuRow->second.number("submissions_per_frame") != 0.0 ||
-                                     cpuRow->second.number("readback_bytes_per_frame") != 0.0))
-          fail(prefix + "recode-cpu: submissions or read-back bytes counted on the CPU device");
+                                     cpuRow->second.number("readback_bytes_per_frame") != 0.0 ||
+                                     cpuRow->second.number("dispatches_per_frame") != 0.0))
+          fail(prefix +
+               "recode-cpu: submissions, read-back bytes or dispatches counted on the "
+               "CPU device");
+        // The compute device runs a frame as a fixed set of dispatches (docs/backends.md, "The
+        // compute device"): at most 12 a submission, however many draws the frame holds, and
+        // its stages' device time (timestamps) within the frame's wait for the device.
+        const auto compute = rows.find(prefix + "recode-vulkan-compute");
+        if (compute != rows.end()) {
+          const Row& c = compute->second;
+          if (c.number("dispatches_per_frame") > 12.0 * c.number("submissions_per_frame") + 0.01)
+            fail(prefix + "recode-vulkan-compute: " + c.text("dispatches_per_frame") +
+                 " dispatches a frame in " + c.text("submissions_per_frame") +
+                 " submissions, more than 12 each");
+          if (c.number("dispatches_per_frame") <= 0.0)
+            fail(prefix + "recode-vulkan-compute: no dispatch counted");
+          double stages = 0.0;
+          for (const char* key : {"stage_ms_vertex", "stage_ms_setup", "stage_ms_binning",
+                                  "stage_ms_raster", "stage_ms_reads"})
+            stages += c.number(key);
+          if (!(stages >= 0.0) || stages > c.number("device_wait_ms_per_frame") + 1e-3)
+            fail(prefix + "recode-vulkan-compute: its stages took " + std::to_string(stages) +
+                 " ms a frame, more than its wait for the device");
+        }
         // The view-axis rule only redraws a leaf pair along another axis: the tree descent
         // and the leaf pairs drawn are recode-cpu's.
         for (const char* key : {"box_tests", "pair_tests"})

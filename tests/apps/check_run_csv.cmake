@@ -12,7 +12,7 @@ if(NOT n EQUAL 13)
   message(FATAL_ERROR "expected a header and 12 rows, got ${n} lines")
 endif()
 list(GET lines 0 header)
-if(NOT header STREQUAL "frame,frame_us,collision_us,object_pairs,box_tests,pair_tests,stencil_pixels_read,depth_pixels_read,contacts,device_wait_us")
+if(NOT header STREQUAL "frame,frame_us,collision_us,object_pairs,box_tests,pair_tests,stencil_pixels_read,depth_pixels_read,contacts,device_wait_us,submissions,dispatches,stage_ms_vertex,stage_ms_setup,stage_ms_binning,stage_ms_raster,stage_ms_reads")
   message(FATAL_ERROR "unexpected header: ${header}")
 endif()
 # Frames 0-9: no contact and no pair test; frames 10 and 11: five of each.

@@ -56,6 +56,86 @@ std::uint32_t readWords(TileReadForm form, long long pixels) {
   return static_cast<std::uint32_t>(form == TileReadForm::StencilBytes ? (pixels + 3) / 4 : pixels);
 }
 
+// The frame's records as the stages read them, target by target, each target's commands cut
+// into epochs, numbered in command order.
+struct FrameRecords {
+  std::vector<TileTarget> targets;
+  std::vector<TileCommand> commands;
+  std::vector<TileEpoch> epochs;
+  std::vector<TileDrawSource> draws;
+  std::vector<TileResolveRange> resolveRanges;
+  std::vector<TileVertexJob> vertexJobs;
+  std::vector<double> transforms;  // kTileTransformDoubles a vertex job
+  std::vector<TileBoxJob> boxJobs;
+  std::vector<double> poses;  // kTilePoseDoubles a box job
+  // A read's words in the read arena and where they go after the frame.
+  struct ReadCopy {
+    VkBuffer destination = VK_NULL_HANDLE;
+    VkDeviceSize offset = 0;
+    std::uint32_t firstWord = 0;
+    std::uint32_t words = 0;
+  };
+  std::vector<ReadCopy> readCopies;
+  std::uint32_t triangles = 0;
+  std::uint32_t jobs = 0;
+  std::uint32_t finals = 0;  // jobs of epochs that leave their pixels to the resolve stage
+  std::uint32_t arenaWords = 0;
+  std::uint32_t resolvePixels = 0;
+  std::uint32_t windowVertices = 0;        // the vertex jobs' vertices, in all
+  std::vector<std::uint32_t> windowFirst;  // vertex job k's first window vertex
+  std::vector<int> drawVertexJob;          // each draw's vertex job, or -1 (window vertices given)
+  // The captured draw's record and its epoch's.
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> captured;
+};
+
+// Where the frame's regions lie in its work buffer.
+struct WorkLayout {
+  explicit WorkLayout(const FrameRecords& r)
+      : pairCapacity(4 * r.triangles + 2 * r.jobs + 4096),
+        triangleBytes(aligned(VkDeviceSize{r.triangles} * kTileWordsPerTriangle * 4 + 4)),
+        jobBytes(aligned(VkDeviceSize{r.jobs} * 4 + 4)) {
+    countsAt = triangleBytes;
+    offsetsAt = countsAt + jobBytes;
+    cursorsAt = offsetsAt + jobBytes;
+    pairsAt = cursorsAt + jobBytes;
+    finalsAt = pairsAt + aligned(VkDeviceSize{pairCapacity} * 4);
+    windowsAt = finalsAt + aligned(VkDeviceSize{r.finals} * 256 + 4);
+    arenaAt = windowsAt + aligned(VkDeviceSize{r.windowVertices} * 12 + 4);
+    boxesAt = arenaAt + aligned(VkDeviceSize{r.arenaWords} * 4 + 4);
+    bytes = boxesAt + aligned(VkDeviceSize{r.boxJobs.size()} * 64 + 8);
+  }
+  // Entries the jobs' lists hold in all: a job whose list would pass the end draws each of its
+  // draws from every triangle instead (tile_raster.comp), so this bounds memory, not results.
+  std::uint32_t pairCapacity;
+  VkDeviceSize triangleBytes;
+  VkDeviceSize jobBytes;
+  VkDeviceSize countsAt = 0;
+  VkDeviceSize offsetsAt = 0;
+  VkDeviceSize cursorsAt = 0;
+  VkDeviceSize pairsAt = 0;
+  VkDeviceSize finalsAt = 0;
+  VkDeviceSize windowsAt = 0;
+  VkDeviceSize arenaAt = 0;
+  VkDeviceSize boxesAt = 0;
+  VkDeviceSize bytes = 0;
+};
+
+TileEpoch epochRecord(const EpochSpan& span, std::uint32_t target) {
+  TileEpoch e;
+  const PixelRect& f = span.footprint;
+  e.footprint[0] = f.x0;
+  e.footprint[1] = f.y0;
+  e.footprint[2] = f.x1;
+  e.footprint[3] = f.y1;
+  e.gridOrigin[0] = f.x0 & ~7;
+  e.gridOrigin[1] = f.y0 & ~7;
+  e.gridWidth = static_cast<std::uint32_t>(((f.x1 - 1) >> 3) - (f.x0 >> 3) + 1);
+  e.gridHeight = static_cast<std::uint32_t>(((f.y1 - 1) >> 3) - (f.y0 >> 3) + 1);
+  e.target = target;
+  e.flags = (span.loads ? kTileEpochLoads : 0u) | (span.alone ? kTileEpochStores : 0u);
+  return e;
+}
+
 }  // namespace
 
 struct TileFrame::Impl {
@@ -166,42 +246,23 @@ struct TileFrame::Impl {
       vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, k);
   }
 
+  [[nodiscard]] FrameRecords records() const;
   void run(VkCommandBuffer cmd);
+  void recordStages(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
+  void recordCopies(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
+  void recordCapture(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
   void readTimes();
 };
 
-// Runs everything recorded since the last submission: see tile_frame.hpp for the stages.
-void TileFrame::Impl::run(VkCommandBuffer cmd) {
-  timed = false;
-  if (empty())
-    return;
-  // The frame's records, target by target, each target's commands cut into epochs.
-  std::vector<TileTarget> targetRecords(targets.size());
-  for (std::size_t t = 0; t < targets.size(); ++t)
-    targetRecords[t] = {TileAddress::of(targets[t].pixels), targets[t].width, targets[t].height};
-  std::vector<TileCommand> commandRecords;
-  std::vector<TileEpoch> epochRecords;
-  std::vector<TileDrawSource> drawRecords;
-  std::vector<TileResolveRange> resolveRecords;
-  struct ReadCopy {
-    VkBuffer destination;
-    VkDeviceSize offset;
-    std::uint32_t firstWord;
-    std::uint32_t words;
-  };
-  std::vector<ReadCopy> readCopies;
-  std::uint32_t triangles = 0;
-  std::uint32_t jobs = 0;
-  std::uint32_t arenaWords = 0;
-  std::uint32_t resolvePixels = 0;
-  // The captured draw's place in the frame's numbering.
-  std::optional<std::pair<std::uint32_t, std::uint32_t>> captured;  // (draw record, epoch)
-  // Posed draws' window vertices: vertex job k's from windowFirst[k] (in vertices).
-  std::vector<std::uint32_t> windowFirst;
-  std::uint32_t windowVertices = 0;
+FrameRecords TileFrame::Impl::records() const {
+  FrameRecords r;
+  for (const Target& t : targets)
+    r.targets.push_back({TileAddress::of(t.pixels), t.width, t.height});
   for (const VertexJob& job : vertexJobs) {
-    windowFirst.push_back(windowVertices);
-    windowVertices += job.source.vertexCount;
+    r.windowFirst.push_back(r.windowVertices);
+    r.windowVertices += job.source.vertexCount;
+    r.transforms.insert(r.transforms.end(), job.source.transform.begin(),
+                        job.source.transform.end());
   }
   for (std::uint32_t t = 0; t < targets.size(); ++t) {
     const std::vector<Pending>& list = commands[t];
@@ -211,152 +272,151 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
     shapes.reserve(list.size());
     for (const Pending& p : list)
       shapes.push_back(epochCommandOf(p.command, p.rect));
-    const std::vector<EpochSpan> spans = cutIntoEpochs(shapes);
-    const auto firstEpoch = static_cast<std::uint32_t>(epochRecords.size());
-    PixelRect resolveRect;
-    bool resolves = false;
-    for (const EpochSpan& span : spans) {
-      TileEpoch e;
-      const PixelRect& f = span.footprint;
-      e.footprint[0] = f.x0;
-      e.footprint[1] = f.y0;
-      e.footprint[2] = f.x1;
-      e.footprint[3] = f.y1;
-      e.gridOrigin[0] = f.x0 & ~7;
-      e.gridOrigin[1] = f.y0 & ~7;
-      e.gridWidth = static_cast<std::uint32_t>(((f.x1 - 1) >> 3) - (f.x0 >> 3) + 1);
-      e.gridHeight = static_cast<std::uint32_t>(((f.y1 - 1) >> 3) - (f.y0 >> 3) + 1);
-      e.target = t;
-      e.firstJob = jobs;
-      e.firstCommand = static_cast<std::uint32_t>(commandRecords.size());
-      e.flags = (span.loads ? kTileEpochLoads : 0u) | (span.alone ? kTileEpochStores : 0u);
+    const auto firstEpoch = static_cast<std::uint32_t>(r.epochs.size());
+    std::optional<PixelRect> resolved;  // the footprints the resolve stage visits
+    for (const EpochSpan& span : cutIntoEpochs(shapes)) {
+      TileEpoch e = epochRecord(span, t);
+      const auto epochIndex = static_cast<std::uint32_t>(r.epochs.size());
+      e.firstJob = r.jobs;
+      e.firstFinal = r.finals;
+      e.firstCommand = static_cast<std::uint32_t>(r.commands.size());
       if (!span.alone) {
-        resolveRect = resolves ? unite(resolveRect, f) : f;
-        resolves = true;
+        r.finals += e.gridWidth * e.gridHeight;
+        resolved = resolved ? unite(*resolved, span.footprint) : span.footprint;
       }
-      const auto epochIndex = static_cast<std::uint32_t>(epochRecords.size());
       for (std::size_t c = span.begin; c < span.end; ++c) {
         const Pending& p = list[c];
         TileCommand record = p.command;
         if (record.kind == TileCommandKind::Draw) {
-          const auto drawIndex = static_cast<std::uint32_t>(drawRecords.size());
           if (capture && capture->target == t && capture->command == c)
-            captured = std::make_pair(drawIndex, epochIndex);
-          record.first = triangles;
+            r.captured = std::make_pair(static_cast<std::uint32_t>(r.draws.size()), epochIndex);
+          record.first = r.triangles;
           TileDrawSource d;
-          d.vertices = TileAddress::of(p.vertices);
+          d.vertices = TileAddress::of(p.vertices);  // a vertex job's: set once work is laid out
+          r.drawVertexJob.push_back(p.vertexJob);
           d.indices = TileAddress::of(p.indices);
-          d.firstTriangle = triangles;
+          d.firstTriangle = r.triangles;
           d.triangleCount = record.count;
-          d.command = static_cast<std::uint32_t>(commandRecords.size());
+          d.command = static_cast<std::uint32_t>(r.commands.size());
           d.epoch = epochIndex;
-          if (p.vertexJob >= 0)  // the window vertices' address is known once work is
-            d.vertices = {static_cast<std::uint32_t>(p.vertexJob), 0xFFFFFFFFu};
-          drawRecords.push_back(d);
-          triangles += record.count;
+          r.draws.push_back(d);
+          r.triangles += record.count;
         } else if (record.kind == TileCommandKind::Read) {
-          record.first = arenaWords;
+          record.first = r.arenaWords;
           const std::uint32_t words =
               readWords(static_cast<TileReadForm>(record.count), p.rect.area());
-          readCopies.push_back({p.destination, p.destinationOffset, arenaWords, words});
-          arenaWords += words;
+          r.readCopies.push_back({p.destination, p.destinationOffset, r.arenaWords, words});
+          r.arenaWords += words;
         }
-        commandRecords.push_back(record);
+        r.commands.push_back(record);
       }
-      e.commandEnd = static_cast<std::uint32_t>(commandRecords.size());
-      jobs += e.gridWidth * e.gridHeight;
-      epochRecords.push_back(e);
+      e.commandEnd = static_cast<std::uint32_t>(r.commands.size());
+      r.jobs += e.gridWidth * e.gridHeight;
+      r.epochs.push_back(e);
     }
-    if (resolves) {
-      TileResolveRange r;
-      r.rect[0] = resolveRect.x0;
-      r.rect[1] = resolveRect.y0;
-      r.rect[2] = resolveRect.x1;
-      r.rect[3] = resolveRect.y1;
-      r.target = t;
-      r.firstEpoch = firstEpoch;
-      r.epochEnd = static_cast<std::uint32_t>(epochRecords.size());
-      r.firstPixel = resolvePixels;
-      resolvePixels += static_cast<std::uint32_t>(resolveRect.area());
-      resolveRecords.push_back(r);
+    if (resolved) {
+      TileResolveRange range;
+      range.rect[0] = resolved->x0;
+      range.rect[1] = resolved->y0;
+      range.rect[2] = resolved->x1;
+      range.rect[3] = resolved->y1;
+      range.target = t;
+      range.firstEpoch = firstEpoch;
+      range.epochEnd = static_cast<std::uint32_t>(r.epochs.size());
+      range.firstPixel = r.resolvePixels;
+      r.resolvePixels += static_cast<std::uint32_t>(resolved->area());
+      r.resolveRanges.push_back(range);
     }
   }
-  std::vector<double> transforms;  // kTileTransformDoubles a vertex job
-  for (const VertexJob& job : vertexJobs)
-    transforms.insert(transforms.end(), job.source.transform.begin(), job.source.transform.end());
-  std::vector<TileBoxJob> boxRecords;
-  std::vector<double> poses;  // kTilePoseDoubles a box job, bound where the transforms are
   for (const BoxBatch& batch : boxBatches) {
     for (const BoxRequest& b : batch.blocks) {
       TileBoxJob job;
       job.local = TileAddress::of(b.local);
       job.vertexCount = b.vertexCount;
-      job.pose = static_cast<std::uint32_t>(boxRecords.size());
-      poses.insert(poses.end(), b.pose.begin(), b.pose.end());
-      boxRecords.push_back(job);
+      job.pose = static_cast<std::uint32_t>(r.boxJobs.size());
+      r.poses.insert(r.poses.end(), b.pose.begin(), b.pose.end());
+      r.boxJobs.push_back(job);
     }
   }
+  return r;
+}
 
-  // The work buffer's regions.
-  TileFrameConstants k;
-  k.vertexCount = windowVertices;
-  k.vertexJobs = static_cast<std::uint32_t>(vertexJobs.size());
-  k.triangleCount = triangles;
-  k.drawCount = static_cast<std::uint32_t>(drawRecords.size());
-  k.jobCount = jobs;
-  k.epochCount = static_cast<std::uint32_t>(epochRecords.size());
-  k.pairCapacity = 4 * triangles + 2 * jobs + 4096;
-  // Eight jobs a workgroup on a GPU; on a CPU driver, where each workgroup has a fixed cost of
-  // several microseconds, enough that the frame is a few dozen workgroups.
-  k.jobsPerGroup = context.cpuDriver() ? std::max(8u, (jobs / 32 + 7) / 8 * 8) : 8u;
-  k.resolvePixels = resolvePixels;
-  k.resolveRanges = static_cast<std::uint32_t>(resolveRecords.size());
-  k.boxJobs = static_cast<std::uint32_t>(boxRecords.size());
-  const VkDeviceSize triangleBytes =
-      aligned(VkDeviceSize{triangles} * kTileWordsPerTriangle * 4 + 4);
-  const VkDeviceSize jobBytes = aligned(VkDeviceSize{jobs} * 4 + 4);
-  const VkDeviceSize countsAt = triangleBytes;
-  const VkDeviceSize offsetsAt = countsAt + jobBytes;
-  const VkDeviceSize cursorsAt = offsetsAt + jobBytes;
-  const VkDeviceSize pairsAt = cursorsAt + jobBytes;
-  const VkDeviceSize finalsAt = pairsAt + aligned(VkDeviceSize{k.pairCapacity} * 4);
-  const VkDeviceSize windowsAt = finalsAt + aligned(VkDeviceSize{jobs} * 256 + 4);
-  const VkDeviceSize arenaAt = windowsAt + aligned(VkDeviceSize{windowVertices} * 12 + 4);
-  const VkDeviceSize boxesAt = arenaAt + aligned(VkDeviceSize{arenaWords} * 4 + 4);
-  const VkDeviceSize workBytes = boxesAt + aligned(VkDeviceSize{k.boxJobs} * 64 + 8);
-  reserveWork(workBytes);
+// Runs everything recorded since the last submission: see tile_frame.hpp for the stages.
+void TileFrame::Impl::run(VkCommandBuffer cmd) {
+  timed = false;
+  if (empty())
+    return;
+  FrameRecords r = records();
+  const WorkLayout layout(r);
+  reserveWork(layout.bytes);
   const VkBuffer w = work.buffer;
   const VkDeviceAddress workAddress = context.address(w);
-  std::vector<TileVertexJob> vertexRecords;
+  // The posed draws' window vertices, made by the vertex stage into the work buffer.
   for (std::size_t j = 0; j < vertexJobs.size(); ++j) {
-    TileVertexJob r;
-    r.local = TileAddress::of(vertexJobs[j].source.local);
-    r.windows = TileAddress::of(workAddress + windowsAt + VkDeviceSize{windowFirst[j]} * 12);
-    r.firstVertex = windowFirst[j];
-    r.vertexCount = vertexJobs[j].source.vertexCount;
-    r.transform = static_cast<std::uint32_t>(j);
-    vertexRecords.push_back(r);
+    TileVertexJob job;
+    job.local = TileAddress::of(vertexJobs[j].source.local);
+    job.windows =
+        TileAddress::of(workAddress + layout.windowsAt + VkDeviceSize{r.windowFirst[j]} * 12);
+    job.firstVertex = r.windowFirst[j];
+    job.vertexCount = vertexJobs[j].source.vertexCount;
+    job.transform = static_cast<std::uint32_t>(j);
+    r.vertexJobs.push_back(job);
   }
-  for (TileDrawSource& d : drawRecords)
-    if (d.vertices.high == 0xFFFFFFFFu)
-      d.vertices = vertexRecords[d.vertices.low].windows;
-  const TileBuffer targetsIn = uploaded(TileBinding::Targets, targetRecords);
-  const TileBuffer epochsIn = uploaded(TileBinding::Epochs, epochRecords);
-  const TileBuffer commandsIn = uploaded(TileBinding::Commands, commandRecords);
-  const TileBuffer drawsIn = uploaded(TileBinding::Draws, drawRecords);
-  const TileBuffer vertexJobsIn = uploaded(TileBinding::VertexJobs, vertexRecords);
-  const TileBuffer transformsIn = uploaded(TileBinding::Transforms, transforms);
-  const TileBuffer posesIn = uploaded(TileBinding::Transforms, poses);
-  const TileBuffer resolveIn = uploaded(TileBinding::ResolveRanges, resolveRecords);
-  const TileBuffer boxJobsIn = uploaded(TileBinding::BoxJobs, boxRecords);
-  const TileBuffer triangleBuffer{TileBinding::Triangles, w, 0, triangleBytes};
-  const TileBuffer counts{TileBinding::BinCounts, w, countsAt, jobBytes};
-  const TileBuffer offsets{TileBinding::BinOffsets, w, offsetsAt, jobBytes};
-  const TileBuffer cursors{TileBinding::BinCursors, w, cursorsAt, jobBytes};
-  const TileBuffer pairs{TileBinding::Pairs, w, pairsAt, finalsAt - pairsAt};
-  const TileBuffer finals{TileBinding::JobFinal, w, finalsAt, windowsAt - finalsAt};
-  const TileBuffer arena{TileBinding::ReadArena, w, arenaAt, boxesAt - arenaAt};
-  const TileBuffer boxesOut{TileBinding::Boxes, w, boxesAt, workBytes - boxesAt};
+  for (std::size_t d = 0; d < r.draws.size(); ++d)
+    if (r.drawVertexJob[d] >= 0)
+      r.draws[d].vertices = r.vertexJobs[static_cast<std::size_t>(r.drawVertexJob[d])].windows;
+  recordStages(cmd, r, layout);
+  recordCopies(cmd, r, layout);
+  if (r.captured)
+    recordCapture(cmd, r, layout);
+  computeBarrier(cmd);
+  timestamp(cmd, kTimestamps - 1);
+  for (std::vector<Pending>& list : commands)
+    list.clear();
+  vertexJobs.clear();
+  vertexJobOfKey.clear();
+  boxBatches.clear();
+  capture.reset();
+}
+
+// The stages, each one dispatch (none when it has nothing to do), with a compute barrier
+// between dependent ones and a timestamp after each group of kStageNames.
+void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
+                                   const WorkLayout& layout) {
+  TileFrameConstants k;
+  k.vertexCount = r.windowVertices;
+  k.vertexJobs = static_cast<std::uint32_t>(r.vertexJobs.size());
+  k.triangleCount = r.triangles;
+  k.drawCount = static_cast<std::uint32_t>(r.draws.size());
+  k.jobCount = r.jobs;
+  k.epochCount = static_cast<std::uint32_t>(r.epochs.size());
+  k.pairCapacity = layout.pairCapacity;
+  // Eight jobs a workgroup on a GPU; on a CPU driver, where each workgroup has a fixed cost of
+  // several microseconds, enough that the frame is a few dozen workgroups.
+  k.jobsPerGroup = context.cpuDriver() ? std::max(8u, (r.jobs / 32 + 7) / 8 * 8) : 8u;
+  k.resolvePixels = r.resolvePixels;
+  k.resolveRanges = static_cast<std::uint32_t>(r.resolveRanges.size());
+  k.boxJobs = static_cast<std::uint32_t>(r.boxJobs.size());
+  const TileBuffer targetsIn = uploaded(TileBinding::Targets, r.targets);
+  const TileBuffer epochsIn = uploaded(TileBinding::Epochs, r.epochs);
+  const TileBuffer commandsIn = uploaded(TileBinding::Commands, r.commands);
+  const TileBuffer drawsIn = uploaded(TileBinding::Draws, r.draws);
+  const TileBuffer vertexJobsIn = uploaded(TileBinding::VertexJobs, r.vertexJobs);
+  const TileBuffer transformsIn = uploaded(TileBinding::Transforms, r.transforms);
+  const TileBuffer posesIn = uploaded(TileBinding::Transforms, r.poses);
+  const TileBuffer resolveIn = uploaded(TileBinding::ResolveRanges, r.resolveRanges);
+  const TileBuffer boxJobsIn = uploaded(TileBinding::BoxJobs, r.boxJobs);
+  const VkBuffer w = work.buffer;
+  const TileBuffer triangles{TileBinding::Triangles, w, 0, layout.triangleBytes};
+  const TileBuffer counts{TileBinding::BinCounts, w, layout.countsAt, layout.jobBytes};
+  const TileBuffer offsets{TileBinding::BinOffsets, w, layout.offsetsAt, layout.jobBytes};
+  const TileBuffer cursors{TileBinding::BinCursors, w, layout.cursorsAt, layout.jobBytes};
+  const TileBuffer pairs{TileBinding::Pairs, w, layout.pairsAt, layout.finalsAt - layout.pairsAt};
+  const TileBuffer finals{TileBinding::JobFinal, w, layout.finalsAt,
+                          layout.windowsAt - layout.finalsAt};
+  const TileBuffer arena{TileBinding::ReadArena, w, layout.arenaAt,
+                         layout.boxesAt - layout.arenaAt};
+  const TileBuffer boxes{TileBinding::Boxes, w, layout.boxesAt, layout.bytes - layout.boxesAt};
 
   timed = queries != VK_NULL_HANDLE;
   if (timed)
@@ -380,122 +440,118 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
   };
   // What the devices recorded before (uploads, framebuffer fills) is visible to the stages.
   computeBarrier(cmd);
-  vkCmdFillBuffer(cmd, w, countsAt, jobBytes, 0);
-  vkCmdFillBuffer(cmd, w, arenaAt, boxesAt - arenaAt, 0);  // stencil reads are ORed in
+  vkCmdFillBuffer(cmd, w, layout.countsAt, layout.jobBytes, 0);
+  vkCmdFillBuffer(cmd, w, layout.arenaAt, layout.boxesAt - layout.arenaAt, 0);  // ORed into
   computeBarrier(cmd);
   timestamp(cmd, 0);
-  dispatchGroups(pipelines.box, {boxJobsIn, posesIn, boxesOut}, k.boxJobs);
+  dispatchGroups(pipelines.box, {boxJobsIn, posesIn, boxes}, k.boxJobs);
   dispatchLinear(pipelines.vertex,
                  {targetsIn, epochsIn, commandsIn, drawsIn, vertexJobsIn, transformsIn},
-                 windowVertices);
+                 r.windowVertices);
   computeBarrier(cmd);
   timestamp(cmd, 1);
-  dispatchLinear(pipelines.setup,
-                 {targetsIn, epochsIn, commandsIn, drawsIn, triangleBuffer, counts}, triangles);
+  dispatchLinear(pipelines.setup, {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts},
+                 r.triangles);
   computeBarrier(cmd);
   timestamp(cmd, 2);
-  if (triangles > 0) {
+  if (r.triangles > 0) {
     pipelines.dispatch(cmd, context.cpuDriver() ? pipelines.scanSerial : pipelines.scan,
                        {counts, offsets, cursors}, k, 1, 1);
     ++dispatches;
     computeBarrier(cmd);
     dispatchLinear(pipelines.scatter,
-                   {targetsIn, epochsIn, commandsIn, drawsIn, triangleBuffer, cursors, pairs},
-                   triangles);
+                   {targetsIn, epochsIn, commandsIn, drawsIn, triangles, cursors, pairs},
+                   r.triangles);
     computeBarrier(cmd);
-    dispatchLinear(pipelines.sort, {counts, offsets, pairs}, jobs);
+    dispatchLinear(pipelines.sort, {counts, offsets, pairs}, r.jobs);
     computeBarrier(cmd);
   }
   timestamp(cmd, 3);
-  dispatchGroups(pipelines.raster,
-                 {targetsIn, epochsIn, commandsIn, drawsIn, triangleBuffer, counts, offsets, pairs,
-                  finals, arena},
-                 (jobs + k.jobsPerGroup - 1) / k.jobsPerGroup);
+  dispatchGroups(
+      pipelines.raster,
+      {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, offsets, pairs, finals, arena},
+      (r.jobs + k.jobsPerGroup - 1) / k.jobsPerGroup);
   computeBarrier(cmd);
   timestamp(cmd, 4);
   dispatchLinear(pipelines.resolve, {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn},
-                 resolvePixels);
-  // The reads and boxes to their destinations (the summaries' dispatch comes after, with its own
-  // barrier), grouped by destination buffer.
-  std::map<VkBuffer, std::vector<VkBufferCopy>> copies;
-  for (const ReadCopy& r : readCopies)
-    if (r.words > 0)
-      copies[r.destination].push_back(
-          {arenaAt + VkDeviceSize{r.firstWord} * 4, r.offset, VkDeviceSize{r.words} * 4});
-  std::uint32_t box = 0;
-  for (const BoxBatch& batch : boxBatches) {
-    if (!batch.blocks.empty())
-      copies[batch.destination].push_back(
-          {boxesAt + VkDeviceSize{box} * 64, batch.offset, batch.blocks.size() * 64});
-    box += static_cast<std::uint32_t>(batch.blocks.size());
-  }
-  for (const auto& [destination, regions] : copies)
-    vkCmdCopyBuffer(cmd, w, destination, static_cast<std::uint32_t>(regions.size()),
-                    regions.data());
-  if (captured) {
-    const auto [drawIndex, epochIndex] = *captured;
-    const TileDrawSource d = drawRecords[drawIndex];
-    const TileEpoch e = epochRecords[epochIndex];
-    std::optional<std::pair<VkDeviceSize, std::uint32_t>> windows;  // offset, vertices
-    const Pending& p = commands[capture->target][capture->command];
-    if (p.vertexJob >= 0)
-      windows = std::make_pair(
-          windowsAt + VkDeviceSize{windowFirst[static_cast<std::size_t>(p.vertexJob)]} * 12,
-          vertexJobs[static_cast<std::size_t>(p.vertexJob)].source.vertexCount);
-    const VkDeviceSize bytes = finalsAt;  // triangles, bins and lists
-    const VkDeviceSize windowBytes = windows ? VkDeviceSize{windows->second} * 12 : 0;
-    const CommandRecorder::Staged out = recorder.results(
-        bytes + windowBytes,
-        [d, e, bytes, pairsAt, countsAt, offsetsAt, windowBytes, capacity = k.pairCapacity,
-         sink = std::move(capture->sink)](const std::uint8_t* data) {
-          const auto word = [&](VkDeviceSize at) {
-            std::uint32_t v = 0;
-            std::memcpy(&v, data + at, 4);
-            return v;
-          };
-          TileDrawCapture c;
-          c.firstTriangle = d.firstTriangle;
-          for (std::uint32_t i = 0; i < d.triangleCount * kTileWordsPerTriangle; ++i)
-            c.triangleWords.push_back(
-                word((VkDeviceSize{d.firstTriangle} * kTileWordsPerTriangle + i) * 4));
-          c.gridOrigin[0] = e.gridOrigin[0];
-          c.gridOrigin[1] = e.gridOrigin[1];
-          c.gridWidth = e.gridWidth;
-          c.gridHeight = e.gridHeight;
-          for (std::uint32_t b = 0; b < e.gridWidth * e.gridHeight; ++b) {
-            const std::uint32_t job = e.firstJob + b;
-            const std::uint32_t n = word(countsAt + VkDeviceSize{job} * 4);
-            const std::uint32_t at = word(offsetsAt + VkDeviceSize{job} * 4);
-            const bool overflowed = at + n > capacity;
-            std::vector<std::uint32_t> list;
-            for (std::uint32_t i = 0; i < n && !overflowed; ++i)
-              list.push_back(word(pairsAt + (VkDeviceSize{at} + i) * 4));
-            c.overflowed.push_back(overflowed);
-            c.jobLists.push_back(std::move(list));
-          }
-          c.windowVertices.resize(windowBytes / 4);
-          std::memcpy(c.windowVertices.data(), data + bytes, windowBytes);
-          sink(std::move(c));
-        });
-    const VkBufferCopy back{0, out.offset, bytes};
-    vkCmdCopyBuffer(cmd, w, out.buffer, 1, &back);
-    if (windows) {
-      const VkBufferCopy windowCopy{windows->first, out.offset + bytes, windowBytes};
-      vkCmdCopyBuffer(cmd, w, out.buffer, 1, &windowCopy);
-    }
-  }
-  computeBarrier(cmd);
-  timestamp(cmd, 5);
+                 r.resolvePixels);
   raster::TransferCounters counted;
   counted.dispatches = dispatches;
   recorder.count(counted);
+}
 
-  for (std::vector<Pending>& list : commands)
-    list.clear();
-  vertexJobs.clear();
-  vertexJobOfKey.clear();
-  boxBatches.clear();
-  capture.reset();
+// The reads and boxes to their destinations (the summaries' dispatch comes after, with its own
+// barrier), one copy command a destination buffer.
+void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const FrameRecords& r,
+                                   const WorkLayout& layout) {
+  std::map<VkBuffer, std::vector<VkBufferCopy>> copies;
+  for (const FrameRecords::ReadCopy& read : r.readCopies)
+    if (read.words > 0)
+      copies[read.destination].push_back({layout.arenaAt + VkDeviceSize{read.firstWord} * 4,
+                                          read.offset, VkDeviceSize{read.words} * 4});
+  VkDeviceSize box = 0;
+  for (const BoxBatch& batch : boxBatches) {
+    if (!batch.blocks.empty())
+      copies[batch.destination].push_back(
+          {layout.boxesAt + box * 64, batch.offset, batch.blocks.size() * 64});
+    box += batch.blocks.size();
+  }
+  for (const auto& [destination, regions] : copies)
+    vkCmdCopyBuffer(cmd, work.buffer, destination, static_cast<std::uint32_t>(regions.size()),
+                    regions.data());
+}
+
+// The captured draw's set-up triangles, its epoch's job lists and its window vertices, copied
+// back and handed to the capture's sink.
+void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
+                                    const WorkLayout& layout) {
+  const auto [drawIndex, epochIndex] = *r.captured;
+  const TileDrawSource d = r.draws[drawIndex];
+  const TileEpoch e = r.epochs[epochIndex];
+  const int job = r.drawVertexJob[drawIndex];
+  const VkDeviceSize bytes = layout.finalsAt;  // triangles, bins and lists
+  const VkDeviceSize windowBytes =
+      job >= 0 ? VkDeviceSize{r.vertexJobs[static_cast<std::size_t>(job)].vertexCount} * 12 : 0;
+  const CommandRecorder::Staged out = recorder.results(
+      bytes + windowBytes, [d, e, bytes, layout, windowBytes,
+                            sink = std::move(capture->sink)](const std::uint8_t* data) {
+        const auto word = [&](VkDeviceSize at) {
+          std::uint32_t v = 0;
+          std::memcpy(&v, data + at, 4);
+          return v;
+        };
+        TileDrawCapture c;
+        c.firstTriangle = d.firstTriangle;
+        for (std::uint32_t i = 0; i < d.triangleCount * kTileWordsPerTriangle; ++i)
+          c.triangleWords.push_back(
+              word((VkDeviceSize{d.firstTriangle} * kTileWordsPerTriangle + i) * 4));
+        c.gridOrigin[0] = e.gridOrigin[0];
+        c.gridOrigin[1] = e.gridOrigin[1];
+        c.gridWidth = e.gridWidth;
+        c.gridHeight = e.gridHeight;
+        for (std::uint32_t b = 0; b < e.gridWidth * e.gridHeight; ++b) {
+          const VkDeviceSize at = VkDeviceSize{e.firstJob + b} * 4;
+          const std::uint32_t n = word(layout.countsAt + at);
+          const std::uint32_t first = word(layout.offsetsAt + at);
+          const bool overflowed = VkDeviceSize{first} + n > layout.pairCapacity;
+          std::vector<std::uint32_t> list;
+          for (std::uint32_t i = 0; i < n && !overflowed; ++i)
+            list.push_back(word(layout.pairsAt + (VkDeviceSize{first} + i) * 4));
+          c.overflowed.push_back(overflowed);
+          c.jobLists.push_back(std::move(list));
+        }
+        c.windowVertices.resize(windowBytes / 4);
+        std::memcpy(c.windowVertices.data(), data + bytes, windowBytes);
+        sink(std::move(c));
+      });
+  const VkBufferCopy back{0, out.offset, bytes};
+  vkCmdCopyBuffer(cmd, work.buffer, out.buffer, 1, &back);
+  if (job >= 0) {
+    const VkDeviceSize windowsAt =
+        layout.windowsAt + VkDeviceSize{r.windowFirst[static_cast<std::size_t>(job)]} * 12;
+    const VkBufferCopy windowCopy{windowsAt, out.offset + bytes, windowBytes};
+    vkCmdCopyBuffer(cmd, work.buffer, out.buffer, 1, &windowCopy);
+  }
 }
 
 void TileFrame::Impl::readTimes() {

@@ -3,6 +3,7 @@
 // every field a 32-bit word, addresses as two words, low first). Field names and order are the
 // shader's; the sizes are checked here, the order by the stages' tests.
 
+#include <cstddef>
 #include <cstdint>
 
 namespace recode::backends::detail {
@@ -13,6 +14,15 @@ enum class TileReadForm : std::uint32_t { DepthWords = 0, StencilBytes = 1, Dept
 // Epoch flags.
 inline constexpr std::uint32_t kTileEpochLoads = 1;
 inline constexpr std::uint32_t kTileEpochStores = 2;
+
+// A set-up triangle's words (tile_common.glsl's kTriangle...; kTileWordsPerTriangle in all).
+enum TileTriangleWord : std::size_t {
+  kTriangleX0 = 0,          // 0-5: snapped X0, Y0, X1, Y1, X2, Y2 as int bits
+  kTriangleFront = 6,       // 1 front-facing, 0 back-facing
+  kTriangleCandidates = 7,  // 7-10: candidate pixels x0, y0, x1, y1 (empty: draws nothing)
+  kTriangleZ0 = 11,         // z0's float bits
+  kTriangleSlopes = 12,     // 12-13: dzdx's double bits, low word first; 14-15: dzdy's
+};
 
 struct TileAddress {
   std::uint32_t low = 0;
@@ -53,7 +63,8 @@ struct TileEpoch {
   std::uint32_t firstCommand = 0;
   std::uint32_t commandEnd = 0;
   std::uint32_t flags = 0;
-  std::uint32_t pad[3] = {0, 0, 0};
+  std::uint32_t firstFinal = 0;
+  std::uint32_t pad[2] = {0, 0};
 };
 static_assert(sizeof(TileEpoch) == 64);
 

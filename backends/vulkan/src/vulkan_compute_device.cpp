@@ -21,6 +21,7 @@
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "tile_frame.hpp"
+#include "tile_meshes.hpp"
 #include "vulkan_compute_pipelines.hpp"
 #include "vulkan_context.hpp"
 #include "vulkan_recorder.hpp"
@@ -32,14 +33,6 @@ namespace {
 
 using detail::TileReadForm;
 using raster::PixelRect;
-
-// Offsets of the regions a mesh's parts start at: the largest minStorageBufferOffsetAlignment
-// the specification allows.
-constexpr VkDeviceSize kBindAlignment = 256;
-
-VkDeviceSize aligned(VkDeviceSize bytes) {
-  return (bytes + kBindAlignment - 1) / kBindAlignment * kBindAlignment;
-}
 
 // A pose as tile_vertex.comp and tile_box.comp read it: 12 doubles, the linear part row by row,
 // then the translation.
@@ -59,42 +52,8 @@ struct VulkanComputeDevice::Impl {
   detail::TileFrame* frame = nullptr;
   std::uint32_t target = 0;  // the framebuffer's id in the frame
   raster::TransferCounters transfers;
-  detail::DeviceBuffer framebuffer;  // a word a pixel, rows from the bottom
-  // Buffers replaced while a recording that may use them was open: freed once it has run.
-  std::vector<std::pair<detail::DeviceBuffer, std::uint64_t>> retired;
-
-  // A block's triangles on the device: the draw of a content key under a scissor (or whole,
-  // when the source could not narrow it), serving every later draw of the key under a scissor
-  // inside `rect`. Keys are never reused in a process, so an entry never serves another block.
-  struct Mesh {
-    std::uint64_t key = 0;  // 0: serves nothing (free, or a draw without a key)
-    bool whole = false;
-    PixelRect rect;
-    std::uint32_t triangles = 0;
-    VkDeviceSize indexOffset = 0;
-    detail::DeviceBuffer buffer;  // vertices from 0, indices from indexOffset
-    std::uint64_t lastUse = 0;
-    // The recording whose frame last drew from the buffer: while it is open, new bytes go to a
-    // new buffer (the frame draws when the recording is submitted, from what the buffer holds).
-    std::uint64_t drawnIn = ~std::uint64_t{0};
-  };
-  static constexpr std::size_t kKeptMeshes = 8;
-  std::array<Mesh, kKeptMeshes> meshes{};
-
-  // A posed block's mesh on the device (raster::PosedMesh), kept while its source says it lives:
-  // the object-space vertices from 0 and the indices from indexOffset; never written again.
-  struct Resident {
-    std::weak_ptr<const void> alive;
-    std::uint32_t vertices = 0;
-    std::uint32_t triangles = 0;
-    VkDeviceSize indexOffset = 0;
-    detail::DeviceBuffer buffer;
-    VkDeviceAddress address = 0;
-  };
-  // By meshKey (an entry stays where it is while others come and go).
-  std::unordered_map<std::uint64_t, Resident> residents;
-  std::uint64_t clock = 0;
-  MeshCounters meshCounters;
+  detail::DeviceBuffer framebuffer;            // a word a pixel, rows from the bottom
+  std::unique_ptr<detail::TileMeshes> meshes;  // the lists and posed meshes kept on the device
   long long posedDraws = 0;
   bool keepStages = false;
   std::shared_ptr<std::optional<DrawStages>> lastStages =
@@ -106,115 +65,12 @@ struct VulkanComputeDevice::Impl {
     return detail::countedOn(*recorder, transfers, std::forward<Call>(call));
   }
 
-  void freeRetired() {
-    const std::uint64_t run = recorder->recordingsRun();
-    std::erase_if(retired, [&](std::pair<detail::DeviceBuffer, std::uint64_t>& r) {
-      if (r.second >= run)
-        return false;
-      context->destroyDeviceBuffer(r.first);
-      return true;
-    });
-  }
-
-  detail::DeviceBuffer storage(VkDeviceSize bytes) {
-    return context->createDeviceBuffer(bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  }
-
-  // The entry to draw `draw` from, for `key` under `rect`: uploaded now, validated first.
-  Mesh& upload(const raster::TriangleDraw& draw, std::uint64_t key, bool whole,
-               const PixelRect& rect) {
-    raster::checkDraw(draw.vertices, draw.indices);
-    Mesh& mesh = *std::min_element(meshes.begin(), meshes.end(), [](const Mesh& a, const Mesh& b) {
-      return a.lastUse < b.lastUse;
-    });
-    const VkDeviceSize vertexBytes = draw.vertices.size_bytes();
-    const VkDeviceSize indexBytes = draw.indices.size_bytes();
-    mesh.key = 0;  // serves nothing until its bytes are recorded
-    mesh.triangles = static_cast<std::uint32_t>(draw.indices.size() / 3);
-    mesh.indexOffset = aligned(std::max<VkDeviceSize>(vertexBytes, 4));
-    mesh.lastUse = ++clock;
-    ++meshCounters.uploads;
-    if (mesh.triangles == 0)
-      return mesh;
-    recorder->makeRoom(vertexBytes + indexBytes);
-    const VkDeviceSize bytes = mesh.indexOffset + indexBytes;
-    if (mesh.buffer.buffer == VK_NULL_HANDLE || mesh.buffer.size < bytes ||
-        mesh.drawnIn == recorder->recordingsRun()) {
-      freeRetired();
-      if (mesh.buffer.buffer != VK_NULL_HANDLE)
-        retired.emplace_back(mesh.buffer, recorder->recordingsRun());
-      mesh.buffer = storage(std::max(bytes, mesh.buffer.size));
-    }
-    const detail::CommandRecorder::Staged vertices =
-        recorder->upload(draw.vertices.data(), vertexBytes);
-    const detail::CommandRecorder::Staged indices =
-        recorder->upload(draw.indices.data(), indexBytes);
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      const VkBufferCopy vertexCopy{vertices.offset, 0, vertexBytes};
-      vkCmdCopyBuffer(cmd, vertices.buffer, mesh.buffer.buffer, 1, &vertexCopy);
-      const VkBufferCopy indexCopy{indices.offset, mesh.indexOffset, indexBytes};
-      vkCmdCopyBuffer(cmd, indices.buffer, mesh.buffer.buffer, 1, &indexCopy);
-    });
-    mesh.key = key;
-    mesh.whole = whole;
-    mesh.rect = rect;
-    return mesh;
-  }
-
-  // Lets go of the meshes whose blocks are gone, once no recording that may use them is open.
-  void releaseExpired() {
-    std::erase_if(residents, [&](const std::pair<const std::uint64_t, Resident>& entry) {
-      if (!entry.second.alive.expired())
-        return false;
-      retired.emplace_back(entry.second.buffer, recorder->recordingsRun());
-      return true;
-    });
-  }
-
-  // The resident copy of `posed`'s mesh, uploaded now when the device has none.
-  Resident& resident(const raster::PosedMesh& posed) {
-    if (const auto found = residents.find(posed.meshKey); found != residents.end())
-      return found->second;
-    if (posed.localXyz.size() % 3 != 0)
-      throw std::invalid_argument("drawMesh: a posed mesh's coordinates are not three a vertex (" +
-                                  std::to_string(posed.localXyz.size()) + " doubles)");
-    raster::checkIndices(posed.localXyz.size() / 3, posed.indices);
-    Resident r;
-    r.alive = posed.alive;
-    r.vertices = static_cast<std::uint32_t>(posed.localXyz.size() / 3);
-    r.triangles = static_cast<std::uint32_t>(posed.indices.size() / 3);
-    const VkDeviceSize localBytes = posed.localXyz.size_bytes();
-    const VkDeviceSize indexBytes = posed.indices.size_bytes();
-    r.indexOffset = aligned(std::max<VkDeviceSize>(localBytes, 4));
-    ++meshCounters.uploads;
-    freeRetired();
-    r.buffer = storage(r.indexOffset + std::max<VkDeviceSize>(indexBytes, 4));
-    r.address = context->address(r.buffer.buffer);
-    recorder->makeRoom(localBytes + indexBytes);
-    const detail::CommandRecorder::Staged local =
-        recorder->upload(posed.localXyz.data(), localBytes);
-    const detail::CommandRecorder::Staged indices =
-        recorder->upload(posed.indices.data(), indexBytes);
-    recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
-      if (localBytes > 0) {
-        const VkBufferCopy localCopy{local.offset, 0, localBytes};
-        vkCmdCopyBuffer(cmd, local.buffer, r.buffer.buffer, 1, &localCopy);
-      }
-      if (indexBytes > 0) {
-        const VkBufferCopy indexCopy{indices.offset, r.indexOffset, indexBytes};
-        vkCmdCopyBuffer(cmd, indices.buffer, r.buffer.buffer, 1, &indexCopy);
-      }
-    });
-    return residents.emplace(posed.meshKey, std::move(r)).first->second;
-  }
-
   // The frame's vertex job for `posed` at its pose and view (tile_vertex.comp's 23 doubles).
-  static detail::TileVertices posedVertices(const Resident& r, const raster::PosedMesh& posed,
+  static detail::TileVertices posedVertices(const detail::TileMeshes::Posed& r,
+                                            const raster::PosedMesh& posed,
                                             std::uint64_t contentKey) {
     detail::TileVertices v;
-    v.local = r.address;
+    v.local = r.local;
     v.vertexCount = r.vertices;
     v.contentKey = contentKey;
     const raster::VertexTransform& t = posed.transform;
@@ -236,25 +92,22 @@ struct VulkanComputeDevice::Impl {
   // A posed draw: the vertex stage on the device, then every triangle of the block (set-up
   // leaves out those whose pixels miss the scissor).
   void drawPosed(const raster::PosedMesh& posed, std::uint64_t contentKey) {
-    releaseExpired();
-    Resident& r = resident(posed);
+    meshes->releaseExpired();
+    const detail::TileMeshes::Posed r = meshes->posed(posed);
     ++posedDraws;
     if (r.triangles == 0 || state->scissor.empty())
       return;
-    frame->draw(target, *state, posedVertices(r, posed, contentKey), r.address + r.indexOffset,
-                r.triangles);
+    frame->draw(target, *state, posedVertices(r, posed, contentKey), r.indices, r.triangles);
     captureIfKept();
   }
 
-  // A draw of `mesh`'s triangles in the current state.
-  void drawMeshEntry(Mesh& mesh) {
-    if (mesh.triangles == 0 || state->scissor.empty())
+  // A draw of a kept list's triangles in the current state.
+  void drawList(const detail::TileMeshes::List& list) {
+    if (list.triangles == 0 || state->scissor.empty())
       return;
-    mesh.drawnIn = recorder->recordingsRun();
-    const VkDeviceAddress address = context->address(mesh.buffer.buffer);
     detail::TileVertices vertices;
-    vertices.window = address;
-    frame->draw(target, *state, vertices, address + mesh.indexOffset, mesh.triangles);
+    vertices.window = list.vertices;
+    frame->draw(target, *state, vertices, list.indices, list.triangles);
     captureIfKept();
   }
 
@@ -279,14 +132,15 @@ struct VulkanComputeDevice::Impl {
     for (std::size_t t = 0; t < count; ++t) {
       const std::uint32_t* w = c.triangleWords.data() + t * detail::kTileWordsPerTriangle;
       SetUpTriangle tri;
-      for (int k = 0; k < 6; ++k)
-        tri.fixed[k] = static_cast<std::int32_t>(w[k]);
-      tri.frontFacing = w[6] != 0;
-      tri.candidates = {static_cast<int>(w[7]), static_cast<int>(w[8]), static_cast<int>(w[9]),
-                        static_cast<int>(w[10])};
-      std::memcpy(&tri.z0, w + 11, 4);
-      std::memcpy(&tri.dzdx, w + 12, 8);
-      std::memcpy(&tri.dzdy, w + 14, 8);
+      for (std::size_t k = 0; k < 6; ++k)
+        tri.fixed[k] = static_cast<std::int32_t>(w[detail::kTriangleX0 + k]);
+      tri.frontFacing = w[detail::kTriangleFront] != 0;
+      const std::uint32_t* box = w + detail::kTriangleCandidates;
+      tri.candidates = {static_cast<int>(box[0]), static_cast<int>(box[1]),
+                        static_cast<int>(box[2]), static_cast<int>(box[3])};
+      std::memcpy(&tri.z0, w + detail::kTriangleZ0, 4);
+      std::memcpy(&tri.dzdx, w + detail::kTriangleSlopes, 8);
+      std::memcpy(&tri.dzdy, w + detail::kTriangleSlopes + 2, 8);
       s.triangles.push_back(tri);
     }
     // The job lists hold every draw of the epoch: this draw's entries, in its own numbering.
@@ -329,12 +183,7 @@ struct VulkanComputeDevice::Impl {
       const auto hold = recorder->hold();
       frame->removeTarget(target);
     }
-    for (auto& [buffer, recording] : retired)
-      context->destroyDeviceBuffer(buffer);
-    for (Mesh& mesh : meshes)
-      context->destroyDeviceBuffer(mesh.buffer);
-    for (auto& [key, r] : residents)
-      context->destroyDeviceBuffer(r.buffer);
+    meshes.reset();
     context->destroyDeviceBuffer(framebuffer);
   }
 };
@@ -357,6 +206,7 @@ VulkanComputeDevice::VulkanComputeDevice(int width, int height)
   // command of this framebuffer, so before the frame that runs them).
   const auto hold = d.recorder->hold();
   d.target = d.frame->addTarget(d.framebuffer.buffer, width, height);
+  d.meshes = std::make_unique<detail::TileMeshes>(*d.context, *d.recorder);
   d.recorder->record(VK_NULL_HANDLE, [&](VkCommandBuffer cmd) {
     vkCmdFillBuffer(cmd, d.framebuffer.buffer, 0, VK_WHOLE_SIZE, raster::kDepthMax << 8);
   });
@@ -377,9 +227,12 @@ std::string VulkanComputeDevice::renderer() const {
 }
 
 VulkanComputeDevice::MeshCounters VulkanComputeDevice::meshCounters() const {
-  MeshCounters counters = impl_->meshCounters;
+  const detail::TileMeshes::Counters kept = impl_->meshes->counters();
+  MeshCounters counters;
+  counters.uploads = kept.uploads;
+  counters.reuses = kept.reuses;
   counters.posedDraws = impl_->posedDraws;
-  counters.residentMeshes = static_cast<long long>(impl_->residents.size());
+  counters.residentMeshes = kept.residentMeshes;
   return counters;
 }
 
@@ -415,7 +268,7 @@ void VulkanComputeDevice::drawTriangles(std::span<const raster::WindowVertex> ve
                                         std::span<const std::uint32_t> indices) {
   Impl& d = *impl_;
   const auto hold = d.recorder->hold();
-  d.counted([&] { d.drawMeshEntry(d.upload({vertices, indices}, 0, true, {})); });
+  d.counted([&] { d.drawList(d.meshes->upload({vertices, indices}, 0, true, {})); });
 }
 
 void VulkanComputeDevice::drawMesh(const raster::TriangleSource& source) {
@@ -428,20 +281,14 @@ void VulkanComputeDevice::drawMesh(const raster::TriangleSource& source) {
       d.drawPosed(*posed, key);
       return;
     }
-    if (key != 0) {
-      for (Impl::Mesh& mesh : d.meshes) {
-        if (mesh.key == key && (mesh.whole || mesh.rect.intersect(scissor) == scissor)) {
-          mesh.lastUse = ++d.clock;
-          ++d.meshCounters.reuses;
-          d.drawMeshEntry(mesh);
-          return;
-        }
-      }
+    if (const std::optional<detail::TileMeshes::List> kept = d.meshes->find(key, scissor)) {
+      d.drawList(*kept);
+      return;
     }
     // As CpuDevice: only the triangles that meet the scissor when the source can tell them.
     const std::optional<raster::TriangleDraw> near = source.trianglesMeeting(scissor);
     const raster::TriangleDraw draw = near ? *near : source.allTriangles();
-    d.drawMeshEntry(d.upload(draw, key, !near, scissor));
+    d.drawList(d.meshes->upload(draw, key, !near, scissor));
   });
 }
 
@@ -453,12 +300,12 @@ raster::PendingRead<raster::PosedBox> VulkanComputeDevice::posedBoxesLater(
   raster::PendingRead<raster::PosedBox> read = raster::PendingRead<raster::PosedBox>::waiting();
   const auto hold = d.recorder->hold();
   d.counted([&] {
-    d.releaseExpired();
+    d.meshes->releaseExpired();
     const std::size_t n = meshes.size();
     std::vector<detail::TileFrame::BoxRequest> blocks(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const Impl::Resident& r = d.resident(meshes[i]);
-      blocks[i].local = r.address;
+      const detail::TileMeshes::Posed r = d.meshes->posed(meshes[i]);
+      blocks[i].local = r.local;
       blocks[i].vertexCount = r.vertices;
       packPose(meshes[i].transform.pose, blocks[i].pose.data());
     }
@@ -575,7 +422,7 @@ raster::PendingRead<raster::PixelSummary> VulkanComputeDevice::summarizeLater(
 void VulkanComputeDevice::finish() {
   impl_->counted([&] { impl_->recorder->finish(); });
   const auto hold = impl_->recorder->hold();
-  impl_->releaseExpired();
+  impl_->meshes->releaseExpired();
 }
 
 bool VulkanComputeDevice::defers() const {

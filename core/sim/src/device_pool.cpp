@@ -98,10 +98,7 @@ raster::TransferCounters DevicePool::transfers() const {
   raster::TransferCounters sum;
   for (const auto& [size, devices] : bySize_) {
     for (const std::unique_ptr<raster::DepthStencilDevice>& device : devices.made) {
-      const raster::TransferCounters t = device->transfers();
-      sum.submissions += t.submissions;
-      sum.readbackBytes += t.readbackBytes;
-      sum.waitUs += t.waitUs;
+      sum += device->transfers();
     }
   }
   return sum;

@@ -347,6 +347,10 @@ FrameReport Simulation::runFrame(int frame) {
   report.readbackBytes = after.readbackBytes - before.readbackBytes + boxesAfter.readbackBytes -
                          boxesBefore.readbackBytes;
   report.deviceWaitUs = after.waitUs - before.waitUs + boxesAfter.waitUs - boxesBefore.waitUs;
+  raster::TransferCounters counted = after.since(before);
+  counted += boxesAfter.since(boxesBefore);
+  report.dispatches = counted.dispatches;
+  report.stageUs = counted.stageUs;
   collectOutcomes(objects_, frame, tasks, skipped, outcomes, report);
   if (setup.error) {
     try {

@@ -84,7 +84,7 @@ struct Epoch {
   uint firstCommand;
   uint commandEnd;
   uint flags;
-  uint pad0;
+  uint firstFinal;  // without kEpochStores: its jobs' slots in JobFinal, from this one on
   uint pad1;
   uint pad2;
 };

@@ -241,7 +241,7 @@ void runJob(uint j) {
             packPixel(depth[k], stencil[k]);
   } else {
     for (int k = 0; k < 8; ++k)
-      jobFinal[j * 64u + uint(k) * 8u + (gl_LocalInvocationID.x & 7u)] =
+      jobFinal[(epoch.firstFinal + block) * 64u + uint(k) * 8u + (gl_LocalInvocationID.x & 7u)] =
           packPixel(depth[k], stencil[k]);
   }
 }

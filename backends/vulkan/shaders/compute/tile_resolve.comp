@@ -43,11 +43,11 @@ void main() {
       continue;
     if ((epoch.flags & kEpochStores) == 0u) {
       const uvec2 block = blockOf(epoch, x, y);
-      const uint job = epoch.firstJob + block.y * epoch.gridWidth + block.x;
+      const uint slot = epoch.firstFinal + block.y * epoch.gridWidth + block.x;
       const Target target = targets[range.target];
       PixelWords framebuffer = PixelWords(target.pixels);
       framebuffer.pixels[uint(y) * target.width + uint(x)] =
-          jobFinal[job * 64u + uint(y - epoch.gridOrigin.y - int(block.y) * 8) * 8u +
+          jobFinal[slot * 64u + uint(y - epoch.gridOrigin.y - int(block.y) * 8) * 8u +
                    uint(x - epoch.gridOrigin.x - int(block.x) * 8)];
     }
     return;

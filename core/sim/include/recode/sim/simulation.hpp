@@ -11,6 +11,7 @@
 // have over the scene's window (given, else the default window over all objects at frame 0).
 // It is one pixel size for the whole run, so accuracy does not depend on which pair is drawn.
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -147,6 +148,10 @@ struct FrameReport {
   // the CPU device. Not in `recode run`'s output, which is the same on every exact device.
   long long submissions = 0;
   long long readbackBytes = 0;
+  // Compute dispatches recorded for the frame, and the device time of the vulkan-compute
+  // device's stages (raster::TransferCounters::kStageNames), from its timestamps; 0 elsewhere.
+  long long dispatches = 0;
+  std::array<double, raster::TransferCounters::kStages> stageUs{};
   // Of collisionUs, the time the host spent waiting for the device to run what it submitted
   // (raster::TransferCounters::waitUs); the rest is the host's own work. 0 on the CPU device.
   double deviceWaitUs = 0.0;
