@@ -64,6 +64,7 @@ struct FrameRecords {
   std::vector<TileEpoch> epochs;
   std::vector<TileDrawSource> draws;
   std::vector<TileResolveRange> resolveRanges;
+  std::vector<std::uint32_t> laterEpochs;  // the ranges' later epochs
   std::vector<TileVertexJob> vertexJobs;
   std::vector<double> transforms;  // kTileTransformDoubles a vertex job
   std::vector<TileBoxJob> boxJobs;
@@ -81,6 +82,10 @@ struct FrameRecords {
   std::uint32_t finals = 0;  // jobs of epochs that leave their pixels to the resolve stage
   std::uint32_t arenaWords = 0;
   std::uint32_t resolvePixels = 0;
+  // Entries the jobs' lists hold in all: for each draw, 4 a triangle, 2 a job of its epoch and
+  // 4,096. A job whose list would pass the end draws each of its draws from every triangle
+  // instead (tile_raster.comp), so this bounds memory, not results.
+  std::uint64_t listCapacity = 0;
   std::uint32_t windowVertices = 0;        // the vertex jobs' vertices, in all
   std::vector<std::uint32_t> windowFirst;  // vertex job k's first window vertex
   std::vector<int> drawVertexJob;          // each draw's vertex job, or -1 (window vertices given)
@@ -91,7 +96,7 @@ struct FrameRecords {
 // Where the frame's regions lie in its work buffer.
 struct WorkLayout {
   explicit WorkLayout(const FrameRecords& r)
-      : pairCapacity(4 * r.triangles + 2 * r.jobs + 4096),
+      : pairCapacity(static_cast<std::uint32_t>(std::min<std::uint64_t>(r.listCapacity, 1u << 27))),
         triangleBytes(aligned(VkDeviceSize{r.triangles} * kTileWordsPerTriangle * 4 + 4)),
         jobBytes(aligned(VkDeviceSize{r.jobs} * 4 + 4)) {
     countsAt = triangleBytes;
@@ -104,8 +109,7 @@ struct WorkLayout {
     boxesAt = arenaAt + aligned(VkDeviceSize{r.arenaWords} * 4 + 4);
     bytes = boxesAt + aligned(VkDeviceSize{r.boxJobs.size()} * 64 + 8);
   }
-  // Entries the jobs' lists hold in all: a job whose list would pass the end draws each of its
-  // draws from every triangle instead (tile_raster.comp), so this bounds memory, not results.
+  // Entries the jobs' lists hold in all (FrameRecords::listCapacity, at most 2^27: 512 MiB).
   std::uint32_t pairCapacity;
   VkDeviceSize triangleBytes;
   VkDeviceSize jobBytes;
@@ -119,6 +123,34 @@ struct WorkLayout {
   VkDeviceSize boxesAt = 0;
   VkDeviceSize bytes = 0;
 };
+
+PixelRect footprintOf(const TileEpoch& e) {
+  return {e.footprint[0], e.footprint[1], e.footprint[2], e.footprint[3]};
+}
+
+// The resolve stage's ranges for one target's epochs that meet another (`shared`, in command
+// order): each such epoch's footprint, with the later ones that meet it, which own the pixels
+// they hold. Past kMostEpochsCompared every later one is listed, unsorted out.
+void addResolveRanges(FrameRecords& r, const std::vector<std::uint32_t>& shared,
+                      std::uint32_t target) {
+  const bool compare = shared.size() <= kMostEpochsCompared;
+  for (std::size_t i = 0; i < shared.size(); ++i) {
+    const PixelRect f = footprintOf(r.epochs[shared[i]]);
+    TileResolveRange range;
+    std::copy(std::begin(r.epochs[shared[i]].footprint), std::end(r.epochs[shared[i]].footprint),
+              range.rect);
+    range.target = target;
+    range.epoch = shared[i];
+    range.firstLater = static_cast<std::uint32_t>(r.laterEpochs.size());
+    for (std::size_t j = i + 1; j < shared.size(); ++j)
+      if (!compare || !f.intersect(footprintOf(r.epochs[shared[j]])).empty())
+        r.laterEpochs.push_back(shared[j]);
+    range.laterCount = static_cast<std::uint32_t>(r.laterEpochs.size()) - range.firstLater;
+    range.firstPixel = r.resolvePixels;
+    r.resolvePixels += static_cast<std::uint32_t>(f.area());
+    r.resolveRanges.push_back(range);
+  }
+}
 
 TileEpoch epochRecord(const EpochSpan& span, std::uint32_t target) {
   TileEpoch e;
@@ -272,8 +304,7 @@ FrameRecords TileFrame::Impl::records() const {
     shapes.reserve(list.size());
     for (const Pending& p : list)
       shapes.push_back(epochCommandOf(p.command, p.rect));
-    const auto firstEpoch = static_cast<std::uint32_t>(r.epochs.size());
-    std::optional<PixelRect> resolved;  // the footprints the resolve stage visits
+    std::vector<std::uint32_t> shared;  // this target's epochs that meet another
     for (const EpochSpan& span : cutIntoEpochs(shapes)) {
       TileEpoch e = epochRecord(span, t);
       const auto epochIndex = static_cast<std::uint32_t>(r.epochs.size());
@@ -282,7 +313,7 @@ FrameRecords TileFrame::Impl::records() const {
       e.firstCommand = static_cast<std::uint32_t>(r.commands.size());
       if (!span.alone) {
         r.finals += e.gridWidth * e.gridHeight;
-        resolved = resolved ? unite(*resolved, span.footprint) : span.footprint;
+        shared.push_back(epochIndex);
       }
       for (std::size_t c = span.begin; c < span.end; ++c) {
         const Pending& p = list[c];
@@ -301,6 +332,8 @@ FrameRecords TileFrame::Impl::records() const {
           d.epoch = epochIndex;
           r.draws.push_back(d);
           r.triangles += record.count;
+          r.listCapacity += 4 * std::uint64_t{record.count} +
+                            2 * std::uint64_t{e.gridWidth} * e.gridHeight + 4096;
         } else if (record.kind == TileCommandKind::Read) {
           record.first = r.arenaWords;
           const std::uint32_t words =
@@ -314,19 +347,7 @@ FrameRecords TileFrame::Impl::records() const {
       r.jobs += e.gridWidth * e.gridHeight;
       r.epochs.push_back(e);
     }
-    if (resolved) {
-      TileResolveRange range;
-      range.rect[0] = resolved->x0;
-      range.rect[1] = resolved->y0;
-      range.rect[2] = resolved->x1;
-      range.rect[3] = resolved->y1;
-      range.target = t;
-      range.firstEpoch = firstEpoch;
-      range.epochEnd = static_cast<std::uint32_t>(r.epochs.size());
-      range.firstPixel = r.resolvePixels;
-      r.resolvePixels += static_cast<std::uint32_t>(resolved->area());
-      r.resolveRanges.push_back(range);
-    }
+    addResolveRanges(r, shared, t);
   }
   for (const BoxBatch& batch : boxBatches) {
     for (const BoxRequest& b : batch.blocks) {
@@ -405,6 +426,7 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   const TileBuffer transformsIn = uploaded(TileBinding::Transforms, r.transforms);
   const TileBuffer posesIn = uploaded(TileBinding::Transforms, r.poses);
   const TileBuffer resolveIn = uploaded(TileBinding::ResolveRanges, r.resolveRanges);
+  const TileBuffer laterIn = uploaded(TileBinding::LaterEpochs, r.laterEpochs);
   const TileBuffer boxJobsIn = uploaded(TileBinding::BoxJobs, r.boxJobs);
   const VkBuffer w = work.buffer;
   const TileBuffer triangles{TileBinding::Triangles, w, 0, layout.triangleBytes};
@@ -450,17 +472,23 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
                  r.windowVertices);
   computeBarrier(cmd);
   timestamp(cmd, 1);
-  dispatchLinear(pipelines.setup, {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts},
+  dispatchLinear(pipelines.setup, {targetsIn, epochsIn, commandsIn, drawsIn, triangles},
                  r.triangles);
   computeBarrier(cmd);
   timestamp(cmd, 2);
   if (r.triangles > 0) {
+    // The scatter counts (binPass 0), the scan places the lists, the scatter fills them.
+    dispatchLinear(pipelines.scatter,
+                   {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs},
+                   r.triangles);
+    computeBarrier(cmd);
     pipelines.dispatch(cmd, context.cpuDriver() ? pipelines.scanSerial : pipelines.scan,
                        {counts, offsets, cursors}, k, 1, 1);
     ++dispatches;
     computeBarrier(cmd);
+    k.binPass = 1;
     dispatchLinear(pipelines.scatter,
-                   {targetsIn, epochsIn, commandsIn, drawsIn, triangles, cursors, pairs},
+                   {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs},
                    r.triangles);
     computeBarrier(cmd);
     dispatchLinear(pipelines.sort, {counts, offsets, pairs}, r.jobs);
@@ -473,7 +501,8 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
       (r.jobs + k.jobsPerGroup - 1) / k.jobsPerGroup);
   computeBarrier(cmd);
   timestamp(cmd, 4);
-  dispatchLinear(pipelines.resolve, {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn},
+  dispatchLinear(pipelines.resolve,
+                 {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn, laterIn},
                  r.resolvePixels);
   raster::TransferCounters counted;
   counted.dispatches = dispatches;

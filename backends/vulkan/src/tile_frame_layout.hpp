@@ -91,11 +91,13 @@ static_assert(sizeof(TileVertexJob) == 32);
 struct TileResolveRange {
   std::int32_t rect[4] = {0, 0, 0, 0};
   std::uint32_t target = 0;
-  std::uint32_t firstEpoch = 0;
-  std::uint32_t epochEnd = 0;
+  std::uint32_t epoch = 0;
+  std::uint32_t firstLater = 0;
+  std::uint32_t laterCount = 0;
   std::uint32_t firstPixel = 0;
+  std::uint32_t pad[3] = {0, 0, 0};
 };
-static_assert(sizeof(TileResolveRange) == 32);
+static_assert(sizeof(TileResolveRange) == 48);
 
 struct TileBoxJob {
   TileAddress local;

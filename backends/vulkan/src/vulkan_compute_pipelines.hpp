@@ -1,7 +1,7 @@
 #pragma once
 // The compute device's pipelines (shaders/compute/, docs/backends.md "The compute device"): the
 // stages of a frame (tile_frame.hpp): boxes, vertex, set-up, scan, scatter, sort, raster,
-// resolve. All share one pipeline layout: sixteen storage buffers bound by push descriptors
+// resolve. All share one pipeline layout: seventeen storage buffers bound by push descriptors
 // (VK_KHR_push_descriptor), so a dispatch names its buffers as it is recorded and no descriptor set
 // outlives it, and the `Draw` push constants of tile_common.glsl.
 
@@ -33,8 +33,9 @@ enum class TileBinding : std::uint32_t {
   ResolveRanges = 13,  // TileResolveRange
   BoxJobs = 14,        // TileBoxJob
   Boxes = 15,          // eight doubles a box job
+  LaterEpochs = 16,    // the resolve ranges' later epochs
 };
-inline constexpr std::uint32_t kTileBindings = 16;
+inline constexpr std::uint32_t kTileBindings = 17;
 // Doubles of a vertex job's transform as tile_vertex.comp reads it, and of a box job's pose.
 inline constexpr std::uint32_t kTileTransformDoubles = 23;
 inline constexpr std::uint32_t kTilePoseDoubles = 12;
@@ -54,8 +55,9 @@ struct TileFrameConstants {
   std::uint32_t resolvePixels = 0;
   std::uint32_t resolveRanges = 0;
   std::uint32_t boxJobs = 0;
+  std::uint32_t binPass = 0;
 };
-static_assert(sizeof(TileFrameConstants) == 44, "tile_common.glsl's Frame is 11 words");
+static_assert(sizeof(TileFrameConstants) == 48, "tile_common.glsl's Frame is 12 words");
 
 // A buffer range at a binding.
 struct TileBuffer {

@@ -27,6 +27,7 @@ layout(push_constant) uniform Frame {
   uint resolvePixels;  // pixels the resolve stage visits, over every range
   uint resolveRanges;
   uint boxJobs;        // posed blocks whose world boxes the box stage makes
+  uint binPass;        // tile_scatter.comp: 0 counts each job's triangles, 1 lists them
 } frame;
 
 layout(buffer_reference, std430, buffer_reference_align = 4) buffer PixelWords { uint pixels[]; };
@@ -110,14 +111,20 @@ struct VertexJob {
   uint pad;
 };
 
-// Pixels the resolve stage gives their final value: a rectangle of one target whose epochs are
-// [firstEpoch, epochEnd), the range's pixels numbered from firstPixel.
+// Pixels the resolve stage gives their final value: the footprint of one epoch that meets
+// another, whose value a pixel takes unless one of the later epochs that meet it
+// (laterEpochs[firstLater, + laterCount)) holds the pixel too; the range's pixels are numbered
+// from firstPixel.
 struct ResolveRange {
   ivec4 rect;
   uint target;
-  uint firstEpoch;
-  uint epochEnd;
+  uint epoch;
+  uint firstLater;
+  uint laterCount;
   uint firstPixel;
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // A posed block whose world box the box stage makes: its object-space vertices, and its pose at

@@ -34,30 +34,27 @@ layout(std430, set = 0, binding = 10) readonly buffer Pairs { uint pairs[]; };
 layout(std430, set = 0, binding = 11) writeonly buffer JobFinal { uint jobFinal[]; };
 layout(std430, set = 0, binding = 12) buffer ReadArena { uint readArena[]; };
 
+// The state comes from each draw's command, so the compiler cannot take it as uniform: both
+// functions are selects, not switches, which a CPU driver's SIMD code would run case by case.
+
+// A comparison func (GL's numbering: bit 0 passes on less, bit 1 on equal, bit 2 on greater;
+// NEVER 0 ... ALWAYS 7) of incoming against stored.
 bool compare(uint func, uint incoming, uint stored) {
-  switch (func) {
-    case 0u: return false;                // NEVER
-    case 1u: return incoming < stored;    // LESS
-    case 2u: return incoming == stored;   // EQUAL
-    case 3u: return incoming <= stored;   // LEQUAL
-    case 4u: return incoming > stored;    // GREATER
-    case 5u: return incoming != stored;   // NOTEQUAL
-    case 6u: return incoming >= stored;   // GEQUAL
-    default: return true;                 // ALWAYS
-  }
+  const uint outcome = incoming < stored ? 0u : (incoming == stored ? 1u : 2u);
+  return ((func >> outcome) & 1u) != 0u;
 }
 
+// A stencil op (KEEP 0, ZERO, REPLACE, INCR, INCR_WRAP, DECR, DECR_WRAP, INVERT 7) on s.
 uint applyStencilOp(uint op, uint s, uint ref) {
-  switch (op) {
-    case 0u: return s;                       // KEEP
-    case 1u: return 0u;                      // ZERO
-    case 2u: return ref;                     // REPLACE
-    case 3u: return min(s + 1u, 255u);       // INCR
-    case 4u: return (s + 1u) & 0xFFu;        // INCR_WRAP
-    case 5u: return s == 0u ? 0u : s - 1u;   // DECR
-    case 6u: return (s + 255u) & 0xFFu;      // DECR_WRAP
-    default: return 255u - s;                // INVERT
-  }
+  uint next = s;                                 // KEEP
+  next = op == 1u ? 0u : next;                   // ZERO
+  next = op == 2u ? ref : next;                  // REPLACE
+  next = op == 3u ? min(s + 1u, 255u) : next;    // INCR
+  next = op == 4u ? (s + 1u) & 0xFFu : next;     // INCR_WRAP
+  next = op == 5u ? (s == 0u ? 0u : s - 1u) : next;  // DECR
+  next = op == 6u ? (s + 255u) & 0xFFu : next;   // DECR_WRAP
+  next = op == 7u ? 255u - s : next;             // INVERT
+  return next;
 }
 
 // This invocation's column of the job being run: its x, its first row, and the eight pixels'

@@ -2,10 +2,11 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_buffer_reference_uvec2 : require
-// The frame's resolve stage, one invocation a pixel of every ResolveRange: the pixel's value at
-// the end of the frame is the one the last epoch of its target whose footprint holds it left
-// in JobFinal. An epoch that stored its pixels itself (kEpochStores) meets no other, so when it
-// is the one found, there is nothing to do; when none is, nothing touched the pixel.
+// The frame's resolve stage, one invocation a pixel of every ResolveRange (the footprint of an
+// epoch that meets another epoch of its target): the pixel takes the value the epoch left in
+// JobFinal unless a later epoch of the target holds the pixel too, whose own range then gives
+// it. So each pixel is written once, by the last epoch that held it. (An epoch that meets no
+// other stored its pixels itself, in the raster stage.)
 
 layout(local_size_x = 64) in;
 
@@ -14,6 +15,7 @@ layout(local_size_x = 64) in;
 
 layout(std430, set = 0, binding = 11) readonly buffer JobFinal { uint jobFinal[]; };
 layout(std430, set = 0, binding = 13) readonly buffer ResolveRanges { ResolveRange ranges[]; };
+layout(std430, set = 0, binding = 16) readonly buffer LaterEpochs { uint laterEpochs[]; };
 
 uint rangeOfPixel(uint i) {
   uint low = 0u;
@@ -37,19 +39,15 @@ void main() {
   const uint rectWidth = uint(range.rect.z - range.rect.x);
   const int x = range.rect.x + int(k % rectWidth);
   const int y = range.rect.y + int(k / rectWidth);
-  for (uint e = range.epochEnd; e > range.firstEpoch; --e) {
-    const Epoch epoch = epochs[e - 1u];
-    if (!insideRect(epoch.footprint, x, y))
-      continue;
-    if ((epoch.flags & kEpochStores) == 0u) {
-      const uvec2 block = blockOf(epoch, x, y);
-      const uint slot = epoch.firstFinal + block.y * epoch.gridWidth + block.x;
-      const Target target = targets[range.target];
-      PixelWords framebuffer = PixelWords(target.pixels);
-      framebuffer.pixels[uint(y) * target.width + uint(x)] =
-          jobFinal[slot * 64u + uint(y - epoch.gridOrigin.y - int(block.y) * 8) * 8u +
-                   uint(x - epoch.gridOrigin.x - int(block.x) * 8)];
-    }
-    return;
-  }
+  for (uint l = range.firstLater; l < range.firstLater + range.laterCount; ++l)
+    if (insideRect(epochs[laterEpochs[l]].footprint, x, y))
+      return;
+  const Epoch epoch = epochs[range.epoch];
+  const uvec2 block = blockOf(epoch, x, y);
+  const uint slot = epoch.firstFinal + block.y * epoch.gridWidth + block.x;
+  const Target target = targets[range.target];
+  PixelWords framebuffer = PixelWords(target.pixels);
+  framebuffer.pixels[uint(y) * target.width + uint(x)] =
+      jobFinal[slot * 64u + uint(y - epoch.gridOrigin.y - int(block.y) * 8) * 8u +
+               uint(x - epoch.gridOrigin.x - int(block.x) * 8)];
 }

@@ -3,13 +3,13 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_buffer_reference_uvec2 : require
-// The frame's binning, after the scan: each triangle writes its frame index into the list of
-// every job its candidate pixels reach where it may cover a centre (the set-up's test,
-// tile_block_test.glsl, so the lists have the lengths it counted). The slots come from atomic
-// cursors, so a list holds its triangles in no particular order; the next stage
-// (tile_sort.comp) sorts each list by index, which is command order. Entries past the list's
-// capacity are dropped, and a job whose list did not fit draws each of its draws from every
-// triangle instead (tile_raster.comp).
+// The frame's binning, run twice around the scan (Frame.binPass): each triangle finds every job
+// (a block of its epoch's grid) its candidate pixels reach where it may cover a centre
+// (tile_block_test.glsl); the first pass counts it in each, the second writes its frame index
+// into each job's list, at slots from atomic cursors, so a list holds its triangles in no
+// particular order; the next stage (tile_sort.comp) sorts each list by index, which is command
+// order. Entries past the lists' capacity are dropped, and a job whose list did not fit draws
+// each of its draws from every triangle instead (tile_raster.comp).
 
 layout(local_size_x = 64) in;
 
@@ -18,6 +18,7 @@ layout(local_size_x = 64) in;
 #include "tile_block_test.glsl"
 
 layout(std430, set = 0, binding = 6) readonly buffer Triangles { uint triangles[]; };
+layout(std430, set = 0, binding = 7) buffer BinCounts { uint binCounts[]; };
 layout(std430, set = 0, binding = 9) buffer BinCursors { uint binCursors[]; };
 layout(std430, set = 0, binding = 10) writeonly buffer Pairs { uint pairs[]; };
 
@@ -45,9 +46,14 @@ void main() {
     for (uint bx = first.x; bx <= last.x; ++bx) {
       if (!blockMeetsTriangle(v0, p1, p2, epoch.gridOrigin + ivec2(bx, by) * 8))
         continue;
-      const uint slot = atomicAdd(binCursors[epoch.firstJob + by * epoch.gridWidth + bx], 1u);
-      if (slot < frame.pairCapacity)
-        pairs[slot] = t;
+      const uint job = epoch.firstJob + by * epoch.gridWidth + bx;
+      if (frame.binPass == 0u) {
+        atomicAdd(binCounts[job], 1u);
+      } else {
+        const uint slot = atomicAdd(binCursors[job], 1u);
+        if (slot < frame.pairCapacity)
+          pairs[slot] = t;
+      }
     }
   }
 }

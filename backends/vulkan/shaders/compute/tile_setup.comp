@@ -7,18 +7,16 @@
 // window vertices (section 2 of docs/rasterization.md), takes the doubled area, the facing and
 // the culling (section 3), clips the candidate pixels to the draw's scissor and sets up the depth
 // plane (section 5, exact_contract.glsl: every operation `precise`, the division correctly
-// rounded); then counts the triangle once in each job (a block of its epoch's grid) its
-// candidates reach where it may cover a centre (tile_block_test.glsl).
+// rounded). The binning stage then lists the triangle in the jobs it may cover a centre of
+// (tile_scatter.comp).
 
 layout(local_size_x = 64) in;
 
 #include "exact_contract.glsl"
 #include "tile_common.glsl"
 #include "tile_frame_inputs.glsl"
-#include "tile_block_test.glsl"
 
 layout(std430, set = 0, binding = 6) writeonly buffer Triangles { uint triangles[]; };
-layout(std430, set = 0, binding = 7) buffer BinCounts { uint binCounts[]; };
 
 FloatWords vertexData;
 
@@ -40,7 +38,6 @@ void main() {
     return;
   const DrawSource source = draws[drawOfTriangle(t)];
   const Command command = commands[source.command];
-  const Epoch epoch = epochs[source.epoch];
   vertexData = FloatWords(source.vertices);
   IndexWords indexData = IndexWords(source.indices);
   const uint local = t - source.firstTriangle;
@@ -93,12 +90,4 @@ void main() {
   triangles[base + kTriangleSlopes + 1u] = dzdx.y;
   triangles[base + kTriangleSlopes + 2u] = dzdy.x;
   triangles[base + kTriangleSlopes + 3u] = dzdy.y;
-  const uvec2 first = blockOf(epoch, x0, y0);
-  const uvec2 last = blockOf(epoch, x1 - 1, y1 - 1);
-  const i64vec2 p1 = front ? v1 : v2;
-  const i64vec2 p2 = front ? v2 : v1;
-  for (uint by = first.y; by <= last.y; ++by)
-    for (uint bx = first.x; bx <= last.x; ++bx)
-      if (blockMeetsTriangle(v0, p1, p2, epoch.gridOrigin + ivec2(bx, by) * 8))
-        atomicAdd(binCounts[epoch.firstJob + by * epoch.gridWidth + bx], 1u);
 }
