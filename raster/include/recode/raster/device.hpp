@@ -32,13 +32,16 @@ struct TransferCounters {
   // Compute dispatches recorded (the vulkan-compute device's stages; 0 where a device draws
   // through a graphics pipeline or on the CPU).
   long long dispatches = 0;
-  // Device time of the vulkan-compute device's stages, in microseconds, from timestamp
-  // queries: kStageNames says which entry is which (0 where nothing measures them).
+  // The vulkan-compute device's stage groups that stageUs times.
   static constexpr std::size_t kStages = 5;
+  // Their names, as the CSV columns stage_ms_NAME give them.
   static constexpr std::array<const char*, kStages> kStageNames = {"vertex", "setup", "binning",
                                                                    "raster", "reads"};
+  // Device time of the vulkan-compute device's stages, in microseconds, from timestamp
+  // queries, in the order of kStageNames (0 where nothing measures them).
   std::array<double, kStages> stageUs{};
 
+  // Adds `other`'s counts to these.
   TransferCounters& operator+=(const TransferCounters& other) {
     submissions += other.submissions;
     readbackBytes += other.readbackBytes;
