@@ -124,6 +124,41 @@ struct WorkLayout {
   VkDeviceSize bytes = 0;
 };
 
+// Jobs a workgroup of the raster stage runs on a CPU driver: eight at once, eight times. Not
+// more: llvmpipe ends an invocation's loops after 65,535 iterations in all (its guard against
+// endless loops), and an invocation runs every command, list entry and row of its jobs.
+constexpr std::uint32_t kCpuJobsPerGroup = 64;
+
+// Jobs the serial scan (tile_scan_serial.comp, for CPU drivers) takes: llvmpipe ends a shader's
+// loops after 65,535 iterations in all, so more go to the workgroup's scan, whose invocations
+// each loop over a 256th of them.
+constexpr std::uint32_t kMostSerialScanJobs = 32768;
+
+// Jobs whose pixels a frame may keep for the resolve stage (64 words each: 64 MiB in all).
+constexpr std::uint64_t kMostFinalJobs = std::uint64_t{1} << 18;
+
+std::uint64_t gridJobs(const PixelRect& f) {
+  return std::uint64_t(((f.x1 - 1) >> 3) - (f.x0 >> 3) + 1) *
+         std::uint64_t(((f.y1 - 1) >> 3) - (f.y0 >> 3) + 1);
+}
+
+// `epochs`, or, when the epochs that meet another would keep more jobs than the frame has left
+// of kMostFinalJobs (`finals` kept so far), one epoch of all the commands that starts from the
+// framebuffer and stores its own pixels: the same results, its blocks' commands run one after
+// another instead of side by side, and no pixel kept for the resolve stage.
+std::vector<EpochSpan> withinFinalBudget(std::vector<EpochSpan> epochs, std::uint64_t finals) {
+  std::uint64_t kept = 0;
+  for (const EpochSpan& e : epochs)
+    if (!e.alone)
+      kept += gridJobs(e.footprint);
+  if (kept == 0 || finals + kept <= kMostFinalJobs)
+    return epochs;
+  EpochSpan all{epochs.front().begin, epochs.back().end, epochs.front().footprint, true, true};
+  for (const EpochSpan& e : epochs)
+    all.footprint = unite(all.footprint, e.footprint);
+  return {all};
+}
+
 PixelRect footprintOf(const TileEpoch& e) {
   return {e.footprint[0], e.footprint[1], e.footprint[2], e.footprint[3]};
 }
@@ -305,7 +340,7 @@ FrameRecords TileFrame::Impl::records() const {
     for (const Pending& p : list)
       shapes.push_back(epochCommandOf(p.command, p.rect));
     std::vector<std::uint32_t> shared;  // this target's epochs that meet another
-    for (const EpochSpan& span : cutIntoEpochs(shapes)) {
+    for (const EpochSpan& span : withinFinalBudget(cutIntoEpochs(shapes), r.finals)) {
       TileEpoch e = epochRecord(span, t);
       const auto epochIndex = static_cast<std::uint32_t>(r.epochs.size());
       e.firstJob = r.jobs;
@@ -413,8 +448,8 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   k.epochCount = static_cast<std::uint32_t>(r.epochs.size());
   k.pairCapacity = layout.pairCapacity;
   // Eight jobs a workgroup on a GPU; on a CPU driver, where each workgroup has a fixed cost of
-  // several microseconds, enough that the frame is a few dozen workgroups.
-  k.jobsPerGroup = context.cpuDriver() ? std::max(8u, (r.jobs / 32 + 7) / 8 * 8) : 8u;
+  // several microseconds, kCpuJobsPerGroup.
+  k.jobsPerGroup = context.cpuDriver() ? kCpuJobsPerGroup : 8u;
   k.resolvePixels = r.resolvePixels;
   k.resolveRanges = static_cast<std::uint32_t>(r.resolveRanges.size());
   k.boxJobs = static_cast<std::uint32_t>(r.boxJobs.size());
@@ -482,7 +517,8 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
                    {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs},
                    r.triangles);
     computeBarrier(cmd);
-    pipelines.dispatch(cmd, context.cpuDriver() ? pipelines.scanSerial : pipelines.scan,
+    const bool serial = context.cpuDriver() && r.jobs <= kMostSerialScanJobs;
+    pipelines.dispatch(cmd, serial ? pipelines.scanSerial : pipelines.scan,
                        {counts, offsets, cursors}, k, 1, 1);
     ++dispatches;
     computeBarrier(cmd);

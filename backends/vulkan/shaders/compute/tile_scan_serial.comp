@@ -4,7 +4,10 @@
 #extension GL_EXT_buffer_reference_uvec2 : require
 // tile_scan.comp's prefix sum in one invocation, for CPU drivers: there a workgroup with
 // barriers runs its invocations as coroutines, which costs more than adding a few thousand
-// counts in a row (the device picks it on lavapipe; a GPU runs tile_scan.comp).
+// counts in a row (the device picks it on lavapipe for up to kMostSerialScanJobs jobs; a GPU,
+// and lavapipe past that, runs tile_scan.comp). llvmpipe ends a shader's loops after 65,535
+// iterations in all (its guard against endless loops), so a longer serial loop would stop
+// short without a word.
 
 layout(local_size_x = 1) in;
 
