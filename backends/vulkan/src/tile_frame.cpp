@@ -124,10 +124,11 @@ struct WorkLayout {
   VkDeviceSize bytes = 0;
 };
 
-// Jobs a workgroup of the raster stage runs on a CPU driver: eight at once, eight times. Not
-// more: llvmpipe ends an invocation's loops after 65,535 iterations in all (its guard against
-// endless loops), and an invocation runs every command, list entry and row of its jobs.
-constexpr std::uint32_t kCpuJobsPerGroup = 64;
+// Jobs a workgroup of the raster stage runs on a CPU driver: eight at once, one an invocation's
+// eight columns, as on a GPU. Not more: llvmpipe ends an invocation's loops after 65,535
+// iterations in all (its guard against endless loops), and an invocation runs every command,
+// list entry and row of its jobs (a job whose list overflowed, every triangle of each draw).
+constexpr std::uint32_t kCpuJobsPerGroup = 8;
 
 // Jobs the serial scan (tile_scan_serial.comp, for CPU drivers) takes: llvmpipe ends a shader's
 // loops after 65,535 iterations in all, so more go to the workgroup's scan, whose invocations
