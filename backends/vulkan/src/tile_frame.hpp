@@ -1,13 +1,14 @@
 #pragma once
 // The vulkan-compute device's frame: everything the devices of the 64-bit context record between
 // two submissions, kept on the host as a job list and run, just before the submission, as a fixed
-// sequence of dispatches whatever it holds (docs/backends.md, "The compute device"):
+// sequence of at most nine dispatches whatever it holds (docs/backends.md, "A frame is one job
+// list"):
 //
 //   boxes    posed blocks' world boxes (one workgroup a block)
 //   vertex   every posed draw's window vertices (one invocation a vertex)
-//   set-up   every triangle of every draw (one invocation a triangle), counting it into the
-//            jobs it may cover a centre of
-//   binning  scan, scatter and sort: each job's list of triangles, in command order
+//   set-up   every triangle of every draw (one invocation a triangle)
+//   binning  each triangle counted into the jobs it may cover a centre of, the counts' prefix
+//            sum, each triangle listed in those jobs, each job's list sorted: command order
 //   raster   every job at once: an 8x8 block of one epoch, its commands in order on its pixels
 //   resolve  each pixel's final value from the last epoch that touched it
 //
