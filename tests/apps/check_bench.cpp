@@ -49,6 +49,10 @@ const char* const kHeader =
     "readback_bytes_per_frame,device_wait_ms_per_frame,host_ms_per_frame,dispatches_per_frame,"
     "stage_ms_vertex,stage_ms_setup,stage_ms_binning,stage_ms_raster,stage_ms_reads";
 
+// The compute device's stage columns (a RECODE row's, empty for a peer).
+const char* const kStageColumns[] = {"stage_ms_vertex", "stage_ms_setup", "stage_ms_binning",
+                                     "stage_ms_raster", "stage_ms_reads"};
+
 struct Row {
   std::map<std::string, std::string> field;
   [[nodiscard]] const std::string& text(const std::string& key) const { return field.at(key); }
@@ -138,13 +142,17 @@ void checkRow(const Row& r) {
       std::abs(total - mean * static_cast<double>(frames)) > 1e-3 * static_cast<double>(frames))
     fail(id + ": total " + r.text("total_ms") + " ms is not mean x frames");
   const bool recode = r.text("algorithm").rfind("recode-", 0) == 0;
-  for (const char* key :
-       {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
-        "submissions_per_frame", "readback_bytes_per_frame", "device_wait_ms_per_frame",
-        "host_ms_per_frame", "dispatches_per_frame", "stage_ms_vertex", "stage_ms_setup",
-        "stage_ms_binning", "stage_ms_raster", "stage_ms_reads"})
+  // RECODE's own columns: given on its rows, empty on a peer's.
+  const auto ownColumn = [&](const char* key) {
     if (r.text(key).empty() == recode)
       fail(id + ": " + key + (recode ? " missing" : " given for a peer"));
+  };
+  for (const char* key : {"box_tests", "pair_tests", "stencil_pixels_read", "depth_pixels_read",
+                          "submissions_per_frame", "readback_bytes_per_frame",
+                          "device_wait_ms_per_frame", "host_ms_per_frame", "dispatches_per_frame"})
+    ownColumn(key);
+  for (const char* key : kStageColumns)
+    ownColumn(key);
   // The device's share of the frame: none without a submission, and never more than the frame.
   if (recode) {
     const double wait = r.number("device_wait_ms_per_frame");
@@ -328,8 +336,7 @@ int main(int argc, char** argv) {
           if (c.number("dispatches_per_frame") <= 0.0)
             fail(prefix + "recode-vulkan-compute: no dispatch counted");
           double stages = 0.0;
-          for (const char* key : {"stage_ms_vertex", "stage_ms_setup", "stage_ms_binning",
-                                  "stage_ms_raster", "stage_ms_reads"})
+          for (const char* key : kStageColumns)
             stages += c.number(key);
           if (!(stages >= 0.0) || stages > c.number("device_wait_ms_per_frame") + 1e-3)
             fail(prefix + "recode-vulkan-compute: its stages took " + std::to_string(stages) +

@@ -20,14 +20,6 @@ namespace {
 
 using raster::PixelRect;
 
-// Offsets of the regions a dispatch binds: the largest minStorageBufferOffsetAlignment the
-// specification allows, so no device needs asking.
-constexpr VkDeviceSize kBindAlignment = 256;
-
-VkDeviceSize aligned(VkDeviceSize bytes) {
-  return (bytes + kBindAlignment - 1) / kBindAlignment * kBindAlignment;
-}
-
 // The timestamps around the stages (kStages + 1 of them).
 constexpr std::uint32_t kTimestamps = raster::TransferCounters::kStages + 1;
 
@@ -42,13 +34,6 @@ void putState(const raster::RenderState& s, TileCommand& c) {
     return bits(o.stencilFail) | (bits(o.depthFail) << 3) | (bits(o.depthPass) << 6);
   };
   c.ops = ops(s.frontOps) | (ops(s.backOps) << 9);
-}
-
-void putRect(const PixelRect& r, TileCommand& c) {
-  c.rect[0] = r.x0;
-  c.rect[1] = r.y0;
-  c.rect[2] = r.x1;
-  c.rect[3] = r.y1;
 }
 
 // Words a read of `pixels` in `form` fills in the read arena.
@@ -97,17 +82,17 @@ struct FrameRecords {
 struct WorkLayout {
   explicit WorkLayout(const FrameRecords& r)
       : pairCapacity(static_cast<std::uint32_t>(std::min<std::uint64_t>(r.listCapacity, 1u << 27))),
-        triangleBytes(aligned(VkDeviceSize{r.triangles} * kTileWordsPerTriangle * 4 + 4)),
-        jobBytes(aligned(VkDeviceSize{r.jobs} * 4 + 4)) {
+        triangleBytes(tileAligned(VkDeviceSize{r.triangles} * kTileWordsPerTriangle * 4 + 4)),
+        jobBytes(tileAligned(VkDeviceSize{r.jobs} * 4 + 4)) {
     countsAt = triangleBytes;
     offsetsAt = countsAt + jobBytes;
     cursorsAt = offsetsAt + jobBytes;
     pairsAt = cursorsAt + jobBytes;
-    finalsAt = pairsAt + aligned(VkDeviceSize{pairCapacity} * 4);
-    windowsAt = finalsAt + aligned(VkDeviceSize{r.finals} * 256 + 4);
-    arenaAt = windowsAt + aligned(VkDeviceSize{r.windowVertices} * 12 + 4);
-    boxesAt = arenaAt + aligned(VkDeviceSize{r.arenaWords} * 4 + 4);
-    bytes = boxesAt + aligned(VkDeviceSize{r.boxJobs.size()} * 64 + 8);
+    finalsAt = pairsAt + tileAligned(VkDeviceSize{pairCapacity} * 4);
+    windowsAt = finalsAt + tileAligned(VkDeviceSize{r.finals} * 256 + 4);
+    arenaAt = windowsAt + tileAligned(VkDeviceSize{r.windowVertices} * 12 + 4);
+    boxesAt = arenaAt + tileAligned(VkDeviceSize{r.arenaWords} * 4 + 4);
+    bytes = boxesAt + tileAligned(VkDeviceSize{r.boxJobs.size()} * 64 + 8);
   }
   // Entries the jobs' lists hold in all (FrameRecords::listCapacity, at most 2^27: 512 MiB).
   std::uint32_t pairCapacity;
@@ -138,10 +123,19 @@ constexpr std::uint32_t kMostSerialScanJobs = 32768;
 // Jobs whose pixels a frame may keep for the resolve stage (64 words each: 64 MiB in all).
 constexpr std::uint64_t kMostFinalJobs = std::uint64_t{1} << 18;
 
-std::uint64_t gridJobs(const PixelRect& f) {
-  return std::uint64_t(((f.x1 - 1) >> 3) - (f.x0 >> 3) + 1) *
-         std::uint64_t(((f.y1 - 1) >> 3) - (f.y0 >> 3) + 1);
-}
+// The 8x8 blocks, from multiples of 8, that hold footprint `f`.
+struct BlockGrid {
+  explicit BlockGrid(const PixelRect& f)
+      : x0(f.x0 & ~7),
+        y0(f.y0 & ~7),
+        width(static_cast<std::uint32_t>(((f.x1 - 1) >> 3) - (f.x0 >> 3) + 1)),
+        height(static_cast<std::uint32_t>(((f.y1 - 1) >> 3) - (f.y0 >> 3) + 1)) {}
+  std::int32_t x0;
+  std::int32_t y0;
+  std::uint32_t width;
+  std::uint32_t height;
+  [[nodiscard]] std::uint64_t blocks() const { return std::uint64_t{width} * height; }
+};
 
 // `epochs`, or, when the epochs that meet another would keep more jobs than the frame has left
 // of kMostFinalJobs (`finals` kept so far), one epoch of all the commands that starts from the
@@ -151,17 +145,13 @@ std::vector<EpochSpan> withinFinalBudget(std::vector<EpochSpan> epochs, std::uin
   std::uint64_t kept = 0;
   for (const EpochSpan& e : epochs)
     if (!e.alone)
-      kept += gridJobs(e.footprint);
+      kept += BlockGrid(e.footprint).blocks();
   if (kept == 0 || finals + kept <= kMostFinalJobs)
     return epochs;
   EpochSpan all{epochs.front().begin, epochs.back().end, epochs.front().footprint, true, true};
   for (const EpochSpan& e : epochs)
     all.footprint = unite(all.footprint, e.footprint);
   return {all};
-}
-
-PixelRect footprintOf(const TileEpoch& e) {
-  return {e.footprint[0], e.footprint[1], e.footprint[2], e.footprint[3]};
 }
 
 // The resolve stage's ranges for one target's epochs that meet another (`shared`, in command
@@ -171,15 +161,14 @@ void addResolveRanges(FrameRecords& r, const std::vector<std::uint32_t>& shared,
                       std::uint32_t target) {
   const bool compare = shared.size() <= kMostEpochsCompared;
   for (std::size_t i = 0; i < shared.size(); ++i) {
-    const PixelRect f = footprintOf(r.epochs[shared[i]]);
+    const PixelRect f = rectOf(r.epochs[shared[i]].footprint);
     TileResolveRange range;
-    std::copy(std::begin(r.epochs[shared[i]].footprint), std::end(r.epochs[shared[i]].footprint),
-              range.rect);
+    putRect(f, range.rect);
     range.target = target;
     range.epoch = shared[i];
     range.firstLater = static_cast<std::uint32_t>(r.laterEpochs.size());
     for (std::size_t j = i + 1; j < shared.size(); ++j)
-      if (!compare || !f.intersect(footprintOf(r.epochs[shared[j]])).empty())
+      if (!compare || !f.intersect(rectOf(r.epochs[shared[j]].footprint)).empty())
         r.laterEpochs.push_back(shared[j]);
     range.laterCount = static_cast<std::uint32_t>(r.laterEpochs.size()) - range.firstLater;
     range.firstPixel = r.resolvePixels;
@@ -190,15 +179,12 @@ void addResolveRanges(FrameRecords& r, const std::vector<std::uint32_t>& shared,
 
 TileEpoch epochRecord(const EpochSpan& span, std::uint32_t target) {
   TileEpoch e;
-  const PixelRect& f = span.footprint;
-  e.footprint[0] = f.x0;
-  e.footprint[1] = f.y0;
-  e.footprint[2] = f.x1;
-  e.footprint[3] = f.y1;
-  e.gridOrigin[0] = f.x0 & ~7;
-  e.gridOrigin[1] = f.y0 & ~7;
-  e.gridWidth = static_cast<std::uint32_t>(((f.x1 - 1) >> 3) - (f.x0 >> 3) + 1);
-  e.gridHeight = static_cast<std::uint32_t>(((f.y1 - 1) >> 3) - (f.y0 >> 3) + 1);
+  putRect(span.footprint, e.footprint);
+  const BlockGrid grid(span.footprint);
+  e.gridOrigin[0] = grid.x0;
+  e.gridOrigin[1] = grid.y0;
+  e.gridWidth = grid.width;
+  e.gridHeight = grid.height;
   e.target = target;
   e.flags = (span.loads ? kTileEpochLoads : 0u) | (span.alone ? kTileEpochStores : 0u);
   return e;
@@ -233,10 +219,7 @@ struct TileFrame::Impl {
   };
   std::vector<std::vector<Pending>> commands;  // by target
 
-  struct VertexJob {
-    TileVertices source;
-  };
-  std::vector<VertexJob> vertexJobs;
+  std::vector<TileVertices> vertexJobs;
   std::map<std::uint64_t, int> vertexJobOfKey;  // content key -> vertex job, this frame
 
   struct BoxBatch {
@@ -283,7 +266,7 @@ struct TileFrame::Impl {
     p.command.kind = kind;
     p.command.target = target;
     p.rect = rect;
-    putRect(rect, p.command);
+    putRect(rect, p.command.rect);
     return p;
   }
 
@@ -326,11 +309,10 @@ FrameRecords TileFrame::Impl::records() const {
   FrameRecords r;
   for (const Target& t : targets)
     r.targets.push_back({TileAddress::of(t.pixels), t.width, t.height});
-  for (const VertexJob& job : vertexJobs) {
+  for (const TileVertices& job : vertexJobs) {
     r.windowFirst.push_back(r.windowVertices);
-    r.windowVertices += job.source.vertexCount;
-    r.transforms.insert(r.transforms.end(), job.source.transform.begin(),
-                        job.source.transform.end());
+    r.windowVertices += job.vertexCount;
+    r.transforms.insert(r.transforms.end(), job.transform.begin(), job.transform.end());
   }
   for (std::uint32_t t = 0; t < targets.size(); ++t) {
     const std::vector<Pending>& list = commands[t];
@@ -411,11 +393,11 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
   // The posed draws' window vertices, made by the vertex stage into the work buffer.
   for (std::size_t j = 0; j < vertexJobs.size(); ++j) {
     TileVertexJob job;
-    job.local = TileAddress::of(vertexJobs[j].source.local);
+    job.local = TileAddress::of(vertexJobs[j].local);
     job.windows =
         TileAddress::of(workAddress + layout.windowsAt + VkDeviceSize{r.windowFirst[j]} * 12);
     job.firstVertex = r.windowFirst[j];
-    job.vertexCount = vertexJobs[j].source.vertexCount;
+    job.vertexCount = vertexJobs[j].vertexCount;
     job.transform = static_cast<std::uint32_t>(j);
     r.vertexJobs.push_back(job);
   }
@@ -696,7 +678,7 @@ void TileFrame::draw(std::uint32_t target, const raster::RenderState& state,
     }
   }
   p.vertexJob = static_cast<int>(f.vertexJobs.size());
-  f.vertexJobs.push_back({vertices});
+  f.vertexJobs.push_back(vertices);
   if (vertices.contentKey != 0)
     f.vertexJobOfKey[vertices.contentKey] = p.vertexJob;
 }

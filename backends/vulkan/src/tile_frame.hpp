@@ -49,7 +49,7 @@ struct TileVertices {
   VkDeviceAddress window = 0;  // three floats a vertex; 0 for a posed mesh
   VkDeviceAddress local = 0;   // three doubles a vertex
   std::uint32_t vertexCount = 0;
-  std::array<double, 23> transform{};
+  std::array<double, kTileTransformDoubles> transform{};
   std::uint64_t contentKey = 0;
 };
 
@@ -94,7 +94,7 @@ class TileFrame {
   struct BoxRequest {
     VkDeviceAddress local = 0;
     std::uint32_t vertexCount = 0;
-    std::array<double, 12> pose{};
+    std::array<double, kTilePoseDoubles> pose{};
   };
   void boxes(const std::vector<BoxRequest>& blocks, VkBuffer destination, VkDeviceSize offset);
   // The last draw recorded on `target` is copied back after the frame and handed to `sink`.

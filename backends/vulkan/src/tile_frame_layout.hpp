@@ -6,7 +6,33 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "recode/raster/state.hpp"
+
 namespace recode::backends::detail {
+
+// Words of a set-up triangle, doubles of a vertex job's transform (tile_vertex.comp) and of a
+// box job's pose (tile_box.comp).
+inline constexpr std::uint32_t kTileWordsPerTriangle = 16;
+inline constexpr std::uint32_t kTileTransformDoubles = 23;
+inline constexpr std::uint32_t kTilePoseDoubles = 12;
+
+// Where a region the stages bind may start: the largest minStorageBufferOffsetAlignment the
+// specification allows, so no device needs asking.
+inline constexpr std::uint64_t kTileBindAlignment = 256;
+inline constexpr std::uint64_t tileAligned(std::uint64_t bytes) {
+  return (bytes + kTileBindAlignment - 1) / kTileBindAlignment * kTileBindAlignment;
+}
+
+// A rectangle as the records hold it: x0, y0, x1, y1.
+inline void putRect(const raster::PixelRect& r, std::int32_t (&out)[4]) {
+  out[0] = r.x0;
+  out[1] = r.y0;
+  out[2] = r.x1;
+  out[3] = r.y1;
+}
+inline raster::PixelRect rectOf(const std::int32_t (&words)[4]) {
+  return {words[0], words[1], words[2], words[3]};
+}
 
 // Command kinds and read forms (tile_common.glsl's kDraw..., kRead...).
 enum class TileCommandKind : std::uint32_t { Draw = 0, ClearDepth = 1, ClearStencil = 2, Read = 3 };

@@ -7,18 +7,16 @@
 #include <string>
 
 #include "recode/raster/device_checks.hpp"
+#include "tile_frame_layout.hpp"
 #include "vulkan_recorder.hpp"
 
 namespace recode::backends::detail {
 
 namespace {
 
-// Where a mesh's indices start: the largest minStorageBufferOffsetAlignment the specification
-// allows, so no device needs asking.
-constexpr VkDeviceSize kAlignment = 256;
-
-VkDeviceSize aligned(VkDeviceSize bytes) {
-  return (std::max<VkDeviceSize>(bytes, 4) + kAlignment - 1) / kAlignment * kAlignment;
+// Where a mesh's indices start: after its vertices (at least a word), bound apart by the frame.
+VkDeviceSize indexOffsetAfter(VkDeviceSize vertexBytes) {
+  return tileAligned(std::max<VkDeviceSize>(vertexBytes, 4));
 }
 
 }  // namespace
@@ -62,8 +60,7 @@ TileMeshes::List TileMeshes::listOf(Kept& kept) {
   if (kept.triangles == 0)
     return {};
   kept.drawnIn = recorder_.recordingsRun();
-  const VkDeviceAddress address = context_.address(kept.buffer.buffer);
-  return {address, address + kept.indexOffset, kept.triangles};
+  return {kept.address, kept.address + kept.indexOffset, kept.triangles};
 }
 
 std::optional<TileMeshes::List> TileMeshes::find(std::uint64_t key,
@@ -88,7 +85,7 @@ TileMeshes::List TileMeshes::upload(const raster::TriangleDraw& draw, std::uint6
   const VkDeviceSize indexBytes = draw.indices.size_bytes();
   k.key = 0;  // serves nothing until its bytes are recorded
   k.triangles = static_cast<std::uint32_t>(draw.indices.size() / 3);
-  k.indexOffset = aligned(vertexBytes);
+  k.indexOffset = indexOffsetAfter(vertexBytes);
   ++uploads_;
   if (k.triangles == 0)
     return listOf(k);
@@ -100,6 +97,7 @@ TileMeshes::List TileMeshes::upload(const raster::TriangleDraw& draw, std::uint6
     const VkDeviceSize size = std::max(bytes, k.buffer.size);
     retire(k.buffer);
     k.buffer = storage(size);
+    k.address = context_.address(k.buffer.buffer);
   }
   const CommandRecorder::Staged vertices = recorder_.upload(draw.vertices.data(), vertexBytes);
   const CommandRecorder::Staged indices = recorder_.upload(draw.indices.data(), indexBytes);
@@ -137,7 +135,7 @@ TileMeshes::Posed TileMeshes::posed(const raster::PosedMesh& mesh) {
   r.alive = mesh.alive;
   const VkDeviceSize localBytes = mesh.localXyz.size_bytes();
   const VkDeviceSize indexBytes = mesh.indices.size_bytes();
-  const VkDeviceSize indexOffset = aligned(localBytes);
+  const VkDeviceSize indexOffset = indexOffsetAfter(localBytes);
   ++uploads_;
   freeRetired();
   r.buffer = storage(indexOffset + std::max<VkDeviceSize>(indexBytes, 4));

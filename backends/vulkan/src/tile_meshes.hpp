@@ -72,7 +72,8 @@ class TileMeshes {
     raster::PixelRect rect;
     std::uint32_t triangles = 0;
     VkDeviceSize indexOffset = 0;
-    DeviceBuffer buffer;  // vertices from 0, indices from indexOffset
+    DeviceBuffer buffer;          // vertices from 0, indices from indexOffset
+    VkDeviceAddress address = 0;  // the buffer's, taken when it is made
     std::uint64_t lastUse = 0;
     // The recording whose frame last drew from the buffer: while it is open, new bytes go to a
     // new buffer.

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <initializer_list>
 
+#include "tile_frame_layout.hpp"
+
 namespace recode::backends::detail {
 
 class VulkanContext;
@@ -36,10 +38,6 @@ enum class TileBinding : std::uint32_t {
   LaterEpochs = 16,    // the resolve ranges' later epochs
 };
 inline constexpr std::uint32_t kTileBindings = 17;
-// Doubles of a vertex job's transform as tile_vertex.comp reads it, and of a box job's pose.
-inline constexpr std::uint32_t kTileTransformDoubles = 23;
-inline constexpr std::uint32_t kTilePoseDoubles = 12;
-inline constexpr std::uint32_t kTileWordsPerTriangle = 16;
 
 // The push constants, in the layout of tile_common.glsl's `Frame`: one set for every stage of
 // a frame.
