@@ -148,6 +148,24 @@ const uint kTriangleCandidates = 7u;
 const uint kTriangleZ0 = 11u;
 const uint kTriangleSlopes = 12u;
 
+// Sets `result` to the last index k below `count` whose array[k].field <= key, for records sorted
+// by `field` with array[0].field <= key: the binary search that finds a frame index's record (a
+// triangle's draw, a job's epoch, a vertex's job, a pixel's range). A macro, since GLSL has no
+// function over any record type.
+#define LAST_AT_OR_BELOW(result, array, field, count, key) \
+  {                                                        \
+    uint low_ = 0u;                                        \
+    uint high_ = (count);                                  \
+    while (high_ - low_ > 1u) {                            \
+      const uint middle_ = (low_ + high_) / 2u;            \
+      if (array[middle_].field <= (key))                   \
+        low_ = middle_;                                    \
+      else                                                 \
+        high_ = middle_;                                   \
+    }                                                      \
+    result = low_;                                         \
+  }
+
 uint packPixel(uint q, uint s) {
   return (q << 8) | (s & 0xFFu);
 }

@@ -8,30 +8,16 @@ layout(std430, set = 0, binding = 3) readonly buffer Draws { DrawSource draws[];
 
 // The draw that holds frame triangle t: the last whose firstTriangle <= t (t < triangleCount).
 uint drawOfTriangle(uint t) {
-  uint low = 0u;
-  uint high = frame.drawCount;  // draws[low].firstTriangle <= t < draws[high].firstTriangle
-  while (high - low > 1u) {
-    const uint middle = (low + high) / 2u;
-    if (draws[middle].firstTriangle <= t)
-      low = middle;
-    else
-      high = middle;
-  }
-  return low;
+  uint found;
+  LAST_AT_OR_BELOW(found, draws, firstTriangle, frame.drawCount, t);
+  return found;
 }
 
 // The epoch that holds job j: the last whose firstJob <= j (j < jobCount).
 uint epochOfJob(uint j) {
-  uint low = 0u;
-  uint high = frame.epochCount;
-  while (high - low > 1u) {
-    const uint middle = (low + high) / 2u;
-    if (epochs[middle].firstJob <= j)
-      low = middle;
-    else
-      high = middle;
-  }
-  return low;
+  uint found;
+  LAST_AT_OR_BELOW(found, epochs, firstJob, frame.epochCount, j);
+  return found;
 }
 
 // The block of epoch e's grid that holds pixel (x, y) (inside the grid).

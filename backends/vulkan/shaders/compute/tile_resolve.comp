@@ -18,16 +18,9 @@ layout(std430, set = 0, binding = 13) readonly buffer ResolveRanges { ResolveRan
 layout(std430, set = 0, binding = 16) readonly buffer LaterEpochs { uint laterEpochs[]; };
 
 uint rangeOfPixel(uint i) {
-  uint low = 0u;
-  uint high = frame.resolveRanges;
-  while (high - low > 1u) {
-    const uint middle = (low + high) / 2u;
-    if (ranges[middle].firstPixel <= i)
-      low = middle;
-    else
-      high = middle;
-  }
-  return low;
+  uint found;
+  LAST_AT_OR_BELOW(found, ranges, firstPixel, frame.resolveRanges, i);
+  return found;
 }
 
 void main() {

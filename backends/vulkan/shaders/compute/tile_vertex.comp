@@ -32,16 +32,9 @@ double T(int k) {
 
 // The job that holds frame vertex i: the last whose firstVertex <= i.
 uint jobOfVertex(uint i) {
-  uint low = 0u;
-  uint high = frame.vertexJobs;
-  while (high - low > 1u) {
-    const uint middle = (low + high) / 2u;
-    if (vertexJobs[middle].firstVertex <= i)
-      low = middle;
-    else
-      high = middle;
-  }
-  return low;
+  uint found;
+  LAST_AT_OR_BELOW(found, vertexJobs, firstVertex, frame.vertexJobs, i);
+  return found;
 }
 
 // a / b rounded to nearest even, the sign of a zero quotient kept (a zero numerator's sign
