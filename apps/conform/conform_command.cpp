@@ -12,10 +12,12 @@
 
 #include "cli/device_option.hpp"
 #include "output/atomic_file.hpp"
+#include "recode/conformance/backend.hpp"
 #include "recode/conformance/process_backend.hpp"
 #include "recode/conformance/reduce.hpp"
 #include "recode/conformance/report.hpp"
 #include "recode/conformance/suite.hpp"
+#include "recode/raster/golden.hpp"
 
 namespace recode::app {
 
@@ -32,7 +34,7 @@ struct ConformOptions {
   std::uint64_t seed = 1;
   double timeout = 60.0;
   std::string shard;
-  std::string baseline;
+  std::string baseline, writeBaseline;
   std::string junit, html, reduceDir;
   int repeat = 1;
   std::size_t explain = 4;
@@ -53,6 +55,20 @@ std::pair<int, int> parseShard(const std::string& text) {
     throw std::runtime_error("--shard " + text + ": expected I/N with 0 <= I < N, e.g. 0/4");
   }
   return {index, count};
+}
+
+// Runs `read` (a library call that reads a file or directory); its std::runtime_error is
+// rethrown under `option`, the flag that named the path. A malformed vector's error, which names
+// its file, propagates as it is.
+template <typename Read>
+auto underOption(const char* option, Read read) -> decltype(read()) {
+  try {
+    return read();
+  } catch (const raster::FormatError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string(option) + " " + e.what());
+  }
 }
 
 std::unique_ptr<Backend> makeBackend(const ConformOptions& o) {
@@ -100,9 +116,38 @@ void reduceFirstFailure(const SuiteReport& report, const std::vector<SuiteVector
   out << "--reduce: nothing failed, nothing to reduce\n";
 }
 
+// The reports CI reads: the JSON on stdout (--json), the JUnit and HTML files.
+void writeReports(const ConformOptions& o, const SuiteReport& report) {
+  if (o.json) {
+    // Which back end ran: the registry's device, or the command.
+    std::cout << toJson(report,
+                        {{o.exec.empty() ? "device" : "exec", o.exec.empty() ? o.device : o.exec}});
+  }
+  if (!o.junit.empty())
+    output::writeFileAtomically(o.junit, toJunit(report), "--junit");
+  if (!o.html.empty())
+    output::writeFileAtomically(o.html, toHtml(report), "--html");
+}
+
+// The back end, started; one that breaks the protocol at its greeting still gets the reports
+// (the error, its kind, no vectors) before the error ends the command.
+std::unique_ptr<Backend> startBackend(const ConformOptions& o) {
+  try {
+    return makeBackend(o);
+  } catch (const BackendError& e) {
+    SuiteReport report;
+    report.backend = o.exec;
+    report.error = e.what();
+    report.errorKind = e.kind();
+    writeReports(o, report);
+    throw;
+  }
+}
+
 int runConform(const ConformOptions& o) {
   std::vector<SuiteVector> vectors =
-      o.random > 0 ? randomVectors(o.random, o.seed) : goldenVectors(o.golden);
+      o.random > 0 ? randomVectors(o.random, o.seed)
+                   : underOption("--golden", [&] { return goldenVectors(o.golden); });
   if (!o.shard.empty()) {
     const auto [index, count] = parseShard(o.shard);
     vectors = shardOf(vectors, index, count);
@@ -112,9 +157,9 @@ int runConform(const ConformOptions& o) {
   options.stopAtFirstFailure = o.random > 0;
   options.explainLimit = o.json || !o.html.empty() ? 4096 : o.explain;
   if (!o.baseline.empty())
-    options.baseline = readBaseline(o.baseline);
+    options.baseline = underOption("--baseline", [&] { return readBaseline(o.baseline); });
 
-  const std::unique_ptr<Backend> backend = makeBackend(o);
+  const std::unique_ptr<Backend> backend = startBackend(o);
   const std::string source =
       o.random > 0 ? std::to_string(o.random) + " random streams of seed " + std::to_string(o.seed)
                    : std::to_string(vectors.size()) + " golden vectors under " + o.golden;
@@ -138,21 +183,19 @@ int runConform(const ConformOptions& o) {
     }
     std::cout << '\n';
   }
-  if (o.json) {
-    // Which back end ran: the registry's device, or the command.
-    std::cout << toJson(report,
-                        {{o.exec.empty() ? "device" : "exec", o.exec.empty() ? o.device : o.exec}});
-  } else {
+  if (!o.json)
     printSummary(std::cout, report);
-  }
-  if (!o.junit.empty())
-    output::writeFileAtomically(o.junit, toJunit(report), "--junit");
-  if (!o.html.empty())
-    output::writeFileAtomically(o.html, toHtml(report), "--html");
+  writeReports(o, report);
   if (!report.error.empty()) {
     if (o.json)
       std::cerr << "recode conform: error: " << report.error << '\n';
     return 1;
+  }
+  if (!o.writeBaseline.empty()) {
+    output::writeFileAtomically(o.writeBaseline, toBaseline(report), "--write-baseline");
+    const int listed = report.count(Status::Failed) + report.count(Status::ExpectedFailure);
+    (o.json ? std::cerr : std::cout)
+        << "baseline written to " << o.writeBaseline << ": " << listed << " expected failures\n";
   }
   if (!o.reduceDir.empty())
     reduceFirstFailure(report, vectors, *backend, o.reduceDir, o.json ? std::cerr : std::cout);
@@ -168,12 +211,19 @@ void addConformCommand(CLI::App& app, int& exitCode) {
       "Run the conformance suite on a back end: a device of this build (--device) or a program "
       "in any language speaking the recode-conform-1 line protocol (--exec, docs/conformance.md). "
       "Every depth and stencil value is compared; each failure is explained pixel by pixel and "
-      "named. Exit 0: all passed; 2: a vector failed; 1: an error");
+      "named. Exit 0: all passed (or failed as the baseline expects); 2: a vector failed; 1: an "
+      "error (a back end that crashed, timed out, flooded its answer or broke the protocol: "
+      "--json and --junit carry the kind)");
   CLI::Option* device = addDeviceOption(*cmd, o->device, "the device");
   cmd->add_option("--exec", o->exec,
                   "run this command (with /bin/sh -c) as the back end, over the line protocol "
                   "of docs/conformance.md")
-      ->excludes(device);
+      ->excludes(device)
+      ->check(CLI::Validator(
+          [](const std::string& command) {
+            return command.empty() ? std::string("the command is empty") : std::string();
+          },
+          "COMMAND"));
   CLI::Option* golden =
       cmd->add_option("--golden", o->golden, "directory searched recursively for *.json vectors")
           ->capture_default_str();
@@ -185,13 +235,18 @@ void addConformCommand(CLI::App& app, int& exitCode) {
           ->excludes(golden);
   cmd->add_option("--seed", o->seed, "seed of --random")->capture_default_str()->needs(random);
   cmd->add_option("--timeout", o->timeout,
-                  "seconds --exec's back end may take per answer before the run ends")
+                  "seconds --exec's back end may take per answer before the run ends (the kind "
+                  "\"timed out\")")
       ->check(CLI::Range(0.001, 86400.0))
       ->capture_default_str();
   cmd->add_option("--shard", o->shard, "run only shard I of N (0-based: every Nth vector from I)");
   cmd->add_option("--baseline", o->baseline,
-                  "file of vector names expected to fail (one per line, # comments): they do "
-                  "not fail the run, and one that passes does");
+                  "file of expected failures, one NAME,STAGE a line (kit/slivers_3.json,coverage; "
+                  "# comments): a vector that fails at its listed stage does not fail the run; "
+                  "one that fails at another stage, or passes, does");
+  cmd->add_option("--write-baseline", o->writeBaseline,
+                  "write this run's failures with their stages to this file, as --baseline reads "
+                  "it (not written when the run ends in an error)");
   cmd->add_option("--repeat", o->repeat,
                   "run every vector this many times (a failing one always twice): different "
                   "answers mark it nondeterministic")

@@ -7,6 +7,20 @@
 
 namespace recode::conformance {
 
+std::string_view toString(BackendFailure f) {
+  switch (f) {
+    case BackendFailure::Crashed:
+      return "crashed";
+    case BackendFailure::TimedOut:
+      return "timed out";
+    case BackendFailure::Flooded:
+      return "flooded";
+    case BackendFailure::Malformed:
+      return "malformed";
+  }
+  return "?";
+}
+
 DeviceBackend::DeviceBackend(std::string name, DeviceFactory factory)
     : name_(std::move(name)), factory_(std::move(factory)) {}
 

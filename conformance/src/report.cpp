@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "report_assets.hpp"
+
 namespace recode::conformance {
 
 namespace {
@@ -68,6 +70,15 @@ void indented(std::ostream& out, const std::string& text, const std::string& pad
     out << pad << line << '\n';
 }
 
+// " (baseline expects coverage, now depth test)" for a failure at another stage than the
+// baseline's; empty otherwise.
+std::string baselineNote(const VectorReport& v) {
+  if (v.status != Status::Failed || !v.baselineStage || !v.stage)
+    return {};
+  return " (baseline expects " + std::string(toString(*v.baselineStage)) + ", now " +
+         std::string(toString(*v.stage)) + ")";
+}
+
 std::map<Stage, int> stageCounts(const SuiteReport& report) {
   std::map<Stage, int> counts;
   for (const VectorReport& v : report.vectors) {
@@ -80,7 +91,7 @@ std::map<Stage, int> stageCounts(const SuiteReport& report) {
 }  // namespace
 
 void printVectorLine(std::ostream& out, const VectorReport& v) {
-  out << "  " << toString(v.status) << "  " << v.name;
+  out << "  " << toString(v.status) << "  " << v.name << baselineNote(v);
   if (v.status == Status::UnexpectedPass)
     out << ": passes, but the baseline lists it as failing (remove it from the baseline)";
   if (v.status == Status::Nondeterministic)
@@ -146,6 +157,8 @@ std::string verdict(const SuiteReport& report) {
 void printSummary(std::ostream& out, const SuiteReport& report) {
   out << report.vectors.size() << " vectors: " << report.count(Status::Passed) << " passed, "
       << report.count(Status::Failed) << " failed";
+  if (const int n = report.changedStages(); n > 0)
+    out << " (" << n << " at another stage than the baseline's)";
   if (const int n = report.count(Status::ExpectedFailure); n > 0)
     out << ", " << n << " expected failures";
   if (const int n = report.count(Status::UnexpectedPass); n > 0)
@@ -155,8 +168,12 @@ void printSummary(std::ostream& out, const SuiteReport& report) {
   out << '\n';
   if (const std::string v = verdict(report); !v.empty())
     out << v << '\n';
-  if (!report.error.empty())
-    out << "recode conform: error: " << report.error << '\n';
+  if (!report.error.empty()) {
+    out << "error";
+    if (report.errorKind)
+      out << " (" << toString(*report.errorKind) << ")";
+    out << ": " << report.error << '\n';
+  }
 }
 
 namespace {
@@ -241,6 +258,8 @@ json vectorJson(const VectorReport& v) {
     j["api_latitudes"] = {{"depth", v.requirement->depth.latitudes},
                           {"stencil", v.requirement->stencil.latitudes}};
   }
+  if (v.baselineStage)
+    j["baseline_stage"] = toString(*v.baselineStage);
   if (!v.stage)
     return j;
   j["stage"] = toString(*v.stage);
@@ -334,8 +353,13 @@ std::string toJson(const SuiteReport& report,
             {"behaves_like", readings},
             {"verdict", verdict(report)},
             {"results", list}};
-  if (!report.error.empty())
+  if (!report.error.empty()) {
     j["error"] = report.error;
+    if (report.errorKind)
+      j["error_kind"] = toString(*report.errorKind);
+    if (!report.errorVector.empty())
+      j["error_vector"] = report.errorVector;
+  }
   for (const auto& [key, value] : fields)
     j[key] = value;
   return j.dump(1) + "\n";
@@ -364,8 +388,8 @@ std::string toJunit(const SuiteReport& report) {
         continue;
       case Status::Failed:
         o << ">\n  <failure message=\""
-          << xmlEscaped(stage + ": " + std::string(contractSection(*v.stage))) << "\">" << text
-          << "</failure>\n";
+          << xmlEscaped(stage + ": " + std::string(contractSection(*v.stage)) + baselineNote(v))
+          << "\">" << text << "</failure>\n";
         break;
       case Status::ExpectedFailure:
         o << ">\n  <skipped message=\"expected failure (baseline)\">" << text << "</skipped>\n";
@@ -380,9 +404,15 @@ std::string toJunit(const SuiteReport& report) {
     }
     o << " </testcase>\n";
   }
+  // The run's error is the test case of the vector the back end broke on (or "back end" when it
+  // broke before any), typed by how it broke.
   if (!report.error.empty()) {
-    o << " <testcase classname=\"recode.conform\" name=\"back end\">\n  <error message=\""
-      << xmlEscaped(report.error.substr(0, report.error.find('\n'))) << "\">"
+    o << " <testcase classname=\"recode.conform\" name=\""
+      << xmlEscaped(report.errorVector.empty() ? "back end" : report.errorVector)
+      << "\">\n  <error";
+    if (report.errorKind)
+      o << " type=\"" << toString(*report.errorKind) << "\"";
+    o << " message=\"" << xmlEscaped(report.error.substr(0, report.error.find('\n'))) << "\">"
       << xmlEscaped(report.error) << "</error>\n </testcase>\n";
   }
   o << "</testsuite>\n</testsuites>\n";
@@ -390,6 +420,9 @@ std::string toJunit(const SuiteReport& report) {
 }
 
 namespace {
+
+// The colour of a bad pixel that was not explained.
+constexpr const char* kUnexplainedColour = "#bbbbbb";
 
 // One colour per stage, for the error masks and their legend.
 const char* stageColour(Stage s) {
@@ -406,7 +439,7 @@ std::string errorMask(const VectorReport& v) {
   std::map<std::pair<int, int>, Stage> stages;
   for (const PixelExplanation& e : v.explained)
     stages[{e.pixel.x, e.pixel.y}] = e.stage;
-  constexpr int kUnexplained = 8;
+  constexpr int kUnexplained = static_cast<int>(Stage::Clear) + 1;  // after every stage
   std::ostringstream runs;
   int current = -1;
   long long length = 0, at = 0;
@@ -439,28 +472,13 @@ std::string errorMask(const VectorReport& v) {
   return o.str();
 }
 
-// Paints every mask: white for good pixels, the stage's colour for bad ones, bottom row last.
-std::string maskScript() {
+// The colours the page's script paints the masks with: the stages' in order, then the
+// unexplained pixels'.
+std::string maskColours() {
   std::string colours;
   for (int s = 0; s <= static_cast<int>(Stage::Clear); ++s)
-    colours += std::string(s == 0 ? "" : ",") + "'" + stageColour(static_cast<Stage>(s)) + "'";
-  return "<script>\nconst colours = [" + colours +
-         ", '#bbbbbb'];\n"
-         "for (const c of document.querySelectorAll('canvas.mask')) {\n"
-         "  const g = c.getContext('2d'), w = c.width, h = c.height;\n"
-         "  g.fillStyle = '#fff'; g.fillRect(0, 0, w, h);\n"
-         "  let i = 0;\n"
-         "  for (const run of c.dataset.runs.trim().split(' ')) {\n"
-         "    if (!run) continue;\n"
-         "    const [code, n] = run.split(':').map(Number);\n"
-         "    if (code >= 0) {\n"
-         "      g.fillStyle = colours[code];\n"
-         "      for (let k = i; k < i + n; ++k) g.fillRect(k % w, h - 1 - Math.floor(k / w), 1, "
-         "1);\n"
-         "    }\n"
-         "    i += n;\n"
-         "  }\n"
-         "}\n</script>\n";
+    colours += std::string(stageColour(static_cast<Stage>(s))) + " ";
+  return colours + kUnexplainedColour;
 }
 
 }  // namespace
@@ -470,11 +488,8 @@ std::string toHtml(const SuiteReport& report) {
   constexpr std::size_t kHtmlHistories = 16;
   std::ostringstream o;
   o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>recode conform: "
-    << xmlEscaped(report.backend) << "</title>\n<style>body{font:14px sans-serif;margin:2em}"
-    << "pre{background:#f4f4f4;padding:.5em;white-space:pre-wrap}.pass{color:#2ca02c}"
-    << ".FAIL,.NONDETERMINISTIC,.UNEXPECTED{color:#d62728}.key span{display:inline-block;"
-    << "width:1em;height:1em;margin:0 .3em 0 1em;vertical-align:middle}"
-    << "canvas{image-rendering:pixelated;border:1px solid #ccc}</style></head><body>\n"
+    << xmlEscaped(report.backend) << "</title>\n<style>\n"
+    << kReportCss << "</style></head>\n<body data-stage-colours=\"" << maskColours() << "\">\n"
     << "<h1>recode conform: " << xmlEscaped(report.backend) << "</h1>\n<pre>";
   {
     std::ostringstream summary;
@@ -486,7 +501,7 @@ std::string toHtml(const SuiteReport& report) {
     o << "<span style=\"background:" << stageColour(static_cast<Stage>(s)) << "\"></span>"
       << toString(static_cast<Stage>(s));
   }
-  o << "<span style=\"background:#bbbbbb\"></span>not explained</p>\n";
+  o << "<span style=\"background:" << kUnexplainedColour << "\"></span>not explained</p>\n";
   for (const VectorReport& v : report.vectors) {
     if (!v.stage && v.status == Status::Passed)
       continue;
@@ -502,7 +517,7 @@ std::string toHtml(const SuiteReport& report) {
     if (v.status == Status::Passed)
       o << "<span class=\"pass\">" << xmlEscaped(v.name) << "</span> ";
   }
-  o << "</p>\n" << maskScript() << "</body></html>\n";
+  o << "</p>\n<script>\n" << kReportJs << "</script>\n</body></html>\n";
   return o.str();
 }
 

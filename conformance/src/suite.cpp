@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "recode/io/printable.hpp"
 #include "recode/kit/generator.hpp"
 
 namespace recode::conformance {
@@ -13,7 +14,7 @@ namespace fs = std::filesystem;
 
 std::vector<SuiteVector> goldenVectors(const fs::path& dir) {
   if (!fs::is_directory(dir))
-    throw std::runtime_error("--golden " + dir.string() + ": not a directory");
+    throw std::runtime_error(dir.string() + ": not a directory");
   std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (entry.is_regular_file() && entry.path().extension() == ".json")
@@ -21,7 +22,7 @@ std::vector<SuiteVector> goldenVectors(const fs::path& dir) {
   }
   std::sort(files.begin(), files.end());
   if (files.empty())
-    throw std::runtime_error("--golden " + dir.string() + ": no golden vectors (*.json)");
+    throw std::runtime_error(dir.string() + ": no golden vectors (*.json)");
   std::vector<SuiteVector> out;
   for (const fs::path& f : files)
     out.push_back({fs::relative(f, dir).generic_string(), raster::readGolden(f)});
@@ -30,7 +31,7 @@ std::vector<SuiteVector> goldenVectors(const fs::path& dir) {
 
 std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed) {
   if (count < 1)
-    throw std::invalid_argument("--random: expected at least 1 stream, got " +
+    throw std::invalid_argument("random streams: expected at least 1, got " +
                                 std::to_string(count));
   std::vector<SuiteVector> out;
   for (int i = 0; i < count; ++i) {
@@ -42,8 +43,8 @@ std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed) {
 
 std::vector<SuiteVector> shardOf(const std::vector<SuiteVector>& all, int index, int count) {
   if (count < 1 || index < 0 || index >= count) {
-    throw std::invalid_argument("--shard " + std::to_string(index) + "/" + std::to_string(count) +
-                                ": expected I/N with 0 <= I < N");
+    throw std::invalid_argument("shard " + std::to_string(index) + " of " + std::to_string(count) +
+                                ": expected 0 <= index < count");
   }
   std::vector<SuiteVector> out;
   for (std::size_t i = static_cast<std::size_t>(index); i < all.size();
@@ -52,20 +53,76 @@ std::vector<SuiteVector> shardOf(const std::vector<SuiteVector>& all, int index,
   return out;
 }
 
-std::set<std::string> readBaseline(const fs::path& file) {
+namespace {
+
+// Every stage, in the order of the enumeration (toString gives "?" past its last one).
+std::vector<Stage> allStages() {
+  std::vector<Stage> stages;
+  for (int s = 0; s < 64 && toString(static_cast<Stage>(s)) != "?"; ++s)
+    stages.push_back(static_cast<Stage>(s));
+  return stages;
+}
+
+std::string stageList() {
+  std::string list;
+  for (const Stage s : allStages())
+    list += (list.empty() ? "" : ", ") + std::string(toString(s));
+  return list;
+}
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos)
+    return {};
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+}  // namespace
+
+Baseline readBaseline(const fs::path& file) {
   std::ifstream in(file);
   if (!in)
-    throw std::runtime_error("--baseline " + file.string() + ": cannot be read");
-  std::set<std::string> names;
+    throw std::runtime_error(file.string() + ": cannot be read");
+  Baseline baseline;
   std::string line;
-  while (std::getline(in, line)) {
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#')
+  for (int number = 1; std::getline(in, line); ++number) {
+    const std::string text = trimmed(line);
+    if (text.empty() || text.front() == '#')
       continue;
-    const auto last = line.find_last_not_of(" \t\r");
-    names.insert(line.substr(first, last - first + 1));
+    const std::string where = file.string() + ":" + std::to_string(number) + ": ";
+    const auto comma = text.rfind(',');
+    if (comma == std::string::npos) {
+      throw std::runtime_error(where + "\"" + io::printable(text) +
+                               "\" has no stage: expected NAME,STAGE (e.g. "
+                               "kit/slivers_3.json,coverage), the stage one of " +
+                               stageList());
+    }
+    const std::string name = trimmed(text.substr(0, comma));
+    const std::string stageText = trimmed(text.substr(comma + 1));
+    const std::vector<Stage> stages = allStages();
+    const auto stage = std::find_if(stages.begin(), stages.end(),
+                                    [&](Stage s) { return toString(s) == stageText; });
+    if (name.empty())
+      throw std::runtime_error(where + "no vector name before the comma: expected NAME,STAGE");
+    if (stage == stages.end()) {
+      throw std::runtime_error(where + "unknown stage \"" + io::printable(stageText) +
+                               "\" (stages: " + stageList() + ")");
+    }
+    if (!baseline.emplace(name, *stage).second)
+      throw std::runtime_error(where + "\"" + io::printable(name) + "\" is listed twice");
   }
-  return names;
+  return baseline;
+}
+
+std::string toBaseline(const SuiteReport& report) {
+  std::string text = "# Expected failures of " + io::printable(report.backend) +
+                     ": NAME,STAGE, one a line (recode conform's baseline).\n";
+  for (const VectorReport& v : report.vectors) {
+    if ((v.status == Status::Failed || v.status == Status::ExpectedFailure) && v.stage)
+      text += v.name + "," + std::string(toString(*v.stage)) + "\n";
+  }
+  return text;
 }
 
 std::string_view toString(Status s) {
@@ -93,12 +150,29 @@ int SuiteReport::count(Status s) const {
                                         [s](const VectorReport& v) { return v.status == s; }));
 }
 
+int SuiteReport::changedStages() const {
+  return static_cast<int>(std::count_if(vectors.begin(), vectors.end(), [](const VectorReport& v) {
+    return v.status == Status::Failed && v.baselineStage.has_value();
+  }));
+}
+
 bool SuiteReport::passed() const {
   return error.empty() && std::none_of(vectors.begin(), vectors.end(),
                                        [](const VectorReport& v) { return failsRun(v.status); });
 }
 
 namespace {
+
+// A vector's status from its runs and the baseline: a failure is expected only at the stage the
+// baseline lists it with.
+Status statusOf(bool fails, bool differentRuns, const std::optional<Stage>& stage,
+                const std::optional<Stage>& expected) {
+  if (differentRuns)
+    return Status::Nondeterministic;
+  if (fails)
+    return expected && stage == expected ? Status::ExpectedFailure : Status::Failed;
+  return expected ? Status::UnexpectedPass : Status::Passed;
+}
 
 Answer expectedOf(const raster::GoldenVector& g) {
   return {g.depth, g.stencil, {}};
@@ -180,20 +254,18 @@ SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
         differentRuns = !(backend.run(v.golden.stream) == got);
     } catch (const BackendError& e) {
       report.error = v.name + ": " + e.what();
+      report.errorKind = e.kind();
+      report.errorVector = v.name;
       break;
     }
     const bool fails = !(got == expected);
-    const bool listed = options.baseline.count(v.name) > 0;
-    if (differentRuns)
-      r.status = Status::Nondeterministic;
-    else if (fails)
-      r.status = listed ? Status::ExpectedFailure : Status::Failed;
-    else
-      r.status = listed ? Status::UnexpectedPass : Status::Passed;
+    if (const auto listed = options.baseline.find(v.name); listed != options.baseline.end())
+      r.baselineStage = listed->second;
     if (options.classify)
       r.requirement = requirementOf(v.golden.stream, expected);
     if (fails)
       explainFailure(v, expected, got, options, r);
+    r.status = statusOf(fails, differentRuns, r.stage, r.baselineStage);
     if (onVector)
       onVector(r);
     report.vectors.push_back(std::move(r));
@@ -218,6 +290,7 @@ SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
       r.stage = stageOf(named);
       for (PixelExplanation& e : r.explained)
         attributeToReading(e, named);
+      r.status = statusOf(true, false, r.stage, r.baselineStage);
     }
   }
   return report;

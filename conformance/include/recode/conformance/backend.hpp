@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "recode/kit/variants.hpp"
@@ -29,11 +30,29 @@ struct Answer {
   friend bool operator==(const Answer&, const Answer&) = default;
 };
 
+// How a back end broke its side of the protocol, for the reports that CI reads (JUnit's error
+// type, the JSON's "error_kind").
+enum class BackendFailure {
+  Crashed,    // it exited, or was killed by a signal, before it answered
+  TimedOut,   // no answer within the timeout
+  Flooded,    // an answer longer than its bound
+  Malformed,  // an answer that is not JSON or breaks the protocol's rules
+};
+// "crashed", "timed out", "flooded", "malformed".
+[[nodiscard]] std::string_view toString(BackendFailure f);
+
 // The back end broke its side of the protocol (crashed, hung, flooded, answered garbage): an
 // error of the run, not a failing vector.
 class BackendError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  // `what`: the message, naming what the back end did.
+  BackendError(BackendFailure kind, const std::string& what)
+      : std::runtime_error(what), kind_(kind) {}
+  // How it broke.
+  [[nodiscard]] BackendFailure kind() const { return kind_; }
+
+ private:
+  BackendFailure kind_;
 };
 
 class Backend {

@@ -1,15 +1,16 @@
 #pragma once
 // The conformance suite run on one back end: golden vectors (files) or random streams (the
 // kit's families without their filter), sharded for CI, each vector run, compared, its bad
-// pixels explained (diagnosis.hpp), failures held to a baseline of expected ones, a vector whose
-// two runs differ marked nondeterministic, and the whole run's failures matched against the
-// kit's wrong readings to name what the back end behaves like.
+// pixels explained (diagnosis.hpp), failures held to a baseline of expected ones (each with the
+// stage it fails at), a vector whose two runs differ marked nondeterministic, and the whole
+// run's failures matched against the kit's wrong readings to name what the back end behaves
+// like.
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -38,14 +39,22 @@ struct SuiteVector {
 [[nodiscard]] std::vector<SuiteVector> shardOf(const std::vector<SuiteVector>& all, int index,
                                                int count);
 
-// A baseline: names of vectors expected to fail, one per line; blank lines and lines starting
-// with '#' are ignored. Throws std::runtime_error naming the file when it cannot be read.
-[[nodiscard]] std::set<std::string> readBaseline(const std::filesystem::path& file);
+// A baseline: the vectors expected to fail, each with the stage it fails at (as a CI baseline
+// records each expected failure's status): a vector that fails at another stage is not
+// expected.
+using Baseline = std::map<std::string, Stage>;
+
+// Reads a baseline file: one `NAME,STAGE` a line (the name as the report gives it, the stage as
+// toString(Stage) spells it: `kit/slivers_3.json,coverage`; the name ends at the last comma);
+// blank lines and lines starting with '#' are ignored. Throws std::runtime_error naming the
+// file (and the line: "FILE:LINE: ...") when it cannot be read, a line has no stage or an
+// unknown one, or a name is listed twice.
+[[nodiscard]] Baseline readBaseline(const std::filesystem::path& file);
 
 enum class Status {
   Passed,
-  Failed,
-  ExpectedFailure,   // failed, and listed in the baseline
+  Failed,            // failed, and not listed in the baseline or listed with another stage
+  ExpectedFailure,   // failed at the stage the baseline lists it with
   UnexpectedPass,    // passed, but listed in the baseline
   Nondeterministic,  // two runs of the vector gave different answers
 };
@@ -64,6 +73,7 @@ struct VectorReport {
   std::vector<PixelExplanation> explained;  // the first explainLimit of them
   std::optional<Stage> stage;               // where a failing answer first departs
   std::optional<Requirement> requirement;   // for failing vectors
+  std::optional<Stage> baselineStage;       // the stage the baseline lists it with, if it does
   double seconds = 0.0;                     // the back end's time on the vector
 };
 
@@ -73,8 +83,8 @@ struct SuiteOptions {
   std::size_t explainLimit = 64;
   bool classify = true;  // say for each vector whether the graphics APIs require its answer
   int repeat = 1;        // runs of every vector (a failing one is always run twice)
-  std::set<std::string> baseline;
-  bool stopAtFirstFailure = false;  // --random: stop at the first failing stream
+  Baseline baseline;     // the expected failures
+  bool stopAtFirstFailure = false;  // stop at the first failing vector (random streams)
   bool nameReadings = true;         // match the failures against the kit's wrong readings
 };
 
@@ -84,15 +94,27 @@ struct SuiteReport {
   // Wrong readings whose answers equal the back end's on every vector run (empty when all
   // passed or when none matches).
   std::vector<kit::Variant> behavesLike;
-  std::string error;  // a BackendError that ended the run (its vector is the last one)
+  std::string error;  // a BackendError that ended the run, prefixed with its vector's name
+  std::optional<BackendFailure> errorKind;  // how the back end broke, with `error`
+  std::string errorVector;  // the vector it broke on; empty when it broke before any vector
   [[nodiscard]] int count(Status s) const;
   [[nodiscard]] bool passed() const;  // no error and no status that fails the run
+  // Failed vectors that the baseline lists with another stage.
+  [[nodiscard]] int changedStages() const;
 };
 
 // Runs the suite; `onVector` (optional) sees each vector's report as soon as it is ready. A
-// BackendError ends the run: it is kept in `error` and the report so far returned.
+// BackendError ends the run: it is kept in `error` and the report so far returned. When the run
+// names a reading the back end behaves like, that reading decides the failing vectors' stages
+// and their statuses against the baseline are decided again: a status `onVector` saw may
+// change (the report returned is final).
 [[nodiscard]] SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
                                    const SuiteOptions& options,
                                    const std::function<void(const VectorReport&)>& onVector = {});
+
+// The baseline of a finished run, in readBaseline's format: every vector that failed (expected
+// or not) with its stage, under a comment naming the back end; a nondeterministic vector is
+// left out (no baseline makes it pass).
+[[nodiscard]] std::string toBaseline(const SuiteReport& report);
 
 }  // namespace recode::conformance
