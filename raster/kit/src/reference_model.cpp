@@ -130,6 +130,24 @@ void ReferenceModel::run(const std::vector<Command>& commands) {
   }
 }
 
+namespace {
+
+// A 24.8 coordinate on a sub-pixel variant's coarser grid (the contract's 8 bits otherwise).
+long long toSubPixelGrid(long long v, Variant variant) {
+  switch (variant) {
+    case Variant::SubPixel4Nearest:
+      return 16 * static_cast<long long>(std::nearbyint(static_cast<double>(v) / 16.0));
+    case Variant::SubPixel4Floor:
+      return 16 * static_cast<long long>(std::floor(static_cast<double>(v) / 16.0));
+    case Variant::SubPixel6Nearest:
+      return 4 * static_cast<long long>(std::nearbyint(static_cast<double>(v) / 4.0));
+    default:
+      return v;
+  }
+}
+
+}  // namespace
+
 void ReferenceModel::draw(const cmd::Draw& d) {
   if (variant_ == Variant::StrictLimits) {
     for (std::uint32_t i : d.indices) {
@@ -142,8 +160,10 @@ void ReferenceModel::draw(const cmd::Draw& d) {
     Triangle tri;
     for (int k = 0; k < 3; ++k) {
       const WindowVertex& v = d.vertices[d.indices[t + static_cast<std::size_t>(k)]];
-      tri.X[k] = static_cast<long long>(std::nearbyint(static_cast<double>(v.x) * 256.0));
-      tri.Y[k] = static_cast<long long>(std::nearbyint(static_cast<double>(v.y) * 256.0));
+      tri.X[k] = toSubPixelGrid(
+          static_cast<long long>(std::nearbyint(static_cast<double>(v.x) * 256.0)), variant_);
+      tri.Y[k] = toSubPixelGrid(
+          static_cast<long long>(std::nearbyint(static_cast<double>(v.y) * 256.0)), variant_);
       tri.Z[k] = v.z;
     }
     drawTriangle(tri);

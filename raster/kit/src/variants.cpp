@@ -109,14 +109,30 @@ constexpr bool inEnumerationOrder() {
 static_assert(inEnumerationOrder() &&
               static_cast<int>(Variant::StrictLimits) == static_cast<int>(kWrong.size()));
 
+constexpr std::array<VariantInfo, 3> kSubPixel = {{
+    {Variant::SubPixel4Nearest, "subpixel_4_nearest",
+     "vertices rounded to 4 sub-pixel bits (1/16 pixel), ties to even"},
+    {Variant::SubPixel4Floor, "subpixel_4_floor", "vertices rounded down to 4 sub-pixel bits"},
+    {Variant::SubPixel6Nearest, "subpixel_6_nearest",
+     "vertices rounded to 6 sub-pixel bits (1/64 pixel), ties to even"},
+}};
+
 }  // namespace
 
 std::span<const VariantInfo> wrongVariants() {
   return kWrong;
 }
 
+std::span<const VariantInfo> subPixelVariants() {
+  return kSubPixel;
+}
+
 std::string_view variantName(Variant v) {
   for (const VariantInfo& info : kWrong) {
+    if (info.variant == v)
+      return info.name;
+  }
+  for (const VariantInfo& info : kSubPixel) {
     if (info.variant == v)
       return info.name;
   }

@@ -83,6 +83,11 @@ enum class Variant {
   ClearIgnoresScissor,           // clears fill the whole framebuffer
   SwappedFacing,                 // clockwise triangles taken as front-facing
   StrictLimits,  // validation refuses the limit values |x| or |y| = 32768 and z = 0 or 1
+  // Coarser sub-pixel precision, which the graphics APIs allow (at least 4 bits): not wrong
+  // readings, so the kit's vectors do not list them; subPixelVariants() lists them.
+  SubPixel4Nearest,  // vertices rounded to the 1/16-pixel grid, ties to even
+  SubPixel4Floor,    // vertices rounded down to the 1/16-pixel grid
+  SubPixel6Nearest,  // vertices rounded to the 1/64-pixel grid, ties to even
 };
 
 struct VariantInfo {
@@ -93,6 +98,10 @@ struct VariantInfo {
 
 // Every wrong variant (not Contract), in the order above.
 [[nodiscard]] std::span<const VariantInfo> wrongVariants();
+// The readings of a coarser sub-pixel grid (SubPixel4Nearest ...), which the APIs allow: kept
+// apart from wrongVariants() so that the kit's vectors and their descriptions do not change.
+[[nodiscard]] std::span<const VariantInfo> subPixelVariants();
+// The name of a wrong or sub-pixel variant; "contract" for Contract.
 [[nodiscard]] std::string_view variantName(Variant v);
 
 // The kit's promise: every wrong variant fails at least this many of its vectors.
