@@ -3,7 +3,7 @@
 // every picture (each <img> or <canvas> carries the frame rectangle it shows in data-region),
 // and describes each step at the pixel from the recorded buffers: the depth and stencil after
 // the step are the recorded values; which test passed and which stencil operation ran are read
-// off the step's state (docs/algorithm.md section 3) and the recorded values before and after.
+// off the step's state and the recorded values before and after. Needs page/common.js.
 window.recodeInspector = (function () {
   'use strict';
   let data = {steps: []};
@@ -12,22 +12,15 @@ window.recodeInspector = (function () {
   const slider = document.getElementById('step-slider');
   const stepName = document.getElementById('step-name');
   let ids = [];
-  const TITLES = {set_z: '1 SetZ', test_z: '2 TestZ', load_amin: '3 Load Amin',
-    test_amin_front: '4 B front vs Amin', test_amin_back: '5 B back vs Amin',
-    read_stencil: '6 Read stencil', contact_near: '7 Contact near', contact_far: '8 Contact far'};
+  const common = window.recodeCommon;
+  const TITLES = common.STEP_TITLES, esc = common.esc, inRect = common.inRect;
   let pixel = null;
   let pinned = false;
   let step = 0;
 
-  function inRect(r, x, y) { return x >= r[0] && x < r[2] && y >= r[1] && y < r[3]; }
-  function index(x, y) {
-    const c = data.crop;
-    return inRect(c, x, y) ? (y - c[1]) * (c[2] - c[0]) + (x - c[0]) : -1;
-  }
+  function index(x, y) { return common.cropIndex(data, x, y); }
   function norm(d) { return (d / D).toFixed(6); }
   function bin(v) { return v.toString(2).padStart(4, '0'); }
-  function esc(t) { return String(t).replace(/[&<>"]/g, function (ch) {
-    return {'&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;'}[ch]; }); }
 
   // What the step did at pixel i: [test outcome, stencil operation], HTML.
   function describe(k, i, x, y) {
@@ -225,6 +218,15 @@ window.recodeInspector = (function () {
     });
   }
 
+  // A pixel chosen by the page (an exercise's): pinned, shown and marked, whatever was pinned
+  // before; null: follow the pointer again.
+  function showPixel(p) {
+    pixel = p ? [p[0], p[1]] : null;
+    pinned = p !== null;
+    if (pixel) show();
+    markAll();
+  }
+
   // New ray data and pictures (the interactive page after every change): the step and a pixel
   // still inside the frame are kept, so that one ray can be watched while a block moves.
   function attach(newData) {
@@ -257,5 +259,6 @@ window.recodeInspector = (function () {
   });
   const inline = document.getElementById('ray-data');
   if (inline) attach(JSON.parse(inline.textContent));
-  return {attach: attach};
+  return {attach: attach, showPixel: showPixel,
+    pixel: function () { return pixel && pixel.slice(); }};
 })();

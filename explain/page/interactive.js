@@ -15,8 +15,8 @@
     box: {size: [1, 1, 1]},
     obj: {},  // a dropped OBJ file: the convex hull of its vertices
   };
-  const PLANE = {x: ['y', 'z'], y: ['z', 'x'], z: ['x', 'y']};  // image plane (u, v) per view axis
-  const AXES = ['x', 'y', 'z'];
+  const common = window.recodeCommon;
+  const PLANE = common.PLANE, AXES = common.AXES;
   const state = {
     blocks: [
       {name: 'A', shape: 'cone', sizes: {radius: 1, height: 2}, position: [0, 0, 0],
@@ -30,11 +30,11 @@
   const $ = function (id) { return document.getElementById(id); };
   let module = null, runPage = null, lastError = null;
   let dirty = true, playing = false, playDirection = 1;
-  let view3d = null, rayPixel = null, fixedRay = false;
+  let view3d = null, rayPixel = null, fixedRay = false, rayMarks = true;
   const page = window.recodePage = {ready: false, updates: 0, lastMs: 0, moduleMs: 0, times: [],
     error: null, pair: null, rayData: null, scene3d: null, sceneText: sceneText, state: state,
-    update: update, load: load, signature: signature, showRay: showRay, rayIndex: rayIndex,
-    view3d: null,
+    update: update, load: load, pose: pose, signature: signature, showRay: showRay,
+    rayIndex: rayIndex, morOf: morOf, view3d: null,
     onUpdate: [],  // functions called with the ray data after every update (page/predict.js)
     pending: function () { return dirty || drag !== null || playing; }};
 
@@ -65,16 +65,37 @@
   // What the page runs: the scene file and the options that change the answer.
   function signature() { return sceneText() + state.mor + state.boxTest; }
 
-  // Another pose and options (an exercise's): the blocks, view axis, resolution, MOR and box
-  // test; the sweep back to 0. The controls show them and the next frame runs them.
+  // The pose and options as load() takes them back (an exercise keeps the one it replaced).
+  function pose() {
+    return JSON.parse(JSON.stringify({blocks: state.blocks, axis: state.axis,
+      resolution: state.resolution, mor: state.mor, boxTest: state.boxTest, sweep: state.sweep,
+      sweepAxis: state.sweepAxis, sweepRange: state.sweepRange}));
+  }
+
+  // Another pose and options (an exercise's, or pose()'s): the blocks, view axis, resolution,
+  // MOR and box test; the sweep as given, else back to 0. The controls show them and the next
+  // frame runs them.
   function load(s) {
     if (s.blocks) state.blocks = JSON.parse(JSON.stringify(s.blocks));
-    ['axis', 'resolution', 'mor', 'boxTest'].forEach(function (k) {
+    ['axis', 'resolution', 'mor', 'boxTest', 'sweepAxis', 'sweepRange'].forEach(function (k) {
       if (s[k] !== undefined && s[k] !== null) state[k] = s[k];
     });
-    state.sweep = 0;
+    state.sweep = s.sweep || 0;
     buildControls();
     changed();
+  }
+
+  // The MOR the reference finds for this pose in `mode` (min, max or full): [x0, y0, x1, y1],
+  // or null where it is empty (the box test found the blocks apart). A run of the module of its
+  // own: the page's pictures and ray data are copies, so they stay as they are.
+  function morOf(mode) {
+    if (!module) return null;
+    module.FS.writeFile('/page/scene.json', sceneText());
+    const answer = runPage(JSON.stringify({scene: '/page/scene.json', mor: mode,
+      box_test: state.boxTest}));
+    if (!answer) throw new Error('the MOR of mode ' + mode + ': ' + lastError());
+    const m = JSON.parse(module.UTF8ToString(answer)).pair.mor;
+    return m[2] > m[0] && m[3] > m[1] ? m : null;
   }
 
   // Runs the pair on the current scene; paints what the module answers.
@@ -202,13 +223,7 @@
 
   // Where pixel (x, y) is in the ray data's per-pixel arrays (rows of the crop, bottom row
   // first), or -1 outside the crop, where the page has no data.
-  function rayIndex(x, y) {
-    const d = page.rayData;
-    if (!d) return -1;
-    const c = d.crop;
-    const inCrop = x >= c[0] && x < c[2] && y >= c[1] && y < c[3];
-    return inCrop ? (y - c[1]) * (c[2] - c[0]) + (x - c[0]) : -1;
-  }
+  function rayIndex(x, y) { return common.cropIndex(page.rayData, x, y); }
 
   // The ray through `rayPixel` with where it enters and leaves each block: the 24-bit depths
   // the inspector shows (the reference's own face depths), so that the picture and the
@@ -218,16 +233,18 @@
     const d = page.rayData;
     if (!rayPixel || !d) { view3d.setRay(null); return; }
     const x = rayPixel[0], y = rayPixel[1];
-    const i = rayIndex(x, y);
+    const i = rayMarks ? rayIndex(x, y) : -1;
     view3d.setRay({pixel: [x, y],
       a: i >= 0 && (d.coverage[i] & 1) ? [d.a_front[i], d.a_back[i]] : null,
       b: i >= 0 && (d.coverage[i] & 2) ? [d.b_front[i], d.b_back[i]] : null});
   }
 
   // A pixel chosen by the page (an exercise), or null: the ray follows the inspector again.
-  function showRay(pixel) {
+  // marks false: the ray without its entry and exit points (an exercise that asks for them).
+  function showRay(pixel, marks) {
     fixedRay = pixel !== null;
     rayPixel = pixel;
+    rayMarks = marks !== false;
     drawRay();
   }
 
@@ -249,7 +266,7 @@
   function setUpView3d() {
     const canvas = $('view3d');
     try {
-      view3d = page.view3d = window.recodeScene3d(canvas);
+      view3d = page.view3d = window.recodeScene3d(canvas, $('view3d-scale'));
     } catch (e) {
       $('view3d-note').textContent = 'No 3-D view in this browser: ' + e.message;
       canvas.hidden = true;

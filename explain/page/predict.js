@@ -1,48 +1,35 @@
-// The interactive page's exercises ("predict" mode): the page poses two blocks, chooses a pixel
-// (or the student clicks one on the silhouettes), shows where the pixel's ray enters and leaves
-// each block, and hides every buffer. The student predicts the stencil after each of the five
-// passes and the case the read-back decodes; each answer is checked against the reference's own
-// buffers (the ray data the WebAssembly module recorded), and a wrong one names the first pass
-// whose rule was misapplied, says that rule, and shows that pass's section. Progress stays in
-// this browser (localStorage), never sent anywhere. docs/algorithm.md, section 12, lists the
-// exercises with the sections each one practises.
+// The interactive page's exercises ("predict" mode). Each poses two blocks, chooses a pixel (or
+// the student clicks one on the picture "Coverage of A and B") and hides every buffer. The
+// student answers, in order, what the exercise asks: where the pixel's ray enters and leaves
+// each block (read off the 3-D view's depth scale and the blocks' numbers, no depths given),
+// or the blocks' ranges along the view axis; which MOR modes examine the pixel; whether the
+// box test stops the pair; the stencil after each of the five passes and the case the
+// read-back decodes. Each answer is checked against the reference's own values (the ray data
+// the WebAssembly module recorded, its MOR in each mode, its box test); a wrong one names the
+// first step misapplied, says that step's rule and the student's inputs to it, and shows that
+// pass's pictures only when asked. Progress stays in this browser (localStorage), never sent
+// anywhere. Every term the exercises use links to its definition in the page's Terms.
 window.recodePredict = (function () {
   'use strict';
   const page = window.recodePage;
+  const common = window.recodeCommon;
+  const esc = common.esc, inRect = common.inRect;
   const $ = function (id) { return document.getElementById(id); };
   const STORE = 'recode.predict.v1';
   const NOT_EXAMINED = -1;  // the "case" of a pixel outside the MOR: never read back
+  const PASSES = common.PASSES, DECODE = common.READ_BACK;
+  const MODES = ['min', 'max', 'full'];
+  // How far a depth the student reads may lie from the reference's (world units along the
+  // view axis): the exercises' faces lie on round values, far more than this apart.
+  const TOLERANCE = 0.01;
+  const DEPTH_ONE = 16777215;
 
-  // The five passes a student predicts, in order, with the rule each one applies to one pixel
-  // (docs/algorithm.md, section 3) and the stencil bits it may write.
-  const PASSES = [
-    {id: 'set_z', title: '1 SetZ', rule: 'depth cleared to 0 and stencil to 0 over the MOR; ' +
-      'every fragment of A passes GEQUAL and REPLACEs the stencil with 1. So: 1 where A ' +
-      'covers the pixel, 0 where it does not (or outside the MOR: the scissor keeps every ' +
-      'pass away and the stencil stays 0).'},
-    {id: 'test_z', title: '2 TestZ', rule: 'only where A is present (stencil test 1 \u2264 ' +
-      'count), each face of B at or in front of Amax (LEQUAL) INCRements the count in bits ' +
-      '0-1. So the count becomes 1 + the number of B\u2019s two boundaries at or before ' +
-      'Amax; where A is absent nothing changes.'},
-    {id: 'load_amin', title: '3 Load Amin', rule: 'A is drawn again into depth cleared to 1, ' +
-      'leaving Amin in the depth buffer; the stencil write mask is 0, so the stencil does not ' +
-      'change at all.'},
-    {id: 'test_amin_front', title: '4 B front vs Amin', rule: 'only B\u2019s front face is ' +
-      'drawn. Where A is present it INVERTs bit 2 (value 4) when that face is at or behind ' +
-      'Amin (GEQUAL); where A is absent the stencil test fails and sfail INVERTs bit 2 anyway, ' +
-      'so bit 2 then says that B covers the pixel. No face of B: nothing changes.'},
-    {id: 'test_amin_back', title: '5 B back vs Amin', rule: 'the same for B\u2019s back face ' +
-      'and bit 3 (value 8): INVERT when it is at or behind Amin where A is present, always ' +
-      'where A is absent and B covers the pixel.'},
-  ];
-  const DECODE = {title: '6 Read stencil', rule: 'the read-back decodes the stencil (section ' +
-    '"Stencil encoding"): count 0 gives case 0 without bits 2-3, else 8; count 1 gives 1 ' +
-    'without them, else 2; count 2 gives 3 with both bits, else 4; count 3 gives 5 with both, ' +
-    '6 with one, 7 with neither. A pixel outside the MOR is not read back: not examined.'};
+  function term(id, text) { return '<a href="#' + id + '">' + text + '</a>'; }
 
   // Boxes seen along z (the viewer on +z: a larger z is nearer); A is 2 deep unless said
   // otherwise. Every exercise names the case its pixel must have, so a change to the reference
-  // that moved it would be caught by the page's test, not taught wrong.
+  // that moved it would be caught by the page's test, not taught wrong. `ask`: what the student
+  // answers, in this order (default: the passes alone, with the depths given).
   const box = function (name, size, position) {
     return {name: name, shape: 'box', sizes: {size: size}, position: position,
       rotation: [0, 0, 0], obj: null};
@@ -51,55 +38,96 @@ window.recodePredict = (function () {
   const EXERCISES = [
     {id: 'a-only', title: 'A alone on the ray', want: 1, pick: {kase: 1}, mor: 'max',
       blocks: [box('A', [3, 3, 2], [0, 0, 0]), box('B', [1, 1, 1], [0, 0, 0])],
-      intro: 'A is wider than B and the MOR is <b>max</b>, so the passes also run on the ring ' +
-        'of A around B. Only A is on this ray.', sections: [1, 2, 3, 4]},
+      intro: 'A is wider than B and the ' + term('term-mor-max', 'MOR is max') + ', so the ' +
+        'passes also run on the ring of A around B. Only A is on this ray.',
+      terms: ['term-mor-max', 'term-passes', 'term-cases']},
     {id: 'b-only', title: 'B alone on the ray', want: 8, pick: {kase: 8}, mor: 'max',
       blocks: [box('A', [1, 1, 1], [0, 0, 0]), box('B', [3, 3, 2], [0, 0, 0])],
       intro: 'Now B is the wide one: only B is on this ray. Where A is absent, the stencil ' +
         'test of passes 2, 4 and 5 fails; what does each pass do on a failed test?',
-      sections: [1, 3, 4]},
+      terms: ['term-stencil', 'term-depth-test', 'term-passes', 'term-stencil-encoding']},
     {id: 'mor-min', title: 'Outside the MOR', want: NOT_EXAMINED, pick: {outsideMor: true},
       mor: 'min', blocks: [box('A', [3, 3, 2], [0, 0, 0]), box('B', [1, 1, 1], [0, 0, 0])],
-      intro: 'The first pair again, with the MOR <b>min</b>: the overlap of the two blocks\u2019 ' +
-        'footprints. This pixel is covered by A but lies outside that rectangle.',
-      sections: [2, 3]},
+      intro: 'The first pair again, with the ' + term('term-mor-min', 'MOR min') + ': where ' +
+        'the footprints of the two blocks\u2019 ' + term('term-bounding-box', 'bounding boxes') +
+        ' overlap. This pixel is covered by A but lies outside that rectangle.',
+      terms: ['term-mor', 'term-mor-min', 'term-scissor']},
     {id: 'a-spans-b', title: 'A spans B', want: 5, pick: {kase: 5}, mor: 'min',
       blocks: [A2, box('B', [1, 1, 1], [0.3, 0.2, 0])],
-      intro: 'Both blocks on the ray, B wholly inside A\u2019s depth.', sections: [1, 3, 4]},
+      intro: 'Both blocks on the ray, B wholly inside A\u2019s depth.',
+      terms: ['term-entry-exit', 'term-passes', 'term-stencil-encoding', 'term-cases']},
     {id: 'b-spans-a', title: 'B spans A', want: 4, pick: {kase: 4}, mor: 'min',
       blocks: [A2, box('B', [1, 1, 4], [0.3, 0.2, 0])],
-      intro: 'B reaches through all of A, in front of it and behind it.', sections: [1, 3, 4]},
+      intro: 'B reaches through all of A, in front of it and behind it.',
+      terms: ['term-entry-exit', 'term-passes', 'term-stencil-encoding', 'term-cases']},
     {id: 'near-end-inside', title: 'B\u2019s near end inside A', want: 3, pick: {kase: 3},
       mor: 'min', blocks: [A2, box('B', [1, 1, 2], [0.3, 0.2, -1])],
-      intro: 'B starts inside A and leaves through A\u2019s far side.', sections: [1, 3, 4]},
+      intro: 'B starts inside A and leaves through A\u2019s far side.',
+      terms: ['term-entry-exit', 'term-passes', 'term-stencil-encoding', 'term-cases']},
     {id: 'far-end-inside', title: 'B\u2019s far end inside A', want: 6, pick: {kase: 6},
       mor: 'min', blocks: [A2, box('B', [1, 1, 2], [0.3, 0.2, 1])],
-      intro: 'B starts in front of A and ends inside it.', sections: [1, 3, 4]},
+      intro: 'B starts in front of A and ends inside it.',
+      terms: ['term-entry-exit', 'term-passes', 'term-stencil-encoding', 'term-cases']},
     {id: 'b-behind', title: 'B behind A', want: 2, pick: {kase: 2}, mor: 'min', boxTest: false,
       blocks: [box('A', [2, 2, 1], [0, 0, 0]), box('B', [1, 1, 1], [0.3, 0.2, -2])],
-      intro: 'B lies wholly behind A. The box test would stop before any pass (the depth ranges ' +
-        'do not meet); it is off here so that the passes run.', sections: [1, 2, 3, 4]},
+      intro: 'B lies wholly behind A. The ' + term('term-box-test', 'box test') + ' would stop ' +
+        'before any pass (the ranges along z do not meet); it is off here so that the passes ' +
+        'run.', terms: ['term-box-test', 'term-passes', 'term-cases']},
     {id: 'b-in-front', title: 'B in front of A', want: 7, pick: {kase: 7}, mor: 'min',
       boxTest: false,
       blocks: [box('A', [2, 2, 1], [0, 0, 0]), box('B', [1, 1, 1], [0.3, 0.2, 2])],
-      intro: 'B lies wholly in front of A, the box test off again.', sections: [1, 2, 3, 4]},
+      intro: 'B lies wholly in front of A, the ' + term('term-box-test', 'box test') +
+        ' off again.', terms: ['term-box-test', 'term-passes', 'term-cases']},
     {id: 'touching', title: 'Touching', want: 6, pick: {touching: true}, mor: 'min',
       blocks: [A2, box('B', [1, 1, 2], [0.3, 0.2, 2])],
       intro: 'B\u2019s back face lies exactly on A\u2019s front face: the two intervals share ' +
-        'one depth. Do the comparisons count equal depths?', sections: [1, 3, 4]},
+        'one depth. Do the comparisons count equal depths?',
+      terms: ['term-depth-test', 'term-interfering', 'term-cases']},
     {id: 'own-pixel', title: 'Your own pixel', want: null, pick: {own: true}, mor: null,
       blocks: null,
       intro: 'Any pose: shape and move the blocks first (or keep this one), then click a ' +
-        'pixel on the silhouettes picture below.', sections: [1, 3, 4]},
+        'pixel on the picture \u201cCoverage of A and B\u201d below.',
+      terms: ['term-pixel', 'term-passes', 'term-cases']},
+    // The geometry: no depths given, the student reads them off the blocks.
+    {id: 'read-depths', title: 'Read the depths, then the passes', want: 3, pick: {kase: 3},
+      mor: 'min', ask: ['depths', 'passes'],
+      blocks: [box('A', [2, 2, 1.5], [0, 0, 0.25]), box('B', [1, 1, 1], [0.3, 0.2, -0.75])],
+      intro: 'No depths this time: from the blocks\u2019 sizes and positions (a box of size ' +
+        '(sx, sy, sz) at (x, y, z) spans z \u2212 sz/2 to z + sz/2) and the 3-D view\u2019s ' +
+        'depth scale, say where the pixel\u2019s ray enters and leaves each block, then predict ' +
+        'the passes.', terms: ['term-entry-exit', 'term-depth', 'term-view-axis', 'term-passes',
+        'term-cases']},
+    {id: 'face-touch', title: 'Touching along a face', want: 6, pick: {touching: true},
+      mor: 'min', ask: ['depths', 'boxtest', 'passes'],
+      blocks: [A2, box('B', [1, 1, 1], [0.3, 0.2, 1.5])],
+      intro: 'B sits on A: B\u2019s bottom face lies in A\u2019s top face. Read the depths, ' +
+        'decide whether the box test lets the passes run, then predict them.',
+      terms: ['term-entry-exit', 'term-box-test', 'term-depth-test', 'term-interfering']},
+    {id: 'box-gap', title: 'The box test: apart along the axis', want: null, pick: {none: true},
+      mor: 'min', ask: ['ranges', 'boxtest'],
+      blocks: [box('A', [2, 2, 1], [0, 0, 0]), box('B', [1, 1, 1], [0.3, 0.2, -2])],
+      intro: 'Seen along z the two blocks overlap, but are they near each other in z? Give ' +
+        'each block\u2019s range along z and say whether any pass runs.',
+      terms: ['term-bounding-box', 'term-box-test', 'term-view-axis']},
+    {id: 'mor-modes', title: 'Which MOR examines it? (max)', want: NOT_EXAMINED,
+      pick: {outsideMor: true}, mor: 'min', ask: ['mor', 'passes'],
+      blocks: [box('A', [3, 3, 2], [0, 0, 0]), box('B', [1, 1, 1], [0.8, 0.8, 0])],
+      intro: 'The pixel is on A, outside the MOR of mode min that this page runs. Which of the ' +
+        'three modes examine it? Then the passes, in mode min.',
+      terms: ['term-mor', 'term-mor-min', 'term-mor-max', 'term-mor-full']},
+    {id: 'mor-full', title: 'Which MOR examines it? (full)', want: 0, pick: {outsideMax: true},
+      mor: 'full', ask: ['mor', 'passes'],
+      blocks: [box('A', [1.5, 1.5, 2], [0, 0, 0]), box('B', [1, 1, 1], [0.5, 0.4, 0])],
+      intro: 'This pixel is on neither block. Which modes examine it? Then the passes, in the ' +
+        'mode this page runs now, full.',
+      terms: ['term-mor', 'term-mor-min', 'term-mor-max', 'term-mor-full', 'term-cases']},
   ];
 
-  // docs/algorithm.md's sections an exercise practises (its table in section 12).
-  const SECTIONS = {1: 'the nine cases', 2: 'the box test and the MOR', 3: 'the passes',
-    4: 'the stencil encoding'};
-
-  let current = null;    // {exercise, pixel, index, truth, signature}
+  let current = null;    // {exercise, pixel, index, truth, signature, wrongStep}
   let pending = null;    // the exercise whose pose the page is running
   let choosing = false;  // the own-pixel exercise waits for a click
+  let saved = null;      // the pose the first exercise replaced: leaving restores it
+  let note = '';         // why an exercise was closed, shown until the next one opens
   const progress = load();
 
   function load() {
@@ -113,13 +141,7 @@ window.recodePredict = (function () {
   function save() {
     try { window.localStorage.setItem(STORE, JSON.stringify(progress)); } catch (e) { /* off */ }
   }
-
-  function esc(t) {
-    return String(t).replace(/[&<>"]/g, function (ch) {
-      return {'&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;'}[ch];
-    });
-  }
-  function inRect(r, x, y) { return r && x >= r[0] && x < r[2] && y >= r[1] && y < r[3]; }
+  function asks(e, what) { return (e.ask || ['passes']).indexOf(what) >= 0; }
 
   // --- choosing the pixel ---------------------------------------------------------------------
 
@@ -151,6 +173,13 @@ window.recodePredict = (function () {
       return pickWhere(rays, function (i, x, y) {
         return (rays.coverage[i] & 1) !== 0 && !inRect(rays.mor, x, y);
       });
+    if (pick.outsideMax) {  // on no block, two pixels or more outside the MOR of mode max
+      const m = page.morOf('max');
+      const far = m && [m[0] - 2, m[1] - 2, m[2] + 2, m[3] + 2];
+      return pickWhere(rays, function (i, x, y) {
+        return rays.coverage[i] === 0 && !inRect(far, x, y);
+      });
+    }
     if (pick.touching)  // interfering, and one block's far end is the other's near end
       return pickWhere(rays, function (i) {
         const k = rays['case'][i];
@@ -160,79 +189,289 @@ window.recodePredict = (function () {
     return null;
   }
 
-  // The reference's answers at crop index i: the stencil after each pass and the case.
-  function truthAt(rays, i) {
-    const ids = rays.steps.map(function (s) { return s.id; });
-    const stencil = PASSES.map(function (p) {
-      const k = ids.indexOf(p.id);
-      return k < 0 ? 0 : rays.stencil[k][i];  // a pass that did not run left the clear, 0
+  // A 24-bit depth as the coordinate along the view axis (the 3-D view's conversion).
+  function worldDepth(rays, z) {
+    const r = rays.depth_range;
+    return r[1] - (z / DEPTH_ONE) * (r[1] - r[0]);
+  }
+
+  // The reference's answers: at crop index i (when there is a pixel) the ray's depths, the
+  // stencil after each pass and the case; the blocks' ranges along the view axis (their own
+  // vertices); whether each MOR mode examines the pixel; whether the box test stops the pair.
+  function truthAt(e, rays, pixel) {
+    const t = {};
+    const i = pixel ? pixel[2] : -1;
+    if (i >= 0) {
+      const ids = rays.steps.map(function (s) { return s.id; });
+      t.stencil = PASSES.map(function (p) {
+        const k = ids.indexOf(p.id);
+        return k < 0 ? 0 : rays.stencil[k][i];  // a pass that did not run left the clear, 0
+      });
+      t.kase = rays['case'][i];
+      const cov = rays.coverage[i];
+      t.depths = {
+        A: cov & 1 ? [worldDepth(rays, rays.a_front[i]), worldDepth(rays, rays.a_back[i])] : null,
+        B: cov & 2 ? [worldDepth(rays, rays.b_front[i]), worldDepth(rays, rays.b_back[i])] : null,
+      };
+      t.inMor = inRect(rays.mor, pixel[0], pixel[1]);
+    }
+    const s = page.scene3d, k = common.PERM[s.axis][2];
+    t.ranges = {};
+    s.blocks.forEach(function (b, n) {
+      let lo = Infinity, hi = -Infinity;
+      for (let v = k; v < b.positions.length; v += 3) {
+        lo = Math.min(lo, b.positions[v]);
+        hi = Math.max(hi, b.positions[v]);
+      }
+      t.ranges[n === 0 ? 'A' : 'B'] = [hi, lo];  // near end first: the viewer is on +axis
     });
-    return {stencil: stencil, kase: rays['case'][i]};
+    if (asks(e, 'mor')) {
+      t.mor = {};
+      MODES.forEach(function (m) { t.mor[m] = inRect(page.morOf(m), pixel[0], pixel[1]); });
+    }
+    t.boxStops = page.pair.boxes_overlap === false;
+    return t;
   }
 
   // --- checking an answer ----------------------------------------------------------------------
 
-  // answers = {stencil: [five numbers], kase: number (-1: not examined)}. The first pass whose
-  // value differs from the reference's is the one whose rule was misapplied: the values before
-  // it were right, so the rule, applied to them, gives the reference's value. Returns
-  // {correct, pass (1-5, 6 for the read-back), title, rule, message}.
+  function close(a, b) { return Math.abs(Number(a) - b) <= TOLERANCE; }
+  function num(v) { return Math.round(v * 1e4) / 1e4; }
+
+  // One block's depths (or range): [near, far] given against the reference's; what is wrong,
+  // or '' when nothing is. `other`: the other block's, to name a depth taken from it.
+  function depthError(name, given, truth, other, what) {
+    if (truth === null)
+      return given.none ? '' : name + ' is not on this ray: its footprint misses the pixel.';
+    if (given.none) return name + ' is on this ray: its footprint covers the pixel.';
+    const near = given.near, far = given.far;
+    if (close(near, truth[0]) && close(far, truth[1])) return '';
+    if (close(near, truth[1]) && close(far, truth[0]))
+      return 'the near and far ends of ' + name + ' are swapped: the ray meets first the ' +
+        'face nearer the viewer, at the larger coordinate along the view axis.';
+    if (close(near, truth[1]))
+      return 'the near end of ' + name + ' is taken from the wrong face: the face the ray ' +
+        'leaves ' + name + ' through, not the one it enters through.';
+    if (close(far, truth[0]))
+      return 'the far end of ' + name + ' is taken from the wrong face: the face the ray ' +
+        'enters ' + name + ' through, not the one it leaves through.';
+    if (other && (close(near, other[0]) || close(near, other[1]) || close(far, other[0]) ||
+                  close(far, other[1])))
+      return 'a ' + what + ' of ' + name + ' is taken from the other block\u2019s faces.';
+    return (close(near, truth[0]) ? 'the far end' : 'the near end') + ' of ' + name +
+      ' is not where ' + (what === 'range' ? name + '\u2019s range ends' : 'the ray ' +
+      (close(near, truth[0]) ? 'leaves' : 'enters') + ' ' + name) + ' (checked to within ' +
+      TOLERANCE + ').';
+  }
+
+  // answers = {depths: {A: {near, far, none}, B: ...}, ranges: {A: {near, far}, B: ...},
+  // mor: {min, max, full}, box: 'stops' | 'runs', stencil: [five numbers], kase: number (-1:
+  // not examined)}; only what the exercise asks is read. The first step whose answer differs
+  // from the reference's is the one misapplied (the steps before it are right). Returns
+  // {correct, step ('depths', 'ranges', 'mor', 'boxtest', 'pass'), pass (1-5, 6 for the
+  // read-back), title, rule, message, inputs (HTML: what the step tested, as answered)}.
   function check(answers) {
     if (!current) throw new Error('no exercise is open');
-    const t = current.truth;
-    let verdict = {correct: true, pass: 0, title: '', rule: ''};
-    for (let k = 0; k < PASSES.length; ++k) {
-      if (Number(answers.stencil[k]) !== t.stencil[k]) {
-        verdict = {correct: false, pass: k + 1, title: PASSES[k].title, rule: PASSES[k].rule,
-          stepId: PASSES[k].id};
-        break;
+    const e = current.exercise, t = current.truth;
+    let v = null;
+    const wrong = function (step, title, rule, message, inputs) {
+      v = {correct: false, step: step, pass: 0, title: title, rule: rule, message: message,
+        inputs: inputs || ''};
+    };
+    ['depths', 'ranges'].forEach(function (what) {
+      if (v || !asks(e, what)) return;
+      ['A', 'B'].forEach(function (name) {
+        if (v) return;
+        const given = answers[what][name];
+        const truth = what === 'depths' ? t.depths[name] : t.ranges[name];
+        const other = what === 'depths' ? t.depths[name === 'A' ? 'B' : 'A'] : null;
+        const err = depthError(name, given, truth, other, what === 'depths' ? 'depth' : 'range');
+        if (err)
+          wrong(what, what === 'depths' ? 'the depths of ' + name : 'the range of ' + name,
+            definition(what === 'depths' ? 'term-entry-exit' : 'term-bounding-box'),
+            (what === 'depths' ? 'Depths' : 'Range') + ' of ' + name + ': ' + err,
+            'you gave: near end ' + esc(given.none ? '(not on this ray)' : given.near) +
+            ', far end ' + esc(given.none ? '(not on this ray)' : given.far));
+      });
+    });
+    if (!v && asks(e, 'mor')) {
+      MODES.forEach(function (m) {
+        if (v || Boolean(answers.mor[m]) === t.mor[m]) return;
+        wrong('mor', 'MOR ' + m, definition('term-mor-' + m), 'MOR ' + m + ': you said it ' +
+          (answers.mor[m] ? 'examines' : 'does not examine') + ' this pixel; read its ' +
+          'definition again (the modes before it are right).',
+          'pixel (' + current.pixel[0] + ', ' + current.pixel[1] + ')');
+      });
+    }
+    if (!v && asks(e, 'boxtest') && (answers.box === 'stops') !== t.boxStops) {
+      const r = asks(e, 'ranges') ? answers.ranges : answers.depths;
+      wrong('boxtest', 'the box test', definition('term-box-test'), 'Box test: misapplied: ' +
+        'you said ' + (answers.box === 'stops' ? 'it stops the pair before any pass' :
+        'the passes run') + '. Compare the two blocks\u2019 ranges along the view axis (touching ' +
+        'counts as meeting) and their footprints.', ['A', 'B'].map(function (n) {
+          return n + ' from ' + esc(r[n].near) + ' to ' + esc(r[n].far);
+        }).join('; ') + ' (as you gave them)');
+    }
+    if (!v && asks(e, 'passes')) {
+      for (let k = 0; k < PASSES.length && !v; ++k) {
+        if (Number(answers.stencil[k]) !== t.stencil[k]) {
+          wrong('pass', PASSES[k].title, PASSES[k].rule, 'Pass ' + PASSES[k].title + ': its ' +
+            'rule was misapplied here (the passes before it are right).',
+            passInputs(k, answers));
+          v.pass = k + 1;
+          v.stepId = PASSES[k].id;
+        }
+      }
+      if (!v && Number(answers.kase) !== t.kase) {
+        wrong('pass', DECODE.title, DECODE.rule, 'Pass ' + DECODE.title + ': the case was ' +
+          'misread from the stencil (the passes before it are right).', passInputs(5, answers));
+        v.pass = 6;
+        v.stepId = DECODE.id;
       }
     }
-    if (verdict.correct && Number(answers.kase) !== t.kase)
-      verdict = {correct: false, pass: 6, title: DECODE.title, rule: DECODE.rule,
-        stepId: 'read_stencil'};
-    if (verdict.correct) {
-      progress.solved[current.exercise.id] = true;
+    if (!v) {
+      v = {correct: true, step: '', pass: 0, title: '', rule: '', inputs: '',
+        message: 'Right: every step agrees with the reference.'};
+      progress.solved[e.id] = true;
       save();
     }
-    verdict.message = verdict.correct
-      ? 'Right: every pass and the case agree with the reference.'
-      : 'Pass ' + verdict.title + ': its rule was misapplied here (the passes before it are ' +
-        'right).';
-    return verdict;
+    return v;
+  }
+
+  // The definition the page's Terms give for `id` (its <dd>), as text.
+  function definition(id) {
+    const dt = $(id);
+    const dd = dt && dt.nextElementSibling;
+    return dd ? dd.textContent.replace(/\s+/g, ' ').trim() : '';
+  }
+
+  // What pass k (0-4; 5: the read-back) tested at the pixel: the stencil before it, as the
+  // student answered the pass before (right, or the check would have stopped there), and the
+  // depths it compares, as the student gave them or as the exercise gave them.
+  function passInputs(k, answers) {
+    const t = current.truth, e = current.exercise;
+    const before = k === 0 ? 0 : Number(answers.stencil[k - 1]);
+    const stencil = (k === 0 ? 'stencil before it: the clear value 0' : 'stencil before it: ' +
+      before + ' (binary ' + before.toString(2).padStart(4, '0') + ', count ' + (before & 3) +
+      ')');
+    const given = asks(e, 'depths');
+    const depth = function (name, end) {
+      const label = name + (end ? '<sub>max</sub>' : '<sub>min</sub>');
+      if (given) {
+        const d = answers.depths[name];
+        return label + ' ' + (d.none ? 'none (not on this ray)' : esc(end ? d.far : d.near));
+      }
+      const truth = t.depths[name];
+      return label + ' ' + (truth ? num(truth[end]) : 'none (not on this ray)');
+    };
+    const where = 'pixel ' + (t.inMor ? 'inside' : 'outside') + ' the MOR';
+    const parts = [[where, 'A ' + (t.depths.A ? 'on' : 'not on') + ' this ray', stencil],
+      [where, stencil, depth('A', 1), depth('B', 0), depth('B', 1)],
+      [where, stencil],
+      [where, stencil, depth('A', 0), depth('B', 0)],
+      [where, stencil, depth('A', 0), depth('B', 1)],
+      [where, 'stencil after pass 5: ' + esc(answers.stencil[4])]][k];
+    return parts.join('; ') + (given || k === 0 || k === 2 || k === 5 ? '' :
+      ' (depths as coordinates along the view axis; the larger is nearer the viewer)');
   }
 
   // --- the panel -------------------------------------------------------------------------------
 
   function depthText(rays, v) { return (v / rays.depth_max).toFixed(6) + ' (' + v + ')'; }
 
-  function question(rays, i, x, y) {
-    const cov = rays.coverage[i];
-    const line = function (name, has, front, back) {
-      return '<li><b>' + name + '</b>: ' + (has ? 'enters at depth ' + depthText(rays, front) +
-        ', leaves at ' + depthText(rays, back) : 'not on this ray') + '</li>';
-    };
-    let h = '<p id="predict-pixel">Pixel (' + x + ', ' + y + '), ' +
-      (inRect(rays.mor, x, y) ? 'inside' : '<b>outside</b>') + ' the MOR [' +
-      (rays.mor ? rays.mor.join(', ') : '') + '). Its ray (depth 0 nearest the viewer, 1 ' +
-      'farthest; the 3-D view marks where it enters and leaves each block):</p><ul>' +
-      line('A', cov & 1, rays.a_front[i], rays.a_back[i]) +
-      line('B', cov & 2, rays.b_front[i], rays.b_back[i]) + '</ul>';
-    h += '<form id="predict-form"><table><tr><th>after pass</th><th>stencil (0-15)</th></tr>';
-    PASSES.forEach(function (p, k) {
-      h += '<tr><td>' + esc(p.title) + '</td><td><input type="number" min="0" max="15" ' +
-        'step="1" id="predict-stencil-' + (k + 1) + '" required> <span class="bits" ' +
-        'id="predict-bits-' + (k + 1) + '"></span></td></tr>';
+  function blockText(b) {
+    const s = b.sizes.size;
+    return '<b>' + esc(b.name) + '</b>: a ' + esc(b.shape) + (s ? ' of size (' + s.join(', ') +
+      ')' : '') + ' at (' + b.position.join(', ') + '), turned (' + b.rotation.join(', ') +
+      ') degrees';
+  }
+
+  function depthInputs(what) {
+    const id = 'predict-' + (what === 'depths' ? 'depth' : 'range');
+    let h = '<fieldset id="' + id + 's"><legend>' + (what === 'depths'
+      ? 'Where the ray enters and leaves each block (' + term('term-entry-exit', 'entry and ' +
+        'exit') + '), as the coordinate along the ' + term('term-view-axis', 'view axis') +
+        ', to within ' + TOLERANCE
+      : 'Each block\u2019s range along the ' + term('term-view-axis', 'view axis') + ' (its ' +
+        term('term-bounding-box', 'bounding box') + '), to within ' + TOLERANCE) +
+      '</legend><table id="predict-inputs">';
+    ['A', 'B'].forEach(function (n) {
+      h += '<tr><th>' + n + '</th><td><label>near end <input type="number" step="any" ' +
+        'required id="' + id + '-' + n + '-near"></label></td><td><label>far end <input ' +
+        'type="number" step="any" required id="' + id + '-' + n + '-far"></label></td>' +
+        (what === 'depths' ? '<td><label><input type="checkbox" id="' + id + '-' + n +
+        '-none"> not on this ray</label></td>' : '') + '</tr>';
     });
-    h += '<tr><td>the case read back</td><td><select id="predict-case" required>' +
-      '<option value="">choose</option>';
-    for (let c = 0; c <= 8; ++c) h += '<option value="' + c + '">case ' + c + '</option>';
-    h += '<option value="-1">not examined (outside the MOR)</option></select></td></tr>';
-    h += '</table>';
-    h += '<details id="predict-rules"><summary>The rules of the passes and of the ' +
-      'read-back</summary><ol>' + PASSES.concat([DECODE]).map(function (p) {
-      return '<li><b>' + esc(p.title) + '</b>: ' + esc(p.rule) + '</li>';
-    }).join('') + '</ol><p>Depth tests compare 24-bit values; equal depths pass both LEQUAL ' +
-      'and GEQUAL. The stencil test 1 &le; count reads bits 0-1 only.</p></details>';
+    return h + '</table></fieldset>';
+  }
+
+  function question(e, rays) {
+    let h = '';
+    const pixel = current.pixel;
+    const given = !e.ask;
+    if (pixel) {
+      const x = pixel[0], y = pixel[1], i = current.index;
+      h += '<p id="predict-pixel">' + term('term-pixel', 'Pixel') + ' (' + x + ', ' + y + ')';
+      if (!asks(e, 'mor'))
+        h += ', ' + (inRect(rays.mor, x, y) ? 'inside' : '<b>outside</b>') + ' the ' +
+          term('term-mor', 'MOR') + ' [' + (rays.mor ? rays.mor.join(', ') : '') + ')';
+      if (given) {
+        const cov = rays.coverage[i];
+        const line = function (name, has, front, back) {
+          return '<li><b>' + name + '</b>: ' + (has ? 'enters at depth ' +
+            depthText(rays, front) + ', leaves at ' + depthText(rays, back) :
+            'not on this ray') + '</li>';
+        };
+        h += '. Its ray (' + term('term-depth', 'depth') + ' 0 nearest the viewer, 1 ' +
+          'farthest; the 3-D view marks where it enters and leaves each block):</p><ul>' +
+          line('A', cov & 1, rays.a_front[i], rays.a_back[i]) +
+          line('B', cov & 2, rays.b_front[i], rays.b_back[i]) + '</ul>';
+      } else {
+        h += '.</p>';
+      }
+    }
+    if (!given) {
+      h += '<p id="predict-blocks">The blocks, seen along ' + esc(page.state.axis) +
+        ' (the viewer on the side of larger ' + esc(page.state.axis) + '): ' +
+        e.blocks.map(blockText).join('; ') + '. The 3-D view is turned to show the depth ' +
+        'scale on the view axis (its ticks are ' + esc(page.state.axis) + ' values)' +
+        (pixel ? ' and the pixel\u2019s ray (yellow)' : '') + '.</p>';
+    }
+    h += '<form id="predict-form">';
+    if (asks(e, 'depths')) h += depthInputs('depths');
+    if (asks(e, 'ranges')) h += depthInputs('ranges');
+    if (asks(e, 'mor')) {
+      h += '<fieldset id="predict-mor"><legend>Which ' + term('term-mor', 'MOR') + ' modes ' +
+        'examine this pixel?</legend>' + MODES.map(function (m) {
+          return '<label><input type="checkbox" id="predict-mor-' + m + '"> ' +
+            term('term-mor-' + m, 'MOR ' + m) + '</label> ';
+        }).join('') + '</fieldset>';
+    }
+    if (asks(e, 'boxtest')) {
+      h += '<fieldset id="predict-boxtest"><legend>The ' + term('term-box-test', 'box test') +
+        '</legend><select id="predict-box" required><option value="">choose</option>' +
+        '<option value="stops">stops the pair: no pass runs</option><option value="runs">' +
+        'lets the passes run</option></select></fieldset>';
+    }
+    if (asks(e, 'passes')) {
+      h += '<table><tr><th>after pass</th><th>' + term('term-stencil', 'stencil') +
+        ' (0-15)</th></tr>';
+      PASSES.forEach(function (p, k) {
+        h += '<tr><td>' + term('term-pass-' + (k + 1), esc(p.title)) + '</td><td><input ' +
+          'type="number" min="0" max="15" step="1" id="predict-stencil-' + (k + 1) +
+          '" required> <span class="bits" id="predict-bits-' + (k + 1) + '"></span></td></tr>';
+      });
+      h += '<tr><td>' + term('term-read-back', esc(DECODE.title)) + ': the case</td><td>' +
+        '<select id="predict-case" required><option value="">choose</option>';
+      for (let c = 0; c <= 8; ++c) h += '<option value="' + c + '">case ' + c + '</option>';
+      h += '<option value="-1">not examined (outside the MOR)</option></select></td></tr>';
+      h += '</table>';
+      h += '<details id="predict-rules"><summary>The rules of the passes and of the ' +
+        'read-back</summary><ol>' + PASSES.concat([DECODE]).map(function (p) {
+        return '<li><b>' + esc(p.title) + '</b>: ' + esc(p.rule) + '</li>';
+      }).join('') + '</ol><p>Depth tests compare 24-bit values; equal depths pass both LEQUAL ' +
+        'and GEQUAL. The stencil test 1 &le; count reads bits 0-1 only.</p></details>';
+    }
     h += '<button type="submit" id="predict-check">Check</button> ' +
       '<button type="button" id="predict-close">Leave the exercise</button></form>' +
       '<div id="predict-feedback" aria-live="polite"></div>';
@@ -251,43 +490,80 @@ window.recodePredict = (function () {
       ' solved (kept in this browser only).</p>';
   }
 
+  function practises(e) {
+    return '<p class="practises">Practises ' + e.terms.map(function (id) {
+      const dt = $(id);
+      return term(id, dt ? esc(dt.textContent.replace(/\s+/g, ' ').trim()) : id);
+    }).join(', ') + ' (under Terms below), and the page\u2019s sections once answered.</p>';
+  }
+
   function render() {
     const panel = $('predict');
     let h = '<h2>Predict</h2><p>Each exercise poses the blocks and chooses a pixel; the ' +
-      'buffers are hidden until you answer. Predict the stencil after each pass and the case, ' +
-      'then check.</p><div id="predict-list-wrap">' + listHtml() + '</div>';
+      'buffers are hidden until you answer. Answer what it asks (the depths, the MOR, the box ' +
+      'test, the stencil after each pass and the case), then check.</p>' +
+      (note ? '<p class="note" id="predict-note">' + note + '</p>' : '') +
+      '<div id="predict-list-wrap">' + listHtml() + '</div>';
     if (current) {
-      const practises = current.exercise.sections.map(function (n) {
-        return SECTIONS[n] + ' (' + n + ')';
-      }).join(', ');
-      h += '<div id="predict-exercise"><h3>' + esc(current.exercise.title) + '</h3><p>' +
-        current.exercise.intro + '</p><p class="practises">Practises ' + practises +
-        ': docs/algorithm.md, and the page\u2019s sections below once answered.</p>' +
-        question(page.rayData, current.index,
-          current.pixel[0], current.pixel[1]) + '</div>';
+      const e = current.exercise;
+      h += '<div id="predict-exercise"><h3>' + esc(e.title) + '</h3><p>' + e.intro + '</p>' +
+        practises(e) + question(e, page.rayData) + '</div>';
     } else if (choosing) {
-      h += '<div id="predict-exercise"><h3>Your own pixel</h3><p>' +
-        EXERCISES[EXERCISES.length - 1].intro + '</p></div>';
+      const e = EXERCISES.find(function (x) { return x.pick.own; });
+      h += '<div id="predict-exercise"><h3>' + esc(e.title) + '</h3><p>' + e.intro + '</p>' +
+        practises(e) + '</div>';
     }
     panel.innerHTML = h;
     bindList();
     if (!current) return;
     PASSES.forEach(function (p, k) {
       const input = $('predict-stencil-' + (k + 1));
+      if (!input) return;
       input.addEventListener('input', function () {
         const v = Number(input.value);
         $('predict-bits-' + (k + 1)).textContent =
           input.value !== '' && v >= 0 && v <= 15 ? 'binary ' + v.toString(2).padStart(4, '0') : '';
       });
     });
-    $('predict-form').addEventListener('submit', function (ev) {
-      ev.preventDefault();
-      const answers = {stencil: PASSES.map(function (p, k) {
-        return $('predict-stencil-' + (k + 1)).value;
-      }), kase: $('predict-case').value === '' ? NaN : Number($('predict-case').value)};
-      showVerdict(check(answers));
+    ['A', 'B'].forEach(function (n) {  // "not on this ray": no depths to give
+      const none = $('predict-depth-' + n + '-none');
+      if (!none) return;
+      none.addEventListener('change', function () {
+        ['near', 'far'].forEach(function (end) {
+          const input = $('predict-depth-' + n + '-' + end);
+          input.disabled = none.checked;
+          input.required = !none.checked;
+        });
+      });
     });
-    $('predict-close').addEventListener('click', close);
+    const form = $('predict-form');
+    // An answer the browser refuses (out of range, not a whole number, missing) is no answer:
+    // the verdict of the one before must not stay on screen as if it were this one's.
+    form.addEventListener('invalid', clearFeedback, true);
+    form.addEventListener('submit', function (ev) {
+      ev.preventDefault();
+      clearFeedback();
+      showVerdict(check(readAnswers()));
+    });
+    $('predict-close').addEventListener('click', leave);
+  }
+
+  function readAnswers() {
+    const value = function (id) { const n = $(id); return n ? n.value : ''; };
+    const ends = function (prefix, n) {
+      const none = $(prefix + n + '-none');
+      return {near: value(prefix + n + '-near'), far: value(prefix + n + '-far'),
+        none: !!(none && none.checked)};
+    };
+    const a = {depths: {}, ranges: {}, mor: {}, box: value('predict-box'),
+      stencil: PASSES.map(function (p, k) { return value('predict-stencil-' + (k + 1)); }),
+      kase: value('predict-case') === '' ? NaN : Number(value('predict-case'))};
+    ['A', 'B'].forEach(function (n) {
+      a.depths[n] = ends('predict-depth-', n);
+      a.ranges[n] = ends('predict-range-', n);
+    });
+    MODES.forEach(function (m) { const c = $('predict-mor-' + m); a.mor[m] = !!(c && c.checked); });
+    return a;
   }
 
   function bindList() {
@@ -296,29 +572,60 @@ window.recodePredict = (function () {
     });
   }
 
-  // A wrong answer shows its pass's section (text and pictures, the pixel marked by the ray
-  // inspector's mark) under the feedback; a right one shows every section again.
-  function showVerdict(v) {
+  function hideSections() {
     document.querySelectorAll('#live-result section.shown').forEach(function (s) {
       s.classList.remove('shown');
     });
+  }
+
+  function clearFeedback() {
+    hideSections();
+    const f = $('predict-feedback');
+    if (f) f.innerHTML = '';
+  }
+
+  // A wrong answer names the step, its rule and the student's inputs to it; a pass's section
+  // (its pictures mark the pixel) is shown only when the student asks. A right one shows every
+  // section again and the ray inspector at the exercise's pixel.
+  function showVerdict(v) {
+    hideSections();
     let h = '<p class="' + (v.correct ? 'right' : 'wrong') + '" id="predict-verdict">' +
       esc(v.message) + '</p>';
     if (!v.correct) {
-      h += '<p id="predict-rule"><b>The rule of ' + esc(v.title) + ':</b> ' + esc(v.rule) + '</p>';
-      const section = document.getElementById(v.stepId);
-      if (section) {
-        section.classList.add('shown');
-        h += '<p>That pass\u2019s section is shown below the controls; try again.</p>';
+      h += '<p id="predict-rule"><b>The rule of ' + esc(v.title) + ':</b> ' + esc(v.rule) +
+        '</p><p id="predict-inputs-used"><b>What it tested, as you answered:</b> ' + v.inputs +
+        '</p>';
+      if (v.stepId && document.getElementById(v.stepId)) {
+        h += '<p><button type="button" id="predict-show-section" data-step="' + v.stepId +
+          '">Show the pictures of ' + esc(v.title) + '</button> (they show the answer at this ' +
+          'pixel); or try again.</p>';
+      } else {
+        h += '<p>Try again.</p>';
       }
     } else {
       document.body.classList.remove('predicting');
-      h += '<p>The buffers are shown again; the ray inspector has the pixel\u2019s whole ' +
-        'story.</p>';
+      const p = current.pixel;
+      if (p) {
+        page.showRay([p[0], p[1]]);
+        window.recodeInspector.showPixel([p[0], p[1]]);
+      }
+      h += '<p>The buffers are shown again' + (p ? '; the ray inspector has pixel (' + p[0] +
+        ', ' + p[1] + ')\u2019s whole story, the 3-D view its entry and exit points' : '') +
+        '.</p>';
       $('predict-list-wrap').innerHTML = listHtml();
       bindList();
     }
     $('predict-feedback').innerHTML = h;
+    const show = $('predict-show-section');
+    if (show) {
+      show.addEventListener('click', function () {
+        const s = document.getElementById(show.dataset.step);
+        if (s) {
+          s.classList.add('shown');
+          s.scrollIntoView({block: 'nearest'});
+        }
+      });
+    }
   }
 
   // --- opening and leaving an exercise ------------------------------------------------------
@@ -326,11 +633,15 @@ window.recodePredict = (function () {
   function start(id) {
     const e = EXERCISES.find(function (x) { return x.id === id; });
     if (!e) throw new Error('no exercise ' + id);
+    if (!current && !choosing && !pending) saved = page.pose();
     current = null;
     choosing = false;
+    note = '';
+    hideSections();
     document.body.classList.add('predicting');
     if (e.pick.own) {
       choosing = true;
+      pending = null;
       render();
       return;
     }
@@ -341,32 +652,46 @@ window.recodePredict = (function () {
   }
 
   function open(e, pixel, rays) {
-    current = {exercise: e, pixel: [pixel[0], pixel[1]], index: pixel[2],
-      truth: truthAt(rays, pixel[2]), signature: page.signature()};
-    page.showRay([pixel[0], pixel[1]]);
+    current = {exercise: e, pixel: pixel ? [pixel[0], pixel[1]] : null,
+      index: pixel ? pixel[2] : -1, truth: truthAt(e, rays, pixel),
+      signature: page.signature()};
+    // The inspector (hidden until the answer) and the 3-D ray are about this pixel, whatever
+    // was pinned before; where the student reads the depths, the ray has no entry and exit
+    // marks and the view is turned to show the depth scale.
+    window.recodeInspector.showPixel(pixel ? [pixel[0], pixel[1]] : null);
+    page.showRay(pixel ? [pixel[0], pixel[1]] : null, !asks(e, 'depths'));
+    if (page.view3d && (asks(e, 'depths') || asks(e, 'ranges'))) page.view3d.lookFromSide();
     render();
   }
 
-  function close() {
+  // Ends the exercise: `restore` puts back the pose the first exercise replaced.
+  function finish(restore) {
     current = null;
     choosing = false;
     pending = null;
     document.body.classList.remove('predicting');
-    document.querySelectorAll('#live-result section.shown').forEach(function (s) {
-      s.classList.remove('shown');
-    });
+    hideSections();
     page.showRay(null);
+    window.recodeInspector.showPixel(null);
+    if (restore && saved) page.load(saved);
+    saved = null;
+  }
+
+  function leave() {
+    finish(true);
+    note = '';
     render();
   }
 
   // After every update of the page: an exercise whose pose just ran gets its pixel; one whose
-  // pose the student changed is closed (its answer would no longer be this pose's).
+  // pose the student changed is closed, and the page says so (its answer would no longer be
+  // this pose's); the student's pose stays.
   page.onUpdate.push(function (rays) {
     if (pending) {
       const e = pending;
       pending = null;
-      const p = choosePixel(e.pick, rays);
-      if (!p) {
+      const p = e.pick.none ? null : choosePixel(e.pick, rays);
+      if (!p && !e.pick.none) {
         document.body.classList.remove('predicting');
         $('predict').querySelector('#predict-exercise') ||
           $('predict').insertAdjacentHTML('beforeend', '<div id="predict-exercise"></div>');
@@ -377,10 +702,17 @@ window.recodePredict = (function () {
       open(e, p, rays);
       return;
     }
-    if (current && current.signature !== page.signature()) close();
+    if (current && current.signature !== page.signature()) {
+      const title = current.exercise.title;
+      finish(false);
+      note = 'The exercise \u201c' + esc(title) + '\u201d was closed: the pose changed, and its ' +
+        'answers belong to its own pose. Open it again to go back to that pose.';
+      render();
+    }
   });
 
-  // The own-pixel exercise: a click on the silhouettes picture (the only one shown) picks it.
+  // The own-pixel exercise: a click on the picture "Coverage of A and B" (the only one shown)
+  // picks it.
   document.addEventListener('click', function (ev) {
     if (!choosing) return;
     const img = ev.target.closest && ev.target.closest('#live-result [data-region]');
@@ -392,8 +724,8 @@ window.recodePredict = (function () {
     const y = r[3] - 1 - Math.floor((ev.clientY - b.top) / b.height * (r[3] - r[1]));
     if (!rays.steps.length) {
       $('predict-exercise').insertAdjacentHTML('beforeend', '<p class="wrong">No pass ran on ' +
-        'this pose (the box test found the blocks apart): move them together, or switch the ' +
-        'box test off, and click again.</p>');
+        'this pose (the ' + term('term-box-test', 'box test') + ' found the blocks apart): ' +
+        'move them together, or switch the box test off, and click again.</p>');
       return;
     }
     const i = page.rayIndex(x, y);
@@ -404,13 +736,23 @@ window.recodePredict = (function () {
       return;
     }
     choosing = false;
-    open(EXERCISES[EXERCISES.length - 1], [x, y, i], rays);
+    open(EXERCISES.find(function (e) { return e.pick.own; }), [x, y, i], rays);
   }, true);
+
+  // The passes' entries in the page's Terms: the rules stated once (page/common.js).
+  (function fillTerms() {
+    const list = $('terms-passes');
+    if (!list) return;
+    list.innerHTML = PASSES.concat([DECODE]).map(function (p, k) {
+      return '<dt id="' + (k < PASSES.length ? 'term-pass-' + (k + 1) : 'term-read-back') +
+        '">' + esc(p.title) + '</dt><dd>' + esc(p.rule) + '</dd>';
+    }).join('');
+  })();
 
   render();
   return {
-    exercises: EXERCISES, passes: PASSES, start: start, close: close, check: check,
-    current: function () { return current; }, progress: function () { return progress; },
-    choosePixel: choosePixel,
+    exercises: EXERCISES, passes: PASSES, decode: DECODE, tolerance: TOLERANCE, start: start,
+    close: leave, check: check, current: function () { return current; },
+    progress: function () { return progress; }, choosePixel: choosePixel,
   };
 })();

@@ -1,12 +1,15 @@
 // scene3d.js: a small WebGL2 viewer of one RECODE frame in 3-D: the blocks A and B as the frame's
 // orthographic camera sees them (or turned, to see depth), the view axis, the frame's window, the
-// MOR box, and the ray through one pixel with where it enters and leaves each block.
-// window.recodeScene3d(canvas) returns the view (see the object `view` below for its methods);
-// it throws an Error where the browser gives no WebGL2. No libraries, no network.
+// MOR box, the ray through one pixel with where it enters and leaves each block, and a depth
+// scale: ticks along the view axis labelled with its coordinate, drawn on a second canvas laid
+// over the first (text is not WebGL's business). window.recodeScene3d(canvas, scaleCanvas)
+// returns the view (see the object `view` below for its methods); it throws an Error where the
+// browser gives no WebGL2. No libraries, no network. Needs page/common.js.
 (function () {
   'use strict';
 
-  const COLOURS = {A: [58, 120, 216], B: [214, 69, 69], background: [17, 17, 17]};
+  const COLOURS = {A: window.recodeCommon.COLOURS.A, B: window.recodeCommon.COLOURS.B,
+    background: [17, 17, 17]};
   const LINE = {axis: [205, 205, 205], window: [150, 150, 150], mor: [0, 229, 255],
     ray: [255, 210, 63], outline: [255, 255, 255]};
   const DEPTH_ONE = 16777215; // the largest 24-bit depth value; it stands for d = dmin
@@ -17,7 +20,10 @@
   // Image-plane coordinate k of (u, v, d) is world component PERM[axis][k]. All three are cyclic
   // permutations, i.e. rotations, so (u, v, d) is right-handed like (x, y, z): triangles that are
   // counter-clockwise from outside stay so, and a camera with u right and v up looks toward -d.
-  const PERM = {x: [1, 2, 0], y: [2, 0, 1], z: [0, 1, 2]};
+  const PERM = window.recodeCommon.PERM;
+  const SCALE_TICKS = 8;       // about this many labelled ticks over the depth range
+  const SCALE_LABEL_PX = 28;   // labels at least this far apart on the screen
+  const SCALE_MIN_PX = 4;      // ticks closer than this: the axis points at the viewer
 
   const BLOCK_VS = `#version 300 es
 layout(location = 0) in vec3 aPos;
@@ -106,7 +112,13 @@ void main() { outColour = vec4(vColour, 1.0); }`;
     return Array.from(values, Number);
   }
 
-  window.recodeScene3d = function (canvas) {
+  // A step of 1, 2, 2.5 or 5 times a power of ten giving about `count` steps over `span`.
+  function niceStep(span, count) {
+    const raw = span / count, p = Math.pow(10, Math.floor(Math.log10(raw)));
+    return [1, 2, 2.5, 5, 10].map((m) => m * p).find((m) => m >= raw) || 10 * p;
+  }
+
+  window.recodeScene3d = function (canvas, scaleCanvas) {
     const gl = canvas.getContext('webgl2',
       {preserveDrawingBuffer: true, antialias: false, depth: true, alpha: false});
     if (!gl) throw new Error('recodeScene3d: this browser gives no WebGL2 context');
@@ -129,6 +141,7 @@ void main() { outColour = vec4(vColour, 1.0); }`;
     const visible = {A: true, B: true, axes: true, window: true, mor: true, ray: true};
     const cam = {yaw: 0, pitch: 0, zoom: 1};
     let frameRequest = 0;
+    let ticks = [];       // the depth scale as last drawn: {value, world, px}
 
     // Image-plane coordinates relative to the scene centre, in doubles: positions far from the
     // origin keep their precision when they then go into a Float32Array.
@@ -360,8 +373,48 @@ void main() { outColour = vec4(vColour, 1.0); }`;
         }
         gl.bindVertexArray(null);
       }
+      drawScale();
       view.lastDrawMs = performance.now() - start;
       view.draws += 1;
+    }
+
+    // The depth scale: ticks on the view axis at round values of its coordinate, each labelled
+    // with it, across the blocks' range along the axis. Looking along the axis they would all
+    // fall on one point: then (and with the axis hidden) none are drawn.
+    function drawScale() {
+      ticks = [];
+      const ctx = scaleCanvas ? scaleCanvas.getContext('2d') : null;
+      if (ctx) ctx.clearRect(0, 0, scaleCanvas.width, scaleCanvas.height);
+      if (!scene || !visible.axes) return;
+      const [dmin, dmax] = scene.depthRange;
+      const span = Math.max(dmax - dmin, 1e-9);
+      const step = niceStep(span, SCALE_TICKS);
+      const from = Math.ceil((dmin - 0.5 * scene.margin) / step - 1e-9);
+      const to = Math.floor((dmax + 0.5 * scene.margin) / step + 1e-9);
+      const name = scene.axis;
+      const p0 = toPixel([0, 0, 0]), p1 = toPixel([0, 0, step]);
+      const along = [p1[0] - p0[0], p1[1] - p0[1]];
+      const len = Math.hypot(along[0], along[1]);
+      if (len < SCALE_MIN_PX) return;
+      const across = [-along[1] / len, along[0] / len];  // the tick's direction on the screen
+      const every = [1, 2, 4, 10].find((n) => n * len >= SCALE_LABEL_PX) || 20;
+      for (let k = from; k <= to; k++) {
+        const value = Math.round(k * step * 1e9) / 1e9;
+        const px = toPixel([0, 0, value - scene.centre[2]]);
+        ticks.push({value, world: worldOf(scene.centre[0], scene.centre[1], value), px,
+          labelled: k % every === 0});
+        if (!ctx) continue;
+        ctx.strokeStyle = 'rgb(255,255,255)';
+        ctx.lineWidth = 1.5;
+        ctx.beginPath();
+        ctx.moveTo(px[0] - 5 * across[0], px[1] - 5 * across[1]);
+        ctx.lineTo(px[0] + 5 * across[0], px[1] + 5 * across[1]);
+        ctx.stroke();
+        if (k % every !== 0) continue;
+        ctx.fillStyle = 'rgb(255,255,255)';
+        ctx.font = '11px sans-serif';
+        ctx.fillText(name + ' ' + value, px[0] + 8 * across[0] + 2, px[1] + 8 * across[1] + 4);
+      }
     }
 
     // Pointer moves come faster than frames: draw at most once a frame for them.
@@ -416,6 +469,14 @@ void main() { outColour = vec4(vColour, 1.0); }`;
         draw();
       },
       rayPoints,
+      scale: () => ticks.map((t) => ({value: t.value, world: t.world.slice(), px: t.px.slice(),
+        labelled: t.labelled})),
+      // A turn that shows depth: the view axis across the screen, the blocks seen a little from
+      // above (the exercises open with it).
+      lookFromSide() {
+        Object.assign(cam, {yaw: 70, pitch: 15, zoom: 0.9});
+        draw();
+      },
       lookAlongAxis() {
         Object.assign(cam, {yaw: 0, pitch: 0, zoom: 1});
         draw();

@@ -31,6 +31,9 @@ inline constexpr std::string_view kContactTitle = "The contact region";
                                           bool boxTest, const raster::PixelRect& frame);
 // The nine cases with their conditions, stencil values and pixel counts, and how to read it.
 [[nodiscard]] std::string caseTableHtml(const core::PairResult& result);
+// The nine cases with their conditions, stencil values and whether they interfere, without
+// a run's counts: the definition the interactive page's terms give (rows term-case-0 to -8).
+[[nodiscard]] std::string caseDefinitionsHtml();
 // The contact region's measures.
 [[nodiscard]] std::string contactText(const core::ContactRegion& contact);
 // "The blocks collide" or "No collision", with the numbers behind it.

@@ -5,12 +5,14 @@
 
 namespace recode::explain {
 
-extern const char* const kPageCss;         // page/page.css: text, figures, legends, tables
-extern const char* const kInspectorCss;    // page/inspector.css: the ray inspector's panel
-extern const char* const kInspectorJs;     // page/inspector.js: the ray inspector
-extern const char* const kInteractiveCss;  // page/interactive.css: the interactive page
-extern const char* const kInteractiveJs;   // page/interactive.js: the interactive page
-extern const char* const kScene3dJs;       // page/scene3d.js: its 3-D view (WebGL2)
-extern const char* const kPredictJs;       // page/predict.js: its exercises
+extern const char* const kPageCss;          // page/page.css: text, figures, legends, tables
+extern const char* const kInspectorCss;     // page/inspector.css: the ray inspector's panel
+extern const char* const kCommonJs;         // page/common.js: what the scripts share
+extern const char* const kInspectorJs;      // page/inspector.js: the ray inspector
+extern const char* const kInteractiveCss;   // page/interactive.css: the interactive page
+extern const char* const kInteractiveJs;    // page/interactive.js: the interactive page
+extern const char* const kScene3dJs;        // page/scene3d.js: its 3-D view (WebGL2)
+extern const char* const kPredictJs;        // page/predict.js: its exercises
+extern const char* const kInteractiveHtml;  // page/interactive.html: its body's skeleton
 
 }  // namespace recode::explain

@@ -38,6 +38,8 @@ std::string inspectorHtml(const nlohmann::json& rayData) {
   std::string h = inspectorPanelHtml() + "<script type=\"application/json\" id=\"ray-data\">";
   h += scriptSafe(rayData.dump());
   h += "</script>\n<script>";
+  h += kCommonJs;
+  h += "</script>\n<script>";
   h += kInspectorJs;
   h += "</script>\n";
   return h;

@@ -312,6 +312,21 @@ std::string caseTableHtml(const core::PairResult& result) {
   return t.str();
 }
 
+std::string caseDefinitionsHtml() {
+  std::ostringstream t;
+  t << "<table id=\"case-definitions\"><tr><th>case</th><th>on the view ray</th>"
+       "<th>condition</th><th>stencil values</th><th>interferes</th></tr>";
+  for (int c = 0; c < core::kCaseCount; ++c) {
+    const auto i = static_cast<std::size_t>(c);
+    t << "<tr id=\"term-case-" << c << "\"" << (core::isInterfering(c) ? " class=\"hit\"" : "")
+      << "><td>" << c << "</td><td>" << escapeHtml(core::caseName(c)) << "</td><td>"
+      << kCaseCondition[i] << "</td><td>" << stencilValuesOfCase(c) << "</td><td>"
+      << (core::isInterfering(c) ? "yes" : "no") << "</td></tr>";
+  }
+  t << "</table>";
+  return t.str();
+}
+
 std::string contactText(const core::ContactRegion& c) {
   std::ostringstream t;
   t << "<p>Each interfering pixel (yellow) is a ray segment inside both blocks: unprojecting "
