@@ -116,8 +116,8 @@ Baseline readBaseline(const fs::path& file) {
 }
 
 std::string toBaseline(const SuiteReport& report) {
-  std::string text = "# Expected failures of " + io::printable(report.backend) +
-                     ": NAME,STAGE, one a line (recode conform's baseline).\n";
+  std::string text =
+      "# Expected failures of " + io::printable(report.backend) + ", one NAME,STAGE a line.\n";
   for (const VectorReport& v : report.vectors) {
     if ((v.status == Status::Failed || v.status == Status::ExpectedFailure) && v.stage)
       text += v.name + "," + std::string(toString(*v.stage)) + "\n";

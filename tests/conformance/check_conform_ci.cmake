@@ -1,8 +1,10 @@
 cmake_minimum_required(VERSION 3.25)
 # `recode conform --exec` for CI: --reduce writes a minimal failing vector and its passing twin,
-# --baseline turns listed failures into expected ones and reports an unexpected pass, --shard
-# splits the vectors, --junit and --html write their reports, and a back end whose two answers
-# differ is nondeterministic. The back end is the kit's model (MODEL) with a wrong reading.
+# --write-baseline writes the failures with their stages, --baseline turns them into expected
+# ones, fails a vector listed with another stage than it fails at, refuses a line without a stage
+# and reports an unexpected pass, --shard splits the vectors, --junit and --html write their
+# reports, and a back end whose two answers differ is nondeterministic. The back end is the
+# kit's model (MODEL) with a wrong reading.
 # Expects RECODE, MODEL, OUT and GOLDEN (data/golden).
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT}/small)
@@ -18,6 +20,7 @@ function(run expect_rc)  # expect_rc: a status or several, "0|2"
     message(FATAL_ERROR "recode conform ${ARGN}: exit ${rc}, expected ${expect_rc}\n${out}${err}")
   endif()
   set(out "${out}" PARENT_SCOPE)
+  set(err "${err}" PARENT_SCOPE)
 endfunction()
 function(expect_match what pattern)
   if(NOT "${out}" MATCHES "${pattern}")
@@ -52,14 +55,55 @@ if(nfail EQUAL 0 OR NOT failing MATCHES "fill_square.json")
   message(FATAL_ERROR "the top-left reading should fail fill_square.json; failing: ${failing}")
 endif()
 
-# --baseline: the failures listed are expected (exit 0); a listed vector that passes is not.
-string(REPLACE ";" "\n" lines "# expected failures\n${failing}")
-file(WRITE ${OUT}/baseline.txt "${lines}\n")
+# --write-baseline writes each failure with its stage; --baseline reads it back: the failures
+# listed are expected (exit 0).
+run(2 --exec "${top_left}" --golden ${OUT}/small --explain 0 --write-baseline ${OUT}/baseline.txt)
+expect_match("--write-baseline" "baseline written to [^\n]*baseline.txt: ${nfail} expected failures")
+file(READ ${OUT}/baseline.txt baseline)
+if(NOT baseline MATCHES "\nfill_square.json,coverage\n")
+  message(FATAL_ERROR "--write-baseline: no line fill_square.json,coverage in\n${baseline}")
+endif()
 run(0 --exec "${top_left}" --golden ${OUT}/small --baseline ${OUT}/baseline.txt)
 expect_match("--baseline, every failure listed" "expected failure  fill_square.json")
+
+# A listed vector that fails at another stage than its line says is not expected: it fails the
+# run, and the text, JSON and JUnit reports say what the baseline expected.
+string(REPLACE "fill_square.json,coverage" "fill_square.json,depth test" changed "${baseline}")
+file(WRITE ${OUT}/baseline-changed.txt "${changed}")
+run(2 --exec "${top_left}" --golden ${OUT}/small --baseline ${OUT}/baseline-changed.txt
+    --junit ${OUT}/changed.xml)
+expect_match("--baseline, a stage changed"
+             "FAIL  fill_square.json \\(baseline expects depth test, now coverage\\)")
+expect_match("--baseline, a stage changed, counted" " failed \\(1 at another stage than the baseline's\\)")
+file(READ ${OUT}/changed.xml xml)
+if(NOT xml MATCHES "<failure message=\"coverage: [^\"]*\\(baseline expects depth test, now coverage\\)\"")
+  message(FATAL_ERROR "--baseline, a stage changed: JUnit says nothing of it:\n${xml}")
+endif()
+run(2 --exec "${top_left}" --golden ${OUT}/small --baseline ${OUT}/baseline-changed.txt --json)
+string(JSON count_after LENGTH "${out}" results)
+math(EXPR last_after "${count_after} - 1")
+foreach(i RANGE ${last_after})
+  string(JSON file GET "${out}" results ${i} file)
+  if(file STREQUAL "fill_square.json")
+    string(JSON status GET "${out}" results ${i} status)
+    string(JSON expected_stage GET "${out}" results ${i} baseline_stage)
+    if(NOT status STREQUAL "FAIL" OR NOT expected_stage STREQUAL "depth test")
+      message(FATAL_ERROR "--json, a stage changed: status ${status}, baseline_stage ${expected_stage}")
+    endif()
+  endif()
+endforeach()
+
+# A line with a name and no stage is refused, naming the file, the line and the form.
+file(WRITE ${OUT}/baseline-names.txt "# old form\nfill_square.json\n")
+run(1 --exec "${top_left}" --golden ${OUT}/small --baseline ${OUT}/baseline-names.txt)
+set(out "${err}")
+expect_match("--baseline, a name without a stage"
+             "--baseline [^\n]*baseline-names.txt:2: \"fill_square.json\" has no stage: expected NAME,STAGE")
+
+# A listed vector that passes is an unexpected pass.
 if(passing)
   list(GET passing 0 first_passing)
-  file(APPEND ${OUT}/baseline.txt "${first_passing}\n")
+  file(APPEND ${OUT}/baseline.txt "${first_passing},coverage\n")
   run(2 --exec "${top_left}" --golden ${OUT}/small --baseline ${OUT}/baseline.txt)
   expect_match("--baseline, a passing vector listed" "UNEXPECTED PASS  ${first_passing}")
 endif()
