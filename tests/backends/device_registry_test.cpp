@@ -22,17 +22,20 @@ TEST_CASE("every registered device has a name that parses back to its kind", "[r
     CHECK((d.built || !d.missing.empty()));
     names.insert(std::string(d.name));
   }
-  CHECK(names ==
-        std::set<std::string>{"cpu", "gl", "gl-exact", "vulkan", "vulkan-32", "vulkan-compute"});
-  // The promise of the reference's bits: every device but fixed-function GL.
+  CHECK(names == std::set<std::string>{"cpu", "gl", "gl-exact", "vulkan", "vulkan-32",
+                                       "vulkan-compute", "vulkan-native"});
+  // The promise of the reference's bits: every device but the native ones (fixed-function GL,
+  // Vulkan's own rasterizer and depth).
   CHECK(backends::deviceInfo(backends::DeviceKind::Cpu).exact);
   CHECK_FALSE(backends::deviceInfo(backends::DeviceKind::Gl).exact);
   CHECK(backends::deviceInfo(backends::DeviceKind::GlExact).exact);
   CHECK(backends::deviceInfo(backends::DeviceKind::Vulkan).exact);
   CHECK(backends::deviceInfo(backends::DeviceKind::Vulkan32).exact);
-  CHECK_THROWS_WITH(
-      backends::parseDeviceKind("metal"),
-      "unknown device \"metal\" (devices: cpu, gl, gl-exact, vulkan, vulkan-32, vulkan-compute)");
+  CHECK(backends::deviceInfo(backends::DeviceKind::VulkanCompute).exact);
+  CHECK_FALSE(backends::deviceInfo(backends::DeviceKind::VulkanNative).exact);
+  CHECK_THROWS_WITH(backends::parseDeviceKind("metal"),
+                    "unknown device \"metal\" (devices: cpu, gl, gl-exact, vulkan, vulkan-32, "
+                    "vulkan-compute, vulkan-native)");
 }
 
 TEST_CASE("a registered device is made at the size asked, or refused naming what to install",

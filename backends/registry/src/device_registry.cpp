@@ -16,6 +16,7 @@
 #if RECODE_HAVE_VULKAN
 #include "recode/backends/vulkan_compute_device.hpp"
 #include "recode/backends/vulkan_device.hpp"
+#include "recode/backends/vulkan_native_device.hpp"
 #endif
 
 namespace recode::backends {
@@ -38,7 +39,7 @@ constexpr bool kVulkanBuilt = true;
 constexpr bool kVulkanBuilt = false;
 #endif
 
-constexpr std::array<DeviceInfo, 6> kDevices = {{
+constexpr std::array<DeviceInfo, 7> kDevices = {{
     {DeviceKind::Cpu, "cpu", "the CPU reference (raster::CpuDevice): the contract's bits", true,
      true, ""},
     {DeviceKind::Gl, "gl",
@@ -58,6 +59,11 @@ constexpr std::array<DeviceInfo, 6> kDevices = {{
     {DeviceKind::VulkanCompute, "vulkan-compute",
      "the contract as a tile rasterizer in Vulkan compute shaders only (VulkanComputeDevice)", true,
      kVulkanBuilt, "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
+    {DeviceKind::VulkanNative, "vulkan-native",
+     "Vulkan 1.3's own rasterizer and depth/stencil attachment, headless (VulkanNativeDevice): the "
+     "same commands, the driver's coverage and depth",
+     false, kVulkanBuilt,
+     "install libvulkan-dev, mesa-vulkan-drivers and glslang-tools and reconfigure"},
 }};
 
 [[noreturn]] void notBuilt(const DeviceInfo& info) {
@@ -134,6 +140,8 @@ std::unique_ptr<raster::DepthStencilDevice> makeDevice(DeviceKind kind, int widt
       return std::make_unique<VulkanDevice>(width, height, ShaderArithmetic::Emulated32);
     case DeviceKind::VulkanCompute:
       return std::make_unique<VulkanComputeDevice>(width, height);
+    case DeviceKind::VulkanNative:
+      return std::make_unique<VulkanNativeDevice>(width, height);
 #endif
     default:
       notBuilt(info);

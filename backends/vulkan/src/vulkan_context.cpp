@@ -152,6 +152,7 @@ void VulkanContext::choosePhysicalDevice() {
       physical_ = physical;
       queueFamily_ = family;
       name_ = properties.deviceName;
+      limits_ = properties.limits;
       cpuDriver_ = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
       timestampPeriodNs_ = static_cast<double>(properties.limits.timestampPeriod);
     }
@@ -222,6 +223,12 @@ void VulkanContext::createDevice() {
   if (pushDescriptors)
     pushDescriptorSet_ = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+}
+
+VkFormatFeatureFlags VulkanContext::optimalFeatures(VkFormat format) const {
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(physical_, format, &properties);
+  return properties.optimalTilingFeatures;
 }
 
 VkDeviceMemory VulkanContext::allocate(const VkMemoryRequirements& requirements,

@@ -49,6 +49,11 @@ class VulkanContext {
   // Whether the physical device is a CPU driver (lavapipe): work is then best handed out in
   // fewer, larger pieces.
   [[nodiscard]] bool cpuDriver() const { return cpuDriver_; }
+  // The physical device's limits (the native device places its viewport within them).
+  [[nodiscard]] const VkPhysicalDeviceLimits& limits() const { return limits_; }
+  // What the physical device does with `format` in optimal tiling (the native device picks its
+  // depth/stencil format by it).
+  [[nodiscard]] VkFormatFeatureFlags optimalFeatures(VkFormat format) const;
 
   // Memory with these properties for an image or buffer with these requirements (`addressed`:
   // for a buffer reached by its device address).
@@ -101,6 +106,7 @@ class VulkanContext {
   VkQueue queue_ = VK_NULL_HANDLE;
   std::mutex queueLock_;
   std::string name_;
+  VkPhysicalDeviceLimits limits_{};
   bool cpuDriver_ = false;
   bool addresses_ = false;  // storage buffers are made addressable (Native64)
   double timestampPeriodNs_ = 0.0;

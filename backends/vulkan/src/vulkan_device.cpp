@@ -15,7 +15,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -28,7 +27,8 @@
 #include "recode/raster/device_checks.hpp"
 #include "recode/raster/fixed_point.hpp"
 #include "vulkan_context.hpp"
-#include "vulkan_enums.hpp"
+#include "vulkan_depth_stencil_image.hpp"
+#include "vulkan_draw_state.hpp"
 #include "vulkan_image_cache.hpp"
 #include "vulkan_pipeline.hpp"
 #include "vulkan_recorder.hpp"
@@ -60,8 +60,6 @@ const detail::ExactPipelines& sharedPipelines(ShaderArithmetic arithmetic) {
   static const detail::ExactPipelines& emulated = makePipelines(ShaderArithmetic::Emulated32);
   return emulated;
 }
-
-constexpr VkImageAspectFlags kBothAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
 
 }  // namespace
 
@@ -118,123 +116,21 @@ struct VulkanDevice::Impl {
     // requires. The two halves of a proxy rectangle share an edge, which Vulkan's
     // rasterization rules hand to exactly one of them.
     render(pipelines->exact, 0.0f, [&](VkCommandBuffer cmd) {
-      setDrawState(cmd);
+      detail::setDepthStencilState(cmd, *state);
       vkCmdBindVertexBuffers(cmd, 0, 1, &staged->buffer, &staged->offset);
       vkCmdDraw(cmd, 4, static_cast<std::uint32_t>(proxies.size()), 0, 0);
     });
   }
 
-  detail::ImageSlot slot;
-  VkImage image = VK_NULL_HANDLE;  // slot's, named for the many uses
-  VkImageView view = VK_NULL_HANDLE;
-  bool reused = false;  // the slot came from detail::imageCache: in GENERAL layout already
-
-  VkDevice device() const { return context->device(); }
-
-  // A GL-window rectangle (inside the framebuffer) as a framebuffer rectangle.
-  VkRect2D framebufferRect(const PixelRect& r) const {
-    return {{r.x0, height - r.y1},
-            {static_cast<std::uint32_t>(r.width()), static_cast<std::uint32_t>(r.height())}};
-  }
-
-  // The image lives in GENERAL layout for its whole life, so attachments and transfers need no
-  // layout transitions; the recorder's barriers order the commands.
-  void createImage() {
-    if (std::optional<detail::ImageSlot> kept =
-            detail::imageCache(arithmetic).take(width, height)) {
-      slot = *kept;
-      reused = true;
-    } else {
-      slot = makeImage(detail::capacityFor(width), detail::capacityFor(height));
-    }
-    image = slot.image;
-    view = slot.view;
-  }
-
-  detail::ImageSlot makeImage(int capacityWidth, int capacityHeight) const {
-    detail::ImageSlot made;
-    made.capacityWidth = capacityWidth;
-    made.capacityHeight = capacityHeight;
-    VkImageCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = detail::kExactDepthStencilFormat;
-    info.extent = {static_cast<std::uint32_t>(capacityWidth),
-                   static_cast<std::uint32_t>(capacityHeight), 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    vkCheck(vkCreateImage(device(), &info, nullptr, &made.image), "vkCreateImage");
-    VkMemoryRequirements requirements{};
-    vkGetImageMemoryRequirements(device(), made.image, &requirements);
-    made.memory = context->allocate(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    vkCheck(vkBindImageMemory(device(), made.image, made.memory, 0), "vkBindImageMemory");
-    VkImageViewCreateInfo viewInfo{};
-    viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-    viewInfo.image = made.image;
-    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    viewInfo.format = detail::kExactDepthStencilFormat;
-    viewInfo.subresourceRange = {kBothAspects, 0, 1, 0, 1};
-    vkCheck(vkCreateImageView(device(), &viewInfo, nullptr, &made.view), "vkCreateImageView");
-    return made;
-  }
-
-  // GENERAL layout (a kept image is in it already), then the start state of CpuDevice: depth
-  // 2^24 - 1 (stored as (2^24 - 1) 2^-24), stencil 0 everywhere.
-  void initialiseImage() {
-    recorder->record(image, [&](VkCommandBuffer cmd) {
-      if (reused) {
-        clearWholeImage(cmd);
-        return;
-      }
-      VkImageMemoryBarrier barrier{};
-      barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
-      barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-      barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-      barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-      barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      barrier.image = image;
-      barrier.subresourceRange = {kBothAspects, 0, 1, 0, 1};
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                           0, 0, nullptr, 0, nullptr, 1, &barrier);
-      clearWholeImage(cmd);
-    });
-  }
-
-  void clearWholeImage(VkCommandBuffer cmd) const {
-    const VkClearDepthStencilValue value{static_cast<float>(raster::kDepthMax) * kDepthUnit, 0};
-    const VkImageSubresourceRange range{kBothAspects, 0, 1, 0, 1};
-    vkCmdClearDepthStencilImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &value, 1, &range);
-  }
+  std::optional<detail::DepthStencilImage> target;  // made in the constructor
 
   // Records `body` as draws of the open rendering over the whole image (vulkan_recorder.hpp),
   // with `pipeline` bound, the viewport (negative height: GL's y up), the scissor and the
   // frame's push constants set.
   template <typename Body>
   void render(VkPipeline pipeline, float clearDepth, const Body& body) {
-    const auto beginRendering = [&](VkCommandBuffer cmd) {
-      VkRenderingAttachmentInfo attachment{};
-      attachment.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-      attachment.imageView = view;
-      attachment.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
-      attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-      attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-      VkRenderingInfo rendering{};
-      rendering.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
-      rendering.renderArea = {
-          {0, 0}, {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)}};
-      rendering.layerCount = 1;
-      rendering.pDepthAttachment = &attachment;
-      rendering.pStencilAttachment = &attachment;
-      vkCmdBeginRendering(cmd, &rendering);
-    };
-    recorder->render(image, view, beginRendering, [&](VkCommandBuffer cmd) {
+    const auto beginRendering = [&](VkCommandBuffer cmd) { target->beginRendering(cmd); };
+    recorder->render(target->image(), target->view(), beginRendering, [&](VkCommandBuffer cmd) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
       const VkViewport viewport{0.0f,
                                 static_cast<float>(height),
@@ -243,7 +139,7 @@ struct VulkanDevice::Impl {
                                 0.0f,
                                 1.0f};
       vkCmdSetViewport(cmd, 0, 1, &viewport);
-      const VkRect2D scissor = framebufferRect(state->scissor);
+      const VkRect2D scissor = target->framebufferRect(state->scissor);
       vkCmdSetScissor(cmd, 0, 1, &scissor);
       vkCmdSetCullMode(cmd, VK_CULL_MODE_NONE);  // the CPU culls, from the exact facing
       const detail::FramePushConstants frame{
@@ -255,89 +151,16 @@ struct VulkanDevice::Impl {
     });
   }
 
-  // Clears `aspect` over the scissor's rectangle inside the open rendering (vkCmdClearAttachments:
-  // rasterization order with the draws, no pipeline state, no fragment shading).
+  // Clears `aspect` over the scissor's rectangle inside the open rendering.
   void clearAttachment(VkCommandBuffer cmd, VkImageAspectFlags aspect,
                        VkClearDepthStencilValue value) const {
-    VkClearAttachment attachment{};
-    attachment.aspectMask = aspect;
-    attachment.clearValue.depthStencil = value;
-    const VkClearRect rect{framebufferRect(state->scissor), 0, 1};
-    vkCmdClearAttachments(cmd, 1, &attachment, 1, &rect);
+    detail::clearAttachmentRect(cmd, aspect, value, target->framebufferRect(state->scissor));
   }
 
-  // The interface's depth and stencil state, both faces sharing the compare function, masks
-  // and reference and each face its own ops.
-  void setDrawState(VkCommandBuffer cmd) const {
-    vkCmdSetDepthTestEnable(cmd, VK_TRUE);
-    vkCmdSetDepthWriteEnable(cmd, state->depthWrite ? VK_TRUE : VK_FALSE);
-    vkCmdSetDepthCompareOp(cmd, detail::vkCompareOp(state->depthFunc));
-    vkCmdSetStencilTestEnable(cmd, VK_TRUE);
-    const VkCompareOp compare = detail::vkCompareOp(state->stencilFunc);
-    const auto ops = [&](VkStencilFaceFlags face, const raster::StencilOps& o) {
-      vkCmdSetStencilOp(cmd, face, detail::vkStencilOp(o.stencilFail),
-                        detail::vkStencilOp(o.depthPass), detail::vkStencilOp(o.depthFail),
-                        compare);
-    };
-    ops(VK_STENCIL_FACE_FRONT_BIT, state->frontOps);
-    ops(VK_STENCIL_FACE_BACK_BIT, state->backOps);
-    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilValueMask);
-    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilWriteMask);
-    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state->stencilRef);
-  }
-
-  // Records a copy of one aspect of a GL-window rectangle; `deliver` gets its bytes, `texel`
-  // bytes a pixel, rows bottom first (the copy holds them top first), when the recording runs.
-  // A copy of `aspect` over r into a buffer at `offset` (rows from the image's top down).
-  [[nodiscard]] VkBufferImageCopy aspectCopy(const PixelRect& r, VkImageAspectFlags aspect,
-                                             VkDeviceSize offset) const {
-    const VkRect2D source = framebufferRect(r);
-    VkBufferImageCopy region{};
-    region.bufferOffset = offset;
-    region.imageSubresource = {aspect, 0, 0, 1};
-    region.imageOffset = {source.offset.x, source.offset.y, 0};
-    region.imageExtent = {source.extent.width, source.extent.height, 1};
-    return region;
-  }
-
+  // Records a read-back of one aspect of a GL-window rectangle, counted as this device's.
   void readAspect(const PixelRect& r, VkImageAspectFlags aspect, std::size_t texel,
                   std::function<void(std::vector<std::uint8_t>)> deliver) {
-    const std::size_t rowBytes = static_cast<std::size_t>(r.width()) * texel;
-    const std::size_t bytes = rowBytes * static_cast<std::size_t>(r.height());
-    const VkRect2D source = framebufferRect(r);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {aspect, 0, 0, 1};
-    region.imageOffset = {source.offset.x, source.offset.y, 0};
-    region.imageExtent = {source.extent.width, source.extent.height, 1};
-    const int h = r.height();
-    counted([&] {
-      recorder->readBack(
-          image, aspect, region, bytes,
-          [rowBytes, bytes, h, deliver = std::move(deliver)](const std::uint8_t* rows) {
-            std::vector<std::uint8_t> out(bytes);
-            for (int k = 0; k < h; ++k) {
-              std::memcpy(out.data() + static_cast<std::size_t>(k) * rowBytes,
-                          rows + static_cast<std::size_t>(h - 1 - k) * rowBytes, rowBytes);
-            }
-            deliver(std::move(out));
-          });
-    });
-  }
-
-  ~Impl() {
-    if (context == nullptr)
-      return;
-    // Commands recorded for this image must run before it goes: they are in the shared
-    // recording, beside other devices' commands.
-    try {
-      recorder->finish();
-    } catch (...) {  // NOLINT(bugprone-empty-catch): a destructor must not throw
-    }
-    if (std::optional<detail::ImageSlot> unkept = detail::imageCache(arithmetic).give(slot)) {
-      vkDestroyImageView(device(), unkept->view, nullptr);
-      vkDestroyImage(device(), unkept->image, nullptr);
-      vkFreeMemory(device(), unkept->memory, nullptr);
-    }
+    counted([&] { target->readAspect(r, aspect, texel, std::move(deliver)); });
   }
 };
 
@@ -352,8 +175,10 @@ VulkanDevice::VulkanDevice(int width, int height, ShaderArithmetic arithmetic)
   d.pipelines = &sharedPipelines(arithmetic);  // makes the context too
   d.context = &detail::VulkanContext::instance(arithmetic);
   d.recorder = &detail::sharedRecorder(arithmetic);
-  d.createImage();
-  d.initialiseImage();
+  // The start state of CpuDevice: depth 2^24 - 1 (stored as (2^24 - 1) 2^-24), stencil 0.
+  d.target.emplace(*d.context, *d.recorder, detail::imageCache(arithmetic),
+                   detail::kExactDepthStencilFormat, width, height,
+                   VkClearDepthStencilValue{static_cast<float>(raster::kDepthMax) * kDepthUnit, 0});
 }
 
 VulkanDevice::~VulkanDevice() = default;
@@ -404,20 +229,9 @@ void VulkanDevice::clearStencil(std::uint8_t value) {
     });
     return;
   }
-  // vkCmdClearAttachments ignores write masks. REPLACE with the clear value as reference under
-  // the device's write mask gives
-  // s = (value & mask) | (s & ~mask), GL's masked clear; depth is not tested, so not written.
+  // vkCmdClearAttachments ignores write masks: the clear pipeline's rectangle under them.
   d.render(d.pipelines->clear, 0.0f, [&](VkCommandBuffer cmd) {
-    vkCmdSetDepthTestEnable(cmd, VK_FALSE);
-    vkCmdSetDepthWriteEnable(cmd, VK_FALSE);
-    vkCmdSetDepthCompareOp(cmd, VK_COMPARE_OP_ALWAYS);
-    vkCmdSetStencilTestEnable(cmd, VK_TRUE);
-    vkCmdSetStencilOp(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, VK_STENCIL_OP_REPLACE,
-                      VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_REPLACE, VK_COMPARE_OP_ALWAYS);
-    vkCmdSetStencilCompareMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, 0xFF);
-    vkCmdSetStencilWriteMask(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, state_.stencilWriteMask);
-    vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, value);
-    vkCmdDraw(cmd, 4, 1, 0, 0);
+    detail::drawMaskedStencilClear(cmd, value, state_.stencilWriteMask);
   });
 }
 
@@ -470,9 +284,11 @@ std::shared_ptr<const raster::KeptDepth> VulkanDevice::keepDepthLater(const Pixe
     d.recorder->makeRoom(bytes);
     const detail::CommandRecorder::Scratch region = d.recorder->scratch(bytes);
     kept = std::make_shared<detail::VulkanKeptDepth>(*d.recorder, impl_.get(), r, region);
-    const VkBufferImageCopy copy = d.aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset);
-    d.recorder->record(d.image, [&](VkCommandBuffer cmd) {
-      vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &copy);
+    const VkBufferImageCopy copy =
+        d.target->aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset);
+    d.recorder->record(d.target->image(), [&](VkCommandBuffer cmd) {
+      vkCmdCopyImageToBuffer(cmd, d.target->image(), VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1,
+                             &copy);
     });
   });
   return kept;
@@ -506,14 +322,16 @@ raster::PendingRead<raster::PixelSummary> VulkanDevice::summarizeLater(
         summaryParameters(r, classes, withDepth, false, region.offset,
                           withDepth ? kept->region().offset : 0, out.offset);
     const VkBufferImageCopy stencilCopy =
-        d.aspectCopy(r, VK_IMAGE_ASPECT_STENCIL_BIT, region.offset);
+        d.target->aspectCopy(r, VK_IMAGE_ASPECT_STENCIL_BIT, region.offset);
     const VkBufferImageCopy farCopy =
-        d.aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset + inputs.farOffset());
+        d.target->aspectCopy(r, VK_IMAGE_ASPECT_DEPTH_BIT, region.offset + inputs.farOffset());
     const VkBuffer nearBuffer = withDepth ? kept->region().buffer : region.buffer;
-    d.recorder->record(d.image, [&](VkCommandBuffer cmd) {
-      vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &stencilCopy);
+    d.recorder->record(d.target->image(), [&](VkCommandBuffer cmd) {
+      vkCmdCopyImageToBuffer(cmd, d.target->image(), VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1,
+                             &stencilCopy);
       if (withDepth)
-        vkCmdCopyImageToBuffer(cmd, d.image, VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1, &farCopy);
+        vkCmdCopyImageToBuffer(cmd, d.target->image(), VK_IMAGE_LAYOUT_GENERAL, region.buffer, 1,
+                               &farCopy);
       vkCmdUpdateBuffer(cmd, region.buffer, region.offset + inputs.tableOffset(), inputs.tableBytes,
                         classes.classOf.data());
     });

@@ -57,12 +57,34 @@ struct ProxyInput {
   }};
 };
 
+// The exact pipelines' stages: the proxy records as instance input, or (the clear pipeline) none.
 VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout,
                           std::span<const std::uint32_t> vertexWords,
                           std::span<const std::uint32_t> fragmentWords, bool proxyInput,
                           ShaderArithmetic arithmetic) {
-  const VkShaderModule vertex = createModule(device, vertexWords);
-  const VkShaderModule fragment = createModule(device, fragmentWords);
+  const ProxyInput proxy(arithmetic);
+  VkPipelineVertexInputStateCreateInfo input{};
+  input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+  if (proxyInput) {
+    input.vertexBindingDescriptionCount = 1;
+    input.pVertexBindingDescriptions = &proxy.binding;
+    input.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(proxy.attributes.size());
+    input.pVertexAttributeDescriptions = proxy.attributes.data();
+  }
+  GraphicsPipelineDesc desc;
+  desc.vertex = vertexWords;
+  desc.fragment = fragmentWords;
+  desc.input = &input;
+  return createGraphicsPipeline(device, layout, desc);
+}
+
+}  // namespace
+
+VkPipeline createGraphicsPipeline(VkDevice device, VkPipelineLayout layout,
+                                  const GraphicsPipelineDesc& desc) {
+  const VkShaderModule vertex = createModule(device, desc.vertex);
+  const VkShaderModule fragment =
+      desc.fragment.empty() ? VK_NULL_HANDLE : createModule(device, desc.fragment);
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   for (auto& stage : stages) {
     stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -73,25 +95,19 @@ VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout,
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = fragment;
 
-  const ProxyInput proxy(arithmetic);
-  VkPipelineVertexInputStateCreateInfo input{};
-  input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-  if (proxyInput) {
-    input.vertexBindingDescriptionCount = 1;
-    input.pVertexBindingDescriptions = &proxy.binding;
-    input.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(proxy.attributes.size());
-    input.pVertexAttributeDescriptions = proxy.attributes.data();
-  }
+  VkPipelineVertexInputStateCreateInfo noInput{};
+  noInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
   VkPipelineInputAssemblyStateCreateInfo assembly{};
   assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+  assembly.topology = desc.topology;
   VkPipelineViewportStateCreateInfo viewport{};
   viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
   viewport.viewportCount = 1;
   viewport.scissorCount = 1;
-  // Culling is the CPU's (exact facing), but the cull mode is dynamic state and set to NONE.
-  // The device's viewport has a negative height (GL's y up), which keeps GL's winding, so a
-  // counter-clockwise proxy is front-facing and takes the front stencil ops.
+  // The cull mode is dynamic state (the exact devices cull on the CPU, from the exact facing,
+  // and set NONE; the native device sets the interface's). The devices' viewports have a
+  // negative height (GL's y up), which keeps GL's winding, so a triangle counter-clockwise in GL
+  // window coordinates is front-facing and takes the front stencil ops.
   VkPipelineRasterizationStateCreateInfo raster{};
   raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
   raster.polygonMode = VK_POLYGON_MODE_FILL;
@@ -113,15 +129,15 @@ VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout,
   // Dynamic rendering: the attachment formats instead of a render pass.
   VkPipelineRenderingCreateInfo rendering{};
   rendering.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO;
-  rendering.depthAttachmentFormat = kExactDepthStencilFormat;
-  rendering.stencilAttachmentFormat = kExactDepthStencilFormat;
+  rendering.depthAttachmentFormat = desc.depthStencilFormat;
+  rendering.stencilAttachmentFormat = desc.depthStencilFormat;
 
   VkGraphicsPipelineCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
   info.pNext = &rendering;
-  info.stageCount = static_cast<std::uint32_t>(stages.size());
+  info.stageCount = fragment == VK_NULL_HANDLE ? 1 : 2;
   info.pStages = stages.data();
-  info.pVertexInputState = &input;
+  info.pVertexInputState = desc.input != nullptr ? desc.input : &noInput;
   info.pInputAssemblyState = &assembly;
   info.pViewportState = &viewport;
   info.pRasterizationState = &raster;
@@ -134,23 +150,31 @@ VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout,
   const VkResult result =
       vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
   vkDestroyShaderModule(device, vertex, nullptr);
-  vkDestroyShaderModule(device, fragment, nullptr);
+  if (fragment != VK_NULL_HANDLE)
+    vkDestroyShaderModule(device, fragment, nullptr);
   vkCheck(result, "vkCreateGraphicsPipelines");
   return pipeline;
 }
 
-}  // namespace
+VkPipelineLayout createPushConstantLayout(VkDevice device, VkShaderStageFlags stages,
+                                          std::uint32_t bytes) {
+  VkPushConstantRange range{};
+  range.stageFlags = stages;
+  range.size = bytes;
+  VkPipelineLayoutCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  info.pushConstantRangeCount = 1;
+  info.pPushConstantRanges = &range;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  vkCheck(vkCreatePipelineLayout(device, &info, nullptr, &layout), "vkCreatePipelineLayout");
+  return layout;
+}
 
 ExactPipelines createExactPipelines(VkDevice device, ShaderArithmetic arithmetic) {
   ExactPipelines out;
-  VkPushConstantRange range{};
-  range.stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-  range.size = sizeof(FramePushConstants);
-  VkPipelineLayoutCreateInfo layout{};
-  layout.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-  layout.pushConstantRangeCount = 1;
-  layout.pPushConstantRanges = &range;
-  vkCheck(vkCreatePipelineLayout(device, &layout, nullptr, &out.layout), "vkCreatePipelineLayout");
+  out.layout =
+      createPushConstantLayout(device, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                               sizeof(FramePushConstants));
   const SpirvModules spirv = spirvModules(arithmetic);
   out.exact =
       createPipeline(device, out.layout, spirv.exactVertex, spirv.exactFragment, true, arithmetic);

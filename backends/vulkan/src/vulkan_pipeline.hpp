@@ -1,9 +1,10 @@
 #pragma once
-// The exact Vulkan device's two graphics pipelines, shared by every device: the exact pipeline
-// draws proxy rectangles (per-instance ProxyTriangle records) through the contract's shaders;
-// the clear pipeline draws one rectangle writing the clear depth, so that clears honour the
-// scissor and both write masks. Everything a device changes is dynamic state (Vulkan 1.3), so
-// these two serve every state.
+// The graphics pipelines of the Vulkan devices. The exact Vulkan device's two, shared by every
+// exact device: the exact pipeline draws proxy rectangles (per-instance ProxyTriangle records)
+// through the contract's shaders; the clear pipeline draws one rectangle writing the clear depth,
+// so that clears honour the scissor and both write masks. Everything a device changes is dynamic
+// state (Vulkan 1.3), so these two serve every state. The native device's are made by
+// createGraphicsPipeline too (vulkan_native_pipeline.hpp).
 
 #include <vulkan/vulkan_core.h>
 
@@ -32,6 +33,26 @@ inline constexpr VkFormat kExactDepthStencilFormat = VK_FORMAT_D32_SFLOAT_S8_UIN
 // Made once per logical device, with that arithmetic's shaders; throws std::runtime_error on a
 // Vulkan failure.
 [[nodiscard]] ExactPipelines createExactPipelines(VkDevice device, ShaderArithmetic arithmetic);
+
+// What sets one graphics pipeline of the Vulkan devices apart; the rest is common to them all:
+// every piece of state the device interface changes is dynamic (with the viewport and scissor),
+// fill mode, one sample, no colour attachment, VK_FRONT_FACE_COUNTER_CLOCKWISE.
+struct GraphicsPipelineDesc {
+  std::span<const std::uint32_t> vertex;
+  std::span<const std::uint32_t> fragment;  // empty: no fragment stage (the driver's own depth)
+  const VkPipelineVertexInputStateCreateInfo* input = nullptr;  // null: no vertex input
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+  VkFormat depthStencilFormat = kExactDepthStencilFormat;
+};
+
+// A graphics pipeline of `desc` in `layout`, for dynamic rendering; throws std::runtime_error on
+// a Vulkan failure.
+[[nodiscard]] VkPipeline createGraphicsPipeline(VkDevice device, VkPipelineLayout layout,
+                                                const GraphicsPipelineDesc& desc);
+
+// A pipeline layout with one push-constant block of `bytes` read by `stages`.
+[[nodiscard]] VkPipelineLayout createPushConstantLayout(VkDevice device, VkShaderStageFlags stages,
+                                                        std::uint32_t bytes);
 
 // A compute pipeline whose shader reads `storageBuffers` storage buffers at bindings 0, 1, ...
 // of set 0 and a push-constant block of `pushBytes`: the summary pipeline's shape, and the

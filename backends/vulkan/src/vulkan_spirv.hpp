@@ -1,5 +1,5 @@
 #pragma once
-// The exact Vulkan device's shaders as SPIR-V words, compiled from backends/vulkan/shaders at
+// The Vulkan devices' shaders as SPIR-V words, compiled from backends/vulkan/shaders at
 // build time (backends/vulkan/CMakeLists.txt) and embedded here.
 
 #include <cstdint>
@@ -15,11 +15,13 @@ struct SpirvModules {
   std::span<const std::uint32_t> clearVertex;    // clear_vk.vert: a full-framebuffer rectangle
   std::span<const std::uint32_t> clearFragment;  // clear_vk.frag: the clear depth
   std::span<const std::uint32_t> summaryCompute;  // summary_vk.comp: integers only, serves both
+  std::span<const std::uint32_t> nativeVertex;    // native_vk.vert: the native device's one stage
 };
 
 // The modules of devices with that shader arithmetic: Emulated32's exact stages declare neither
 // the Float64 nor the Int64 capability (tests/backends/vulkan checks the words); the clear
-// stages and the summary's compute stage need neither and serve both.
+// stages, the summary's compute stage and the native device's vertex stage need neither and
+// serve both.
 [[nodiscard]] SpirvModules spirvModules(ShaderArithmetic arithmetic);
 
 }  // namespace recode::backends::detail

@@ -20,11 +20,13 @@ enum class DeviceKind {
   Vulkan,    // VulkanDevice: the same contract on Vulkan 1.3
   Vulkan32,  // VulkanDevice, ShaderArithmetic::Emulated32: the same bits, 32-bit shaders only
   VulkanCompute,  // VulkanComputeDevice: the contract as a tile rasterizer in compute shaders
+  VulkanNative,   // VulkanNativeDevice: Vulkan's own rasterizer and depth (not bit-exact)
 };
 
 struct DeviceInfo {
   DeviceKind kind = DeviceKind::Cpu;
-  std::string_view name;         // "cpu", "gl", "gl-exact", "vulkan", "vulkan-32", "vulkan-compute"
+  // "cpu", "gl", "gl-exact", "vulkan", "vulkan-32", "vulkan-compute", "vulkan-native"
+  std::string_view name;
   std::string_view description;  // one line
   bool exact = false;            // promises raster::CpuDevice's bits (docs/rasterization.md)
   bool built = false;            // this build can make it
