@@ -26,6 +26,7 @@ import subprocess
 import sys
 import time
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 BACKEND = os.path.join(ROOT, "backends", "webgpu", "native", "native_backend.py")
@@ -39,7 +40,8 @@ DEPTH_STAGES = ("depth value", "quantisation")
 def skip_without_webgpu(text):
     for reason in NO_WEBGPU:
         if reason in text:
-            print("SKIP: %s in headless Chromium; WebGPU's native pipeline was not checked" % reason)
+            print("SKIP: %s in headless Chromium; WebGPU's native pipeline was not checked"
+                  % reason)
             sys.exit(77)
 
 

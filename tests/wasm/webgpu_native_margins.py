@@ -25,6 +25,7 @@ import sys
 
 import numpy as np
 
+sys.dont_write_bytecode = True  # importing the example must leave no __pycache__ in the tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                 "examples", "backends"))
 import numpy_backend as model  # noqa: E402

@@ -242,8 +242,8 @@ struct ClearOut { @builtin(position) position: vec4f, @location(0) @interpolate(
     new Float32Array(u, 0, 2).set([2 / (256 * P), 2 / (256 * Q)]);
     new Int32Array(u, 8, 2).set([256 * tx0, 256 * ty0]);
     const uniforms = buffer(GPUBufferUsage.UNIFORM, new Uint8Array(u));
-    const bindGroup = device.createBindGroup({layout: bindGroupLayout,
-                                              entries: [{binding: 0, resource: {buffer: uniforms}}]});
+    const bindGroup = device.createBindGroup({
+      layout: bindGroupLayout, entries: [{binding: 0, resource: {buffer: uniforms}}]});
     const target = device.createTexture({size: [P, Q], format: FORMAT,
         usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC});
     const encoder = device.createCommandEncoder();
