@@ -1,0 +1,159 @@
+#include "recode/conformance/fingerprint.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "recode/conformance/api_freedoms.hpp"
+
+namespace recode::conformance {
+
+namespace {
+
+// Vectors named per candidate and side: enough to find them, few enough to read.
+constexpr std::size_t kVectorsNamed = 5;
+
+enum class Buffers { StencilFirst, Depth };
+
+struct TraitSpec {
+  const char* freedom;
+  const char* contractWhat;
+  Freedom of;
+  Buffers buffers;  // coverage traits judge by the stencil where it differs
+};
+
+constexpr TraitSpec kTraits[] = {
+    {"tie rule", "left and bottom edges own the samples on them", Freedom::TieRule,
+     Buffers::StencilFirst},
+    {"sub-pixel precision", "vertices on the 1/256-pixel grid (8 bits)", Freedom::SubPixelPrecision,
+     Buffers::StencilFirst},
+    {"depth arithmetic", "the plane in double, in the contract's order",
+     Freedom::DepthInterpolation, Buffers::Depth},
+    {"24-bit conversion", "z * 16777215 rounded to nearest, ties to even", Freedom::DepthConversion,
+     Buffers::Depth},
+};
+
+void note(std::vector<std::string>& names, const std::string& name) {
+  if (names.size() < kVectorsNamed && (names.empty() || names.back() != name))
+    names.push_back(name);
+}
+
+}  // namespace
+
+FingerprintBuilder::FingerprintBuilder() {
+  std::vector<kit::VariantInfo> readings(kit::wrongVariants().begin(), kit::wrongVariants().end());
+  readings.insert(readings.end(), kit::subPixelVariants().begin(), kit::subPixelVariants().end());
+  for (const TraitSpec& spec : kTraits) {
+    FingerprintTrait t;
+    t.freedom = spec.freedom;
+    t.candidates.push_back(
+        {kit::Variant::Contract, "contract", spec.contractWhat, 0, 0, 0, {}, {}});
+    for (const kit::VariantInfo& r : readings) {
+      if (freedomOf(r.variant) == spec.of)
+        t.candidates.push_back(
+            {r.variant, std::string(r.name), std::string(r.what), 0, 0, 0, {}, {}});
+    }
+    traits_.push_back(std::move(t));
+  }
+}
+
+void FingerprintBuilder::add(const std::string& name, const raster::CommandStream& stream,
+                             const Answer& expected, const Answer& got) {
+  if (got.wasRefused() || expected.wasRefused())
+    return;
+  const std::size_t n = expected.depth.size();
+  if (got.depth.size() != n || got.stencil.size() != n)
+    return;
+  for (std::size_t ti = 0; ti < traits_.size(); ++ti) {
+    FingerprintTrait& trait = traits_[ti];
+    const bool stencilFirst = kTraits[ti].buffers == Buffers::StencilFirst;
+    std::vector<Answer> answers;
+    answers.reserve(trait.candidates.size());
+    answers.push_back(expected);
+    for (std::size_t c = 1; c < trait.candidates.size(); ++c)
+      answers.push_back(ModelBackend(trait.candidates[c].variant).run(stream));
+    for (std::size_t p = 0; p < n; ++p) {
+      // The buffer this pixel is judged by: the stencil where the candidates' stencils differ
+      // (coverage traits), else the depth.
+      bool byStencil = false;
+      bool differs = false;
+      for (std::size_t c = 1; c < answers.size(); ++c) {
+        if (answers[c].wasRefused())
+          continue;
+        if (stencilFirst && answers[c].stencil[p] != expected.stencil[p])
+          byStencil = true;
+        if (answers[c].depth[p] != expected.depth[p] ||
+            answers[c].stencil[p] != expected.stencil[p])
+          differs = true;
+      }
+      if (!differs)
+        continue;
+      const auto value = [&](const Answer& a) -> std::uint32_t {
+        return byStencil ? a.stencil[p] : a.depth[p];
+      };
+      const std::uint32_t mine = value(got);
+      for (std::size_t c = 0; c < answers.size(); ++c) {
+        if (answers[c].wasRefused())
+          continue;
+        const std::uint32_t theirs = value(answers[c]);
+        // Only the pixels where this candidate stands apart from the contract tell about it;
+        // for the contract, the pixels where any reading does.
+        if (c != 0 && theirs == value(expected))
+          continue;
+        FingerprintCandidate& cand = trait.candidates[c];
+        if (mine == theirs) {
+          ++cand.pixelsFor;
+          note(cand.vectorsFor, name);
+          continue;
+        }
+        const bool other = std::any_of(answers.begin(), answers.end(), [&](const Answer& a) {
+          return !a.wasRefused() && value(a) == mine;
+        });
+        if (other) {
+          ++cand.pixelsAgainst;
+          note(cand.vectorsAgainst, name);
+        } else {
+          ++cand.pixelsNeither;
+        }
+      }
+    }
+    trait.taken = -1;
+    long long best = 0;
+    for (std::size_t c = 0; c < trait.candidates.size(); ++c) {
+      const FingerprintCandidate& cand = trait.candidates[c];
+      // Taken: sided with, never against, and more often than with none of the readings.
+      if (cand.pixelsAgainst == 0 && cand.pixelsFor > best && cand.pixelsFor > cand.pixelsNeither) {
+        best = cand.pixelsFor;
+        trait.taken = static_cast<int>(c);
+      }
+    }
+  }
+}
+
+std::string FingerprintTrait::verdict() const {
+  const auto evidence = [](const FingerprintCandidate& c) {
+    return "for " + std::to_string(c.pixelsFor) + " pixels, against " +
+           std::to_string(c.pixelsAgainst) + ", neither " + std::to_string(c.pixelsNeither);
+  };
+  if (taken >= 0) {
+    const FingerprintCandidate& c = candidates[static_cast<std::size_t>(taken)];
+    return c.name + ": " + c.what + " (" + evidence(c) + ")";
+  }
+  const auto most =
+      std::max_element(candidates.begin(), candidates.end(),
+                       [](const FingerprintCandidate& a, const FingerprintCandidate& b) {
+                         return a.pixelsFor - a.pixelsAgainst < b.pixelsFor - b.pixelsAgainst;
+                       });
+  if (most == candidates.end() || most->pixelsFor == 0)
+    return "not told: no vector shows the back end beside one of the kit's readings";
+  return "none of the kit's readings on every pixel; closest " + most->name + " (" +
+         evidence(*most) + ")";
+}
+
+std::string describe(const std::vector<FingerprintTrait>& traits) {
+  std::string out = "fingerprint (the freedoms of the graphics APIs it takes):\n";
+  for (const FingerprintTrait& t : traits)
+    out += "  " + t.freedom + ": " + t.verdict() + "\n";
+  return out;
+}
+
+}  // namespace recode::conformance
