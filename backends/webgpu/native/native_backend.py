@@ -19,6 +19,7 @@ import base64
 import json
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 
@@ -107,9 +108,13 @@ def main():
                 continue
             send(answer(dt, message))
     finally:
-        if proc is not None:
-            proc.kill()
-            proc.wait()
+        if proc is not None:  # asked to end first, so that its children stop writing the profile
+            proc.terminate()
+            try:
+                proc.wait(timeout=3)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                proc.wait()
         shutil.rmtree(profile, ignore_errors=True)
     return 0
 
