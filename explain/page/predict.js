@@ -236,7 +236,6 @@ window.recodePredict = (function () {
   // --- checking an answer ----------------------------------------------------------------------
 
   function close(a, b) { return Math.abs(Number(a) - b) <= TOLERANCE; }
-  function num(v) { return Math.round(v * 1e4) / 1e4; }
 
   // One block's depths (or range): [near, far] given against the reference's; what is wrong,
   // or '' when nothing is. `other`: the other block's, to name a depth taken from it.
@@ -361,8 +360,10 @@ window.recodePredict = (function () {
         const d = answers.depths[name];
         return label + ' ' + (d.none ? 'none (not on this ray)' : esc(end ? d.far : d.near));
       }
-      const truth = t.depths[name];
-      return label + ' ' + (truth ? num(truth[end]) : 'none (not on this ray)');
+      const rays = page.rayData, i = current.index;
+      if (!t.depths[name]) return label + ' none (not on this ray)';
+      const faces = name === 'A' ? [rays.a_front, rays.a_back] : [rays.b_front, rays.b_back];
+      return label + ' ' + depthText(rays, faces[end][i]);
     };
     const where = 'pixel ' + (t.inMor ? 'inside' : 'outside') + ' the MOR';
     const parts = [[where, 'A ' + (t.depths.A ? 'on' : 'not on') + ' this ray', stencil],
@@ -371,8 +372,8 @@ window.recodePredict = (function () {
       [where, stencil, depth('A', 0), depth('B', 0)],
       [where, stencil, depth('A', 0), depth('B', 1)],
       [where, 'stencil after pass 5: ' + esc(answers.stencil[4])]][k];
-    return parts.join('; ') + (given || k === 0 || k === 2 || k === 5 ? '' :
-      ' (depths as coordinates along the view axis; the larger is nearer the viewer)');
+    return parts.join('; ') + (!given || k === 0 || k === 2 || k === 5 ? '' :
+      ' (depths as coordinates along the view axis: the larger is nearer the viewer)');
   }
 
   // --- the panel -------------------------------------------------------------------------------
@@ -467,10 +468,14 @@ window.recodePredict = (function () {
       h += '<option value="-1">not examined (outside the MOR)</option></select></td></tr>';
       h += '</table>';
       h += '<details id="predict-rules"><summary>The rules of the passes and of the ' +
-        'read-back</summary><ol>' + PASSES.concat([DECODE]).map(function (p) {
-        return '<li><b>' + esc(p.title) + '</b>: ' + esc(p.rule) + '</li>';
+        'read-back</summary><ol>' + PASSES.concat([DECODE]).map(function (p, k) {
+        return '<li><b>' + term(k < PASSES.length ? 'term-pass-' + (k + 1) : 'term-read-back',
+          esc(p.title)) + '</b>: ' + esc(p.rule) + '</li>';
       }).join('') + '</ol><p>Depth tests compare 24-bit values; equal depths pass both LEQUAL ' +
-        'and GEQUAL. The stencil test 1 &le; count reads bits 0-1 only.</p></details>';
+        'and GEQUAL (' + term('term-depth-test', 'depth tests') + '). The stencil test 1 &le; ' +
+        'count reads bits 0-1 only. The read-back’s decoding: ' +
+        term('term-stencil-encoding', 'stencil encoding') + ', ' +
+        term('term-cases', 'the nine cases') + '.</p></details>';
     }
     h += '<button type="submit" id="predict-check">Check</button> ' +
       '<button type="button" id="predict-close">Leave the exercise</button></form>' +

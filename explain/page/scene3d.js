@@ -474,7 +474,7 @@ void main() { outColour = vec4(vColour, 1.0); }`;
       // A turn that shows depth: the view axis across the screen, the blocks seen a little from
       // above (the exercises open with it).
       lookFromSide() {
-        Object.assign(cam, {yaw: 70, pitch: 15, zoom: 0.9});
+        Object.assign(cam, {yaw: 70, pitch: 15, zoom: 0.6});
         draw();
       },
       lookAlongAxis() {
