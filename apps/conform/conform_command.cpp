@@ -255,13 +255,17 @@ void addConformCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--explain", o->explain, "bad pixels explained per failing vector in the text")
       ->check(CLI::Range(0, 1 << 20))
       ->capture_default_str();
-  cmd->add_option("--junit", o->junit, "also write a JUnit XML report to this file");
+  cmd->add_option("--junit", o->junit,
+                  "also write a JUnit XML report to this file: a test case per vector; a back end "
+                  "that broke is an error whose type is its kind");
   cmd->add_option("--html", o->html,
                   "also write a self-contained HTML report (error masks, histories) to this file");
   cmd->add_option("--reduce", o->reduceDir,
                   "reduce the first failing vector to a minimal one and write it, with a "
                   "passing twin, as golden vectors into this directory");
-  cmd->add_flag("--json", o->json, "print one JSON object instead of the report");
+  cmd->add_flag("--json", o->json,
+                "print one JSON object instead of the report (with error and error_kind when the "
+                "back end broke)");
   cmd->callback([o, &exitCode]() { exitCode = runConform(*o); });
 }
 

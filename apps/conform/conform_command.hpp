@@ -8,4 +8,4 @@
 namespace recode::app {
 // Adds the `conform` subcommand; its run sets `exitCode` (0 passed, 2 a vector failed, 1 error).
 void addConformCommand(CLI::App& app, int& exitCode);
-}
+}  // namespace recode::app

@@ -621,7 +621,7 @@ Reduction reduce(const raster::CommandStream& stream, Backend& backend,
   const std::string failure = describe(out.signature);
   out.minimal =
       goldenOf(reducer.minimal(),
-               "Reduced by recode conform --reduce from a stream of " +
+               "Reduced by delta debugging from a stream of " +
                    count(static_cast<long long>(stream.commands.size()), "command") + " (" +
                    count(before.draws, "draw") + ", " + count(before.triangles, "triangle") +
                    ") on " + std::to_string(stream.width) + " x " + std::to_string(stream.height) +
@@ -630,8 +630,8 @@ Reduction reduce(const raster::CommandStream& stream, Backend& backend,
                    " of the back end; it still " + failure + ".");
   if (const auto& twin = reducer.twin()) {
     out.passingTwin = goldenOf(twin->first,
-                               "Passing twin of a vector reduced by recode conform "
-                               "--reduce, one step from it (" +
+                               "Passing twin of a vector reduced by delta debugging, one "
+                               "step from it (" +
                                    twin->second.what + "): " + name +
                                    " passes it, while the reduced vector " + failure + ".");
   }

@@ -19,8 +19,10 @@
 
 namespace recode::conformance {
 
+// The protocol's name, which the greeting exchanges.
 inline constexpr const char* kProtocol = "recode-conform-1";
 
+// The bounds on a back end's time.
 struct ProcessOptions {
   std::chrono::milliseconds timeout{60000};   // per message: the greeting, each answer
   std::chrono::milliseconds exitGrace{5000};  // after stdin is closed, before the kill
@@ -41,6 +43,9 @@ class ProcessBackend final : public Backend {
 
   // The name the back end gave in its greeting.
   [[nodiscard]] std::string name() const override { return name_; }
+  // Sends the stream as one request and checks the answer against the protocol's rules. Throws
+  // BackendError, with its kind, when the back end breaks them, crashes or does not answer in
+  // time; the back end has then been killed.
   [[nodiscard]] Answer run(const raster::CommandStream& stream) override;
 
   // The command as it was given.
