@@ -13,7 +13,8 @@ window.recodeInspector = (function () {
   const stepName = document.getElementById('step-name');
   let ids = [];
   const common = window.recodeCommon;
-  const TITLES = common.STEP_TITLES, esc = common.esc, inRect = common.inRect;
+  const esc = common.esc, inRect = common.inRect;
+  let TITLES = {};  // each step's name by its id, from the ray data
   let pixel = null;
   let pinned = false;
   let step = 0;
@@ -233,6 +234,7 @@ window.recodeInspector = (function () {
     const atLast = step >= ids.length - 1;
     data = newData;
     D = data.depth_max;
+    TITLES = common.stepWords(data).names;
     ids = data.steps.map(function (s) { return s.id; });
     step = ids.length === 0 ? 0 : (atLast ? ids.length - 1 : Math.min(step, ids.length - 1));
     slider.max = String(Math.max(0, ids.length - 1));

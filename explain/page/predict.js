@@ -17,7 +17,9 @@ window.recodePredict = (function () {
   const $ = function (id) { return document.getElementById(id); };
   const STORE = 'recode.predict.v1';
   const NOT_EXAMINED = -1;  // the "case" of a pixel outside the MOR: never read back
-  const PASSES = common.PASSES, DECODE = common.READ_BACK;
+  // The five passes and the read-back with their names and rules, from the ray data (the C++
+  // that writes the sections states them); set by the first update, before any exercise opens.
+  let PASSES = [], DECODE = null;
   const MODES = ['min', 'max', 'full'];
   // How far a depth the student reads may lie from the reference's (world units along the
   // view axis): the exercises' faces lie on round values, far more than this apart.
@@ -692,6 +694,12 @@ window.recodePredict = (function () {
   // pose the student changed is closed, and the page says so (its answer would no longer be
   // this pose's); the student's pose stays.
   page.onUpdate.push(function (rays) {
+    const words = common.stepWords(rays);
+    if (!DECODE) {
+      PASSES = words.passes;
+      DECODE = words.readBack;
+      fillTerms();
+    }
     if (pending) {
       const e = pending;
       pending = null;
@@ -744,19 +752,20 @@ window.recodePredict = (function () {
     open(EXERCISES.find(function (e) { return e.pick.own; }), [x, y, i], rays);
   }, true);
 
-  // The passes' entries in the page's Terms: the rules stated once (page/common.js).
-  (function fillTerms() {
+  // The passes' entries in the page's Terms, from the ray data.
+  function fillTerms() {
     const list = $('terms-passes');
     if (!list) return;
     list.innerHTML = PASSES.concat([DECODE]).map(function (p, k) {
       return '<dt id="' + (k < PASSES.length ? 'term-pass-' + (k + 1) : 'term-read-back') +
         '">' + esc(p.title) + '</dt><dd>' + esc(p.rule) + '</dd>';
     }).join('');
-  })();
+  }
 
   render();
   return {
-    exercises: EXERCISES, passes: PASSES, decode: DECODE, tolerance: TOLERANCE, start: start,
+    get passes() { return PASSES; }, get decode() { return DECODE; },
+    exercises: EXERCISES, tolerance: TOLERANCE, start: start,
     close: leave, check: check, current: function () { return current; },
     progress: function () { return progress; }, choosePixel: choosePixel,
   };

@@ -157,3 +157,34 @@ TEST_CASE(
     }
   }
 }
+
+TEST_CASE(
+    "the steps' names and rules are stated once: the ray data carries every step's, and each "
+    "section's heading starts with its step's name",
+    "[explain]") {
+  const PairSetup setup = turnedBoxes("z");
+  const auto run = runRecorded(setup, core::MorMode::Min);
+  std::vector<explain::KeptPicture> pictures;
+  const explain::ExplainedRun explained = explain::explainRun(
+      setup, run->result, run->recorder.snapshots(), core::MorMode::Min, true, {}, &pictures, {});
+  const nlohmann::json& words = explained.rays.scalars["step_words"];
+  REQUIRE(words.size() == static_cast<std::size_t>(core::kPairStepCount));
+  for (int k = 0; k < core::kPairStepCount; ++k) {
+    const auto step = static_cast<core::PairStep>(k);
+    CAPTURE(k);
+    CHECK(words[k]["id"] == std::string(core::toString(step)));
+    CHECK(words[k]["name"].get<std::string>().rfind(std::to_string(k + 1) + " ", 0) == 0);
+    CHECK(words[k]["rule"].get<std::string>().size() > 40);
+  }
+  int headed = 0;
+  for (const explain::Section& s : explained.sections) {
+    for (const auto& w : words) {
+      if (w["id"] != s.step)
+        continue;
+      CAPTURE(s.title);
+      CHECK(s.title.rfind(w["name"].get<std::string>() + ": ", 0) == 0);
+      ++headed;
+    }
+  }
+  CHECK(headed >= 6);  // the five passes and the read-back at least
+}

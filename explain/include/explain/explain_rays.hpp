@@ -37,7 +37,8 @@ struct RayInputs {
 // The inspector's data with its per-pixel arrays apart from the rest: each array row by row,
 // bottom row first, over the crop, crop.area() values.
 struct RayArrays {
-  nlohmann::json scalars;  // "frame", "crop", "capped", "steps": [{"id"}], "mor", ...
+  nlohmann::json scalars;  // "frame", "crop", "capped", "steps": [{"id"}], "mor",
+                           // "step_words": [{"id", "name", "rule"}] of every step, ...
   std::vector<std::vector<std::uint32_t>> depth;    // after each step
   std::vector<std::vector<std::uint32_t>> stencil;  // after each step
   std::vector<std::uint32_t> aFront, aBack, bFront, bBack, coverage;

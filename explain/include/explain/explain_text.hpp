@@ -13,7 +13,16 @@ namespace recode::explain {
 inline constexpr std::string_view kSilhouettesTitle = "The two blocks and the MOR";
 inline constexpr std::string_view kContactTitle = "The contact region";
 
-// The heading of a step's section.
+// A step as the pages name it: `name` the short name the section's heading starts with and
+// the ray inspector, the interactive page's exercises and its terms show ("1 SetZ"); `rule`
+// what the step does at one pixel, in plain text, the rule a student checks a prediction
+// against. Stated here once: the pages' scripts read them from the ray data ("step_words").
+struct StepWords {
+  std::string_view name;
+  std::string_view rule;
+};
+[[nodiscard]] StepWords stepWords(core::PairStep step);
+// The heading of a step's section: its name and what it draws.
 [[nodiscard]] std::string stepTitle(core::PairStep step);
 // Whether the step is the paper's or was added here, with one sentence why (a paragraph).
 [[nodiscard]] std::string originText(core::PairStep step);

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "explain/explain_text.hpp"
 #include "recode/pair/pair_cases.hpp"
 
 namespace recode::explain {
@@ -95,6 +96,17 @@ RayArrays rayArrays(const RayInputs& in, const PixelRect& frame, const PixelRect
   for (int c = 0; c < core::kCaseCount; ++c)
     names.push_back(std::string(core::caseName(c)));
   j["case_names"] = names;
+  // Every step's name and rule (whether it ran or not: the interactive page's exercises and
+  // terms name the passes a box test skipped), so that the scripts state none of them.
+  nlohmann::json words = nlohmann::json::array();
+  for (int k = 0; k < core::kPairStepCount; ++k) {
+    const auto step = static_cast<core::PairStep>(k);
+    const StepWords w = stepWords(step);
+    words.push_back({{"id", std::string(core::toString(step))},
+                     {"name", std::string(w.name)},
+                     {"rule", std::string(w.rule)}});
+  }
+  j["step_words"] = words;
   return r;
 }
 

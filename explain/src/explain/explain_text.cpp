@@ -78,24 +78,75 @@ std::string stencilMeaning(std::uint8_t value, PairStep step) {
   return text;
 }
 
-std::string stepTitle(PairStep step) {
+StepWords stepWords(PairStep step) {
   switch (step) {
     case PairStep::SetZ:
-      return "RenderSetZ(A, &ge;): the far side of A into the depth buffer";
+      return {"1 SetZ",
+              "depth cleared to 0 and stencil to 0 over the MOR; every fragment of A passes "
+              "GEQUAL and REPLACEs the stencil with 1. So: 1 where A covers the pixel, 0 where "
+              "it does not (or outside the MOR: the scissor keeps every pass away and the "
+              "stencil stays 0). The depth buffer ends holding Amax."};
     case PairStep::TestZ:
-      return "RenderTestZ(B, &le;): count B's faces in front of A's far side";
+      return {"2 TestZ",
+              "only where A is present (stencil test 1 \u2264 count), each face of B at or in "
+              "front of Amax (LEQUAL) INCRements the count in bits 0-1. So the count becomes 1 "
+              "+ the number of B\u2019s two boundaries at or before Amax; where A is absent "
+              "nothing changes."};
     case PairStep::LoadAmin:
-      return "Load the near side of A into the depth buffer";
+      return {"3 Load Amin",
+              "A is drawn again into depth cleared to 1, leaving Amin in the depth buffer; the "
+              "stencil write mask is 0, so the stencil does not change at all."};
     case PairStep::TestAminFront:
-      return "Is B's front face at or behind A's near side? (stencil bit 2)";
+      return {"4 B front vs Amin",
+              "only B\u2019s front face is drawn. Where A is present it INVERTs bit 2 (value 4) "
+              "when that face is at or behind Amin (GEQUAL); where A is absent the stencil test "
+              "fails and sfail INVERTs bit 2 anyway, so bit 2 then says that B covers the "
+              "pixel. No face of B: nothing changes."};
     case PairStep::TestAminBack:
-      return "Is B's back face at or behind A's near side? (stencil bit 3)";
+      return {"5 B back vs Amin",
+              "the same for B\u2019s back face and bit 3 (value 8): INVERT when it is at or "
+              "behind Amin where A is present, always where A is absent and B covers the "
+              "pixel."};
     case PairStep::ReadStencil:
-      return "Read back the stencil and classify every pixel";
+      return {"6 Read stencil",
+              "the read-back decodes the stencil (the stencil encoding): count 0 gives case 0 "
+              "without bits 2-3, else 8; count 1 gives 1 without them, else 2; count 2 gives 3 "
+              "with both bits, else 4; count 3 gives 5 with both, 6 with one, 7 with neither. A "
+              "pixel outside the MOR is not read back: not examined."};
     case PairStep::ContactNear:
-      return "Contact: the near end of the overlap, max(A<sub>min</sub>, B<sub>min</sub>)";
+      return {"7 Contact near",
+              "only over the interfering pixels' rectangle: depth cleared to 0, the front "
+              "faces of A and B drawn with GEQUAL, leaving max(Amin, Bmin); the stencil is "
+              "kept."};
     case PairStep::ContactFar:
-      return "Contact: the far end of the overlap, min(A<sub>max</sub>, B<sub>max</sub>)";
+      return {"8 Contact far",
+              "over the same rectangle: depth cleared to 1, the back faces of A and B drawn "
+              "with LEQUAL, leaving min(Amax, Bmax); the stencil is kept."};
+  }
+  return {"?", ""};
+}
+
+std::string stepTitle(PairStep step) {
+  const auto titled = [step](std::string_view what) {
+    return std::string(stepWords(step).name) + ": " + std::string(what);
+  };
+  switch (step) {
+    case PairStep::SetZ:
+      return titled("RenderSetZ(A, &ge;), the far side of A into the depth buffer");
+    case PairStep::TestZ:
+      return titled("RenderTestZ(B, &le;), count B's faces in front of A's far side");
+    case PairStep::LoadAmin:
+      return titled("load the near side of A into the depth buffer");
+    case PairStep::TestAminFront:
+      return titled("is B's front face at or behind A's near side? (stencil bit 2)");
+    case PairStep::TestAminBack:
+      return titled("is B's back face at or behind A's near side? (stencil bit 3)");
+    case PairStep::ReadStencil:
+      return titled("read back the stencil and classify every pixel");
+    case PairStep::ContactNear:
+      return titled("the near end of the overlap, max(A<sub>min</sub>, B<sub>min</sub>)");
+    case PairStep::ContactFar:
+      return titled("the far end of the overlap, min(A<sub>max</sub>, B<sub>max</sub>)");
   }
   return "?";
 }
