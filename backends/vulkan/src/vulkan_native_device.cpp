@@ -135,9 +135,9 @@ std::vector<std::uint32_t> depthFromCopy(const std::vector<std::uint8_t>& bytes,
   return out;
 }
 
-// Triangles staged and drawn at a time: 36 bytes each, so a draw's staging stays well inside the
-// recorder's flush size however large the draw.
-constexpr std::size_t kTrianglesPerDraw = std::size_t{1} << 20;
+// Indices drawn at a time (whole triangles): a draw's staging stays well inside the recorder's
+// flush size, and its index count inside vkCmdDrawIndexed's, however large the draw.
+constexpr std::size_t kIndicesPerDraw = 3 * (std::size_t{1} << 20);
 
 }  // namespace
 
@@ -151,7 +151,8 @@ struct VulkanNativeDevice::Impl {
   std::optional<detail::DepthStencilImage> target;
   VkViewport viewport{};
   detail::WindowPushConstants window{};
-  std::vector<float> vertexScratch;  // x, y, z per index, reused between draws
+  // A draw's vertices (x, y, z as floats) then its indices, staged as one block; reused.
+  std::vector<std::uint8_t> drawScratch;
 
   // Runs `call` on the recorder, counting what it made the recorder do as this device's.
   template <typename Call>
@@ -194,19 +195,22 @@ struct VulkanNativeDevice::Impl {
     });
   }
 
-  // Stages `count` vertices of vertexScratch and draws them as a triangle list in the state set.
-  void drawList(std::size_t count) {
+  // Stages drawScratch (`vertexBytes` of vertices, then `count` indices) and draws the indices
+  // as a triangle list in the state set. One block, so that no flush of the recording can come
+  // between the vertices and the indices.
+  void drawIndexed(std::size_t vertexBytes, std::size_t count) {
     // No other thread's finish() may come between the staging and the draw that reads it.
     const auto hold = recorder->hold();
     const detail::CommandRecorder::Staged staged =
-        counted([&] { return recorder->stage(vertexScratch.data(), count * 3 * sizeof(float)); });
+        counted([&] { return recorder->stage(drawScratch.data(), drawScratch.size()); });
     // Vulkan keeps primitive order for depth and stencil (rasterization order), within a draw and
     // from one draw to the next in a rendering: triangles reach each pixel in index order.
     render(shared->pipelines.draw, [&](VkCommandBuffer cmd) {
       detail::setDepthStencilState(cmd, *state);
       vkCmdSetCullMode(cmd, vkCullMode(state->cull));
       vkCmdBindVertexBuffers(cmd, 0, 1, &staged.buffer, &staged.offset);
-      vkCmdDraw(cmd, static_cast<std::uint32_t>(count), 1, 0, 0);
+      vkCmdBindIndexBuffer(cmd, staged.buffer, staged.offset + vertexBytes, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(count), 1, 0, 0, 0);
     });
   }
 
@@ -285,19 +289,22 @@ void VulkanNativeDevice::drawTriangles(std::span<const raster::WindowVertex> ver
   if (state_.scissor.empty())  // the scissor test discards every fragment
     return;
   Impl& d = *impl_;
-  // Each index's vertex as x, y snapped to the 1/256 grid and z: a list with no index buffer,
-  // whose shared vertices are the same floats in every triangle that uses them.
-  const std::size_t chunk = 3 * kTrianglesPerDraw;
-  for (std::size_t first = 0; first < indices.size(); first += chunk) {
-    const std::size_t count = std::min(chunk, indices.size() - first);
-    d.vertexScratch.resize(3 * count);
-    for (std::size_t k = 0; k < count; ++k) {
-      const raster::WindowVertex& v = vertices[indices[first + k]];
-      d.vertexScratch[3 * k] = raster::snapToSubpixel(v.x);
-      d.vertexScratch[3 * k + 1] = raster::snapToSubpixel(v.y);
-      d.vertexScratch[3 * k + 2] = v.z;
-    }
-    d.drawList(count);
+  // The vertices as x, y snapped to the 1/256 grid and z, as the GL device hands them to GL; the
+  // indices as given (an indexed draw, as GL's glDrawElements).
+  std::vector<float> xyz(3 * vertices.size());
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    xyz[3 * k] = raster::snapToSubpixel(vertices[k].x);
+    xyz[3 * k + 1] = raster::snapToSubpixel(vertices[k].y);
+    xyz[3 * k + 2] = vertices[k].z;
+  }
+  const std::size_t vertexBytes = xyz.size() * sizeof(float);
+  for (std::size_t first = 0; first < indices.size(); first += kIndicesPerDraw) {
+    const std::size_t count = std::min(kIndicesPerDraw, indices.size() - first);
+    d.drawScratch.resize(vertexBytes + count * sizeof(std::uint32_t));
+    std::memcpy(d.drawScratch.data(), xyz.data(), vertexBytes);
+    std::memcpy(d.drawScratch.data() + vertexBytes, indices.data() + first,
+                count * sizeof(std::uint32_t));
+    d.drawIndexed(vertexBytes, count);
   }
 }
 

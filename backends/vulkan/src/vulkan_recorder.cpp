@@ -155,7 +155,8 @@ CommandRecorder::Staged CommandRecorder::stage(const void* data, std::size_t byt
   const std::lock_guard<std::recursive_mutex> hold(lock_);
   if (pendingBytes_ + bytes > kFlushBytes)
     finish();
-  return copyIn(staging_, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, data, bytes);
+  return copyIn(staging_, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                data, bytes);
 }
 
 void CommandRecorder::readBack(VkImage image, VkImageAspectFlags aspect,

@@ -52,8 +52,8 @@ class CommandRecorder {
               const std::function<void(VkCommandBuffer)>& draws);
 
   // Copies `bytes` of host data into staging memory that lives until the recording has run;
-  // returns the buffer and offset to bind. Runs the recording first when the staged bytes would
-  // pass kFlushBytes, so memory stays bounded however large the batch.
+  // returns the buffer and offset to bind (as vertices or indices). Runs the recording first when
+  // the staged bytes would pass kFlushBytes, so memory stays bounded however large the batch.
   struct Staged {
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceSize offset = 0;
