@@ -13,8 +13,12 @@
 #      devices batched, Vulkan pair by pair, with speculative contact passes, the same concluded
 #      from 64-byte summaries made by a compute shader, and that on 16 devices a frame size
 #      (waves), the 32-bit Vulkan device, the compute device, FCL GJK, Bullet),
-# and prints a summary. Exit status 0 when every correctness check passed (the bench's times are
-# reported, never judged).
+#   5. recode conform on the native pipelines, the fixed-function GL device (gl) and Vulkan's own
+#      rasterizer and depth (vulkan-native): the driver's departures from the contract, with the
+#      freedoms of the APIs it takes (the fingerprint), reported and never judged,
+# and prints a summary. Exit status 0 when every correctness check passed (the bench's times and
+# the native pipelines' failing vectors are reported, never judged; a native conform that ends in
+# an error, a crash rather than a verdict, fails the check).
 #
 # Usage: scripts/gpu-check.sh [OUT]          (default OUT: gpu-check)
 # Environment: RECODE   the recode binary (default build/apps/recode)
@@ -77,6 +81,21 @@ compute_tests=$(dirname "$recode")/../tests/backends/recode_backends_vulkan_comp
 if [[ -x $compute_tests ]]; then
   step "vulkan-compute device tests" vulkan-compute-tests.log "$compute_tests"
 fi
+native() {  # native DEVICE: recode conform --json on a native pipeline, its vectors reported
+  local device=$1 start=$SECONDS status
+  "$recode" conform --device "$device" --json >"$out/conform-$device.json" 2>"$out/conform-$device.log"
+  status=$?
+  if ((status == 0 || status == 2)); then  # 2: vectors failed, the driver's own answers
+    printf '%-34s reported (%d s; see %s)\n' "conform --device $device" $((SECONDS - start)) \
+      "$out/conform-$device.json"
+  else
+    printf '%-34s FAILED  (%d s; see %s)\n' "conform --device $device" $((SECONDS - start)) \
+      "$out/conform-$device.log"
+    failed+=("conform --device $device")
+  fi
+}
+native gl
+native vulkan-native
 step "bench table2 figure8" bench.log \
   "$recode" bench table2 figure8 $quick --out "$out/bench" \
   --algorithms recode-cpu,recode-gl-exact,recode-vulkan,recode-vulkan-per-pair,recode-vulkan-speculative,recode-vulkan-summaries,recode-vulkan-waves,recode-vulkan-32,recode-vulkan-compute,fcl-gjk,bullet
@@ -97,6 +116,23 @@ for device in ("vulkan", "gl-exact", "vulkan-32", "vulkan-compute"):
     c = load(f"conform-{device}.json")
     if c:
         print(f"conform {device}: {c.get('passed', '?')} of {c.get('vectors', '?')} vectors passed")
+for device in ("gl", "vulkan-native"):  # native pipelines: where the driver departs, and how
+    c = load(f"conform-{device}.json")
+    if not c:
+        continue
+    failing = [r for r in c.get("results", []) if not r.get("passed")]
+    stages, families = {}, {}
+    for r in failing:
+        stages[r.get("stage", "?")] = stages.get(r.get("stage", "?"), 0) + 1
+        family = r.get("file", "?").rsplit(".", 1)[0].rstrip("0123456789").rstrip("_")
+        families[family] = families.get(family, 0) + 1
+    forbidden = sum(1 for r in failing if r.get("api", {}).get("forbidden_pixels", 0) > 0)
+    print(f"conform {device} (native): {c.get('passed', '?')} of {c.get('vectors', '?')} vectors"
+          f" give the contract's bits; {forbidden} failing vectors with pixels the APIs forbid")
+    print("  failing by stage: " + ", ".join(f"{k} {v}" for k, v in sorted(stages.items())))
+    print("  failing by family: " + ", ".join(f"{k} {v}" for k, v in sorted(families.items())))
+    for f in c.get("fingerprint", []):
+        print(f"  {f.get('freedom', '?')}: {f.get('verdict', '?')}")
 for name, keys in (("verify-800.json", ("vulkan", "gl_exact")),
                    ("verify-800-compute.json", ("vulkan",))):
     v = load(name)
