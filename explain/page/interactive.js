@@ -2,8 +2,8 @@
 // drags and turns, and on every change the pair runs again in the reference compiled to
 // WebAssembly (wasm/, recode_page), which answers with `recode pair --json`'s object, the explain
 // page's sections for this run (the same text, legends and pictures as `recode explain`), and
-// the ray inspector's data. The scene the page runs is a scene file (docs/scenes.md), shown and
-// exported as such, so that `recode pair` on the exported file gives the page's answer.
+// the ray inspector's data. The scene the page runs is a scene file, shown and exported as
+// such, so that `recode pair` on the exported file gives the page's answer.
 (function () {
   'use strict';
   const SHAPES = {

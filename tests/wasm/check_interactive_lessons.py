@@ -31,6 +31,7 @@ Exit status 0: passed; 1: failed; 77: skipped because no Chromium is installed.
 
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -472,6 +473,11 @@ def main():
         return 77
     index_html = write_page(recode, os.path.join(work, "page"))
     size = os.path.getsize(index_html)
+    # Not even the page's source (its scripts' comments included) names a file of the repo.
+    with open(index_html, encoding="utf-8") as f:
+        named = sorted(set(re.findall(r"[\w./-]*(?:docs/|\.md\b)[\w./-]*", f.read())))
+    if named:
+        fail("the page's source names files outside it: %s" % named[:5])
     if size >= MAX_PAGE_BYTES:
         fail("the page is %d bytes, over its budget of %d" % (size, MAX_PAGE_BYTES))
     profile = tempfile.mkdtemp(prefix="recode-chromium-")
