@@ -32,6 +32,48 @@ std::string allowedDepths(const std::vector<AllowedState>& states) {
 
 }  // namespace
 
+Requirement requirementOf(const AllowedFrame& frame) {
+  Requirement r;
+  FreedomSet depth = 0, stencil = 0;
+  for (const AllowedPixel& p : frame.pixels) {
+    if (!p.depthFixed()) {
+      r.depth.byGraphicsApis = false;
+      for (const AllowedState& s : p.states)
+        depth |= s.freedoms;
+    }
+    if (!p.stencilFixed()) {
+      r.stencil.byGraphicsApis = false;
+      for (const AllowedState& s : p.states)
+        stencil |= s.freedoms;
+    }
+  }
+  const auto names = [](FreedomSet set) {
+    std::vector<std::string> out;
+    for (Freedom f : {Freedom::TieRule, Freedom::SubPixelPrecision, Freedom::DepthInterpolation,
+                      Freedom::DepthConversion})
+      if ((set & static_cast<FreedomSet>(f)) != 0)
+        out.emplace_back(toString(f));
+    return out;
+  };
+  r.depth.latitudes = names(depth);
+  r.stencil.latitudes = names(stencil);
+  return r;
+}
+
+ApiTally tallyByApis(const AllowedFrame& frame, const std::vector<BadPixel>& bad) {
+  ApiTally t;
+  for (const BadPixel& p : bad) {
+    const AllowedPixel& a = frame.at(p.x, p.y);
+    if (a.allows(p.gotDepth, p.gotStencil)) {
+      ++t.withinFreedom;
+      t.freedoms |= a.freedomsFor(p.gotDepth, p.gotStencil);
+    } else {
+      ++t.forbidden;
+    }
+  }
+  return t;
+}
+
 ApiVerdict judgeByApis(const raster::CommandStream& stream, const BadPixel& pixel,
                        const FreedomWidths& widths) {
   ApiVerdict v;
@@ -77,6 +119,10 @@ std::string_view apiClause(Stage stage) {
   return "";
 }
 
+Stage forbiddenStage(const ApiVerdict& v, Stage stage) {
+  return v.stencilAllowed ? Stage::DepthValue : stage;
+}
+
 std::string describe(const ApiVerdict& v, const BadPixel& p, Stage stage) {
   if (v.allowed) {
     std::string out = "within the APIs' freedom: " + describe(v.freedoms);
@@ -90,7 +136,8 @@ std::string describe(const ApiVerdict& v, const BadPixel& p, Stage stage) {
     }
     return how.empty() ? out : out + " (" + how + ")";
   }
-  std::string out = "forbidden by the APIs: " + std::string(apiClause(stage)) + "; ";
+  std::string out =
+      "forbidden by the APIs: " + std::string(apiClause(forbiddenStage(v, stage))) + "; ";
   if (!v.stencilAllowed)
     out += "the back end's stencil " + std::to_string(static_cast<unsigned>(p.gotStencil)) +
            " is not among the allowed " + allowedStencils(v.states);

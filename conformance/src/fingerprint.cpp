@@ -18,7 +18,7 @@ struct TraitSpec {
   const char* freedom;
   const char* contractWhat;
   Freedom of;
-  Buffers buffers;  // coverage traits judge by the stencil where it differs
+  Buffers buffers;  // coverage traits judge by the stencil, where it differs
 };
 
 constexpr TraitSpec kTraits[] = {
@@ -85,7 +85,9 @@ void FingerprintBuilder::add(const std::string& name, const raster::CommandStrea
             answers[c].stencil[p] != expected.stencil[p])
           differs = true;
       }
-      if (!differs)
+      // A coverage trait tells only where a candidate covers other samples: the stencil shows
+      // it whatever the back end's depth arithmetic does.
+      if (!differs || (stencilFirst && !byStencil))
         continue;
       const auto value = [&](const Answer& a) -> std::uint32_t {
         return byStencil ? a.stencil[p] : a.depth[p];

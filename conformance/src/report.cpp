@@ -21,29 +21,19 @@ std::string readingText(kit::Variant v) {
   return std::string(kit::variantName(v));
 }
 
-std::string latitudeList(const std::vector<std::string>& latitudes) {
-  std::string s;
-  for (std::size_t i = 0; i < latitudes.size(); ++i)
-    s += (i == 0 ? "" : (i + 1 == latitudes.size() ? " and " : ", ")) + latitudes[i];
-  return s;
-}
-
-// For the buffers that differ: a driver bug (the APIs require the answer) or a departure from
-// this contract only.
-std::string requirementText(const Requirement& r, bool depth, bool stencil) {
-  std::string s;
-  const auto one = [&](const char* buffer, const BufferRequirement& b) {
-    s += s.empty() ? "" : "; ";
-    s += std::string(buffer) + ": ";
-    s += b.byGraphicsApis ? "the graphics APIs require this answer too (on a native pipeline, a "
-                            "driver bug)"
-                          : "this contract's answer only (the APIs leave " +
-                                latitudeList(b.latitudes) + " to the implementation)";
-  };
-  if (depth)
-    one("depth", r.depth);
-  if (stencil)
-    one("stencil", r.stencil);
+// A failing vector's bad pixels against the graphics APIs: how many a native pipeline may not
+// give (with each explained pixel's clause below) and how many lie within the APIs' freedom.
+std::string apiText(const ApiTally& t) {
+  const long long all = t.forbidden + t.withinFreedom;
+  if (t.forbidden == 0)
+    return "graphics APIs: every bad pixel lies within their freedom (" + describe(t.freedoms) +
+           "): a native pipeline may answer this; only this contract fixes it";
+  std::string s = "graphics APIs: " + std::to_string(t.forbidden) + " of " + std::to_string(all) +
+                  " bad pixels are departures the APIs forbid (on a native pipeline, a bug; "
+                  "each explained pixel names its clause)";
+  if (t.withinFreedom > 0)
+    s += "; " + std::to_string(t.withinFreedom) + " lie within their freedom (" +
+         describe(t.freedoms) + ")";
   return s;
 }
 
@@ -114,16 +104,14 @@ void printVector(std::ostream& out, const VectorReport& v, std::size_t pixels) {
   if (!v.stage)
     return;
   out << "        stage: " << toString(*v.stage) << ", " << contractSection(*v.stage) << '\n';
-  if (v.requirement) {
-    const bool both = !v.refused.empty();
-    out << "        "
-        << requirementText(*v.requirement, both || v.depthPixels > 0, both || v.stencilPixels > 0)
-        << '\n';
-  }
+  if (v.api)
+    out << "        " << apiText(*v.api) << '\n';
   for (std::size_t i = 0; i < v.explained.size() && i < pixels; ++i) {
     const PixelExplanation& e = v.explained[i];
     out << "        " << pixelLine(e.pixel) << '\n';
     out << "          " << toString(e.stage) << ": " << e.why << '\n';
+    if (i < v.apiVerdicts.size())
+      out << "          APIs: " << describe(v.apiVerdicts[i], e.pixel, e.stage) << '\n';
     out << "          the contract's history of the pixel:\n";
     indented(out, describe(e.history), "            ");
   }
@@ -168,6 +156,14 @@ void printSummary(std::ostream& out, const SuiteReport& report) {
   out << '\n';
   if (const std::string v = verdict(report); !v.empty())
     out << v << '\n';
+  int forbidding = 0;
+  for (const VectorReport& v : report.vectors)
+    forbidding += v.api && v.api->forbidden > 0 ? 1 : 0;
+  if (report.count(Status::Failed) + report.count(Status::ExpectedFailure) > 0 &&
+      !report.fingerprint.empty())
+    out << "departures the graphics APIs forbid: " << forbidding
+        << (forbidding == 1 ? " vector" : " vectors") << '\n'
+        << describe(report.fingerprint);
   if (!report.error.empty()) {
     out << "error";
     if (report.errorKind)
@@ -245,6 +241,55 @@ json historyJson(const PixelHistory& h) {
   return {{"events", events}, {"depth", h.finalDepth}, {"stencil", h.finalStencil}};
 }
 
+json freedomNames(FreedomSet set) {
+  json out = json::array();
+  for (Freedom f : {Freedom::TieRule, Freedom::SubPixelPrecision, Freedom::DepthInterpolation,
+                    Freedom::DepthConversion})
+    if ((set & static_cast<FreedomSet>(f)) != 0)
+      out.push_back(toString(f));
+  return out;
+}
+
+json verdictJson(const ApiVerdict& v, Stage stage) {
+  json choices = json::array();
+  for (const OpenChoice& c : v.choices)
+    choices.push_back({{"command", c.command},
+                       {"draw", c.draw},
+                       {"triangle", c.triangle},
+                       {"freedom", toString(c.freedom)},
+                       {"how", c.how}});
+  json states = json::array();
+  for (const AllowedState& s : v.states)
+    states.push_back({{"stencil", s.stencil}, {"depth", {s.depthLo, s.depthHi}}});
+  json j = {{"allowed", v.allowed},
+            {"freedoms", freedomNames(v.freedoms)},
+            {"allowed_states", states},
+            {"choices", choices}};
+  if (!v.allowed)
+    j["clause"] = apiClause(forbiddenStage(v, stage));
+  return j;
+}
+
+json fingerprintJson(const std::vector<FingerprintTrait>& traits) {
+  json out = json::array();
+  for (const FingerprintTrait& t : traits) {
+    json candidates = json::array();
+    for (const FingerprintCandidate& c : t.candidates)
+      candidates.push_back({{"reading", c.name},
+                            {"what", c.what},
+                            {"pixels_for", c.pixelsFor},
+                            {"pixels_against", c.pixelsAgainst},
+                            {"pixels_neither", c.pixelsNeither},
+                            {"vectors_for", c.vectorsFor},
+                            {"vectors_against", c.vectorsAgainst}});
+    json trait = {{"freedom", t.freedom}, {"verdict", t.verdict()}, {"candidates", candidates}};
+    trait["taken"] =
+        t.taken < 0 ? json(nullptr) : json(t.candidates[static_cast<std::size_t>(t.taken)].name);
+    out.push_back(std::move(trait));
+  }
+  return out;
+}
+
 json vectorJson(const VectorReport& v) {
   json j = {
       {"file", v.name},   {"status", toString(v.status)}, {"passed", v.status == Status::Passed},
@@ -258,6 +303,10 @@ json vectorJson(const VectorReport& v) {
     j["api_latitudes"] = {{"depth", v.requirement->depth.latitudes},
                           {"stencil", v.requirement->stencil.latitudes}};
   }
+  if (v.api)
+    j["api"] = {{"forbidden_pixels", v.api->forbidden},
+                {"freedom_pixels", v.api->withinFreedom},
+                {"freedoms", freedomNames(v.api->freedoms)}};
   if (v.baselineStage)
     j["baseline_stage"] = toString(*v.baselineStage);
   if (!v.stage)
@@ -295,6 +344,9 @@ json vectorJson(const VectorReport& v) {
               {"history", historyJson(e.history)}};
     if (e.sameAsReading)
       x["same_as_reading"] = kit::variantName(*e.sameAsReading);
+    const std::size_t i = j["explained"].size();
+    if (i < v.apiVerdicts.size())
+      x["api"] = verdictJson(v.apiVerdicts[i], e.stage);
     j["explained"].push_back(std::move(x));
   }
   return j;
@@ -353,6 +405,8 @@ std::string toJson(const SuiteReport& report,
             {"behaves_like", readings},
             {"verdict", verdict(report)},
             {"results", list}};
+  if (!report.fingerprint.empty())
+    j["fingerprint"] = fingerprintJson(report.fingerprint);
   if (!report.error.empty()) {
     j["error"] = report.error;
     if (report.errorKind)

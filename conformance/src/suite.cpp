@@ -180,7 +180,7 @@ Answer expectedOf(const raster::GoldenVector& g) {
 
 // Counts and explains a failing answer.
 void explainFailure(const SuiteVector& v, const Answer& expected, const Answer& got,
-                    const SuiteOptions& options, VectorReport& r) {
+                    const SuiteOptions& options, const AllowedFrame* allowed, VectorReport& r) {
   const raster::CommandStream& stream = v.golden.stream;
   r.refused = got.refused;
   if (got.wasRefused()) {
@@ -203,6 +203,11 @@ void explainFailure(const SuiteVector& v, const Answer& expected, const Answer& 
     r.explained.push_back(explainPixel(stream, r.badPixels[i], readings));
   r.stage = r.explained.empty() ? failingStage(stream, expected, got, readings)
                                 : r.explained.front().stage;
+  if (allowed) {
+    r.api = tallyByApis(*allowed, r.badPixels);
+    for (const PixelExplanation& e : r.explained)
+      r.apiVerdicts.push_back(judgeByApis(stream, e.pixel));
+  }
 }
 
 // The wrong readings whose answers equal the back end's on every vector: eliminated on the
@@ -236,6 +241,7 @@ SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
   std::vector<SuiteVector> run;
   std::vector<Answer> answers;
   std::vector<bool> failed;
+  FingerprintBuilder fingerprint;
   for (const SuiteVector& v : vectors) {
     VectorReport r;
     r.name = v.name;
@@ -261,10 +267,14 @@ SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
     const bool fails = !(got == expected);
     if (const auto listed = options.baseline.find(v.name); listed != options.baseline.end())
       r.baselineStage = listed->second;
-    if (options.classify)
-      r.requirement = requirementOf(v.golden.stream, expected);
+    std::optional<AllowedFrame> allowed;
+    if (options.classify) {
+      allowed = allowedByApis(v.golden.stream);
+      r.requirement = requirementOf(*allowed);
+      fingerprint.add(v.name, v.golden.stream, expected, got);
+    }
     if (fails)
-      explainFailure(v, expected, got, options, r);
+      explainFailure(v, expected, got, options, allowed ? &*allowed : nullptr, r);
     r.status = statusOf(fails, differentRuns, r.stage, r.baselineStage);
     if (onVector)
       onVector(r);
@@ -277,6 +287,8 @@ SuiteReport runSuite(Backend& backend, const std::vector<SuiteVector>& vectors,
     if (fails && options.stopAtFirstFailure)
       break;
   }
+  if (options.classify)
+    report.fingerprint = fingerprint.traits();
   const bool anyFailed = std::find(failed.begin(), failed.end(), true) != failed.end();
   if (options.nameReadings && anyFailed)
     report.behavesLike = matchingReadings(run, answers, failed);

@@ -14,8 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "recode/conformance/api_verdict.hpp"
 #include "recode/conformance/backend.hpp"
 #include "recode/conformance/diagnosis.hpp"
+#include "recode/conformance/fingerprint.hpp"
 #include "recode/raster/golden.hpp"
 
 namespace recode::conformance {
@@ -72,7 +74,9 @@ struct VectorReport {
   std::vector<BadPixel> badPixels;          // all of them, scan order
   std::vector<PixelExplanation> explained;  // the first explainLimit of them
   std::optional<Stage> stage;               // where a failing answer first departs
-  std::optional<Requirement> requirement;   // for failing vectors
+  std::optional<Requirement> requirement;   // whether the APIs fix each buffer (classify)
+  std::optional<ApiTally> api;              // failing vectors' bad pixels against the APIs
+  std::vector<ApiVerdict> apiVerdicts;      // the explained pixels' verdicts, in their order
   std::optional<Stage> baselineStage;       // the stage the baseline lists it with, if it does
   double seconds = 0.0;                     // the back end's time on the vector
 };
@@ -81,9 +85,11 @@ struct SuiteOptions {
   // Bad pixels of a failing vector explained with their history; 0 skips the explanations and
   // the wrong readings' answers they consult (the stage then comes from the history alone).
   std::size_t explainLimit = 64;
-  bool classify = true;  // say for each vector whether the graphics APIs require its answer
-  int repeat = 1;        // runs of every vector (a failing one is always run twice)
-  Baseline baseline;     // the expected failures
+  // Judge each vector and bad pixel against what the graphics APIs allow, and fingerprint the
+  // freedoms the back end takes.
+  bool classify = true;
+  int repeat = 1;                   // runs of every vector (a failing one is always run twice)
+  Baseline baseline;                // the expected failures
   bool stopAtFirstFailure = false;  // stop at the first failing vector (random streams)
   bool nameReadings = true;         // match the failures against the kit's wrong readings
 };
@@ -94,6 +100,9 @@ struct SuiteReport {
   // Wrong readings whose answers equal the back end's on every vector run (empty when all
   // passed or when none matches).
   std::vector<kit::Variant> behavesLike;
+  // Which of the APIs' freedoms the back end takes (SuiteOptions::classify), from every vector
+  // it answered.
+  std::vector<FingerprintTrait> fingerprint;
   std::string error;  // a BackendError that ended the run, prefixed with its vector's name
   std::optional<BackendFailure> errorKind;  // how the back end broke, with `error`
   std::string errorVector;  // the vector it broke on; empty when it broke before any vector
