@@ -127,163 +127,292 @@ std::string triangleName(const TriangleEvent& t) {
          " (command " + std::to_string(t.command) + ")";
 }
 
-// The stage from the reference's history alone, when no wrong reading gives the back end's
-// values: the first thing in the contract's order that the back end's value can come from.
-void stageFromHistory(const PixelHistory& h, PixelExplanation& out) {
-  const BadPixel& p = out.pixel;
+// A quantisation at, or within 1e-3 of, a rounding tie (z * 16777215 = k + 0.5): where other
+// roundings than the contract's part from it, so a depth a unit or two off there is the rounding.
+bool nearRoundingTie(const Quantisation& q) {
+  return q.tie || std::abs(q.scaled - std::floor(q.scaled) - 0.5) < 1e-3;
+}
+
+std::string roundingTieWhy(const std::string& what, const Quantisation& q) {
+  return what + " at " + (q.tie ? std::string("a tie") : std::string("almost a tie")) +
+         ", which the contract rounds to " + std::to_string(q.q);
+}
+
+std::string onEdgeWhy(const TriangleEvent& t) {
+  return "the sample lies exactly on an edge of " + triangleName(t) + ", which " +
+         (t.outcome == TriangleOutcome::Fragment ? "covers it (the edge is inclusive)"
+                                                 : "does not cover it (the edge is not "
+                                                   "inclusive)") +
+         ": the fill rule decides";
+}
+
+// The pixel's depth and stencil just before and just after an event (equal when it changed
+// nothing: a clear outside the scissor or under a closed write mask, a triangle without a
+// fragment, a fragment whose ops kept both).
+struct EventState {
+  std::uint32_t depthBefore = 0, depthAfter = 0;
+  std::uint8_t stencilBefore = 0, stencilAfter = 0;
+  [[nodiscard]] bool changes() const {
+    return depthBefore != depthAfter || stencilBefore != stencilAfter;
+  }
+};
+
+EventState stateOf(const HistoryEvent& e) {
+  if (e.clear)
+    return {e.clear->depthBefore, e.clear->depthAfter, e.clear->stencilBefore,
+            e.clear->stencilAfter};
+  if (e.triangle)
+    return {e.triangle->depthBefore, e.triangle->depthAfter, e.triangle->stencilBefore,
+            e.triangle->stencilAfter};
+  return {};
+}
+
+// What the stage rules read: the bad pixel, its history, and the events of the history that the
+// rules name, each found once.
+struct Evidence {
+  explicit Evidence(const BadPixel& p) : pixel(p) {}
+  const BadPixel& pixel;
   std::vector<const TriangleEvent*> fragments, ties, culled, scissored;
-  bool anyClear = false;
+  bool anyClear = false;  // a clear reaches the pixel (inside the scissor)
+  // The latest event that changes the pixel whose state before it is the back end's, in both
+  // buffers: the back end's buffers show no trace of it, as if it (and whatever changes the
+  // pixel after it) never ran.
+  const HistoryEvent* unseen = nullptr;
+  // The latest clear the scissor keeps from the pixel whose value the back end has.
+  const HistoryEvent* clearOutsideScissor = nullptr;
+  // After the last fragment, the latest clear a write mask changes whose unmasked value the
+  // back end has: a depth clear while the depth write mask is off, or a stencil clear through
+  // the stencil write mask.
+  const HistoryEvent* maskedClear = nullptr;
+  const ClearEvent* depthClear = nullptr;  // the clear that leaves the final depth, if one does
+  const TriangleEvent* writer = nullptr;   // the last fragment that wrote the final depth
+  // The first fragment whose depth, or the depth before it, is the back end's.
+  const TriangleEvent* holder = nullptr;
+};
+
+Evidence gather(const PixelHistory& h, const BadPixel& p) {
+  Evidence ev(p);
   for (const HistoryEvent& e : h.events) {
+    const EventState s = stateOf(e);
+    if (s.changes() && p.gotDepth == s.depthBefore && p.gotStencil == s.stencilBefore)
+      ev.unseen = &e;
     if (e.clear) {
-      anyClear = anyClear || !e.clear->outsideScissor;
+      ev.anyClear = ev.anyClear || !e.clear->outsideScissor;
+      if (e.clear->depth && !e.clear->skipped && !e.clear->outsideScissor)
+        ev.depthClear = &*e.clear;
       continue;
     }
     if (!e.triangle)
       continue;
     const TriangleEvent& t = *e.triangle;
-    if (t.outcome == TriangleOutcome::Fragment)
-      fragments.push_back(&t);
+    if (t.depthAfter != t.depthBefore)
+      ev.depthClear = nullptr;
+    if (t.outcome == TriangleOutcome::Fragment) {
+      ev.fragments.push_back(&t);
+      if (t.depthPassed && t.stencilPassed && t.depthWrite && t.depthAfter == h.finalDepth)
+        ev.writer = &t;
+      if (ev.holder == nullptr && (p.gotDepth == t.quantisation.q || p.gotDepth == t.depthBefore))
+        ev.holder = &t;
+    }
     if (decidedByTie(t))
-      ties.push_back(&t);
+      ev.ties.push_back(&t);
     if (t.outcome == TriangleOutcome::Culled)
-      culled.push_back(&t);
+      ev.culled.push_back(&t);
     if (t.outcome == TriangleOutcome::OutsideScissor)
-      scissored.push_back(&t);
+      ev.scissored.push_back(&t);
   }
-  // A clear the contract keeps from the pixel, or from one of its buffers, whose value the back
-  // end has: it cleared outside the scissor or through a write mask.
-  // A clear that the scissor keeps from the pixel, whose value the back end has: it cleared
-  // outside the scissor.
-  for (auto e = h.events.rbegin(); e != h.events.rend(); ++e) {
+  for (auto e = h.events.rbegin(); e != h.events.rend() && !ev.clearOutsideScissor; ++e) {
     if (!e->clear || !e->clear->outsideScissor)
       continue;
     const ClearEvent& c = *e->clear;
     const auto value = static_cast<std::uint8_t>(c.value);
-    if (c.depth
-            ? p.depthDiffers() && p.gotDepth == c.quantisation.q
-            : p.stencilDiffers() &&
-                  (p.gotStencil == value ||
-                   p.gotStencil == static_cast<std::uint8_t>((value & c.writeMask) |
-                                                             (c.stencilBefore & ~c.writeMask)))) {
-      out.stage = Stage::Clear;
-      out.why = "the clear of command " + std::to_string(e->command) +
-                " is outside the scissor here, and the back end has its value";
-      return;
-    }
+    if (c.depth ? p.depthDiffers() && p.gotDepth == c.quantisation.q
+                : p.stencilDiffers() &&
+                      (p.gotStencil == value ||
+                       p.gotStencil == static_cast<std::uint8_t>((value & c.writeMask) |
+                                                                 (c.stencilBefore & ~c.writeMask))))
+      ev.clearOutsideScissor = &*e;
   }
   // Only clears after the pixel's last fragment: a fragment after one would have changed what it
   // left, so an equal value there is a coincidence more likely than not.
-  for (auto e = h.events.rbegin(); e != h.events.rend(); ++e) {
+  for (auto e = h.events.rbegin(); e != h.events.rend() && !ev.maskedClear; ++e) {
     if (e->triangle && e->triangle->outcome == TriangleOutcome::Fragment)
       break;
     if (!e->clear)
       continue;
     const ClearEvent& c = *e->clear;
-    const auto value = static_cast<std::uint8_t>(c.value);
-    const bool depthHere = c.depth && p.depthDiffers() && p.gotDepth == c.quantisation.q;
-    const std::string which = "the clear of command " + std::to_string(e->command);
-    if (c.depth && c.skipped && depthHere) {
-      out.stage = Stage::Clear;
-      out.why = which + " runs while the depth write mask is off, and the back end has its value";
-      return;
-    }
-    if (!c.depth && !c.outsideScissor && c.writeMask != 255 && p.stencilDiffers() &&
-        p.gotStencil == value) {
-      out.stage = Stage::Clear;
-      out.why = which +
-                " writes through the stencil write mask, and the back end has the "
-                "unmasked value";
-      return;
-    }
+    if (c.depth ? c.skipped && p.depthDiffers() && p.gotDepth == c.quantisation.q
+                : !c.outsideScissor && c.writeMask != 255 && p.stencilDiffers() &&
+                      p.gotStencil == static_cast<std::uint8_t>(c.value))
+      ev.maskedClear = &*e;
   }
-  // The event that left the final depth, when it is a clear at a rounding tie.
-  const ClearEvent* depthClear = nullptr;
-  for (const HistoryEvent& e : h.events) {
-    if (e.clear && e.clear->depth && !e.clear->skipped && !e.clear->outsideScissor)
-      depthClear = &*e.clear;
-    if (e.triangle && e.triangle->depthAfter != e.triangle->depthBefore)
-      depthClear = nullptr;
-  }
-  if (depthClear != nullptr && p.depthDiffers() && std::abs(p.depthUnits()) <= 2) {
-    const Quantisation& q = depthClear->quantisation;
-    const double frac = q.scaled - std::floor(q.scaled);
-    if (q.tie || std::abs(frac - 0.5) < 1e-3) {
-      out.stage = Stage::Quantisation;
-      out.why = "a depth clear leaves d * 16777215 at " +
-                (q.tie ? std::string("a tie") : std::string("almost a tie")) +
-                ", which the contract rounds to " + std::to_string(q.q);
-      return;
-    }
-  }
-  // The last fragment that wrote the final depth.
-  const TriangleEvent* writer = nullptr;
-  for (const TriangleEvent* t : fragments) {
-    if (t->depthPassed && t->stencilPassed && t->depthWrite && t->depthAfter == h.finalDepth)
-      writer = t;
-  }
-  if (!ties.empty() && (p.stencilDiffers() || fragments.empty() || std::abs(p.depthUnits()) > 2 ||
-                        p.gotDepth == 16777215u)) {
-    const TriangleEvent& t = *ties.front();
-    out.stage = Stage::Coverage;
-    out.why = "the sample lies exactly on an edge of " + triangleName(t) + ", which " +
-              (t.outcome == TriangleOutcome::Fragment ? "covers it (the edge is inclusive)"
-                                                      : "does not cover it (the edge is not "
-                                                        "inclusive)") +
-              ": the fill rule decides";
-    return;
-  }
-  if (!culled.empty() && (fragments.empty() || p.stencilDiffers())) {
-    out.stage = Stage::Facing;
-    out.why = triangleName(*culled.front()) + " covers the sample but is culled as " +
-              (culled.front()->front ? "front" : "back") + "-facing";
-    return;
-  }
-  if (fragments.empty()) {
-    if (!scissored.empty()) {
-      out.stage = Stage::Coverage;
-      out.why = triangleName(*scissored.front()) +
-                " covers the sample but the scissor excludes the pixel";
-    } else if (anyClear) {
-      out.stage = Stage::Clear;
-      out.why = "only clears reach this pixel under the contract";
-    } else {
-      out.stage = Stage::Coverage;
-      out.why = "no triangle covers this sample under the contract and no clear reaches it";
-    }
-    return;
-  }
-  if (p.depthDiffers() && writer != nullptr && std::abs(p.depthUnits()) <= 2) {
-    const Quantisation& q = writer->quantisation;
-    const double frac = q.scaled - std::floor(q.scaled);
-    if (q.tie || std::abs(frac - 0.5) < 1e-3) {
-      out.stage = Stage::Quantisation;
-      out.why = triangleName(*writer) + " leaves z * 16777215 at " +
-                (q.tie ? std::string("a tie") : std::string("almost a tie")) +
-                ", which the contract rounds to " + std::to_string(q.q);
-      return;
-    }
-    out.stage = Stage::DepthValue;
-    out.why = triangleName(*writer) + "'s depth is " + std::to_string(p.depthUnits()) +
+  return ev;
+}
+
+std::string clearName(const HistoryEvent& e) {
+  return "the clear of command " + std::to_string(e.command);
+}
+
+// One rule of the stage's reading: when `applies` to the evidence, the stage is `stage` and
+// `why` says which event of the history, and how, the back end's values point at.
+struct StageRule {
+  std::string_view name;
+  bool (*applies)(const Evidence&);
+  Stage stage;
+  std::string (*why)(const Evidence&);
+  // The back end's buffers missed an event: this account stands even where a wrong reading gives
+  // the pixel's values (see explainPixel).
+  bool missedEvent = false;
+};
+
+// The stage from the reference's history alone, in order, the first rule that applies winning:
+// first what leaves no trace of an event (the back end's buffers hold the pixel's values from
+// before it), then the clears, then the contract's order from coverage on: the first thing that
+// the back end's values can come from.
+const StageRule kStageRules[] = {
+    // A pixel that holds, in both buffers, its values from just before an event that changes
+    // it shows no trace of that event. A back end that drew nothing, or too little, is told
+    // which event it missed rather than that a test went the other way, although its untouched
+    // pixel holds a depth the pixel also holds during its history. A depth or stencil test that
+    // fails by mistake with ops that keep the stencil leaves the same pixel: it reads the same,
+    // at the first stage that can leave it.
+    {"no trace of a clear",
+     [](const Evidence& e) { return e.unseen != nullptr && e.unseen->clear.has_value(); },
+     Stage::Clear,
+     [](const Evidence& e) {
+       return "the back end's buffers show no trace of the " +
+              std::string(e.unseen->clear->depth ? "depth" : "stencil") + " clear of command " +
+              std::to_string(e.unseen->command) +
+              ": its depth and stencil are the values before it";
+     },
+     true},
+    {"no trace of a fragment",
+     [](const Evidence& e) { return e.unseen != nullptr && e.unseen->triangle.has_value(); },
+     Stage::Coverage,
+     [](const Evidence& e) {
+       // A fragment on an inclusive edge: the fill rule is the likeliest reason it is missing.
+       const TriangleEvent& t = *e.unseen->triangle;
+       return "the back end's buffers show no trace of the fragment of " + triangleName(t) +
+              (decidedByTie(t) ? ", which covers the sample on an inclusive edge (E = 0): the "
+                                 "fill rule decides"
+                               : ": its depth and stencil are the values before it");
+     },
+     true},
+    // A clear the contract keeps from the pixel, or from one of its buffers, whose value the
+    // back end has: it cleared outside the scissor or through a write mask.
+    {"a clear outside the scissor",
+     [](const Evidence& e) { return e.clearOutsideScissor != nullptr; }, Stage::Clear,
+     [](const Evidence& e) {
+       return clearName(*e.clearOutsideScissor) +
+              " is outside the scissor here, and the back end has its value";
+     }},
+    {"a depth clear under the write mask",
+     [](const Evidence& e) { return e.maskedClear != nullptr && e.maskedClear->clear->depth; },
+     Stage::Clear,
+     [](const Evidence& e) {
+       return clearName(*e.maskedClear) +
+              " runs while the depth write mask is off, and the back end has its value";
+     }},
+    {"a stencil clear through the write mask",
+     [](const Evidence& e) { return e.maskedClear != nullptr && !e.maskedClear->clear->depth; },
+     Stage::Clear,
+     [](const Evidence& e) {
+       return clearName(*e.maskedClear) +
+              " writes through the stencil write mask, and the back end has the unmasked value";
+     }},
+    {"a depth clear at a rounding tie",
+     [](const Evidence& e) {
+       return e.depthClear != nullptr && e.pixel.depthDiffers() &&
+              std::abs(e.pixel.depthUnits()) <= 2 && nearRoundingTie(e.depthClear->quantisation);
+     },
+     Stage::Quantisation,
+     [](const Evidence& e) {
+       return roundingTieWhy("a depth clear leaves d * 16777215", e.depthClear->quantisation);
+     }},
+    {"a sample on an edge",
+     [](const Evidence& e) {
+       const BadPixel& p = e.pixel;
+       return !e.ties.empty() && (p.stencilDiffers() || e.fragments.empty() ||
+                                  std::abs(p.depthUnits()) > 2 || p.gotDepth == 16777215u);
+     },
+     Stage::Coverage, [](const Evidence& e) { return onEdgeWhy(*e.ties.front()); }},
+    {"a culled triangle",
+     [](const Evidence& e) {
+       return !e.culled.empty() && (e.fragments.empty() || e.pixel.stencilDiffers());
+     },
+     Stage::Facing,
+     [](const Evidence& e) {
+       return triangleName(*e.culled.front()) + " covers the sample but is culled as " +
+              (e.culled.front()->front ? "front" : "back") + "-facing";
+     }},
+    {"a triangle outside the scissor",
+     [](const Evidence& e) { return e.fragments.empty() && !e.scissored.empty(); }, Stage::Coverage,
+     [](const Evidence& e) {
+       return triangleName(*e.scissored.front()) +
+              " covers the sample but the scissor excludes the pixel";
+     }},
+    {"only clears", [](const Evidence& e) { return e.fragments.empty() && e.anyClear; },
+     Stage::Clear,
+     [](const Evidence&) {
+       return std::string("only clears reach this pixel under the contract");
+     }},
+    {"nothing reaches the sample", [](const Evidence& e) { return e.fragments.empty(); },
+     Stage::Coverage,
+     [](const Evidence&) {
+       return std::string(
+           "no triangle covers this sample under the contract and no clear reaches it");
+     }},
+    {"a written depth at a rounding tie",
+     [](const Evidence& e) {
+       return e.pixel.depthDiffers() && e.writer != nullptr &&
+              std::abs(e.pixel.depthUnits()) <= 2 && nearRoundingTie(e.writer->quantisation);
+     },
+     Stage::Quantisation,
+     [](const Evidence& e) {
+       return roundingTieWhy(triangleName(*e.writer) + " leaves z * 16777215",
+                             e.writer->quantisation);
+     }},
+    {"a written depth units off",
+     [](const Evidence& e) {
+       return e.pixel.depthDiffers() && e.writer != nullptr && std::abs(e.pixel.depthUnits()) <= 2;
+     },
+     Stage::DepthValue,
+     [](const Evidence& e) {
+       return triangleName(*e.writer) + "'s depth is " + std::to_string(e.pixel.depthUnits()) +
               " units off: its plane's arithmetic (order, fusion or precision)";
-    return;
-  }
-  if (p.depthDiffers()) {
+     }},
     // The back end stopped at another state of the pixel's history: a test went another way.
-    for (const TriangleEvent* t : fragments) {
-      if (p.gotDepth == t->quantisation.q || p.gotDepth == t->depthBefore) {
-        out.stage = Stage::DepthTest;
-        out.why = "the back end's depth is one the pixel holds during its history (" +
-                  triangleName(*t) + "): a depth test went the other way";
-        return;
-      }
-    }
-    out.stage = Stage::DepthValue;
-    out.why = "the back end's depth is " + std::to_string(p.depthUnits()) +
+    {"a depth the history holds",
+     [](const Evidence& e) { return e.pixel.depthDiffers() && e.holder != nullptr; },
+     Stage::DepthTest,
+     [](const Evidence& e) {
+       return "the back end's depth is one the pixel holds during its history (" +
+              triangleName(*e.holder) + "): a depth test went the other way";
+     }},
+    {"a depth no state has", [](const Evidence& e) { return e.pixel.depthDiffers(); },
+     Stage::DepthValue,
+     [](const Evidence& e) {
+       return "the back end's depth is " + std::to_string(e.pixel.depthUnits()) +
               " units off the contract's, and no state of the pixel's history has it";
-    return;
+     }},
+    {"the stencil alone", [](const Evidence&) { return true; }, Stage::Stencil,
+     [](const Evidence&) {
+       return std::string("depth agrees; the stencil test, an op or a mask went another way");
+     }},
+};
+
+// Reads the stage from the history alone (the rules above) into `out`; returns the rule.
+const StageRule& stageFromHistory(const PixelHistory& h, PixelExplanation& out) {
+  const Evidence evidence = gather(h, out.pixel);
+  for (const StageRule& rule : kStageRules) {
+    if (rule.applies(evidence)) {
+      out.stage = rule.stage;
+      out.why = rule.why(evidence);
+      out.rule = rule.name;
+      return rule;
+    }
   }
-  out.stage = Stage::Stencil;
-  out.why = "depth agrees; the stencil test, an op or a mask went another way";
+  return kStageRules[std::size(kStageRules) - 1];  // unreached: the last rule always applies
 }
 
 }  // namespace
@@ -333,11 +462,20 @@ PixelExplanation explainPixel(const raster::CommandStream& stream, const BadPixe
       break;
     }
   }
-  if (out.sameAsReading) {
-    attributeToReading(out, *out.sameAsReading);
+  const StageRule& rule = stageFromHistory(out.history, out);
+  if (!out.sameAsReading)
+    return out;
+  // A pixel with no trace of an event keeps that account: a reading that leaves the same values
+  // there (culling the triangle, failing its depth test, ignoring the scissor of a later clear)
+  // matches any back end that drew nothing, so one pixel is no evidence for it. A run that
+  // behaves like the reading throughout still has every pixel attributed to it
+  // (attributeToReading).
+  if (rule.missedEvent) {
+    out.why += " (so does the kit's wrong reading " +
+               std::string(kit::variantName(*out.sameAsReading)) + ")";
     return out;
   }
-  stageFromHistory(out.history, out);
+  attributeToReading(out, *out.sameAsReading);
   return out;
 }
 
@@ -349,6 +487,7 @@ void attributeToReading(PixelExplanation& e, Variant v) {
   // The history still says which event the stage concerns, for the report's reader.
   PixelExplanation fromHistory = e;
   stageFromHistory(e.history, fromHistory);
+  e.rule = fromHistory.rule;
   if (fromHistory.stage == e.stage)
     e.why += ": " + fromHistory.why;
 }

@@ -66,6 +66,9 @@ struct PixelExplanation {
                     // of draw 0 covers the sample on its inclusive left edge"
   // A wrong reading whose model gives the back end's values at this pixel, if any.
   std::optional<kit::Variant> sameAsReading;
+  // The name of the stage rule that read the history (e.g. "no trace of a fragment", "a depth
+  // the history holds"); the stage is the reading's instead when one gives it (see explainPixel).
+  std::string_view rule;
 };
 
 // `readings`: the wrong readings' answers to the same stream (from readingAnswers), consulted
@@ -76,6 +79,13 @@ struct ReadingAnswer {
 };
 [[nodiscard]] std::vector<ReadingAnswer> readingAnswers(const raster::CommandStream& stream);
 
+// Explains a bad pixel. Its stage is read from its history by ordered rules, the first that
+// applies winning: buffers that hold the pixel's values from just before an event that changes
+// it show no trace of that event (coverage for a fragment, clear for a clear, never a test that
+// went the other way); then clears outside the scissor or through a write mask, rounding ties,
+// edges, culling, the depth value, the depth test and the stencil. A reading that gives the back
+// end's values at the pixel gives the stage instead, except where the pixel shows no trace of
+// an event: a back end that drew nothing matches many readings there.
 [[nodiscard]] PixelExplanation explainPixel(const raster::CommandStream& stream,
                                             const BadPixel& pixel,
                                             const std::vector<ReadingAnswer>& readings);
