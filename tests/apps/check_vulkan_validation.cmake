@@ -38,7 +38,7 @@ function(expect_clean)
   message(STATUS "recode run ${ARGN}: no validation error")
 endfunction()
 
-foreach(device vulkan vulkan-32 vulkan-compute)
+foreach(device vulkan vulkan-32 vulkan-compute vulkan-native)
   expect_clean(hand-grasp --frames 80 --device ${device})
   expect_clean(hand-grasp --frames 80 --device ${device} --summaries)
 endforeach()
