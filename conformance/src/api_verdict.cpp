@@ -97,9 +97,9 @@ std::string_view apiClause(Stage stage) {
              "Rasterization and Culling; OpenGL 4.5 sections 14.6.1 and 14.6.2)";
     case Stage::DepthValue:
     case Stage::Quantisation:
-      return "z is interpolated from the vertices' depths and converted to the nearest 24-bit "
-             "values (Vulkan, Depth Interpolation and Fixed-Point Data Conversions; OpenGL 4.5 "
-             "sections 14.6.1 and 2.3.5.2)";
+      return "z is interpolated from the vertices' depths to about 1 part in 10^5 and converted "
+             "to one of the two nearest 24-bit values (Vulkan, Depth Interpolation and "
+             "Fixed-Point Data Conversions; OpenGL 4.5 sections 14.6.1, 2.3.4.1 and 2.3.5.2)";
     case Stage::DepthTest:
       return "the depth test compares the fragment's depth with the stored one by the depth "
              "function and writes it through the depth write mask (Vulkan, Depth Test; OpenGL "

@@ -25,15 +25,15 @@ std::string readingText(kit::Variant v) {
 // give (with each explained pixel's clause below) and how many lie within the APIs' freedom.
 std::string apiText(const ApiTally& t) {
   const long long all = t.forbidden + t.withinFreedom;
+  const std::string freedoms = t.freedoms == 0 ? "" : " (" + describe(t.freedoms) + ")";
   if (t.forbidden == 0)
-    return "graphics APIs: every bad pixel lies within their freedom (" + describe(t.freedoms) +
-           "): a native pipeline may answer this; only this contract fixes it";
+    return "graphics APIs: every bad pixel lies within their freedom" + freedoms +
+           ": a native pipeline may answer this; only this contract fixes it";
   std::string s = "graphics APIs: " + std::to_string(t.forbidden) + " of " + std::to_string(all) +
                   " bad pixels are departures the APIs forbid (on a native pipeline, a bug; "
                   "each explained pixel names its clause)";
   if (t.withinFreedom > 0)
-    s += "; " + std::to_string(t.withinFreedom) + " lie within their freedom (" +
-         describe(t.freedoms) + ")";
+    s += "; " + std::to_string(t.withinFreedom) + " lie within their freedom" + freedoms;
   return s;
 }
 
