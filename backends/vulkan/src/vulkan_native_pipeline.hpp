@@ -1,6 +1,6 @@
 #pragma once
 // The native Vulkan device's graphics pipelines, made once per depth/stencil format and shared by
-// every native device: the draw pipeline takes triangle lists of (x, y, z) floats through
+// every native device: the draw pipeline takes indexed triangle lists of (x, y, z) floats through
 // native_vk.vert and has no fragment stage, so coverage and depth are the driver's own; the clear
 // pipeline draws clear_vk.vert's rectangle, also without a fragment stage, for the masked stencil
 // clears. Everything a device changes is dynamic state (vulkan_pipeline.hpp).

@@ -43,8 +43,8 @@ class VulkanNativeDevice final : public raster::RenderStateDevice {
   // Sets the stencil inside the scissor; under a partial write mask, a masked draw.
   void clearStencil(std::uint8_t value) override;
   // Validated exactly as CpuDevice validates; x and y are snapped to the 1/256-pixel grid on
-  // the host (round half to even, as the GL device does) and drawn as a triangle list by the
-  // driver, culled by the driver's facing.
+  // the host (round half to even, as the GL device does) and the indices drawn as an indexed
+  // triangle list by the driver, culled by the driver's facing. Nothing under an empty scissor.
   void drawTriangles(std::span<const raster::WindowVertex> vertices,
                      std::span<const std::uint32_t> indices) override;
   // Each runs everything recorded so far (one submission) and returns the values: the depth as
