@@ -499,7 +499,8 @@ class Follower {
     std::vector<AllowedPixel> out(pixels_.size());
     for (std::size_t i = 0; i < pixels_.size(); ++i) {
       for (const State& s : pixels_[i].states())
-        out[i].states.push_back({s.stencil, s.depth.lo, s.depth.hi, s.freedoms});
+        out[i].states.push_back({s.stencil, s.depth.lo, s.depth.hi,
+                                 static_cast<FreedomSet>(s.freedoms | s.depth.freedoms)});
       std::sort(out[i].states.begin(), out[i].states.end(),
                 [](const AllowedState& a, const AllowedState& b) { return a.stencil < b.stencil; });
     }

@@ -55,6 +55,9 @@ Stage stageOf(Variant v) {
   switch (v) {
     case Variant::TopLeftFill:
     case Variant::EdgeFloat:
+    case Variant::SubPixel4Nearest:
+    case Variant::SubPixel4Floor:
+    case Variant::SubPixel6Nearest:
       return Stage::Coverage;
     case Variant::QuantiseHalfUp:
     case Variant::QuantiseHalfAway:
@@ -83,31 +86,7 @@ Stage stageOf(Variant v) {
   }
 }
 
-bool apiLatitude(Variant v) {
-  switch (stageOf(v)) {
-    case Stage::DepthValue:
-    case Stage::Quantisation:
-    case Stage::Validation:  // the guard band's extent is the implementation's
-      return v != Variant::Contract;
-    case Stage::Coverage:
-      return v == Variant::TopLeftFill;  // any consistent tie rule; float edges are a bug
-    default:
-      return false;
-  }
-}
-
 namespace {
-
-std::string latitudeName(Variant v) {
-  switch (stageOf(v)) {
-    case Stage::Coverage:
-      return "the fill rule on ties";
-    case Stage::Validation:
-      return "the guard band's limits";
-    default:
-      return "the depth arithmetic and its rounding";
-  }
-}
 
 std::size_t at(const raster::CommandStream& s, int x, int y) {
   return static_cast<std::size_t>(y) * static_cast<std::size_t>(s.width) +
@@ -500,27 +479,6 @@ Stage failingStage(const raster::CommandStream& stream, const Answer& expected, 
   if (first.empty())
     return Stage::Validation;  // not failing: the caller's mistake, named harmlessly
   return explainPixel(stream, first.front(), readings).stage;
-}
-
-Requirement requirementOf(const raster::CommandStream& stream, const Answer& expected) {
-  Requirement r;
-  const auto departs = [](BufferRequirement& b, const std::string& latitude) {
-    b.byGraphicsApis = false;
-    if (std::find(b.latitudes.begin(), b.latitudes.end(), latitude) == b.latitudes.end())
-      b.latitudes.push_back(latitude);
-  };
-  for (const kit::VariantInfo& v : kit::wrongVariants()) {
-    if (!apiLatitude(v.variant))
-      continue;
-    const std::string name = latitudeName(v.variant);
-    ModelBackend model(v.variant);
-    const Answer a = model.run(stream);
-    if (a.wasRefused() || a.depth != expected.depth)
-      departs(r.depth, name);
-    if (a.wasRefused() || a.stencil != expected.stencil)
-      departs(r.stencil, name);
-  }
-  return r;
 }
 
 }  // namespace recode::conformance

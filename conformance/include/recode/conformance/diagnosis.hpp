@@ -99,24 +99,21 @@ void attributeToReading(PixelExplanation& e, kit::Variant v);
 [[nodiscard]] Stage failingStage(const raster::CommandStream& stream, const Answer& expected,
                                  const Answer& got, const std::vector<ReadingAnswer>& readings);
 
-// Whether the graphics APIs (Vulkan, OpenGL, WebGPU) require a vector's answer or only this
-// contract does, buffer by buffer. The APIs leave the tie rule, the depth arithmetic and its
-// rounding, and the guard band to the implementation: a buffer whose answer one of the kit's
-// readings of those latitudes changes is contract-only, and `latitudes` lists which. A vector's
-// stencil is often required by the APIs where its depth bits are not.
+// Whether the graphics APIs (Vulkan, OpenGL, WebGPU) fix a vector's answer, buffer by buffer:
+// a buffer is fixed when the APIs allow every pixel of it exactly one value (api_freedoms.hpp;
+// api_verdict.hpp's requirementOf computes it), else `latitudes` names the APIs' freedoms that
+// leave some pixel open.
 struct BufferRequirement {
   bool byGraphicsApis = true;
-  std::vector<std::string> latitudes;  // "the fill rule on ties", ...
+  std::vector<std::string> latitudes;  // "the tie rule", "the sub-pixel precision", ...
 };
+// Both buffers' requirements.
 struct Requirement {
   BufferRequirement depth, stencil;
+  // Whether the APIs fix both buffers.
   [[nodiscard]] bool byGraphicsApis() const {
     return depth.byGraphicsApis && stencil.byGraphicsApis;
   }
 };
-[[nodiscard]] Requirement requirementOf(const raster::CommandStream& stream,
-                                        const Answer& expected);
-// Whether the APIs leave the variant's departure to the implementation.
-[[nodiscard]] bool apiLatitude(kit::Variant v);
 
 }  // namespace recode::conformance
