@@ -11,13 +11,15 @@ runs the protocol and fails only where the APIs let it:
    It must be 1/16 pixel or finer (Vulkan's least subPixelPrecisionBits, 4), as 2. assumes.
 2. `recode conform --exec` over the golden vectors (or one shard of them) completes: every vector
    answered, none refused, at least one departing at a depth stage (float depth is not the
-   contract's). Every vector whose stencil no native pipeline may change (webgpu_native_margins:
-   no sample within 1/16 pixel of an edge, facing fixed, every depth test a stencil op hangs on
-   decided by a wide margin) has the contract's stencil, every `compare_ops` vector among them;
-   every vector whose depth the report calls required by the graphics APIs, its depth.
+   contract's). The report's own verdict against the graphics APIs (docs/conformance.md, "What
+   the graphics APIs allow") is held: no vector has a pixel the APIs forbid (`api.
+   forbidden_pixels` is 0 or absent everywhere), and every vector whose depth the report calls
+   required by the graphics APIs has the contract's depth.
+3. The fingerprint's tie rule: the closest reading (most pixels for) is top_left_fill, WebGPU's
+   (and Vulkan's and Direct3D's) fill rule, whether or not it is taken on every pixel.
 
 Usage: check_webgpu_native_conform.py RECODE WORKDIR [SHARD]   (SHARD: I/N for --shard)
-Exit status 0: passed; 1: failed; 77: skipped (no Chromium, no WebGPU adapter, or no NumPy).
+Exit status 0: passed; 1: failed; 77: skipped (no Chromium or no WebGPU adapter).
 """
 
 import json
@@ -35,6 +37,7 @@ from check_explain_browser import chromium_and_fresh_workdir, fail  # noqa: E402
 
 NO_WEBGPU = ("navigator.gpu is missing", "no WebGPU adapter", "lacks depth32float-stencil8")
 DEPTH_STAGES = ("depth value", "quantisation")
+TIE_RULE = "top_left_fill"
 
 
 def skip_without_webgpu(text):
@@ -102,11 +105,6 @@ def main():
     shard = sys.argv[3] if len(sys.argv) == 4 else None
     if chromium_and_fresh_workdir(work, "WebGPU's native pipeline") is None:
         return 77
-    try:
-        from webgpu_native_margins import stencil_fixed
-    except ImportError as e:
-        print("SKIP: %s (Debian: python3-numpy); WebGPU's native pipeline was not checked" % e)
-        return 77
 
     start = time.time()
     grid, name = subpixel_grid()
@@ -128,8 +126,7 @@ def main():
 
     problems = []
     stages = {}
-    fixed = compare_ops = depth_required = 0
-    golden = os.path.join(ROOT, "data", "golden")
+    forbidden = depth_required = 0
     for v in results:
         name_ = v["file"]
         stage = v.get("stage")
@@ -137,18 +134,16 @@ def main():
             stages[stage] = stages.get(stage, 0) + 1
         if stage == "validation":
             problems.append(name_ + ": refused by the back end")
-        with open(os.path.join(golden, name_), encoding="utf-8") as f:
-            vector = json.load(f)
-        is_fixed, _ = stencil_fixed(vector)
-        if os.path.basename(name_).startswith("compare_ops_"):
-            compare_ops += 1
-            if not is_fixed:
-                problems.append(name_ + ": a compare_ops vector not classed stencil-fixed")
-        if is_fixed:
-            fixed += 1
-            if v.get("stencil_pixels", 0):
-                problems.append("%s: stencil-fixed, but %d stencil pixels differ (stage %s)"
-                                % (name_, v["stencil_pixels"], stage))
+        n = (v.get("api") or {}).get("forbidden_pixels", 0)
+        if n:
+            forbidden += 1
+            first = [e for e in v.get("explained", [])
+                     if not e.get("api", {}).get("allowed", True)]
+            problems.append("%s: %d pixels the graphics APIs forbid (stage %s)%s"
+                            % (name_, n, stage, ("; first: pixel (%d, %d): %s"
+                                                 % (first[0]["x"], first[0]["y"],
+                                                    first[0]["api"].get("clause")))
+                               if first else ""))
         if v.get("required_by", {}).get("depth") == "graphics APIs":
             depth_required += 1
             if v.get("depth_pixels", 0):
@@ -156,19 +151,37 @@ def main():
                                 % (name_, v["depth_pixels"]))
     if not any(stages.get(s) for s in DEPTH_STAGES):
         problems.append("no vector departs at a depth stage: is this really the native pipeline?")
-    if fixed < len(results) // 8:
-        problems.append("only %d of %d vectors classed stencil-fixed" % (fixed, len(results)))
+
+    traits = {t["freedom"]: t for t in report.get("fingerprint", [])}
+
+    def closest(trait):
+        """The candidate readings of a fingerprint trait with the most pixels for, best first."""
+        cands = traits.get(trait, {}).get("candidates", [])
+        return sorted(cands, key=lambda c: -c["pixels_for"])
+
+    tie = closest("tie rule")
+    if not tie or tie[0]["reading"] != TIE_RULE or (
+            len(tie) > 1 and tie[1]["pixels_for"] == tie[0]["pixels_for"]):
+        problems.append("the fingerprint's tie rule: the closest reading should be %s, alone; "
+                        "the candidates: %s" % (TIE_RULE, ", ".join(
+                            "%s for %d against %d" % (c["reading"], c["pixels_for"],
+                                                      c["pixels_against"]) for c in tie)
+                            or "none"))
+    subpixel = closest("sub-pixel precision")
     for line in problems[:20]:
         print(line)
     if problems:
-        fail("%d problems on WebGPU's native pipeline (%s)" % (len(problems), name))
+        fail("%d problems on WebGPU's native pipeline (%s; %d vectors with pixels the APIs "
+             "forbid)" % (len(problems), name, forbidden))
     print("webgpu native conform OK: %s; sub-pixel grid 1/%d pixel (probe %.1f s); %d vectors "
-          "in %.1f s: %d passed, %d failed (by stage: %s); the contract's stencil on all %d "
-          "stencil-fixed vectors (%d compare_ops), the contract's depth on all %d whose depth the "
-          "APIs require"
+          "in %.1f s: %d passed, %d failed (by stage: %s); no pixel the graphics APIs forbid, the "
+          "contract's depth on all %d whose depth the APIs require; fingerprint: tie rule closest "
+          "%s (for %d, against %d; taken: %s), sub-pixel precision closest %s"
           % (name, 256 // grid, probe_s, len(results), conform_s, report["passed"],
              report["failed"], ", ".join("%s %d" % kv for kv in sorted(stages.items())),
-             fixed, compare_ops, depth_required))
+             depth_required, tie[0]["reading"], tie[0]["pixels_for"], tie[0]["pixels_against"],
+             json.dumps(traits["tie rule"].get("taken")),
+             subpixel[0]["reading"] if subpixel else "none"))
     return 0
 
 
