@@ -341,6 +341,7 @@ json vectorJson(const VectorReport& v) {
               {"stage", toString(e.stage)},
               {"contract_section", contractSection(e.stage)},
               {"why", e.why},
+              {"rule", e.rule},
               {"history", historyJson(e.history)}};
     if (e.sameAsReading)
       x["same_as_reading"] = kit::variantName(*e.sameAsReading);

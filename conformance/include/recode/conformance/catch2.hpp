@@ -96,8 +96,12 @@ class ConformsToMatcher final : public Catch::MatcherBase<Backend> {
         out << "; " << v;
       out << '\n';
     }
-    if (!report.error.empty())
-      out << "the back end failed to answer: " << report.error << '\n';
+    if (!report.error.empty()) {
+      out << "the back end failed to answer";
+      if (report.errorKind)
+        out << " (" << toString(*report.errorKind) << ")";
+      out << ": " << report.error << '\n';
+    }
     report_ += out.str();
     report_.pop_back();  // the last '\n'
     return false;
