@@ -236,8 +236,10 @@ double edgeReach(double d, long long dx, long long dy, long long ox, long long o
 
 struct Coverage {
   Cover cover = Cover::No;
-  Freedom freedom = Freedom::TieRule;
-  std::string how;  // filled only when asked
+  Freedom freedom = Freedom::TieRule;  // the one the report names
+  FreedomSet freedoms = 0;             // every freedom that opens it (a sample on an edge that
+                                       // snapping can also move opens both)
+  std::string how;                     // filled only when asked
 };
 
 std::string edgeText(int a, int b) {
@@ -263,10 +265,11 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
   if (!t.facingFixed) {
     // Snapping can flip or flatten the triangle: it covers the sample if it lies inside either
     // orientation of the moved edges.
-    bool canNeg = true, canPos = true;
+    bool canNeg = true, canPos = true, onEdge = false;
     for (int k = 0; k < 3; ++k) {
       const int a = k, b = (k + 1) % 3;
       const long long e = cross(t, a, b, xc, yc);
+      onEdge = onEdge || e == 0;
       const double r = edgeReach(d, t.X[b] - t.X[a], t.Y[b] - t.Y[a], xc - t.X[a], yc - t.Y[a]);
       if (static_cast<double>(e) - r > 0)
         canNeg = false;
@@ -277,6 +280,8 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
       return out;
     out.cover = Cover::Open;
     out.freedom = Freedom::SubPixelPrecision;
+    out.freedoms = static_cast<FreedomSet>(Freedom::SubPixelPrecision) |
+                   (onEdge && w.tieRule ? static_cast<FreedomSet>(Freedom::TieRule) : 0);
     if (explain)
       out.how = "A2 = " + std::to_string(t.a2) + " lies within the reach of snapping (" +
                 std::to_string(static_cast<long long>(t.areaReach)) +
@@ -307,6 +312,8 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
     open = true;
     if (e != 0)
       tieOnly = false;
+    out.freedoms |= static_cast<FreedomSet>(e == 0 && w.tieRule ? Freedom::TieRule
+                                                                : Freedom::SubPixelPrecision);
     const double dist =
         std::fabs(ed) / std::hypot(static_cast<double>(dx), static_cast<double>(dy));
     if (dist < nearest) {
@@ -660,8 +667,7 @@ class Follower {
     const Coverage c = coverage(t, xc, yc, w_, choices_ != nullptr);
     if (c.cover == Cover::No)
       return;
-    const FreedomSet coverFreedom =
-        c.cover == Cover::Open ? static_cast<FreedomSet>(c.freedom) : FreedomSet{0};
+    const FreedomSet coverFreedom = c.cover == Cover::Open ? c.freedoms : FreedomSet{0};
     if (c.cover == Cover::Open)
       note(t, c.freedom, c.how);
     const DepthRange z = fragmentDepth(t, xc, yc, c.cover == Cover::Yes, w_);

@@ -63,14 +63,23 @@ void FingerprintBuilder::add(const std::string& name, const raster::CommandStrea
   const std::size_t n = expected.depth.size();
   if (got.depth.size() != n || got.stencil.size() != n)
     return;
+  // Every candidate's answer, trait by trait (the contract's first).
+  std::vector<std::vector<Answer>> all(traits_.size());
+  for (std::size_t ti = 0; ti < traits_.size(); ++ti) {
+    all[ti].push_back(expected);
+    for (std::size_t c = 1; c < traits_[ti].candidates.size(); ++c)
+      all[ti].push_back(ModelBackend(traits_[ti].candidates[c].variant).run(stream));
+  }
+  // Whether some candidate of trait `ti` covers other samples than the contract at pixel p.
+  const auto coverageMoves = [&](std::size_t ti, std::size_t p) {
+    return std::any_of(all[ti].begin(), all[ti].end(), [&](const Answer& a) {
+      return !a.wasRefused() && a.stencil[p] != expected.stencil[p];
+    });
+  };
   for (std::size_t ti = 0; ti < traits_.size(); ++ti) {
     FingerprintTrait& trait = traits_[ti];
     const bool stencilFirst = kTraits[ti].buffers == Buffers::StencilFirst;
-    std::vector<Answer> answers;
-    answers.reserve(trait.candidates.size());
-    answers.push_back(expected);
-    for (std::size_t c = 1; c < trait.candidates.size(); ++c)
-      answers.push_back(ModelBackend(trait.candidates[c].variant).run(stream));
+    const std::vector<Answer>& answers = all[ti];
     for (std::size_t p = 0; p < n; ++p) {
       // The buffer this pixel is judged by: the stencil where the candidates' stencils differ
       // (coverage traits), else the depth.
@@ -88,6 +97,16 @@ void FingerprintBuilder::add(const std::string& name, const raster::CommandStrea
       // A coverage trait tells only where a candidate covers other samples: the stencil shows
       // it whatever the back end's depth arithmetic does.
       if (!differs || (stencilFirst && !byStencil))
+        continue;
+      // A pixel tells about one freedom only where no other coverage freedom moves it: a
+      // pipeline with another tie rule and another grid would otherwise count against both.
+      bool confounded = false;
+      for (std::size_t other = 0; other < traits_.size(); ++other) {
+        if (other != ti && kTraits[other].buffers == Buffers::StencilFirst &&
+            coverageMoves(other, p))
+          confounded = true;
+      }
+      if (confounded)
         continue;
       const auto value = [&](const Answer& a) -> std::uint32_t {
         return byStencil ? a.stencil[p] : a.depth[p];
@@ -122,8 +141,10 @@ void FingerprintBuilder::add(const std::string& name, const raster::CommandStrea
     long long best = 0;
     for (std::size_t c = 0; c < trait.candidates.size(); ++c) {
       const FingerprintCandidate& cand = trait.candidates[c];
-      // Taken: sided with, never against, and more often than with none of the readings.
-      if (cand.pixelsAgainst == 0 && cand.pixelsFor > best && cand.pixelsFor > cand.pixelsNeither) {
+      // Taken: sided with, never against, and more often than the back end sides with none of
+      // the readings anywhere the trait tells (the contract's "neither" counts those pixels).
+      if (cand.pixelsAgainst == 0 && cand.pixelsFor > best &&
+          cand.pixelsFor > trait.candidates.front().pixelsNeither) {
         best = cand.pixelsFor;
         trait.taken = static_cast<int>(c);
       }
