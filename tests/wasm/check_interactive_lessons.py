@@ -312,6 +312,16 @@ def check_geometry_exercise(recode, work, dt, e, tol):
     return cur
 
 
+def leave(dt, before):
+    """Leaves the open exercise; the page must come back to the pose `before` (a signature)."""
+    dt.evaluate("document.getElementById('predict-close').click(); 0")
+    deadline = time.time() + 10
+    while dt.evaluate("recodePage.signature()") != before or dt.evaluate("recodePage.pending()"):
+        if time.time() > deadline:
+            fail("leaving the exercise kept its pose instead of the one it replaced")
+        time.sleep(0.05)
+
+
 def inspector_pixel(dt):
     return dt.evaluate("(function () { const t = document.getElementById('inspector-title');"
                        " return {pixel: recodeInspector.pixel(), title: t ? t.textContent : null,"
@@ -333,6 +343,7 @@ def check_inspector(dt):
     got = inspector_pixel(dt)
     if got["pixel"] != target:
         fail("a click did not pin pixel %s in the inspector: %s" % (target, got))
+    before = dt.evaluate("recodePage.signature()")
     cur = start(dt, "touching")
     got = inspector_pixel(dt)
     if got["pixel"] != cur["pixel"] or got["title"] != "pixel (%d, %d)" % tuple(cur["pixel"]):
@@ -345,9 +356,7 @@ def check_inspector(dt):
             got["title"] != "pixel (%d, %d)" % tuple(cur["pixel"]):
         fail("after a solve the inspector shows %s, not the exercise's pixel %s"
              % (got, cur["pixel"]))
-    updates = dt.evaluate("recodePage.updates")
-    dt.evaluate("document.getElementById('predict-close').click(); 0")
-    settle(dt, updates)
+    leave(dt, before)
     print("inspector: pinned %s before, shows the exercise's pixel %s at open and after the "
           "solve" % (target, cur["pixel"]))
 
@@ -364,12 +373,7 @@ def check_refused_and_leave(dt):
     left = dt.evaluate("document.getElementById('predict-feedback').textContent")
     if v["verdict"] is not None or left.strip():
         fail("after an answer the browser refused, the feedback still says %r" % left)
-    dt.evaluate("document.getElementById('predict-close').click(); 0")
-    deadline = time.time() + 10
-    while dt.evaluate("recodePage.signature()") != before or dt.evaluate("recodePage.pending()"):
-        if time.time() > deadline:
-            fail("leaving the exercise kept its pose instead of the one it replaced")
-        time.sleep(0.05)
+    leave(dt, before)
     # A pose change closes an open exercise, and the page says so; the student's pose stays.
     for eid in ("b-spans-a", "own-pixel"):
         cur = None if eid == "own-pixel" else start(dt, eid)
