@@ -807,6 +807,8 @@ std::optional<Freedom> freedomOf(kit::Variant v) {
     case Variant::EdgeFloat:
     case Variant::SubPixel4Nearest:
     case Variant::SubPixel4Floor:
+    case Variant::SubPixel4Ceil:
+    case Variant::SubPixel4HalfUp:
     case Variant::SubPixel6Nearest:
       return Freedom::SubPixelPrecision;
     case Variant::QuantiseHalfUp:

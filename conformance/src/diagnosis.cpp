@@ -57,6 +57,8 @@ Stage stageOf(Variant v) {
     case Variant::EdgeFloat:
     case Variant::SubPixel4Nearest:
     case Variant::SubPixel4Floor:
+    case Variant::SubPixel4Ceil:
+    case Variant::SubPixel4HalfUp:
     case Variant::SubPixel6Nearest:
       return Stage::Coverage;
     case Variant::QuantiseHalfUp:

@@ -139,6 +139,10 @@ long long toSubPixelGrid(long long v, Variant variant) {
       return 16 * static_cast<long long>(std::nearbyint(static_cast<double>(v) / 16.0));
     case Variant::SubPixel4Floor:
       return 16 * static_cast<long long>(std::floor(static_cast<double>(v) / 16.0));
+    case Variant::SubPixel4Ceil:
+      return 16 * static_cast<long long>(std::ceil(static_cast<double>(v) / 16.0));
+    case Variant::SubPixel4HalfUp:
+      return 16 * static_cast<long long>(std::floor(static_cast<double>(v) / 16.0 + 0.5));
     case Variant::SubPixel6Nearest:
       return 4 * static_cast<long long>(std::nearbyint(static_cast<double>(v) / 4.0));
     default:

@@ -109,10 +109,13 @@ constexpr bool inEnumerationOrder() {
 static_assert(inEnumerationOrder() &&
               static_cast<int>(Variant::StrictLimits) == static_cast<int>(kWrong.size()));
 
-constexpr std::array<VariantInfo, 3> kSubPixel = {{
+constexpr std::array<VariantInfo, 5> kSubPixel = {{
     {Variant::SubPixel4Nearest, "subpixel_4_nearest",
      "vertices rounded to 4 sub-pixel bits (1/16 pixel), ties to even"},
     {Variant::SubPixel4Floor, "subpixel_4_floor", "vertices rounded down to 4 sub-pixel bits"},
+    {Variant::SubPixel4Ceil, "subpixel_4_ceil", "vertices rounded up to 4 sub-pixel bits"},
+    {Variant::SubPixel4HalfUp, "subpixel_4_half_up",
+     "vertices rounded to 4 sub-pixel bits, ties up"},
     {Variant::SubPixel6Nearest, "subpixel_6_nearest",
      "vertices rounded to 6 sub-pixel bits (1/64 pixel), ties to even"},
 }};

@@ -87,6 +87,8 @@ enum class Variant {
   // readings, so the kit's vectors do not list them; subPixelVariants() lists them.
   SubPixel4Nearest,  // vertices rounded to the 1/16-pixel grid, ties to even
   SubPixel4Floor,    // vertices rounded down to the 1/16-pixel grid
+  SubPixel4Ceil,     // vertices rounded up to the 1/16-pixel grid
+  SubPixel4HalfUp,   // vertices rounded to the 1/16-pixel grid, ties up
   SubPixel6Nearest,  // vertices rounded to the 1/64-pixel grid, ties to even
 };
 
