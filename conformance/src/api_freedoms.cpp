@@ -279,11 +279,13 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
     if (!canNeg && !canPos)
       return out;
     out.cover = Cover::Open;
-    out.freedom = Freedom::SubPixelPrecision;
+    const bool tie = onEdge && w.tieRule;
+    out.freedom = tie ? Freedom::TieRule : Freedom::SubPixelPrecision;
     out.freedoms = static_cast<FreedomSet>(Freedom::SubPixelPrecision) |
-                   (onEdge && w.tieRule ? static_cast<FreedomSet>(Freedom::TieRule) : 0);
+                   (tie ? static_cast<FreedomSet>(Freedom::TieRule) : 0);
     if (explain)
-      out.how = "A2 = " + std::to_string(t.a2) + " lies within the reach of snapping (" +
+      out.how = std::string(tie ? "the sample lies exactly on an edge, and " : "") +
+                "A2 = " + std::to_string(t.a2) + " lies within the reach of snapping (" +
                 std::to_string(static_cast<long long>(t.areaReach)) +
                 "): the triangle may face either way or vanish";
     return out;
