@@ -20,4 +20,5 @@ PYBIND11_MODULE(recode, m) {
   recode::python::bindCollision(m);
   recode::python::bindManager(m);
   recode::python::bindDevices(m);
+  recode::python::bindConformance(m);
 }
