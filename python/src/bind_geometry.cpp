@@ -80,6 +80,16 @@ BlockPart partFrom(const py::handle& item, std::size_t index) {
   throw py::type_error(what + ": expected a ConvexBlock or a (ConvexBlock, 4 x 4 pose) tuple");
 }
 
+// Block i of g; an IndexError naming the block count for an index past it (the C++ API's
+// std::out_of_range would carry the standard library's wording).
+const BlockPart& partAt(const CollisionGeometry& g, std::size_t i) {
+  if (i >= g.blockCount())
+    throw py::index_error("index " + std::to_string(i) + " is out of range: the geometry has " +
+                          std::to_string(g.blockCount()) +
+                          (g.blockCount() == 1 ? " block" : " blocks"));
+  return g.part(i);
+}
+
 }  // namespace
 
 void bindGeometry(py::module_& m) {
@@ -188,11 +198,12 @@ void bindGeometry(py::module_& m) {
       .def_property_readonly("block_count", &CollisionGeometry::blockCount)
       .def("__len__", &CollisionGeometry::blockCount)
       .def(
-          "block", [](const CollisionGeometry& g, std::size_t i) { return held(g.part(i).block); },
+          "block",
+          [](const CollisionGeometry& g, std::size_t i) { return held(partAt(g, i).block); },
           py::arg("index"))
       .def(
           "block_pose",
-          [](const CollisionGeometry& g, std::size_t i) { return matrixOf(g.part(i).pose); },
+          [](const CollisionGeometry& g, std::size_t i) { return matrixOf(partAt(g, i).pose); },
           py::arg("index"), "Block `index`'s pose in the object, 4 x 4.");
 }
 

@@ -14,5 +14,6 @@ void bindManager(py::module_& m);    // CollisionManager, ObjectContact
 // recode.conformance: the conformance suite (recode/conformance/*.hpp) for Python back ends
 void bindConformance(py::module_& m);
 // recode.devices(): devices.hpp
+void bindReprs(py::module_& m);  // __repr__ where a class above has none; bound last
 
 }  // namespace recode::python

@@ -3,29 +3,36 @@
 #include <map>
 #include <stdexcept>
 
-#if RECODE_PYTHON_HAVE_BACKENDS
 #include "recode/backends/device_registry.hpp"
-#endif
 
 namespace recode::python {
 
+namespace {
+
+// What to do for a device this module lacks: the registry's words, which end "and reconfigure",
+// and for a module that pip built, how to build it again.
+std::string missingReason(const backends::DeviceInfo& d) {
+  if (d.built)
+    return "";
+  std::string why = "not in this module: " + std::string(d.missing);
+#if RECODE_PYTHON_PIP
+  why += " (for this module: run `pip install --no-build-isolation .` again)";
+#endif
+  return why;
+}
+
+}  // namespace
+
 core::DeviceFactory deviceFactory(const std::string& name) {
-#if RECODE_PYTHON_HAVE_BACKENDS
   const backends::DeviceKind kind = backends::parseDeviceKind(name);
+  const backends::DeviceInfo& info = backends::deviceInfo(kind);
+  if (!info.built)
+    throw std::invalid_argument("device \"" + name + "\": " + missingReason(info));
   try {
     return backends::deviceFactoryFor(kind);
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
   }
-#else
-  if (name == "cpu")
-    return {};
-  throw std::invalid_argument(
-      "device \"" + name +
-      "\": this module has the cpu device only (built with the libraries alone, as `pip "
-      "install .` builds it); build it with the project's CMake (scripts/build.sh) for the "
-      "GPU back ends");
-#endif
 }
 
 DevicePool& devicePool(const std::string& name) {
@@ -43,27 +50,21 @@ void bindDevices(py::module_& m) {
       "devices",
       [] {
         py::list list;
-#if RECODE_PYTHON_HAVE_BACKENDS
         for (const backends::DeviceInfo& d : backends::deviceRegistry()) {
           py::dict entry;
           entry["name"] = std::string(d.name);
           entry["description"] = std::string(d.description);
           entry["exact"] = d.exact;
           entry["available"] = d.built;
+          entry["missing"] = missingReason(d);
           list.append(entry);
         }
-#else
-        py::dict entry;
-        entry["name"] = "cpu";
-        entry["description"] = "the CPU reference (raster::CpuDevice): the contract's bits";
-        entry["exact"] = true;
-        entry["available"] = true;
-        list.append(entry);
-#endif
         return list;
       },
-      "The devices collide() and CollisionManager can draw on: a list of dicts with name, "
-      "description, exact (gives the CPU reference's bits) and available (in this module).");
+      "The devices collide() and CollisionManager can draw on, every one of the registry: a list "
+      "of dicts with name, description, exact (gives the CPU reference's bits), available (built "
+      "into this module) and missing (why not and what to install when not available, else "
+      "\"\").");
 }
 
 }  // namespace recode::python

@@ -1,8 +1,8 @@
 #pragma once
 // The devices Python draws on, by the names of the device registry ("cpu", "gl", "gl-exact",
-// "vulkan", "vulkan-32", "vulkan-compute"). A module built with the project's CMake has every
-// device of that build; one built by `pip install .` (the libraries alone, no GPU back end) has
-// "cpu" only.
+// "vulkan", "vulkan-32", "vulkan-compute", "vulkan-native"). The module has the devices whose
+// packages its build found (cmake/gpu_devices.cmake), whether built with the project's CMake or
+// by `pip install .`; recode.devices() says why any other is missing.
 
 #include <pybind11/pybind11.h>
 

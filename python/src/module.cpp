@@ -21,4 +21,5 @@ PYBIND11_MODULE(recode, m) {
   recode::python::bindManager(m);
   recode::python::bindDevices(m);
   recode::python::bindConformance(m);
+  recode::python::bindReprs(m);
 }

@@ -16,7 +16,17 @@ def exact_devices():
 def test_the_cpu_device_is_always_there_and_exact():
     (cpu,) = [d for d in recode.devices() if d["name"] == "cpu"]
     assert cpu["available"] and cpu["exact"]
-    assert {"name", "description", "exact", "available"} == set(cpu)
+    assert {"name", "description", "exact", "available", "missing"} == set(cpu)
+    assert cpu["missing"] == ""
+
+
+def test_a_device_not_built_says_why_and_refuses_with_that_reason():
+    for d in recode.devices():
+        assert bool(d["missing"]) != d["available"], d
+        if not d["available"]:
+            a, b = cones_tip_to_tip()
+            with pytest.raises(ValueError, match="not in this module: install "):
+                recode.collide(a, b, REQUEST, device=d["name"])
 
 
 @pytest.mark.parametrize("device", exact_devices())
