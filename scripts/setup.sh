@@ -13,7 +13,7 @@ packages=(
   libfcl-dev libbullet-dev gnuplot-nox
   chromium python3-websocket emscripten
   pybind11-dev python3-dev python3-numpy python3-pytest doxygen
-  python3-venv python3-pip python3-setuptools python3-wheel
+  python3-venv python3-pip python3-setuptools python3-wheel mypy
 )
 
 missing=()

@@ -3,11 +3,15 @@ every public name of the module is in the stubs and every name of the stubs in t
 functions and for each class's members; each function's and method's parameters have the names
 the module's signatures give; a property is writable in the stubs (a plain annotation or a
 setter) exactly when it is in the module. A submodule of the module is a stub file of its name
-beside __init__.pyi, checked the same way."""
+beside __init__.pyi, checked the same way. And mypy (Debian's `mypy`, scripts/setup.sh) accepts the
+stubs and a typical program with --strict, and reports a program's wrong calls."""
 import ast
+import importlib.util
 import os
 import pathlib
 import re
+import shutil
+import subprocess
 import sys
 import types
 
@@ -221,3 +225,38 @@ def test_the_check_sees_a_drift(tmp_path, monkeypatch):
     assert "__init__.pyi has collide_, the module has not" in problems
     assert "recode.CollisionManager.add: the module's parameters ['object']" in problems
     assert "recode.CollisionGeometry.block_count: writable False in the module, True" in problems
+
+
+def mypy(tmp_path, program):
+    """mypy --strict on `program` with the stubs as the package recode; its output."""
+    shutil.copytree(STUBS, tmp_path / "stubs" / "recode")
+    done = subprocess.run([sys.executable, "-m", "mypy", "--strict", "--no-incremental",
+                           "--cache-dir", str(tmp_path / "cache"), str(program)],
+                          capture_output=True, text=True, cwd=tmp_path,
+                          env={**os.environ, "MYPYPATH": str(tmp_path / "stubs")})
+    return done.returncode, done.stdout + done.stderr
+
+
+needs_mypy = pytest.mark.skipif(importlib.util.find_spec("mypy") is None,
+                                reason="no mypy for this interpreter (Debian: mypy)")
+
+
+@needs_mypy
+def test_mypy_accepts_the_stubs_and_a_typical_program(tmp_path):
+    code, out = mypy(tmp_path, pathlib.Path(__file__).with_name("stubs_usage.py"))
+    assert code == 0, out
+
+
+@needs_mypy
+def test_mypy_reports_wrong_calls(tmp_path):
+    program = tmp_path / "wrong.py"
+    program.write_text(
+        "import recode\n"
+        "recode.collide(recode.CollisionObject(recode.box(1, 1, 1)), 'b')\n"
+        "recode.CollisionRequest(pixel_sise=0.1)\n"
+        "x: str = recode.devices()[0]['available']\n")
+    code, out = mypy(tmp_path, program)
+    assert code == 1
+    assert 'Argument 2 to "collide" has incompatible type "str"' in out
+    assert 'Unexpected keyword argument "pixel_sise"' in out
+    assert 'expression has type "bool", variable has type "str"' in out
