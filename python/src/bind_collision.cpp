@@ -7,10 +7,12 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
 #include "arrays.hpp"
+#include "bind_batch.hpp"
 #include "bindings.hpp"
 #include "devices.hpp"
 #include "recode/api/collision.hpp"
@@ -353,18 +355,29 @@ void bindCollision(py::module_& m) {
       "collide",
       [](const CollisionObject& a, const CollisionObject& b,
          const std::optional<CollisionRequest>& request, const std::string& device) {
+        // Copies of the two objects and the request, made with the GIL held: the query then
+        // runs without it, and another thread may move a or b meanwhile (docs/api.md#threads).
+        const CollisionObject copyA = a;
+        const CollisionObject copyB = b;
+        const CollisionRequest r = request.value_or(CollisionRequest{});
+        DevicePool* pool = device == "cpu" ? nullptr : &devicePool(device);
         CollisionResult result;
-        if (device == "cpu")
-          collide(a, b, request.value_or(CollisionRequest{}), result);
-        else
-          collide(a, b, request.value_or(CollisionRequest{}), result, devicePool(device));
+        {
+          py::gil_scoped_release release;
+          if (!pool) {
+            collide(copyA, copyB, r, result);
+          } else {
+            const std::lock_guard<std::mutex> lock(poolMutex(*pool));
+            collide(copyA, copyB, r, result, *pool);
+          }
+        }
         return result;
       },
       py::arg("a"), py::arg("b"), py::arg("request") = py::none(), py::kw_only(),
       py::arg("device") = "cpu",
       "Collides two objects at their current poses; returns a CollisionResult (true when they "
       "collide). device: a name of recode.devices() (an exact one gives the cpu device's "
-      "result, timing aside).");
+      "result, timing aside). Runs without the GIL, on copies of a and b.");
 }
 
 }  // namespace recode::python

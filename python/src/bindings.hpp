@@ -11,6 +11,7 @@ namespace py = pybind11;
 void bindGeometry(py::module_& m);   // ConvexBlock, CollisionGeometry, the primitive solids
 void bindCollision(py::module_& m);  // CollisionObject, CollisionRequest, CollisionResult, collide
 void bindManager(py::module_& m);    // CollisionManager, ObjectContact
+void bindBatch(py::module_& m);      // collide_batch, collide_poses, BatchResult
 // recode.conformance: the conformance suite (recode/conformance/*.hpp) for Python back ends
 void bindConformance(py::module_& m);
 // recode.devices(): devices.hpp

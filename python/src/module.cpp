@@ -19,6 +19,7 @@ PYBIND11_MODULE(recode, m) {
   recode::python::bindGeometry(m);
   recode::python::bindCollision(m);
   recode::python::bindManager(m);
+  recode::python::bindBatch(m);
   recode::python::bindDevices(m);
   recode::python::bindConformance(m);
   recode::python::bindReprs(m);
