@@ -99,7 +99,7 @@ class ConformsToMatcher final : public Catch::MatcherBase<Backend> {
     if (!report.error.empty()) {
       out << "the back end failed to answer";
       if (report.errorKind)
-        out << " (" << toString(*report.errorKind) << ")";
+        out << " (" << recode::conformance::toString(*report.errorKind) << ")";
       out << ": " << report.error << '\n';
     }
     report_ += out.str();
