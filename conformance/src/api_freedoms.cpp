@@ -13,10 +13,16 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "contract_arithmetic.hpp"
+
 namespace recode::conformance {
 
 namespace {
 
+using contract::applyOp;
+using contract::compare;
+using contract::masked;
+using contract::roundHalfEven;
 using raster::CompareFunc;
 using raster::StencilOp;
 
@@ -93,16 +99,6 @@ std::uint64_t floatBits(float f) {
   return u;
 }
 
-double roundHalfEven(double v) {
-  const double k = std::floor(v);
-  const double frac = v - k;
-  if (frac > 0.5)
-    return k + 1.0;
-  if (frac < 0.5)
-    return k;
-  return std::fmod(k, 2.0) == 0.0 ? k : k + 1.0;
-}
-
 std::uint32_t toDepth(double q) {
   return static_cast<std::uint32_t>(std::clamp(q, 0.0, kDepthScale));
 }
@@ -126,28 +122,6 @@ DepthRange convert(double zlo, double zhi, const FreedomWidths& w) {
   return r;
 }
 
-bool compareExact(CompareFunc f, std::uint32_t a, std::uint32_t b) {
-  switch (f) {
-    case CompareFunc::Never:
-      return false;
-    case CompareFunc::Less:
-      return a < b;
-    case CompareFunc::Equal:
-      return a == b;
-    case CompareFunc::LEqual:
-      return a <= b;
-    case CompareFunc::Greater:
-      return a > b;
-    case CompareFunc::NotEqual:
-      return a != b;
-    case CompareFunc::GEqual:
-      return a >= b;
-    case CompareFunc::Always:
-      return true;
-  }
-  return false;
-}
-
 struct Outcomes {
   bool pass = false, fail = false;
 };
@@ -155,8 +129,7 @@ struct Outcomes {
 // Whether `incoming FUNC stored` can pass and can fail for values in the two intervals.
 Outcomes depthTest(CompareFunc f, const DepthRange& in, const DepthRange& st) {
   if ((in.sym != 0 && in.sym == st.sym) || (in.lo == in.hi && st.lo == st.hi)) {
-    const bool r =
-        in.sym != 0 && in.sym == st.sym ? compareExact(f, 0, 0) : compareExact(f, in.lo, st.lo);
+    const bool r = in.sym != 0 && in.sym == st.sym ? compare(f, 0, 0) : compare(f, in.lo, st.lo);
     return {r, !r};
   }
   const bool overlap = in.lo <= st.hi && st.lo <= in.hi;
@@ -180,32 +153,6 @@ Outcomes depthTest(CompareFunc f, const DepthRange& in, const DepthRange& st) {
       return {!onlyEqual, overlap};
   }
   return {true, true};
-}
-
-std::uint8_t applyOp(StencilOp op, std::uint8_t s, std::uint8_t ref) {
-  switch (op) {
-    case StencilOp::Keep:
-      return s;
-    case StencilOp::Zero:
-      return 0;
-    case StencilOp::Replace:
-      return ref;
-    case StencilOp::Incr:
-      return s == 255 ? s : static_cast<std::uint8_t>(s + 1);
-    case StencilOp::IncrWrap:
-      return static_cast<std::uint8_t>(s + 1);
-    case StencilOp::Decr:
-      return s == 0 ? s : static_cast<std::uint8_t>(s - 1);
-    case StencilOp::DecrWrap:
-      return static_cast<std::uint8_t>(s - 1);
-    case StencilOp::Invert:
-      return static_cast<std::uint8_t>(~s);
-  }
-  return s;
-}
-
-std::uint8_t masked(std::uint8_t n, std::uint8_t s, std::uint8_t writeMask) {
-  return static_cast<std::uint8_t>((n & writeMask) | (s & static_cast<std::uint8_t>(~writeMask)));
 }
 
 enum class Cover { No, Yes, Open };
@@ -691,7 +638,7 @@ class Follower {
         base.freedoms |= coverFreedom;
         if (!t.facingFixed)
           base.freedoms |= static_cast<FreedomSet>(Freedom::SubPixelPrecision);
-        const bool stencilPasses = compareExact(
+        const bool stencilPasses = compare(
             st_.stencilFunc, static_cast<std::uint32_t>(st_.stencilRef & st_.stencilValueMask),
             static_cast<std::uint32_t>(s.stencil & st_.stencilValueMask));
         if (!stencilPasses) {

@@ -11,10 +11,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "contract_arithmetic.hpp"
+
 namespace recode::conformance {
 
 namespace {
 
+using contract::applyOp;
+using contract::compare;
+using contract::masked;
+using contract::roundHalfEven;
 using raster::CompareFunc;
 using raster::StencilOp;
 using raster::StencilOps;
@@ -22,19 +28,6 @@ using raster::StencilOps;
 constexpr std::uint32_t kDepthOne = 16777215u;  // 2^24 - 1
 constexpr int kMaxSize = 16384;
 constexpr double kMaxCoordinate = 32768.0;
-
-// Round half to even, written out so that it does not depend on the floating-point
-// environment's rounding mode (nearbyint in the default mode gives the same). Used for the
-// snapping (section 2) and the quantisation (section 5); `v - floor(v)` is exact in double.
-double roundHalfEven(double v) {
-  const double k = std::floor(v);
-  const double frac = v - k;
-  if (frac > 0.5)
-    return k + 1.0;
-  if (frac < 0.5)
-    return k;
-  return std::fmod(k, 2.0) == 0.0 ? k : k + 1.0;
-}
 
 // Section 5: q = 0 if z <= 0 (or NaN), 16777215 if z >= 1, else nearbyint(z * 16777215.0).
 Quantisation quantise(double z) {
@@ -53,29 +46,6 @@ Quantisation quantise(double z) {
   r.tie = r.scaled - std::floor(r.scaled) == 0.5;
   r.q = static_cast<std::uint32_t>(roundHalfEven(r.scaled));
   return r;
-}
-
-// Section 6: `incoming FUNC stored`.
-bool compare(CompareFunc func, std::uint32_t incoming, std::uint32_t stored) {
-  switch (func) {
-    case CompareFunc::Never:
-      return false;
-    case CompareFunc::Less:
-      return incoming < stored;
-    case CompareFunc::Equal:
-      return incoming == stored;
-    case CompareFunc::LEqual:
-      return incoming <= stored;
-    case CompareFunc::Greater:
-      return incoming > stored;
-    case CompareFunc::NotEqual:
-      return incoming != stored;
-    case CompareFunc::GEqual:
-      return incoming >= stored;
-    case CompareFunc::Always:
-      return true;
-  }
-  return false;
 }
 
 const char* compareSymbol(CompareFunc func) {
@@ -97,34 +67,6 @@ const char* compareSymbol(CompareFunc func) {
       break;
   }
   return "";
-}
-
-// Section 6's stencil ops on 8 bits.
-std::uint8_t applyOp(StencilOp op, std::uint8_t s, std::uint8_t ref) {
-  switch (op) {
-    case StencilOp::Keep:
-      return s;
-    case StencilOp::Zero:
-      return 0;
-    case StencilOp::Replace:
-      return ref;
-    case StencilOp::Incr:
-      return s == 255 ? s : static_cast<std::uint8_t>(s + 1);
-    case StencilOp::IncrWrap:
-      return static_cast<std::uint8_t>((s + 1) % 256);
-    case StencilOp::Decr:
-      return s == 0 ? s : static_cast<std::uint8_t>(s - 1);
-    case StencilOp::DecrWrap:
-      return static_cast<std::uint8_t>((s + 255) % 256);
-    case StencilOp::Invert:
-      return static_cast<std::uint8_t>(255 - s);
-  }
-  return s;
-}
-
-// s <- (n & writeMask) | (s & ~writeMask)
-std::uint8_t masked(std::uint8_t n, std::uint8_t s, std::uint8_t writeMask) {
-  return static_cast<std::uint8_t>((n & writeMask) | (s & static_cast<std::uint8_t>(~writeMask)));
 }
 
 bool inside(const raster::PixelRect& r, int x, int y) {
