@@ -161,6 +161,7 @@ text_of() {  # the object's code, data and relocations, without gcov's per-compi
 
 declare -A tests_of baseline_s code_of never
 current=""
+baseline_of=""   # the test programs whose unchanged run the .gcda files hold
 while IFS=$'\t' read -r -u 3 file line col op old new; do
   if [ "$file" != "$current" ]; then
     # A new file: its object, its test programs, the unchanged build, their times and coverage.
@@ -172,15 +173,21 @@ while IFS=$'\t' read -r -u 3 file line col op old new; do
     echo "mutate.sh: $file: ${#progs[@]} test programs: ${progs[*]}" >&2
     build_targets "$obj" "${progs[@]}" || { cat "$work/build.log" >&2; exit 1; }
     code_of[$file]=$(text_of "$build/$obj")
-    find "$build" -name '*.gcda' -delete
-    for p in "${progs[@]}"; do
-      t0=$(date +%s.%N)
-      (cd "$build/$(dirname "$p")" && "./$(basename "$p")" > "$work/run.log" 2>&1) ||
-        { echo "mutate.sh: $p fails on the unchanged source" >&2
-          tail -20 "$work/run.log" >&2
-          exit 1; }
-      baseline_s[$p]=$(echo "$(date +%s.%N) - $t0" | bc)
-    done
+    # The unchanged build's run (times and coverage) serves every file whose test programs
+    # are the same: the mutants' runs write their coverage elsewhere (GCOV_PREFIX), so the
+    # .gcda files still hold that run, and this file's object is the one it counted.
+    if [ "${progs[*]}" != "$baseline_of" ]; then
+      find "$build" -name '*.gcda' -delete
+      for p in "${progs[@]}"; do
+        t0=$(date +%s.%N)
+        (cd "$build/$(dirname "$p")" && "./$(basename "$p")" > "$work/run.log" 2>&1) ||
+          { echo "mutate.sh: $p fails on the unchanged source" >&2
+            tail -20 "$work/run.log" >&2
+            exit 1; }
+        baseline_s[$p]=$(echo "$(date +%s.%N) - $t0" | bc)
+      done
+      baseline_of="${progs[*]}"
+    fi
     { read -r _executed; read -r unexecuted; } < <(python3 "$helper" covered "$build" "$root/$file")
     never[$file]=" $unexecuted "
   fi
