@@ -12,6 +12,10 @@ Subcommands:
                            that link the library holding it, one path a line (object first)
   covered BUILD_DIR FILE   the lines of FILE that tests reached, then (second line) those they
                            did not, from BUILD_DIR's .gcda files (gcov; see cmd_covered)
+  argued FILE LINE COL OLD NEW
+                           prints why the mutant cannot change any output and exits 0 when it
+                           is known to be equivalent (a capacity-only call removed, or a row of
+                           scripts/mutation-equivalents.tsv); exits 1 otherwise
   report TSV OUT_MD        the markdown summary of a result TSV, per folder
 
 A mutant is one textual change of one line: OLD at column COL (0-based) becomes NEW. The
@@ -290,40 +294,89 @@ def cmd_covered(build_dir, source):
     print(" ".join(str(n) for n in never))
 
 
-STATUSES = ("killed", "survived", "timeout", "build-failed", "equivalent", "not-reached")
+# Calls that change only a container's capacity: removing one cannot change any value.
+CAPACITY_ONLY = re.compile(r"^[\w.\[\]>-]+\.(reserve|shrink_to_fit)\(.*\);$")
+EQUIVALENTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mutation-equivalents.tsv")
+
+
+def equivalents():
+    """Rows of mutation-equivalents.tsv: (file, line text, column in it, old, new) -> why.
+
+    A mutant is named by its line's text (stripped), not its number, so that the entry holds
+    while lines above it come and go; the column counts from the text's first character."""
+    known = {}
+    if not os.path.exists(EQUIVALENTS):
+        return known
+    with open(EQUIVALENTS, encoding="utf-8") as f:
+        for number, row in enumerate(f, start=1):
+            if not row.strip() or row.startswith("#"):
+                continue
+            fields = row.rstrip("\n").split("\t")
+            if len(fields) != 6 or not fields[2].isdigit():
+                print(f"{EQUIVALENTS}:{number}: expected 6 tab-separated fields (file, line "
+                      f"text, column, old, new, why), got {len(fields)}", file=sys.stderr)
+                sys.exit(2)
+            known[tuple(fields[:2]) + (int(fields[2]),) + tuple(fields[3:5])] = fields[5]
+    return known
+
+
+def cmd_argued(path, line, col, old, new):
+    if old.endswith(";") and new == ";" and CAPACITY_ONLY.match(old):
+        print("only a container's capacity changes")
+        return 0
+    with open(path, encoding="utf-8") as f:
+        text = f.read().split("\n")[line - 1]
+    indent = len(text) - len(text.lstrip())
+    why = equivalents().get((path, text.strip(), col - indent, old, new))
+    if why:
+        print(why)
+        return 0
+    return 1
+
+
+STATUSES = ("killed", "survived", "timeout", "build-failed", "equivalent", "argued", "not-reached")
+
+
+def score_row(name, c):
+    """One table row: the counts, and killed (timeouts included) over the mutants judged
+    (made less those never run: equivalent, argued, not reached, not compiled)."""
+    made = sum(c.values())
+    judged = made - c["equivalent"] - c["argued"] - c["not-reached"] - c["build-failed"]
+    score = f"{100.0 * (c['killed'] + c['timeout']) / judged:.0f} %" if judged else "-"
+    return (f"| {name} | {made} | {c['killed']} | {c['timeout']} | {c['survived']} |"
+            f" {c['build-failed']} | {c['equivalent']} | {c['argued']} | {c['not-reached']} |"
+            f" {score} |\n")
 
 
 def cmd_report(results, out_md):
     rows = [line.rstrip("\n").split("\t") for line in open(results, encoding="utf-8")
             if line.strip() and not line.startswith("#")]
     folders = defaultdict(lambda: defaultdict(int))
+    total = defaultdict(int)
     times = []
     for r in rows:
         path, status, seconds = r[0], r[6], float(r[7])
         folders[os.path.dirname(path)][status] += 1
-        if status not in ("not-reached",):
+        total[status] += 1
+        if status not in ("not-reached", "argued"):
             times.append(seconds)
     with open(out_md, "w", encoding="utf-8") as f:
         f.write("# Mutation run\n\n")
-        f.write("| folder | made | killed | survived | timed out | build failed | equivalent |"
-                " not reached | score |\n|---|---|---|---|---|---|---|---|---|\n")
+        f.write("| folder | made | killed | timed out | survived | build failed | equivalent |"
+                " argued | not reached | score |\n|---|---|---|---|---|---|---|---|---|---|\n")
         for folder in sorted(folders):
-            c = folders[folder]
-            made = sum(c.values())
-            # Timeouts count as killed; a mutant that does not build is equivalent by the
-            # compiler's judgement only when it says so (kept apart here).
-            judged = made - c["equivalent"] - c["not-reached"] - c["build-failed"]
-            score = f"{100.0 * (c['killed'] + c['timeout']) / judged:.0f} %" if judged else "-"
-            f.write(f"| {folder} | {made} | {c['killed']} | {c['survived']} | {c['timeout']} |"
-                    f" {c['build-failed']} | {c['equivalent']} | {c['not-reached']} | {score} |\n")
+            f.write(score_row(folder, folders[folder]))
+        f.write(score_row("all", total))
         if times:
             f.write(f"\n{len(times)} mutants built and judged, {sum(times):.0f} s in all,"
                     f" {sum(times) / len(times):.0f} s each on average.\n")
-        survivors = [r for r in rows if r[6] == "survived"]
-        if survivors:
-            f.write("\n## Survivors\n\n")
-            for r in survivors:
-                f.write(f"- `{r[0]}:{r[1]}` ({r[3]}): `{r[4]}` -> `{r[5]}`\n")
+        for status, title in (("survived", "Survivors"), ("argued", "Argued equivalent")):
+            listed = [r for r in rows if r[6] == status]
+            if listed:
+                f.write(f"\n## {title}\n\n")
+                for r in listed:
+                    why = f": {r[9]}" if status == "argued" and len(r) > 9 else ""
+                    f.write(f"- `{r[0]}:{r[1]}` ({r[3]}): `{r[4]}` -> `{r[5]}`{why}\n")
 
 
 def main(argv):
@@ -342,6 +395,8 @@ def main(argv):
         cmd_objects(args[0], args[1])
     elif cmd == "covered":
         cmd_covered(args[0], args[1])
+    elif cmd == "argued":
+        sys.exit(cmd_argued(args[0], int(args[1]), int(args[2]), args[3], args[4]))
     elif cmd == "report":
         cmd_report(args[0], args[1])
     else:

@@ -14,6 +14,9 @@
 #   survived      every test program passed
 #   timeout       a test program ran past the limit (counted as killed)
 #   equivalent    the compiler made the same object (code, data, relocations) as from the source
+#   argued        known not to change any output, not built: a call that only changes a
+#                 container's capacity removed, or a row of scripts/mutation-equivalents.tsv
+#                 (the file, the line's text, the change and the argument)
 #   build-failed  the mutant does not compile (-Werror included): the compiler rejected it
 #   not-reached   no test enters the function holding the line (gcov's function counts, from
 #                 one run of the test programs on the unchanged build): not built, not run
@@ -31,7 +34,9 @@
 #                    build-mutate/mutation-reports)
 #   -j N             build jobs (1)
 #   --list           only list the mutants (after --changed/--sample), build nothing
-#   --mutants TSV    run the mutants of TSV (rows as --list prints them) instead of making them
+#   --mutants TSV    run the mutants of TSV (rows as --list prints them, or a results.tsv, e.g.
+#                    its survivors: awk -F'\t' '$7 == "survived"' results.tsv) instead of
+#                    making them
 #
 # The test programs are those of tests/core and tests/raster that link the changed object's
 # library (MUTATE_TESTS, a regular expression on their build path, widens or narrows that).
@@ -93,7 +98,8 @@ done
 work=$(mktemp -d /tmp/recode-mutate.XXXXXX)
 mutants="$work/mutants.tsv"
 if [ -n "$given" ]; then
-  cp "$given" "$mutants"
+  # List rows, or a results.tsv's rows (their first six fields).
+  grep -v '^#' "$given" | cut -f1-6 > "$mutants"
 else
   python3 "$helper" list "${files[@]}" > "$mutants"
 fi
@@ -123,7 +129,7 @@ stamp=$(date -u +%Y%m%dT%H%M%SZ)
 out=${out:-$build/mutation-reports}/$stamp
 mkdir -p "$out"
 results="$out/results.tsv"
-printf '#file\tline\tcolumn\toperator\toriginal\tmutant\tstatus\tseconds\ttests\n' > "$results"
+printf '#file\tline\tcolumn\toperator\toriginal\tmutant\tstatus\tseconds\ttests\tnote\n' > "$results"
 
 lock=${MUTATE_LOCK-/tmp/recode-build.lock}
 applied=""   # the source a mutant is in now
@@ -193,7 +199,13 @@ while IFS=$'\t' read -r -u 3 file line col op old new; do
   fi
   t0=$(date +%s.%N)
   status=""
-  if [ -z "${tests_of[$file]}" ] || [[ "${never[$file]}" == *" $line "* ]]; then
+  note=""
+  rc=0
+  note=$(python3 "$helper" argued "$file" "$line" "$col" "$old" "$new") || rc=$?
+  [ "$rc" -le 1 ] || exit 1   # the equivalents file is malformed (mutants.py said where)
+  if [ "$rc" = 0 ]; then
+    status=argued
+  elif [ -z "${tests_of[$file]}" ] || [[ "${never[$file]}" == *" $line "* ]]; then
     status=not-reached
   else
     if [ -n "$lock" ]; then
@@ -220,14 +232,19 @@ while IFS=$'\t' read -r -u 3 file line col op old new; do
         (cd "$build/$(dirname "$p")" &&
           GCOV_PREFIX="$work/gcov" timeout "$limit" "./$(basename "$p")" --abort \
             > "$work/run.log" 2>&1) || rc=$?
-        if [ "$rc" = 124 ]; then status=timeout; break; fi
-        if [ "$rc" != 0 ]; then status=killed; break; fi
+        if [ "$rc" = 124 ]; then status=timeout; note=$p; break; fi
+        if [ "$rc" != 0 ]; then
+          status=killed
+          # Catch2 prints the failing test case's name between the first two rules of dashes.
+          note="$p: $(awk '/^-{20,}$/ { n++; next } n == 1 { print; exit }' "$work/run.log")"
+          break
+        fi
       done
     fi
   fi
   seconds=$(echo "$(date +%s.%N) - $t0" | bc)
-  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.1f\t%s\n' "$file" "$line" "$col" "$op" "$old" "$new" \
-    "$status" "$seconds" "${tests_of[$file]}" >> "$results"
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%.1f\t%s\t%s\n' "$file" "$line" "$col" "$op" "$old" "$new" \
+    "$status" "$seconds" "${tests_of[$file]}" "${note//$'\t'/ }" >> "$results"
   printf 'mutate.sh: %s:%s %s %s -> %s: %s (%.0f s)\n' "$file" "$line" "$op" "$old" "$new" \
     "$status" "$seconds" >&2
 done 3< "$mutants"
