@@ -249,7 +249,7 @@ TEST_CASE("thinnestDirection: a slab across a direction of the spiral returns th
   CHECK((got - d).norm() <= 5e-16);
 }
 
-TEST_CASE("contactNormal: the sign from the extents of the blocks, far from the origin") {
+TEST_CASE("contactNormal: the sign from the extents of blocks far from the origin") {
   // A = [10, 11] x [0, 1]^2, B = [10.75, 12] x [-0.5, 1.5]^2, seen along x: the overlap is
   // [10.75, 11] along x. Moving B along +x by max_A x - min_B x = 0.25 separates them; along -x
   // it takes max_B x - min_A x = 2. So the normal is +x and the depth 0.25. (The sums are far
