@@ -95,6 +95,30 @@ void requireValidHull(const ConvexHull& hull, std::span<const Eigen::Vector3d> p
   REQUIRE(report.ok());
 }
 
+TEST_CASE("a tetrahedron's triangles are the starting simplex's faces in order", "[hull]") {
+  // Four points: the hull is their tetrahedron, its triangles the incremental step's first four
+  // faces in order: the simplex (a, b, c, d) less a, less b, less c, less d, each turned
+  // outward. a = p0, the lowest (lexicographically smallest); b = p1, the farthest from it (10;
+  // p2 is 5 away, p3 6); c the farthest from the line ab: |(b - a) x (q - a)| is 10 * 5 = 50
+  // for p2 and 10 * 6 = 60 for p3, so c = p3 and d = p2. The faces, in the order of the point
+  // each leaves out: {p1, p3, p2}, {p0, p3, p2}, {p0, p1, p2}, {p0, p1, p3}, each
+  // counter-clockwise seen from outside (the left-out point behind it).
+  const std::vector<Eigen::Vector3d> points{{0, 0, 10}, {10, 0, 10}, {0, 5, 10}, {0, 0, 16}};
+  const ConvexHull hull = convexHull(points, "tetrahedron");
+  requireValidHull(hull, points);
+  CHECK(hull.mesh.triangles == std::vector<Triangle>{{1, 2, 3}, {0, 3, 2}, {0, 2, 1}, {0, 1, 3}});
+}
+
+TEST_CASE("a repeated lowest point is reported by its first index", "[hull]") {
+  // p4 repeats p0, the lowest point, which starts the hull: the first of the two is taken (the
+  // smallest element's first occurrence) and the copy, on the hull, is dropped.
+  const std::vector<Eigen::Vector3d> points{
+      {0, 0, 10}, {10, 0, 10}, {0, 5, 10}, {0, 0, 16}, {0, 0, 10}};
+  const ConvexHull hull = convexHull(points, "tetrahedron");
+  requireValidHull(hull, points);
+  CHECK(hull.inputIndex == std::vector<std::size_t>{0, 1, 2, 3});
+}
+
 TEST_CASE("the hull of a cube keeps its 8 corners and drops points inside, on faces and edges",
           "[hull]") {
   std::vector<Eigen::Vector3d> points;
@@ -194,8 +218,10 @@ TEST_CASE("a hull too thin for the tolerance is refused with the rule", "[hull]"
     points.emplace_back(i & 1, (i >> 1) & 1, (i & 4) ? 1e-12 : 0.0);
   CHECK(convexHull(points, "slab.obj").mesh.vertexCount() == 8);
   const std::string message = meshErrorMessage([&] { (void)convexHullBlock(points, "slab.obj"); });
+  // Dropping the corners of the thin side triangles leaves points that span no volume:
+  // convexHull's own problem follows, its "slab.obj: " cut off (the prefix names the source).
   CHECK_THAT(message, Catch::StartsWith("slab.obj: the convex hull of its 8 points is not a "
-                                        "valid convex block ("));
+                                        "valid convex block (convex hull: "));
   CHECK_THAT(message, Catch::EndsWith("); its points are too close to one plane, line or point "
                                       "for the validation tolerance"));
 }
