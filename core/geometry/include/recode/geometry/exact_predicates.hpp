@@ -7,7 +7,9 @@
 //
 // Inputs must be finite and small enough that products of three coordinate differences do not
 // overflow (|coordinate| well below 1e100); the convex hull's callers hold coordinates to
-// 1e9.
+// 1e9. Differences must also not be so small that such products fall below the normal doubles
+// (nonzero differences under about 1e-100): the error-free products then lose digits and the
+// sign returned can be 0 or wrong, e.g. orient2d of (2^-600, 0), (0, 2^-600), (0, 0) is 0.
 
 #include <Eigen/Core>
 
