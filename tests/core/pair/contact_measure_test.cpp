@@ -9,6 +9,7 @@
 #include "pair_stages.hpp"
 #include "recode/geometry/generators.hpp"
 #include "recode/pair/pair_block.hpp"
+#include "recode/raster/pixel_summary.hpp"
 #include "recode/raster/state.hpp"
 
 using namespace recode;
@@ -25,7 +26,8 @@ core::OrthoView view4x4() {
 
 // The result of one pair whose only interfering pixel is (x, y), with the contact pass's near
 // and far depths there, after concludeContact.
-core::PairResult measureOnePixel(int x, int y, std::uint32_t nearEnd, std::uint32_t farEnd) {
+core::PairResult measureOnePixel(int x, int y, std::uint32_t nearEnd, std::uint32_t farEnd,
+                                 bool normal = false) {
   const raster::PixelRect frame{0, 0, 4, 4};
   core::PairResult r;
   r.depthMin = 0.0;
@@ -44,6 +46,7 @@ core::PairResult measureOnePixel(int x, int y, std::uint32_t nearEnd, std::uint3
   request.frame.window = {0, 0, 4, 8};
   request.frame.width = 4;
   request.frame.height = 4;
+  request.normal = normal;
   core::detail::concludeContact(nearDepth, farDepth, view4x4(), block, block, request, r);
   return r;
 }
@@ -88,4 +91,43 @@ TEST_CASE("a collapsed pixel's depth is the midpoint of its ends, rounded half u
     CHECK(r.contact.box.min.z() == Approx(z).epsilon(0).margin(1e-3));
     CHECK(r.contact.box.max.z() == Approx(z).epsilon(0).margin(1e-3));
   }
+}
+
+TEST_CASE("a pixel whose two ends meet at one depth is not collapsed") {
+  // Near end == far end: a zero-length interval, not a near end past the far one.
+  const core::PairResult r = measureOnePixel(1, 2, 150, 150);
+  REQUIRE(r.contact.points.size() == 1);
+  CHECK(r.contact.collapsedPixels == 0);
+  CHECK(r.contact.maxDepth == 0.0);
+  CHECK(r.contact.points[0].z() == Approx(kRange - 150).epsilon(0).margin(1e-3));
+}
+
+TEST_CASE("an overlap with no thickness along the view has no depth along its normal") {
+  // One pixel whose ends meet: both samples are the same point, so the overlap's width is the
+  // pixel square's extent alone, which along the view axis (the normal found) is nothing.
+  const core::PairResult r = measureOnePixel(1, 2, 150, 150, true);
+  REQUIRE(r.contact.normal);
+  CHECK(r.contact.normal->normal.cwiseAbs() == Eigen::Vector3d::UnitZ());
+  CHECK(r.contact.normal->depth == 0.0);
+}
+
+TEST_CASE("the contact box from a summary starts at the first pixel's centre") {
+  // concludeSummaryContact over a contact rectangle at the frame's corner: its first column's
+  // and row's centres are u = 0.5 / 4 * 4 and v = 0.5 / 4 * 8 exactly (powers of two), as
+  // concludeContact puts them; its last are (1.5, 3).
+  core::PairResult r;
+  r.depthMin = 0.0;
+  r.depthMax = kRange;
+  r.contactRect = raster::PixelRect{0, 0, 2, 2};
+  raster::DepthIntervals d;
+  d.nearest = 100;
+  d.farthest = 200;
+  d.longest = 100;
+  core::detail::concludeSummaryContact(d, view4x4(), r);
+  CHECK(r.contact.box.min.x() == 0.5);
+  CHECK(r.contact.box.min.y() == 1.0);
+  CHECK(r.contact.box.max.x() == 1.5);
+  CHECK(r.contact.box.max.y() == 3.0);
+  CHECK(r.contact.box.min.z() == Approx(kRange - 200).epsilon(0).margin(1e-3));
+  CHECK(r.contact.box.max.z() == Approx(kRange - 100).epsilon(0).margin(1e-3));
 }

@@ -2,6 +2,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
+
 #include "recode/pair/frame.hpp"
 
 using namespace recode::core;
@@ -34,6 +37,23 @@ TEST_CASE("defaults: 800x800, the bounds with a 5% margin, square pixels") {
   CHECK(f.window.umax == Approx(4.2));
   CHECK(pixelW(f) == Approx(pixelH(f)));
   CHECK(0.5 * (f.window.vmin + f.window.vmax) == Approx(1.0));
+}
+
+TEST_CASE("a default window for a resolution is centred on the bounds, pixel for pixel") {
+  // Bounds [-2, 2] x [-1, 1] on the plane: margin 0.2 (5% of 4) gives [-2.2, 2.2] x [-1.2, 1.2],
+  // centred on 0 exactly. At 40 x 20 the pixel is max(4.4 / 40, 2.4 / 20) = 0.12 (the height
+  // decides), and each side is the centre -+ half the pixel times the pixel count.
+  const ViewWindow w =
+      defaultWindow(ViewAxis::Z, bounds(-2, -1, 0, 2, 1, 1), std::array<int, 2>{40, 20});
+  const double margin = kDefaultWindowMargin * 4;
+  const double du = (2 + margin) - (-2 - margin), dv = (1 + margin) - (-1 - margin);
+  const double perPixel = std::max(du / 40, dv / 20);
+  CHECK(perPixel == Approx(0.12));
+  CHECK(w.umin == 0.0 - 0.5 * perPixel * 40);
+  CHECK(w.umax == 0.0 + 0.5 * perPixel * 40);
+  CHECK(w.vmin == 0.0 - 0.5 * perPixel * 20);
+  CHECK(w.vmax == 0.0 + 0.5 * perPixel * 20);
+  CHECK(w.umax == -w.umin);
 }
 
 TEST_CASE("the image plane follows the axis") {

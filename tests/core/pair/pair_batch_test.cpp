@@ -5,11 +5,14 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -294,6 +297,28 @@ TEST_CASE("the comparison notices a contact pass skipped for one pair", "[pair][
       CHECK(difference.value_or("") == "");
     }
   }
+}
+
+TEST_CASE("a batch's total time holds each pair's share of the waits", "[pair][batch]") {
+  // A device whose finish() takes at least 5 ms: one pair that interferes waits for it twice
+  // (the stencil round, then the contact round after the verdict), alone, so its total holds
+  // both waits whole on top of its own recording and concluding.
+  class SlowDevice final : public DeferringDevice {
+   public:
+    using DeferringDevice::DeferringDevice;
+    void finish() override {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      DeferringDevice::finish();
+    }
+  };
+  const Batch batch = makeBatch();
+  const core::PairJob& job = batch.jobs[3];  // the box at the cone's centre
+  SlowDevice device(job.request.frame.width, job.request.frame.height);
+  const std::vector<core::PairResult> got = core::collidePairs(device, std::span(&job, 1));
+  REQUIRE(got.size() == 1);
+  REQUIRE(got[0].collide);
+  CHECK(device.finishes == 2);
+  CHECK(got[0].timing.totalUs >= 2 * 5000.0);
 }
 
 TEST_CASE("a batch checks its jobs and leaves no device with work pending", "[pair][batch]") {

@@ -274,6 +274,18 @@ TEST_CASE("MIN inside MAX inside FULL: same verdict, same interfering pixels, fe
   CHECK(strictlyFewer > overlapping / 2);
 }
 
+TEST_CASE("the MAX MOR is the bounding rectangle of both footprints") {
+  // 8x8 pixels over [0, 8]^2: pixel i's centre is i + 0.5. A spans [1, 4] in x and y (pixels
+  // 1..3), B [3, 6] x [2, 7] (pixels 3..5 by 2..6); they overlap, and neither holds the other.
+  const core::FrameSpec frame = frameZ(0, 0, 8, 8, 8, 8);
+  const auto a = boxBetween({1, 1, 0}, {4, 4, 1});
+  const auto b = boxBetween({3, 2, 0.5}, {6, 7, 2});
+  const raster::PixelRect both{1, 1, 6, 7};
+  CHECK(runPair(a, b, frame, MorMode::Max).mor == both);
+  CHECK(runPair(b, a, frame, MorMode::Max).mor == both);
+  CHECK(runPair(a, b, frame, MorMode::Min).mor == raster::PixelRect{3, 2, 4, 4});
+}
+
 TEST_CASE("overlapping boxes: the contact region is the intersection box at pixel centres") {
   // A [-1, 1]^3, B [0, 2] x [0, 2] x [0.5, 3]: they share [0, 1] x [0, 1] x [0.5, 1].
   // 40x40 pixels over [-2, 2]^2: pixel size 0.1, centres at 0.05 + 0.1 k.
