@@ -125,6 +125,28 @@ TEST_CASE("a box grown by a box is the larger box, with the summed volume") {
   CHECK(core::signedVolume(g) == Approx(3.0 * 4.5 * 8.0));
 }
 
+TEST_CASE("a corner sum a double holds exactly is not moved outward") {
+  // -1 - 0.5, 2 + 0.25 and 3 + 1 are doubles: the two-sum finds no rounding error, so no sum
+  // is stepped to the next double and the grown box is the larger box exactly.
+  const core::Aabb box =
+      core::boundingBox(core::grownByBox(core::makeBox(1, 2, 3), Vector3d(0.5, 0.25, 1)));
+  CHECK(box.min == Vector3d(-1.5, -2.25, -4));
+  CHECK(box.max == Vector3d(1.5, 2.25, 4));
+}
+
+TEST_CASE("a zero half-side adds no corners along its axis and keeps both sides of the others") {
+  // Each positive half-side moves every vertex to both of its sides; a zero one leaves the
+  // coordinate as it is.
+  const core::TriangleMesh block = core::makeBox(1, 2, 3);
+  const Vector3d halves[] = {{0.5, 0.25, 0}, {0.5, 0, 0.25}, {0, 0.5, 0.25}};
+  for (const Vector3d& half : halves) {
+    INFO("half " << half.transpose());
+    const core::Aabb box = core::boundingBox(core::grownByBox(block, half));
+    CHECK(box.min == Vector3d(-1, -2, -3) - half);
+    CHECK(box.max == Vector3d(1, 2, 3) + half);
+  }
+}
+
 TEST_CASE("a block clipped to a box holds exactly the points inside both") {
   const core::TriangleMesh cone = tiltedCone();
   core::Aabb box;

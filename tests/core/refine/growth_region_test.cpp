@@ -60,6 +60,39 @@ TEST_CASE("the conservative growth across the view is half a pixel and 2/256 of 
   CHECK(g.z() == Approx(4.0 * 0.5 / (n - 8.0)).epsilon(1e-12));
 }
 
+TEST_CASE("the conservative growth takes the frame's axes: u and v across and d along the view") {
+  // The image plane's (u, v, d) are world (y, z, x) seen along x and (z, x, y) seen along y
+  // (OrthoView::toPlane). Pixels 0.125 along u and 0.25 along v; the box spans 1, 2 and 4
+  // along x, y and z, so each depth growth, 4 r / (N - 8), names the axis it was taken along.
+  core::FrameSpec frame = frame16().frame;
+  core::Aabb a;
+  a.min = Vector3d(-0.5, -1, -2);
+  a.max = Vector3d(0.5, 1, 2);
+  const double across = 0.5 + 2.0 / 256.0;
+  const double n = static_cast<double>(raster::kDepthMax);
+  frame.axis = core::ViewAxis::X;
+  const Vector3d gx = core::conservativeGrowth(frame, a, a);
+  CHECK(gx.x() == Approx(4.0 * 1.0 / (n - 8.0)).epsilon(1e-12));
+  CHECK(gx.y() == Approx(across * 0.125).epsilon(1e-15));
+  CHECK(gx.z() == Approx(across * 0.25).epsilon(1e-15));
+  frame.axis = core::ViewAxis::Y;
+  const Vector3d gy = core::conservativeGrowth(frame, a, a);
+  CHECK(gy.x() == Approx(across * 0.25).epsilon(1e-15));
+  CHECK(gy.y() == Approx(4.0 * 2.0 / (n - 8.0)).epsilon(1e-12));
+  CHECK(gy.z() == Approx(across * 0.125).epsilon(1e-15));
+}
+
+TEST_CASE("a depth range below the coordinates' rounding is grown by 1e-13 of their magnitude") {
+  // 1e-12 along z at z = -1000: four of its steps are 2.4e-19, far below the ulps of 1000
+  // (1.1e-13); the growth is the floor instead, 1e-13 times the largest |z|.
+  const core::PairRequest request = frame16();
+  core::Aabb a;
+  a.min = Vector3d(-0.5, -0.5, -1000);
+  a.max = Vector3d(0.5, 0.5, -1000 + 1e-12);
+  const Vector3d g = core::conservativeGrowth(request.frame, a, a);
+  CHECK(g.z() == Approx(1e-13 * 1000.0).epsilon(1e-12));
+}
+
 TEST_CASE("an unresolved region is the conservative contact grown by two growths") {
   // Two cubes turned 45 degrees about z touching on the face x + y = 0, which stands along the
   // view: the reference run sees nothing, the conservative one a band along the face, and with
