@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "pair_test_support.hpp"
 #include "recode/geometry/triangle_bvh.hpp"
@@ -73,4 +74,32 @@ TEST_CASE("pair blocks: a hierarchy over another number of triangles is refused"
   CHECK_THROWS_WITH(core::PairBlock(box, std::make_shared<const core::TriangleBvh>(fewer),
                                     Eigen::Isometry3d::Identity()),
                     Catch::Contains("the hierarchy has 11 triangles but the mesh has 12"));
+}
+
+TEST_CASE("pair blocks: an object-space mesh of the block's own counts is kept and offered") {
+  // A box (8 vertices, 12 triangles) with its own object-space mesh and identity pose: the
+  // counts match (24 coordinates, 36 indices), so the block keeps it; one triangle fewer is
+  // refused.
+  const auto box = boxBetween({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5});
+  const auto bvh = std::make_shared<const core::TriangleBvh>(box);
+  const auto local = std::make_shared<const core::ObjectSpaceMesh>(box);
+  CHECK(local->xyz.size() == 24);
+  CHECK(local->indices.size() == 36);
+  const core::PairBlock block(box, bvh, Eigen::Isometry3d::Identity(), local);
+  CHECK(block.objectSpaceMesh() == local);
+  auto fewer = box;
+  fewer.triangles.pop_back();
+  CHECK_THROWS_WITH(
+      core::PairBlock(box, bvh, Eigen::Isometry3d::Identity(),
+                      std::make_shared<const core::ObjectSpaceMesh>(fewer)),
+      Catch::Contains("the object-space mesh has 8 vertices and 11 triangles but the mesh has 8 "
+                      "and 12"));
+}
+
+TEST_CASE("pair blocks: an object-space mesh of a mesh without triangles has no indices") {
+  core::TriangleMesh points;
+  points.vertices = {{1, 2, 3}, {4, 5, 6}};
+  const core::ObjectSpaceMesh local(points);
+  CHECK(local.xyz == std::vector<double>{1, 2, 3, 4, 5, 6});
+  CHECK(local.indices.empty());
 }
