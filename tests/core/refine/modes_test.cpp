@@ -5,6 +5,7 @@
 // (apart_at_limit).
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <utility>
 
 #include "recode/geometry/generators.hpp"
@@ -23,10 +24,10 @@ core::TriangleMesh boxBetween(const Vector3d& lo, const Vector3d& hi) {
 }
 
 // Two cubes of half-side 0.6 turned 45 degrees about z, facing each other across the plane
-// n.x = 0 with n = (1, 1, 0)/sqrt(2), `gap` apart along n: their boxes overlap whatever the gap,
-// and seen along z the gap lies across the view.
-std::pair<core::TriangleMesh, core::TriangleMesh> diagonalPair(double gap) {
-  const Vector3d n = Vector3d(1, 1, 0).normalized();
+// n.x = 0 with n = (1, ny, 0)/sqrt(2) (ny = 1 or -1), `gap` apart along n: their boxes overlap
+// whatever the gap, and seen along z the gap lies across the view.
+std::pair<core::TriangleMesh, core::TriangleMesh> diagonalPair(double gap, double ny = 1.0) {
+  const Vector3d n = Vector3d(1, ny, 0).normalized();
   const Eigen::AngleAxisd turn(0.25 * 3.14159265358979323846, Vector3d::UnitZ());
   const core::TriangleMesh cube = core::makeBox(0.6, 0.6, 0.3);
   const Eigen::Affine3d poseA(Eigen::Translation3d(-0.6 * n) * turn);
@@ -150,4 +151,94 @@ TEST_CASE("bad refine limits are refused, naming the rules") {
   core::RefineLimits limits;
   limits.factor = 1;
   CHECK_THROWS_WITH(core::AdaptivePairTester(limits), Catch::Contains("factor >= 2"));
+}
+
+TEST_CASE("a touch in the request's frame is refined and is the contact when no level is allowed") {
+  // Boxes stacked along the view, touching on the plane z = 0: the reference run sees them meet
+  // with no depth between them, a touch within rounding, not a deep contact.
+  const auto a = boxBetween({-0.6, -0.6, -0.3}, {0.6, 0.6, 0.0});
+  const auto b = boxBetween({-0.5, -0.5, 0.0}, {0.5, 0.5, 0.3});
+  core::RefineLimits limits;
+  limits.maxLevel = 0;
+  const Modes flat = runModes(a, b, limits);
+  CHECK(flat.reference);
+  CHECK(flat.adaptive.verdict == core::PairVerdict::Collide);
+  REQUIRE(flat.adaptive.contact);
+  CHECK(flat.adaptive.contact->contact.maxDepth == 0.0);
+  CHECK(flat.adaptive.contactLevel == 0);
+  CHECK(flat.adaptive.runs == 1);  // no level to refine to: the touch is the answer, no grown
+                                   // blocks are drawn
+  limits.maxLevel = 1;
+  const Modes refined = runModes(a, b, limits);
+  CHECK(refined.adaptive.verdict == core::PairVerdict::Collide);
+  // A touch is refined like a miss: the contact comes from a level-1 tile.
+  CHECK(refined.adaptive.deepestLevel == 1);
+  CHECK(refined.adaptive.contactLevel == 1);
+  CHECK(refined.adaptive.runs > 2);
+}
+
+TEST_CASE("faces touching across the view refined one level: the tiles holding both are drawn") {
+  // Level 0 leaves the region of the common box of the cubes, x and y in +-0.6 sqrt(1/2) =
+  // +-0.4243, grown by two growths of (0.5 + 2/256) * 0.125: +-0.5512. Level 1 tiles it in
+  // 16-pixel tiles of 0.125 / 4 pixels, 0.5 wide, from -0.5512: columns (and rows) from -0.5512,
+  // -0.0512 and 0.4488 (the last one cut at the edge). A (x + y <= 0) and B (x + y >= 0) both
+  // reach into three tiles, (1, 0), (0, 1) and (1, 1); A has no point beyond x or y = 0.4243.
+  const auto [a, b] = diagonalPair(0.0);
+  core::RefineLimits limits;
+  limits.maxLevel = 1;
+  limits.tileSide = 16;
+  const Modes m = runModes(a, b, limits);
+  CHECK(m.adaptive.verdict == core::PairVerdict::ApartAtLimit);
+  CHECK(m.adaptive.deepestLevel == 1);
+  // The reference and the conservative run at level 0, then both runs in each of the 3 tiles.
+  CHECK(m.adaptive.runs == 2 + 3 * 2);
+  // Every point of the touching face, (-0.4243, 0.4243) to (0.4243, -0.4243), is a contact
+  // no frame sees: the unresolved region holds it ...
+  const double end = 0.6 * std::sqrt(0.5);
+  CHECK(m.adaptive.unresolved.min.x() <= -end);
+  CHECK(m.adaptive.unresolved.max.x() >= end);
+  CHECK(m.adaptive.unresolved.min.y() <= -end);
+  CHECK(m.adaptive.unresolved.max.y() >= end);
+  // ... within two level-1 growths of the cubes' common box.
+  const double margin = 2.0 * (0.5 + 2.0 / 256.0) * 0.125 / 4.0 + 1e-12;
+  CHECK(m.adaptive.unresolved.min.x() >= -end - margin);
+  CHECK(m.adaptive.unresolved.max.x() <= end + margin);
+}
+
+TEST_CASE("a run limit with room for every tile leaves the region the tiles reported") {
+  // Touching along x = y, the face ends in the top right corner of level 0's region, so the
+  // last tile in row order holds both cubes and is drawn. A limit one above the runs the search
+  // makes is reached only after the last tile: nothing is left to mark unresolved.
+  const auto [a, b] = diagonalPair(0.0, -1.0);
+  core::RefineLimits limits;
+  limits.maxLevel = 1;
+  limits.tileSide = 12;
+  const Modes free = runModes(a, b, limits);
+  REQUIRE(free.adaptive.verdict == core::PairVerdict::ApartAtLimit);
+  limits.maxRuns = free.adaptive.runs + 1;
+  const Modes capped = runModes(a, b, limits);
+  CHECK(capped.adaptive.verdict == core::PairVerdict::ApartAtLimit);
+  CHECK(capped.adaptive.runs == free.adaptive.runs);
+  CHECK(capped.adaptive.unresolved.min == free.adaptive.unresolved.min);
+  CHECK(capped.adaptive.unresolved.max == free.adaptive.unresolved.max);
+  // Each tile's region is within two level-1 growths of the cubes' common box.
+  const double bound = 0.6 * std::sqrt(0.5) + 2.0 * (0.5 + 2.0 / 256.0) * 0.125 / 4.0 + 1e-12;
+  CHECK(capped.adaptive.unresolved.max.x() <= bound);
+  CHECK(capped.adaptive.unresolved.max.y() <= bound);
+}
+
+TEST_CASE("the run limit caps the collidePair calls of a deep refinement") {
+  // Touching faces refined in 4-pixel tiles down to level 6: the limit, not the levels, ends
+  // the search; no tile is started without room for its two runs.
+  const auto [a, b] = diagonalPair(0.0, -1.0);
+  for (const int maxRuns : {4, 6, 8, 12, 16}) {
+    INFO("maxRuns " << maxRuns);
+    core::RefineLimits limits;
+    limits.tileSide = 4;
+    limits.maxRuns = maxRuns;
+    const Modes m = runModes(a, b, limits);
+    CHECK(m.adaptive.verdict == core::PairVerdict::ApartAtLimit);
+    CHECK(m.adaptive.runs <= maxRuns);
+    CHECK(m.adaptive.runs >= maxRuns - 1);
+  }
 }
