@@ -49,3 +49,27 @@ TEST_CASE("boxes that touch across the sweep axis are a pair") {
                                          box({7, 2, 1}, {9, 3, 2})};
   CHECK(sweep.update(moved) == Pairs{{0, 1}, {1, 2}});
 }
+
+TEST_CASE("the sweep axis is the axis of greatest variance of the box centres") {
+  // Unit boxes centred at (10, 0, 0) and (11, 4, 0): the centres' variances are 0.25 along x,
+  // 4 along y and 0 along z, so y is swept. (Far from the origin along x, so that a variance
+  // taken about the origin, or over one centre too many, would pick x.)
+  const std::vector<core::Aabb> boxes = {box({9.5, -0.5, -0.5}, {10.5, 0.5, 0.5}),
+                                         box({10.5, 3.5, -0.5}, {11.5, 4.5, 0.5})};
+  core::SweepAndPrune sweep;
+  CHECK(sweep.update(boxes).empty());  // they touch at x = 10.5 but lie apart along y
+  CHECK(sweep.axis() == 1);
+}
+
+TEST_CASE("boxes that overlap along the sweep axis but not along x are no pair") {
+  // Centres (0.5, 0.5), (5.5, 1), (0.5, 10.5) in (x, y): variance about 5.6 along x, 21.2
+  // along y, so y is swept. Boxes 0 and 1 overlap along y and z but lie apart along x.
+  const std::vector<core::Aabb> boxes = {box({0, 0, 0}, {1, 1, 1}), box({5, 0.5, 0}, {6, 1.5, 1}),
+                                         box({0, 10, 0}, {1, 11, 1})};
+  core::SweepAndPrune sweep;
+  const Pairs pairs = sweep.update(boxes);
+  REQUIRE(sweep.axis() == 1);
+  CHECK(pairs.empty());
+  // Only boxes 0 and 1 meet along y, and that one interval test finds them apart along x.
+  CHECK(sweep.stats().intervalTests == 1);
+}

@@ -94,3 +94,71 @@ TEST_CASE("a size the frame did not list keeps its own devices while it grows", 
   pool.reserve(32, 32, 3);  // takes nothing from itself: three devices, not a loop
   CHECK(pool.held(32, 32) == 3);
 }
+
+TEST_CASE("the pool keeps up to kKeptSizes sizes and sets aside up to kKeptSizes devices",
+          "[pool]") {
+  // kKeptSizes sizes (16), all in one frame, one device each, each 128 x (128 + i) pixels.
+  const int kept = static_cast<int>(DevicePool::kKeptSizes);
+  std::vector<std::pair<int, int>> sizes;
+  for (int i = 0; i < kept; ++i)
+    sizes.emplace_back(128, 128 + i);
+  DevicePool pool({});
+  pool.trim(sizes);
+  for (const auto& [w, h] : sizes)
+    pool.reserve(w, h, 1);
+  // A frame with none of them: the pool holds exactly kKeptSizes sizes, no more, so it drops
+  // nothing.
+  pool.trim({{8, 8}});
+  for (const auto& [w, h] : sizes)
+    CHECK(pool.held(w, h) == 1);
+  // One size more, in a frame with all the others (so no device is idle to reshape): a new
+  // device, kKeptSizes + 1 sizes held. A frame with a new size then drops every held size but
+  // the frame's, and sets aside at most kKeptSizes of their kKeptSizes + 1 CpuDevices.
+  sizes.emplace_back(128, 128 + kept);
+  pool.trim(sizes);
+  pool.reserve(128, 128 + kept, 1);
+  CHECK(pool.held(128, 128 + kept) == 1);
+  pool.trim({{8, 8}});
+  for (const auto& [w, h] : sizes)
+    CHECK(pool.held(w, h) == 0);
+  // A frame of kKeptSizes + 1 new small sizes: kKeptSizes of them get a device set aside
+  // (reshaped, keeping its memory for at least 128 x 128 pixels), the last a new one.
+  std::vector<std::pair<int, int>> small;
+  for (int i = 0; i <= kept; ++i)
+    small.emplace_back(8, 8 + i);
+  pool.trim(small);
+  int reused = 0;
+  for (const auto& [w, h] : small) {
+    pool.reserve(w, h, 1);
+    reused += cpu(pool.at(w, h, 0)).pixelCapacity() >= 128 * 128 ? 1 : 0;
+  }
+  CHECK(reused == kept);
+}
+
+TEST_CASE("a size the pool holds no device for has no uses; reserving held devices takes no time",
+          "[pool]") {
+  DevicePool pool({});
+  CHECK(pool.uses(16, 16) == 0);
+  CHECK(pool.held(16, 16) == 0);
+  pool.trim({{16, 16}});
+  CHECK(pool.reserve(16, 16, 1) >= 0.0);
+  pool.addUses(16, 16, 5);
+  CHECK(pool.uses(16, 16) == 5);
+  CHECK(pool.uses(32, 16) == 0);
+  // Nothing is made, so nothing is timed: exactly zero microseconds.
+  CHECK(pool.reserve(16, 16, 1) == 0.0);
+  CHECK(pool.reserve(16, 16, 0) == 0.0);
+}
+
+TEST_CASE("anyHeld is null before any device and then the first device of the smallest size",
+          "[pool]") {
+  DevicePool pool({});
+  CHECK(pool.anyHeld() == nullptr);
+  pool.trim({{64, 64}, {32, 32}});
+  pool.addUses(16, 16, 1);  // a size with uses but no device
+  CHECK(pool.anyHeld() == nullptr);
+  pool.reserve(64, 64, 1);
+  pool.reserve(32, 32, 2);
+  // Sizes in (width, height) order: 16 x 16 holds none, 32 x 32 is the first that holds one.
+  CHECK(pool.anyHeld() == &pool.at(32, 32, 0));
+}

@@ -14,6 +14,7 @@
 #include "recode/geometry/generators.hpp"
 #include "recode/sim/broad_phase.hpp"
 #include "recode/sim/hierarchy.hpp"
+#include "recode/sim/leaf_block.hpp"
 
 using namespace recode::core;
 
@@ -324,4 +325,106 @@ TEST_CASE("a pose that is not finite is refused naming the node", "[hierarchy]")
   CHECK_NOTHROW(hinged.pose(0));
   CHECK_THROWS_WITH(hinged.pose(2), Catch::Contains("spinner: the pose at frame 2 is not finite") &&
                                         Catch::Contains("joint"));
+}
+
+TEST_CASE("hierarchy: the root has parent -1 and every other node its parent's index",
+          "[hierarchy]") {
+  SceneObject arm;
+  arm.name = "arm";
+  SceneObject bar;
+  bar.name = "bar";
+  bar.localMesh = makeBox(1.0, 0.1, 0.1);
+  arm.children = {bar, bar};
+  const ObjectTree tree(arm);
+  REQUIRE(tree.nodes().size() == 3);
+  CHECK(tree.root().parent == -1);
+  CHECK(tree.nodes()[1].parent == 0);
+  CHECK(tree.nodes()[2].parent == 0);
+  CHECK(tree.root().path == "arm");
+  CHECK(tree.nodes()[1].path == "arm/bar");
+}
+
+TEST_CASE("hierarchy: a leaf's OBB is its fitted box grown by 1e-9 of its position and size",
+          "[hierarchy]") {
+  // A flat plate (no thickness along z), off the origin: its fitted box is 0 thick, so its
+  // OBB's thickness is the slack alone, 1e-9 x (largest |centre coordinate| + largest
+  // half-extent), on each side.
+  SceneObject plate;
+  plate.name = "plate";
+  plate.localMesh.vertices = {
+      {2.5, -0.25, 0.0}, {3.5, -0.25, 0.0}, {3.5, 0.25, 0.0}, {2.5, 0.25, 0.0}};
+  plate.localMesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const ObjectTree tree(plate);
+  const Obb fitted = fitObb(plate.localMesh.vertices);
+  REQUIRE(fitted.halfExtents.minCoeff() == 0.0);
+  const double slack = 1e-9 * (fitted.center.cwiseAbs().maxCoeff() + fitted.halfExtents.maxCoeff());
+  const Obb& box = tree.root().localObb;
+  CHECK(box.center == fitted.center);
+  CHECK(box.axes == fitted.axes);
+  CHECK(box.halfExtents == (fitted.halfExtents.array() + slack).matrix());
+  CHECK(box.halfExtents.minCoeff() == slack);
+}
+
+TEST_CASE(
+    "hierarchy: the box around the root's OBB is its AABB grown by 1e-9 of its position "
+    "and size",
+    "[hierarchy]") {
+  // A unit cube centred at (1, 0, 0): the OBB's box reaches about -1e-9 along x, where the
+  // margin (about 2e-9: 1e-9 x (1 + 1)) is not lost to rounding.
+  SceneObject cube;
+  cube.name = "cube";
+  cube.localMesh = makeBox(1.0, 1.0, 1.0);
+  cube.position = {1.0, 0.0, 0.0};
+  const ObjectTree tree(cube);
+  const Aabb obbBox = tree.root().worldObb.aabb();
+  const double margin =
+      1e-9 * (obbBox.center().cwiseAbs().maxCoeff() + 0.5 * obbBox.extent().maxCoeff());
+  const Aabb around = tree.boxAroundObb();
+  CHECK(around.min == (obbBox.min.array() - margin).matrix());
+  CHECK(around.max == (obbBox.max.array() + margin).matrix());
+  CHECK(margin == Approx(2e-9));
+}
+
+TEST_CASE("hierarchy: a leaf's current box is there while its pose is the one it was made at",
+          "[hierarchy]") {
+  SceneObject cube;
+  cube.name = "cube";
+  cube.localMesh = makeBox(0.5, 0.5, 0.5);
+  Motion m;
+  m.velocity = {1.0, 0.0, 0.0};
+  cube.motion = m;
+  ObjectTree tree(cube);  // posed at frame 0, boxes made
+  const int leaf = tree.leaves().front();
+  REQUIRE(tree.currentLeafBox(leaf) == &tree.root().worldAabb);
+  CHECK_FALSE(tree.leafBoxStale(leaf));
+  CHECK(tree.root().worldAabb.min.x() == -0.5);
+  tree.setFrame(2);  // moved 2 along x, its box not made again
+  CHECK(tree.currentLeafBox(leaf) == nullptr);
+  CHECK(tree.leafBoxStale(leaf));
+  tree.updateAabbs();
+  REQUIRE(tree.currentLeafBox(leaf) != nullptr);
+  CHECK(tree.currentLeafBox(leaf)->min.x() == 1.5);
+}
+
+TEST_CASE("hierarchy: a leaf block made where the leaf's box is stale has the box of its pose",
+          "[hierarchy]") {
+  // recode::collide makes LeafBlocks of trees it poses itself: with the tree's box of the leaf
+  // out of date, the block makes its box from the vertices at the current pose.
+  SceneObject cube;
+  cube.name = "cube";
+  cube.localMesh = makeBox(0.5, 0.5, 0.5);
+  Motion m;
+  m.velocity = {1.0, 0.0, 0.0};
+  cube.motion = m;
+  ObjectTree tree(cube);
+  tree.setFrame(3);
+  const int leaf = tree.leaves().front();
+  REQUIRE(tree.currentLeafBox(leaf) == nullptr);
+  LeafBlock block(tree, leaf);
+  CHECK(block.block.box().min == Eigen::Vector3d(2.5, -0.5, -0.5));
+  CHECK(block.block.box().max == Eigen::Vector3d(3.5, 0.5, 0.5));
+  // Moved on, again without the tree's boxes: the box of the new pose.
+  tree.setFrame(5);
+  block.moveTo(tree, leaf);
+  CHECK(block.block.box().min == Eigen::Vector3d(4.5, -0.5, -0.5));
 }
