@@ -148,3 +148,43 @@ TEST_CASE("rule names parse and print; 'adaptive' is the measured rule") {
   CHECK_FALSE(core::parseViewAxisRule("diagonal"));
   CHECK_FALSE(core::parseViewAxisRule("Scene"));
 }
+
+TEST_CASE("thin-overlap looks across the scene axis along both other axes") {
+  // Boxes overlapping 0.02 along one axis and 1 or more along the others: seen along any other
+  // axis the overlap is 0.4 px thin across (pixels of 0.05), so thin-overlap takes
+  // widest-overlap's axis, the thin one; seen along the thin axis itself it is wide.
+  for (int thin = 0; thin < 3; ++thin) {
+    Vector3d loA(-1, -1.25, -1.5), hiA(1, 1.25, 1.5), loB = loA, hiB = hiA;
+    loA[thin] = -0.1;
+    hiA[thin] = 0.0;
+    loB[thin] = -0.02;
+    hiB[thin] = 0.08;
+    const auto a = boxBetween(loA, hiA);
+    const auto b = boxBetween(loB, hiB);
+    for (const ViewAxis scene : {ViewAxis::X, ViewAxis::Y, ViewAxis::Z}) {
+      INFO("thin along " << thin << ", scene axis " << core::toString(scene));
+      CHECK(core::chooseViewAxis(ViewAxisRule::ThinOverlap, scene,
+                                 core::axisChoiceInput(a, b, 0.05)) == static_cast<ViewAxis>(thin));
+    }
+  }
+}
+
+TEST_CASE("thin-overlap keeps the scene axis for an overlap of exactly 2 px across") {
+  // Overlap 0.25 along z (exact in doubles), pixels of 0.125: 2 px, not under 2 px.
+  const auto a = boxBetween({-1, -0.75, -0.5}, {1, 0.75, 0});
+  const auto b = boxBetween({-1, -0.75, -0.25}, {1, 0.75, 0.75});
+  CHECK(core::chooseViewAxis(ViewAxisRule::ThinOverlap, ViewAxis::X,
+                             core::axisChoiceInput(a, b, 0.125)) == ViewAxis::X);
+  CHECK(core::chooseViewAxis(ViewAxisRule::ThinOverlap, ViewAxis::X,
+                             core::axisChoiceInput(a, b, 0.125 + 1e-9)) == ViewAxis::Z);
+}
+
+TEST_CASE("separating: a plate inside a box is pushed out along the plate's thin axis") {
+  // Both centred at the origin: pushing the plate out of the box takes the sum of their
+  // half-sides along an axis, 1 + 0.125 along x against 1.25 + 0.5 along y and 1.5 + 0.75
+  // along z.
+  const auto box = boxBetween({-1, -1.25, -1.5}, {1, 1.25, 1.5});
+  const auto plate = boxBetween({-0.125, -0.5, -0.75}, {0.125, 0.5, 0.75});
+  for (const ViewAxis scene : {ViewAxis::Y, ViewAxis::Z})
+    CHECK(chosen(ViewAxisRule::Separating, scene, box, plate) == ViewAxis::X);
+}
