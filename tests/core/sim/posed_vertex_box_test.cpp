@@ -117,3 +117,28 @@ TEST_CASE("posedVertexBox: zero extremes keep the scalar loop's signs, NaN its N
     }
   }
 }
+
+TEST_CASE("posedVertexBox: a box whose every end is a zero has the scalar loop's signs",
+          "[hierarchy][posed-box]") {
+  // Every coordinate +0 or -0, and a translation of -0 (which keeps a sum's sign): every end of
+  // the box is a zero of a sign that the order of the comparisons decides, and no end is
+  // anything else, so nothing but the zeros can send the box back to the scalar loop.
+  Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+  identity.translation() = Eigen::Vector3d::Constant(-0.0);
+  Eigen::Isometry3d mirror = identity;
+  mirror.linear() = -Eigen::Matrix3d::Identity();
+  std::mt19937_64 rng(13);
+  for (int trial = 0; trial < 200; ++trial) {
+    TriangleMesh mesh;
+    const int count = 4 + trial % 37;
+    for (int i = 0; i < count; ++i) {
+      Eigen::Vector3d v;
+      for (int k = 0; k < 3; ++k)
+        v[k] = std::uniform_int_distribution<int>(0, 1)(rng) == 0 ? 0.0 : -0.0;
+      mesh.vertices.push_back(v);
+    }
+    INFO("trial " << trial);
+    REQUIRE(sameBits(posed(mesh, identity), boxOfTransformed(mesh, identity)));
+    REQUIRE(sameBits(posed(mesh, mirror), boxOfTransformed(mesh, mirror)));
+  }
+}
