@@ -154,7 +154,7 @@ TriangleMesh clippedByPlane(const TriangleMesh& block, int axis, double bound, b
     clipper.clipTriangle(t);
   clipper.cap();
   TriangleMesh out = clipper.take();
-  if (out.triangles.size() < 4)  // a face or an edge on the plane: no solid left
+  if (out.triangles.size() < 4)  // an edge on the plane: no solid left (a face on it: flat)
     return {};
   return out;
 }
