@@ -2,6 +2,8 @@
 // follows from the rules' definitions: two thin plates stacked along one axis, a pair of boxes
 // apart, plates tilted away from every world axis, and the frame rebuilt along another axis.
 
+#include <cmath>
+
 #include <catch2/catch.hpp>
 
 #include <Eigen/Geometry>
@@ -187,4 +189,42 @@ TEST_CASE("separating: a plate inside a box is pushed out along the plate's thin
   const auto plate = boxBetween({-0.125, -0.5, -0.75}, {0.125, 0.5, 0.75});
   for (const ViewAxis scene : {ViewAxis::Y, ViewAxis::Z})
     CHECK(chosen(ViewAxisRule::Separating, scene, box, plate) == ViewAxis::X);
+}
+
+TEST_CASE("separating: a cross product of edges exactly 1e-6 long is skipped as parallel") {
+  // The closest points of two boxes apart, corner to corner, lie along a cross product of
+  // edges; the rule takes such a direction only when the cross product is longer than 1e-6
+  // (shorter ones, of nearly parallel edges, have no reliable direction). Box A's first edge is x,
+  // box B's is tilted off x by (8, -6) 1e-7 in y and z, so x cross it is (0, 6, 8) 1e-7, of length
+  // 1e-6: exactly the double 1e-6 (3-4-5), so it is skipped, pointing along (0, 0.6, 0.8), 53.13
+  // degrees from y towards z.
+  const double deg = std::acos(-1.0) / 180.0;
+  const auto inYz = [&](double angle) {  // the unit direction `angle` degrees from y towards z
+    return Vector3d(0, std::cos(angle * deg), std::sin(angle * deg));
+  };
+  const Vector3d edgeB(std::sqrt(1.0 - 1e-12), 8e-7, -6e-7);
+  REQUIRE(Vector3d(1, 0, 0).cross(edgeB).norm() == 1e-6);
+  // Both are unit cubes (half-sides 1), A at the origin turned 20 degrees about x (faces across
+  // y-z at 20 and 110 degrees), B turned -30 degrees (faces at -30 and 60 degrees) and tilted.
+  core::Obb a;
+  a.halfExtents = Vector3d::Ones();
+  a.axes.col(0) = Vector3d(1, 0, 0);
+  a.axes.col(1) = inYz(20);
+  a.axes.col(2) = inYz(110);
+  core::Obb b;
+  b.halfExtents = Vector3d::Ones();
+  const Vector3d faceB = inYz(-30);
+  b.axes.col(0) = edgeB;
+  b.axes.col(1) = (faceB - faceB.dot(edgeB) * edgeB).normalized();
+  b.axes.col(2) = edgeB.cross(b.axes.col(1));
+  // B's corner -b2 - b3 sits 0.05 from A's corner a2 + a3 along 39 degrees, inside both
+  // corners' normal cones (20..110 for A, -30..60 for B reversed), so the gap along a
+  // direction l of those cones is 0.05 cos(angle(l, 39 degrees)): the skipped cross (14.13
+  // degrees off) would win over A's face at 20 degrees (19 off) and B's at 60 degrees (21 off).
+  // Every other direction sees overlap; so do the world boxes (A's reaches 1.28 in y and z,
+  // B's down to 0.64 in y and 0.31 in z).
+  b.center = a.axes.col(1) + a.axes.col(2) + 0.05 * inYz(39) + b.axes.col(1) + b.axes.col(2);
+  const core::AxisChoiceInput input{a.aabb(), b.aabb(), a, b, 0.05};
+  // A's face at 20 degrees is nearer y; the skipped cross, at 53.13 degrees, is nearer z.
+  CHECK(core::chooseViewAxis(ViewAxisRule::Separating, ViewAxis::X, input) == ViewAxis::Y);
 }
