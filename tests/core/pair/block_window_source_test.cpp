@@ -168,3 +168,25 @@ TEST_CASE("a block seen edge-on is drawn culled as no triangles") {
     CHECK(drawn(source, PixelRect{0, 0, 8, 8}).empty());
   }
 }
+
+TEST_CASE("a culled draw of a rectangle inside the last one keeps the triangles covering it") {
+  // The block reaches from 1 to 15 each way, so its window box (14 x 14) lies mostly outside
+  // the first rectangle (pixels 0..7 each way, 7 x 7 inside): the hierarchy is queried with the
+  // coverage test. The second rectangle (pixels 2 and 3 each way, centres 2.5 and 3.5) lies
+  // inside the first, so its draw is filtered from the first's triangles.
+  const core::OrthoView view = view16();
+  core::TriangleMesh mesh;
+  // Covers (2.5, 2.5): its long edge x + y = 5.9 passes above that centre's 5.
+  const std::size_t covering = addTriangle(mesh, {2.0, 2.0, 0.0}, {3.9, 2.0, 0.0}, {2.0, 3.9, 0.0});
+  // Covers (1.5, 1.5) (sum 3 < 3.9), a centre of the first rectangle only: its box holds the
+  // second's centre (2.5, 2.5), which its long edge x + y = 3.9 leaves out.
+  const std::size_t outside = addTriangle(mesh, {1.0, 1.0, 0.0}, {2.9, 1.0, 0.0}, {1.0, 2.9, 0.0});
+  // Covers (5.5, 5.5): inside the first rectangle, its box far from the second.
+  const std::size_t apart = addTriangle(mesh, {5.0, 5.0, 0.0}, {7.0, 5.0, 0.0}, {5.0, 7.0, 0.0});
+  addTriangle(mesh, {12, 12, 0}, {15, 12, 0}, {15, 15, 0});  // outside both rectangles
+  const core::PairBlock block = core::PairBlock::withHierarchy(mesh);
+  const core::detail::BlockWindowSource source(block, view);
+  REQUIRE(source.culls());
+  CHECK(drawn(source, PixelRect{0, 0, 8, 8}) == expected(mesh, view, {covering, outside, apart}));
+  CHECK(drawn(source, PixelRect{2, 2, 4, 4}) == expected(mesh, view, {covering}));
+}

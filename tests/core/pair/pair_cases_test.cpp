@@ -87,3 +87,23 @@ TEST_CASE("stencil decoding: count bits and the two Amin bits") {
   // Bits above the encoding are ignored.
   CHECK(caseFromStencil(0xF3) == 7);
 }
+
+TEST_CASE("case names: the nine cases by number and any other number invalid") {
+  // The names in the table's order, rows 0..8 (the case numbers classify gives).
+  const char* const names[] = {"neither block",
+                               "A only",
+                               "B behind A",
+                               "B enters A from behind",
+                               "B spans A",
+                               "A spans B",
+                               "B enters A from the front",
+                               "B in front of A",
+                               "B only"};
+  for (int c = 0; c < recode::core::kCaseCount; ++c) {
+    CAPTURE(c);
+    CHECK(recode::core::caseName(c) == names[c]);
+  }
+  // One past the last case and one before the first are no case.
+  CHECK(recode::core::caseName(recode::core::kCaseCount) == "invalid case");
+  CHECK(recode::core::caseName(-1) == "invalid case");
+}
