@@ -6,12 +6,15 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "recode/geometry/generators.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/cpu_device.hpp"
 #include "recode/refine/adaptive.hpp"
+#include "recode/refine/pair_mode.hpp"
 
 using namespace recode;
 using Eigen::Vector3d;
@@ -241,4 +244,21 @@ TEST_CASE("the run limit caps the collidePair calls of a deep refinement") {
     CHECK(m.adaptive.runs <= maxRuns);
     CHECK(m.adaptive.runs >= maxRuns - 1);
   }
+}
+
+TEST_CASE("pair mode names: each parses to its own mode and nothing else parses") {
+  // pairModeNames lists the modes in the enum's order, each by toString.
+  const std::vector<std::string> names = core::pairModeNames();
+  CHECK(names == std::vector<std::string>{"reference", "adaptive", "conservative", "skip-apart"});
+  const core::PairMode modes[] = {core::PairMode::Reference, core::PairMode::Adaptive,
+                                  core::PairMode::Conservative, core::PairMode::SkipApart};
+  for (const core::PairMode mode : modes) {
+    CAPTURE(core::toString(mode));
+    CHECK(core::parsePairMode(core::toString(mode)) == mode);
+  }
+  // Names are matched exactly: another case, a prefix or an unknown word is no mode.
+  CHECK_FALSE(core::parsePairMode("Reference"));
+  CHECK_FALSE(core::parsePairMode("skip"));
+  CHECK_FALSE(core::parsePairMode(""));
+  CHECK_FALSE(core::parsePairMode("exact"));
 }

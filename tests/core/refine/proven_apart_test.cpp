@@ -79,3 +79,29 @@ TEST_CASE("blocks given by local meshes and poses are proven apart only beyond t
     CHECK(proven == (dx > 1.0));
   }
 }
+
+TEST_CASE("world blocks are proven apart only beyond the slacks and never when one has no vertex") {
+  // The cubes of the test above as world meshes (a PairBlock refers to its mesh): at the origin and
+  // moved along x by 0.5 (overlapping), 1 (touching) and 3 (a gap of 2, far beyond the slacks).
+  const core::TriangleMesh cube = core::makeBox(0.5, 0.5, 0.5);
+  core::FrameSpec frame;
+  frame.axis = core::ViewAxis::Z;
+  frame.window = {-4, -4, 4, 4};
+  frame.width = 64;
+  frame.height = 64;
+  const core::PairBlock a(cube);
+  for (const double dx : {0.5, 1.0, 3.0}) {
+    INFO("moved by " << dx);
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() = Vector3d(dx, 0, 0);
+    const core::TriangleMesh moved = core::transformed(cube, pose);
+    const core::PairBlock b(moved);
+    CHECK(core::provenApart(a, b, frame) == (dx > 1.0));
+    CHECK(core::provenApart(b, a, frame) == (dx > 1.0));
+  }
+  // A block without vertices proves nothing, on either side.
+  const core::TriangleMesh none;
+  const core::PairBlock empty(none);
+  CHECK_FALSE(core::provenApart(a, empty, frame));
+  CHECK_FALSE(core::provenApart(empty, a, frame));
+}

@@ -3,6 +3,7 @@
 // apart, plates tilted away from every world axis, and the frame rebuilt along another axis.
 
 #include <cmath>
+#include <string_view>
 
 #include <catch2/catch.hpp>
 
@@ -227,4 +228,13 @@ TEST_CASE("separating: a cross product of edges exactly 1e-6 long is skipped as 
   const core::AxisChoiceInput input{a.aabb(), b.aabb(), a, b, 0.05};
   // A's face at 20 degrees is nearer y; the skipped cross, at 53.13 degrees, is nearer z.
   CHECK(core::chooseViewAxis(ViewAxisRule::Separating, ViewAxis::X, input) == ViewAxis::Y);
+}
+
+TEST_CASE(
+    "the list of rule names: scene and the alias adaptive first then the other rules in order") {
+  // "scene" first (ViewAxisRule's first value), then "adaptive", then the other four in the
+  // enum's declaration order; every name listed parses.
+  const std::string_view names = core::viewAxisRuleNames();
+  CHECK(names == "scene, adaptive, fewest-mor, widest-overlap, separating, thin-overlap");
+  CHECK(core::parseViewAxisRule(names.substr(0, names.find(','))) == ViewAxisRule::Scene);
 }
