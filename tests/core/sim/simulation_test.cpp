@@ -337,3 +337,24 @@ TEST_CASE("simulation: the limit of pair tests per frame counts every leaf pair 
                     Catch::StartsWith("frame 0: at least 2 block pairs have overlapping boxes, "
                                       "over the limit of 1 pair tests per frame"));
 }
+
+TEST_CASE("simulation: the triangle count is the sum over every object's leaves", "[small]") {
+  // Two cubes of 12 triangles each, and an object whose two children are a cube and a cone of
+  // 5 segments, 2 x 5 = 10 triangles (the parent has no mesh of its own): 12 + 12 + 12 + 10.
+  Scene scene = cubesAlongX({0.0, 3.0});
+  SceneObject group;
+  group.name = "group";
+  SceneObject cube = scene.objects[0];
+  cube.name = "child cube";
+  cube.position = {6.0, 0.0, 0.0};
+  group.children.push_back(cube);
+  SceneObject cone;
+  cone.name = "child cone";
+  cone.localMesh = makeCone(0.5, 1.0, 5);
+  cone.position = {9.0, 0.0, 0.0};
+  group.children.push_back(cone);
+  scene.objects.push_back(group);
+  RunOptions options;
+  options.threads = 1;
+  CHECK(Simulation(scene, options).triangleCount() == 46);
+}
