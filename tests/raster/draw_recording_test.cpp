@@ -199,6 +199,29 @@ TEST_CASE("a draw that covers more blocks than a recording keeps is not replayed
   CHECK(recording.blocks().size() <= DrawRecording::kMaxBlocks);
 }
 
+TEST_CASE("a recording started again after it overflowed records and serves again",
+          "[raster][replay]") {
+  // start() forgets the previous recording, its overflow included: a slot that once held a
+  // draw too large to keep is reused for the next source, which must be kept.
+  DrawRecording recording;
+  recording.start(3, {0, 0, 64, 64});
+  TriangleSetup triangle;
+  recording.addTriangle(triangle);
+  for (std::size_t k = 0; k <= DrawRecording::kMaxBlocks; ++k)
+    recording.addBlock(0, 0, 1);
+  recording.finish();
+  REQUIRE_FALSE(recording.serves(3, {0, 0, 64, 64}));
+  recording.start(4, {0, 0, 64, 64});
+  recording.addTriangle(triangle);
+  recording.addBlock(8, 16, 0x5);
+  recording.finish();
+  REQUIRE(recording.blocks().size() == 1);
+  CHECK(recording.blocks()[0].x == 8);
+  CHECK(recording.blocks()[0].y == 16);
+  CHECK(recording.blocks()[0].mask == 0x5);
+  CHECK(recording.serves(4, {0, 0, 64, 64}));
+}
+
 TEST_CASE("a recording keeps only the triangles that covered a pixel", "[raster][replay]") {
   DrawRecording recording;
   recording.start(5, {0, 0, 64, 64});
