@@ -231,3 +231,41 @@ TEST_CASE("small triangles over block and tile edges: each pixel's own edge test
   CHECK(multiTile > 500);
   CHECK(covered > 5000);
 }
+
+TEST_CASE("a tile whose corner samples lie on an inclusive edge is accepted whole", "[traversal]") {
+  // The triangle (0.5, 0.5) (200.5, 0.5) (0.5, 200.5): its bottom edge (running right) and left
+  // edge (running down) are inclusive and pass through the centres of row 0 and column 0, where
+  // their edge values are exactly 0; the diagonal is exclusive. A tile is accepted when every
+  // edge is >= 0 at all its corner samples, 0 included: the tiles at (0, 0), (64, 0) and (0, 64)
+  // (their far corner's centre sum tx + ty + 127 is below 201). Rejected: the six whose near
+  // corner's sum tx + ty + 1 reaches 201. The other 7 of the 16 tiles over the bounds are
+  // partial. Covered: the pixels with i + j <= 199, 200 * 201 / 2 of them.
+  CpuDevice dev(256, 256);
+  const WindowVertex v[3] = {{0.5f, 0.5f, 0.5f}, {200.5f, 0.5f, 0.5f}, {0.5f, 200.5f, 0.5f}};
+  const std::uint32_t idx[3] = {0, 1, 2};
+  dev.drawTriangles(v, idx);
+  const auto& t = dev.counters().traversal;
+  CHECK(t.tilesAccepted == 3);
+  CHECK(t.tilesRejected == 6);
+  CHECK(dev.counters().fragments == 200u * 201u / 2u);
+}
+
+TEST_CASE("a small area over two blocks visits those two blocks only", "[traversal]") {
+  // A large triangle clipped to pixels [6, 16) x [0, 1): 10 pixels, at most kSmallArea, over the
+  // blocks at x = 0 and x = 8 (the area ends exactly at the block edge 16). The small-area path
+  // tests each of the two blocks once: two partial blocks, no block at x = 16.
+  const FixedVertex a{-256 * 100, -256 * 100, 0.5f}, b{256 * 300, -256 * 100, 0.5f},
+      c{-256 * 100, 256 * 300, 0.5f};
+  const std::optional<TriangleCoverage> tri = setupCoverage(a, b, c);
+  REQUIRE(tri);
+  BlockList list;
+  TraversalStats stats;
+  traverseTriangle(*tri, {6, 0, 16, 1}, list, &stats);
+  CHECK(stats.blocksPartial == 2);
+  CHECK(stats.blocksAccepted == 0);
+  REQUIRE(list.blocks.size() == 2);
+  CHECK(list.blocks[0].x == 0);
+  CHECK(list.blocks[0].mask == 0xC0);  // columns 6 and 7 of row 0
+  CHECK(list.blocks[1].x == 8);
+  CHECK(list.blocks[1].mask == 0xFF);  // columns 8 to 15
+}
