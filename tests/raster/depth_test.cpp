@@ -149,3 +149,46 @@ TEST_CASE("setupTriangleInto a reused setup gives setupTriangle's every field", 
   CHECK(checked > 15000);
   CHECK(degenerate >= 2000);
 }
+
+TEST_CASE("setupCoverage is setupTriangle's coverage half and nullopt exactly for zero area",
+          "[depth]") {
+  // The smallest areas either side of zero: twice the area in fixed point is exactly 1 for
+  // (0,0) (1,0) (0,1) (counter-clockwise, front-facing) and -1 the other way round; both are
+  // triangles. Collinear or coincident vertices (twice the area 0) are not.
+  const FixedVertex o{0, 0, 0.5f}, x{1, 0, 0.5f}, y{0, 1, 0.5f};
+  const std::optional<TriangleCoverage> ccw = setupCoverage(o, x, y);
+  REQUIRE(ccw);
+  CHECK(ccw->frontFacing);
+  const std::optional<TriangleCoverage> cw = setupCoverage(o, y, x);
+  REQUIRE(cw);
+  CHECK_FALSE(cw->frontFacing);
+  CHECK_FALSE(setupCoverage(o, x, FixedVertex{2, 0, 0.5f}));
+  CHECK_FALSE(setupCoverage(o, o, y));
+  // Random small triangles (areas near zero often): the same answer, edges, facing and bounds
+  // as setupTriangle.
+  std::mt19937 rng(1129);
+  std::uniform_int_distribution<std::int64_t> coordinate(-3, 3);
+  int made = 0, zero = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    FixedVertex v[3];
+    for (FixedVertex& p : v)
+      p = {coordinate(rng) * 300, coordinate(rng) * 300 + coordinate(rng), 0.25f};
+    const std::optional<TriangleSetup> full = setupTriangle(v[0], v[1], v[2]);
+    const std::optional<TriangleCoverage> coverage = setupCoverage(v[0], v[1], v[2]);
+    REQUIRE(coverage.has_value() == full.has_value());
+    if (!coverage) {
+      ++zero;
+      continue;
+    }
+    ++made;
+    CHECK(coverage->frontFacing == full->frontFacing);
+    CHECK(coverage->bounds == full->bounds);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(coverage->edges[k].a == full->edges[k].a);
+      CHECK(coverage->edges[k].b == full->edges[k].b);
+      CHECK(coverage->edges[k].c == full->edges[k].c);
+    }
+  }
+  CHECK(made > 1000);
+  CHECK(zero > 50);
+}
