@@ -269,3 +269,26 @@ TEST_CASE("a small area over two blocks visits those two blocks only", "[travers
   CHECK(list.blocks[1].x == 8);
   CHECK(list.blocks[1].mask == 0xFF);  // columns 8 to 15
 }
+
+TEST_CASE("a clip of one whole block is that block's coverage, with no tile tested",
+          "[traversal]") {
+  // traversal.hpp: a triangle whose pixels in the clip lie in one block counts one partial
+  // block and no tile. The clip [8, 16) x [8, 16) is exactly the block at (8, 8), its top and
+  // right edges on the block's (a larger area would go through the tile and block tests: a
+  // triangle covering the whole tile would count it accepted).
+  const FixedVertex a{-256 * 100, -256 * 100, 0.5f}, b{256 * 300, -256 * 100, 0.5f},
+      c{-256 * 100, 256 * 300, 0.5f};
+  const std::optional<TriangleCoverage> tri = setupCoverage(a, b, c);
+  REQUIRE(tri);
+  BlockList list;
+  TraversalStats stats;
+  traverseTriangle(*tri, {8, 8, 16, 16}, list, &stats);
+  CHECK(stats.blocksPartial == 1);
+  CHECK(stats.blocksAccepted == 0);
+  CHECK(stats.tilesAccepted == 0);
+  CHECK(stats.tilesRejected == 0);
+  REQUIRE(list.blocks.size() == 1);
+  CHECK(list.blocks[0].x == 8);
+  CHECK(list.blocks[0].y == 8);
+  CHECK(list.blocks[0].mask == ~std::uint64_t{0});
+}
