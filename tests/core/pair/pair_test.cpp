@@ -47,6 +47,22 @@ TEST_CASE("slabs at every order of their ends give the table's case on every pix
   CHECK(checked == 225);
 }
 
+TEST_CASE("a contact region's pixel count and area are those of the interfering pixels") {
+  // A covers the left column of the frame, B all of it, their z ranges overlapping: the two
+  // pixels of the left column interfere. Pixels are 1 x 1 world units on the 2 x 2 frame and
+  // 0.5 x 1 on the 4 x 2 one (the same window), so the area is the count times that.
+  const auto a = boxBetween({-1.5, -1.5, 0.0}, {-0.2, 1.5, 2.0});
+  const auto b = boxBetween({-1.5, -1.5, 1.0}, {1.5, 1.5, 3.0});
+  const core::PairResult square = runPair(a, b, frameZ(-1, -1, 1, 1, 2, 2), MorMode::Full);
+  REQUIRE(square.interferingPixels == 2);
+  CHECK(square.contact.pixels == 2);
+  CHECK(square.contact.area == 2.0);
+  const core::PairResult narrow = runPair(a, b, frameZ(-1, -1, 1, 1, 4, 2), MorMode::Full);
+  REQUIRE(narrow.interferingPixels == 2 * 2);
+  CHECK(narrow.contact.pixels == 4);
+  CHECK(narrow.contact.area == 4 * 0.5 * 1.0);
+}
+
 TEST_CASE("A only, B only and neither on one frame") {
   // A covers the left column, B the bottom row: (0,0) both, (0,1) A only, (1,0) B only.
   const core::FrameSpec frame = frameZ(-1, -1, 1, 1, 2, 2);
