@@ -235,8 +235,9 @@ while IFS=$'\t' read -r -u 3 file line col op old new; do
         if [ "$rc" = 124 ]; then status=timeout; note=$p; break; fi
         if [ "$rc" != 0 ]; then
           status=killed
-          # Catch2 prints the failing test case's name between the first two rules of dashes.
-          note="$p: $(awk '/^-{20,}$/ { n++; next } n == 1 { print; exit }' "$work/run.log")"
+          # Catch2 prints the failing test case's name between the first two rules of dashes
+          # (written out: mawk, Debian's awk, has no {n,} intervals).
+          note="$p: $(awk '/^--------------------+$/ { n++; next } n == 1 { print; exit }' "$work/run.log")"
           break
         fi
       done
