@@ -334,9 +334,6 @@ def cmd_argued(path, line, col, old, new):
     return 1
 
 
-STATUSES = ("killed", "survived", "timeout", "build-failed", "equivalent", "argued", "not-reached")
-
-
 def score_row(name, c):
     """One table row: the counts, and killed (timeouts included) over the mutants judged
     (made less those never run: equivalent, argued, not reached, not compiled)."""

@@ -199,7 +199,6 @@ while IFS=$'\t' read -r -u 3 file line col op old new; do
   fi
   t0=$(date +%s.%N)
   status=""
-  note=""
   rc=0
   note=$(python3 "$helper" argued "$file" "$line" "$col" "$old" "$new") || rc=$?
   [ "$rc" -le 1 ] || exit 1   # the equivalents file is malformed (mutants.py said where)
