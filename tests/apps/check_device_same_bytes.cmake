@@ -2,7 +2,8 @@ cmake_minimum_required(VERSION 3.25)
 # `recode pair` and `recode run` with --device DEVICE give the CPU device's output bytes, timing
 # aside (--no-timing): the built-in pair in every mode and with --pixel, and every built-in scene
 # (batched, from the device's summaries, on several devices a frame size, and the hands also pair
-# by pair). Expects RECODE, DEVICE, OUT; with LIGHT set, a lighter round for a device that is slow
+# by pair). Expects RECODE, DEVICE, OUT; with LARGE set, the bench's largest meshes instead
+# (below); with LIGHT set, a lighter round for a device that is slow
 # on this machine's CPU driver (every scene batched and from summaries, one scene on 16 devices,
 # the schedules on the hands: the paths of the device interface, not every combination of the
 # core's).
@@ -34,6 +35,17 @@ function(expect_same what)
 endfunction()
 
 file(MAKE_DIRECTORY ${OUT})
+# With LARGE set: the bench's largest tessellation levels instead, a few frames each, where a job
+# of the compute device's lists more triangles than a CPU driver lets one invocation loop over.
+if(LARGE)
+  expect_same("run random-shapes at 11,520 a block" run random-shapes --triangles-per-block 11520
+              --frames 3 --json --no-timing)
+  expect_same("run comb-rotate-aligned at 4,096 a block" run comb-rotate-aligned
+              --triangles-per-block 4096 --frames 3 --json --no-timing)
+  expect_same("run random-cones at 1,152 a block" run random-cones --triangles-per-block 1152
+              --frames 3 --json --no-timing)
+  return()
+endif()
 foreach(mode reference adaptive conservative skip-apart)
   expect_same("pair --mode ${mode}" pair --json --no-timing --mode ${mode})
 endforeach()

@@ -8,8 +8,10 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
+#include "tile_frame_budgets.hpp"
 #include "tile_frame_epochs.hpp"
 #include "vulkan_compute_pipelines.hpp"
 #include "vulkan_recorder.hpp"
@@ -71,6 +73,11 @@ struct FrameRecords {
   // 4,096. A job whose list would pass the end draws each of its draws from every triangle
   // instead (tile_raster.comp), so this bounds memory, not results.
   std::uint64_t listCapacity = 0;
+  // What bounds the stages' loops (tile_frame_budgets.hpp): the rounds the raster and sort
+  // stages may need for the longest job, and the most blocks a triangle's candidates may reach.
+  std::uint32_t rasterRounds = 1;
+  std::uint32_t sortRounds = 1;
+  std::uint64_t largestGrid = 0;
   std::uint32_t windowVertices = 0;        // the vertex jobs' vertices, in all
   std::vector<std::uint32_t> windowFirst;  // vertex job k's first window vertex
   std::vector<int> drawVertexJob;          // each draw's vertex job, or -1 (window vertices given)
@@ -92,7 +99,18 @@ struct WorkLayout {
     windowsAt = finalsAt + tileAligned(VkDeviceSize{r.finals} * 256 + 4);
     arenaAt = windowsAt + tileAligned(VkDeviceSize{r.windowVertices} * 12 + 4);
     boxesAt = arenaAt + tileAligned(VkDeviceSize{r.arenaWords} * 4 + 4);
-    bytes = boxesAt + tileAligned(VkDeviceSize{r.boxJobs.size()} * 64 + 8);
+    // The rounds' records, needed only where a stage may take more than one round; the
+    // progress, counters and rounds' arguments are zeroed each frame.
+    const VkDeviceSize rasterProgress = r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * 2 * 16 : 16;
+    const VkDeviceSize sortProgress = r.sortRounds > 1 ? VkDeviceSize{r.jobs} * 8 : 16;
+    const VkDeviceSize carry = r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * 256 : 16;
+    progressAt = boxesAt + tileAligned(VkDeviceSize{r.boxJobs.size()} * 64 + 8);
+    sortProgressAt = progressAt + tileAligned(rasterProgress);
+    countersAt = sortProgressAt + tileAligned(sortProgress);
+    rasterArgsAt = countersAt + tileAligned(kTileCounters * 4);
+    sortArgsAt = rasterArgsAt + tileAligned(VkDeviceSize{r.rasterRounds + 1} * 12);
+    carryAt = sortArgsAt + tileAligned(VkDeviceSize{r.sortRounds + 1} * 12);
+    bytes = carryAt + tileAligned(carry);
   }
   // Entries the jobs' lists hold in all (FrameRecords::listCapacity, at most 2^27: 512 MiB).
   std::uint32_t pairCapacity;
@@ -106,6 +124,12 @@ struct WorkLayout {
   VkDeviceSize windowsAt = 0;
   VkDeviceSize arenaAt = 0;
   VkDeviceSize boxesAt = 0;
+  VkDeviceSize progressAt = 0;
+  VkDeviceSize sortProgressAt = 0;
+  VkDeviceSize countersAt = 0;
+  VkDeviceSize rasterArgsAt = 0;
+  VkDeviceSize sortArgsAt = 0;
+  VkDeviceSize carryAt = 0;  // up to here zeroed each frame
   VkDeviceSize bytes = 0;
 };
 
@@ -141,12 +165,19 @@ struct BlockGrid {
 // of kMostFinalJobs (`finals` kept so far), one epoch of all the commands that starts from the
 // framebuffer and stores its own pixels: the same results, its blocks' commands run one after
 // another instead of side by side, and no pixel kept for the resolve stage.
-std::vector<EpochSpan> withinFinalBudget(std::vector<EpochSpan> epochs, std::uint64_t finals) {
+// The same when more epochs meet another than a resolve invocation may compare (`mostLater`
+// later epochs: a CPU driver's loop limit, tile_frame_budgets.hpp).
+std::vector<EpochSpan> withinFinalBudget(std::vector<EpochSpan> epochs, std::uint64_t finals,
+                                         std::uint32_t mostLater) {
   std::uint64_t kept = 0;
-  for (const EpochSpan& e : epochs)
-    if (!e.alone)
+  std::uint64_t shared = 0;
+  for (const EpochSpan& e : epochs) {
+    if (!e.alone) {
       kept += BlockGrid(e.footprint).blocks();
-  if (kept == 0 || finals + kept <= kMostFinalJobs)
+      ++shared;
+    }
+  }
+  if (kept == 0 || (finals + kept <= kMostFinalJobs && shared <= std::uint64_t{mostLater} + 1))
     return epochs;
   EpochSpan all{epochs.front().begin, epochs.back().end, epochs.front().footprint, true, true};
   for (const EpochSpan& e : epochs)
@@ -196,6 +227,7 @@ struct TileFrame::Impl {
   VulkanContext& context;
   CommandRecorder& recorder;
   const TilePipelines& pipelines;
+  const TileLoopBudgets budgets;  // within the driver's loop limit (tile_frame_budgets.hpp)
 
   struct Target {
     bool live = false;
@@ -241,7 +273,7 @@ struct TileFrame::Impl {
   bool timed = false;  // whether the submission being run wrote the timestamps
 
   Impl(VulkanContext& c, CommandRecorder& r, const TilePipelines& p)
-      : context(c), recorder(r), pipelines(p) {
+      : context(c), recorder(r), pipelines(p), budgets(tileLoopBudgets(c.loopLimit())) {
     if (context.timestamps()) {
       VkQueryPoolCreateInfo info{};
       info.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
@@ -286,10 +318,10 @@ struct TileFrame::Impl {
       return;
     // Every earlier submission has run (finish waits), so nothing uses the old buffer.
     context.destroyDeviceBuffer(work);
-    work = context.createDeviceBuffer(std::max<VkDeviceSize>(bytes, 1 << 20),
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    work = context.createDeviceBuffer(
+        std::max<VkDeviceSize>(bytes, 1 << 20),
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+            VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   }
 
   void timestamp(VkCommandBuffer cmd, std::uint32_t k) {
@@ -301,6 +333,8 @@ struct TileFrame::Impl {
   void run(VkCommandBuffer cmd);
   void recordStages(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
   void recordCopies(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
+  void clearRecorded();
+  void recordCheck(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
   void recordCapture(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
   void readTimes();
 };
@@ -323,12 +357,14 @@ FrameRecords TileFrame::Impl::records() const {
     for (const Pending& p : list)
       shapes.push_back(epochCommandOf(p.command, p.rect));
     std::vector<std::uint32_t> shared;  // this target's epochs that meet another
-    for (const EpochSpan& span : withinFinalBudget(cutIntoEpochs(shapes), r.finals)) {
+    for (const EpochSpan& span :
+         withinFinalBudget(cutIntoEpochs(shapes), r.finals, budgets.resolveLater)) {
       TileEpoch e = epochRecord(span, t);
       const auto epochIndex = static_cast<std::uint32_t>(r.epochs.size());
       e.firstJob = r.jobs;
       e.firstFinal = r.finals;
       e.firstCommand = static_cast<std::uint32_t>(r.commands.size());
+      const std::uint32_t firstTriangle = r.triangles;
       if (!span.alone) {
         r.finals += e.gridWidth * e.gridHeight;
         shared.push_back(epochIndex);
@@ -362,6 +398,14 @@ FrameRecords TileFrame::Impl::records() const {
         r.commands.push_back(record);
       }
       e.commandEnd = static_cast<std::uint32_t>(r.commands.size());
+      // A job of the epoch lists at most every triangle of its draws.
+      const std::uint64_t epochTriangles = r.triangles - firstTriangle;
+      r.rasterRounds =
+          std::max(r.rasterRounds,
+                   tileRasterRounds(span.end - span.begin, epochTriangles, budgets.rasterWork));
+      r.sortRounds = std::max(r.sortRounds, tileSortRounds(epochTriangles, budgets.sortWork));
+      if (epochTriangles > 0)
+        r.largestGrid = std::max<std::uint64_t>(r.largestGrid, BlockGrid(span.footprint).blocks());
       r.jobs += e.gridWidth * e.gridHeight;
       r.epochs.push_back(e);
     }
@@ -386,6 +430,14 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
   if (empty())
     return;
   FrameRecords r = records();
+  if (r.jobs > budgets.scanJobs) {
+    clearRecorded();
+    throw std::runtime_error("vulkan-compute: a frame of " + std::to_string(r.jobs) +
+                             " jobs (8x8 blocks of its epochs) passes the " +
+                             std::to_string(budgets.scanJobs) +
+                             " the scan stage takes within this driver's loop limit of " +
+                             std::to_string(context.loopLimit()) + " iterations an invocation");
+  }
   const WorkLayout layout(r);
   reserveWork(layout.bytes);
   const VkBuffer w = work.buffer;
@@ -406,10 +458,15 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
       r.draws[d].vertices = r.vertexJobs[static_cast<std::size_t>(r.drawVertexJob[d])].windows;
   recordStages(cmd, r, layout);
   recordCopies(cmd, r, layout);
+  recordCheck(cmd, r, layout);
   if (r.captured)
     recordCapture(cmd, r, layout);
   computeBarrier(cmd);
   timestamp(cmd, kTimestamps - 1);
+  clearRecorded();
+}
+
+void TileFrame::Impl::clearRecorded() {
   for (std::vector<Pending>& list : commands)
     list.clear();
   vertexJobs.clear();
@@ -436,6 +493,11 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   k.resolvePixels = r.resolvePixels;
   k.resolveRanges = static_cast<std::uint32_t>(r.resolveRanges.size());
   k.boxJobs = static_cast<std::uint32_t>(r.boxJobs.size());
+  k.rasterBudget = r.rasterRounds > 1 ? budgets.rasterWork : kTileUnbounded;
+  k.sortBudget = r.sortRounds > 1 ? budgets.sortWork : kTileUnbounded;
+  k.sortLanes = budgets.sortLanes;
+  k.scatterChunks = tileScatterChunks(r.largestGrid, budgets.scatterBlocks);
+  k.scatterBlocks = k.scatterChunks > 1 ? budgets.scatterBlocks : kTileUnbounded;
   const TileBuffer targetsIn = uploaded(TileBinding::Targets, r.targets);
   const TileBuffer epochsIn = uploaded(TileBinding::Epochs, r.epochs);
   const TileBuffer commandsIn = uploaded(TileBinding::Commands, r.commands);
@@ -456,7 +518,18 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
                           layout.windowsAt - layout.finalsAt};
   const TileBuffer arena{TileBinding::ReadArena, w, layout.arenaAt,
                          layout.boxesAt - layout.arenaAt};
-  const TileBuffer boxes{TileBinding::Boxes, w, layout.boxesAt, layout.bytes - layout.boxesAt};
+  const TileBuffer boxes{TileBinding::Boxes, w, layout.boxesAt, layout.progressAt - layout.boxesAt};
+  const TileBuffer progress{TileBinding::Progress, w, layout.progressAt,
+                            layout.sortProgressAt - layout.progressAt};
+  const TileBuffer sortProgress{TileBinding::Progress, w, layout.sortProgressAt,
+                                layout.countersAt - layout.sortProgressAt};
+  const TileBuffer counters{TileBinding::Counters, w, layout.countersAt,
+                            layout.rasterArgsAt - layout.countersAt};
+  const TileBuffer rasterArgs{TileBinding::RoundArgs, w, layout.rasterArgsAt,
+                              layout.sortArgsAt - layout.rasterArgsAt};
+  const TileBuffer sortArgs{TileBinding::RoundArgs, w, layout.sortArgsAt,
+                            layout.carryAt - layout.sortArgsAt};
+  const TileBuffer carry{TileBinding::Carry, w, layout.carryAt, layout.bytes - layout.carryAt};
 
   timed = queries != VK_NULL_HANDLE;
   if (timed)
@@ -467,6 +540,11 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
     if (count == 0)
       return;
     pipelines.dispatchLinear(cmd, p, buffers, k, count);
+    ++dispatches;
+  };
+  const auto indirect = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
+                            VkDeviceSize args) {
+    pipelines.dispatchIndirect(cmd, p, buffers, k, w, args);
     ++dispatches;
   };
   const auto dispatchGroups = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
@@ -482,6 +560,7 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   computeBarrier(cmd);
   vkCmdFillBuffer(cmd, w, layout.countsAt, layout.jobBytes, 0);
   vkCmdFillBuffer(cmd, w, layout.arenaAt, layout.boxesAt - layout.arenaAt, 0);  // ORed into
+  vkCmdFillBuffer(cmd, w, layout.progressAt, layout.carryAt - layout.progressAt, 0);
   computeBarrier(cmd);
   timestamp(cmd, 0);
   dispatchGroups(pipelines.box, {boxJobsIn, posesIn, boxes}, k.boxJobs);
@@ -496,9 +575,11 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   timestamp(cmd, 2);
   if (r.triangles > 0) {
     // The scatter counts (binPass 0), the scan places the lists, the scatter fills them.
-    dispatchLinear(pipelines.scatter,
-                   {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs},
-                   r.triangles);
+    const std::uint64_t scatterInvocations = std::uint64_t{r.triangles} * k.scatterChunks;
+    dispatchLinear(
+        pipelines.scatter,
+        {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs, counters},
+        scatterInvocations);
     computeBarrier(cmd);
     const bool serial = context.cpuDriver() && r.jobs <= kMostSerialScanJobs;
     pipelines.dispatch(cmd, serial ? pipelines.scanSerial : pipelines.scan,
@@ -506,22 +587,44 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
     ++dispatches;
     computeBarrier(cmd);
     k.binPass = 1;
-    dispatchLinear(pipelines.scatter,
-                   {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs},
-                   r.triangles);
+    dispatchLinear(
+        pipelines.scatter,
+        {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs, counters},
+        scatterInvocations);
     computeBarrier(cmd);
-    dispatchLinear(pipelines.sort, {counts, offsets, pairs}, r.jobs);
-    computeBarrier(cmd);
+    // The sort in rounds: the first for every job, each later one (an indirect dispatch whose
+    // size the round before writes) only when some job stopped at its budget.
+    const std::uint64_t sortInvocations = std::uint64_t{r.jobs} * k.sortLanes;
+    std::tie(k.roundGroupsX, k.roundGroupsY) = TilePipelines::linearGroups(sortInvocations);
+    for (k.round = 0; k.round < r.sortRounds; ++k.round) {
+      const std::initializer_list<TileBuffer> buffers = {counts,       offsets,  pairs,
+                                                         sortProgress, counters, sortArgs};
+      if (k.round == 0)
+        dispatchLinear(pipelines.sort, buffers, sortInvocations);
+      else
+        indirect(pipelines.sort, buffers, layout.sortArgsAt + VkDeviceSize{k.round} * 12);
+      computeBarrier(cmd);
+    }
   }
   timestamp(cmd, 3);
-  dispatchGroups(
-      pipelines.raster,
-      {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, offsets, pairs, finals, arena},
-      (r.jobs + k.jobsPerGroup - 1) / k.jobsPerGroup);
-  computeBarrier(cmd);
+  // The raster stage in rounds, as the sort.
+  const std::uint64_t rasterGroups = (r.jobs + k.jobsPerGroup - 1) / k.jobsPerGroup;
+  k.roundGroupsX = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(rasterGroups, 1, 65535));
+  k.roundGroupsY = static_cast<std::uint32_t>((rasterGroups + k.roundGroupsX - 1) / k.roundGroupsX);
+  for (k.round = 0; k.round < r.rasterRounds; ++k.round) {
+    const std::initializer_list<TileBuffer> buffers = {
+        targetsIn, epochsIn, commandsIn, drawsIn,  triangles, counts,   offsets,
+        pairs,     finals,   arena,      progress, carry,     counters, rasterArgs};
+    if (k.round == 0)
+      dispatchGroups(pipelines.raster, buffers, rasterGroups);
+    else
+      indirect(pipelines.raster, buffers, layout.rasterArgsAt + VkDeviceSize{k.round} * 12);
+    computeBarrier(cmd);
+  }
+  k.round = 0;
   timestamp(cmd, 4);
   dispatchLinear(pipelines.resolve,
-                 {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn, laterIn},
+                 {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn, laterIn, counters},
                  r.resolvePixels);
   raster::TransferCounters counted;
   counted.dispatches = dispatches;
@@ -547,6 +650,25 @@ void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const FrameRecords& r,
   for (const auto& [destination, regions] : copies)
     vkCmdCopyBuffer(cmd, work.buffer, destination, static_cast<std::uint32_t>(regions.size()),
                     regions.data());
+}
+
+// The stages' counters copied back and compared with what the frame asked of them: a stage that
+// did less than all of its work (a loop a driver ended early, a round too few) is an error that
+// names it, never a smaller answer.
+void TileFrame::Impl::recordCheck(VkCommandBuffer cmd, const FrameRecords& r,
+                                  const WorkLayout& layout) {
+  computeBarrier(cmd);  // the resolve stage counts too
+  const std::uint64_t columns = std::uint64_t{r.jobs} * kTileJobLanes;
+  const std::uint64_t sorted = r.triangles > 0 ? r.jobs : 0;
+  const std::uint32_t loopLimit = context.loopLimit();
+  const CommandRecorder::Staged out =
+      recorder.results(kTileCounters * 4, [columns, sorted, loopLimit](const std::uint8_t* data) {
+        std::array<std::uint32_t, kTileCounters> counted{};
+        std::memcpy(counted.data(), data, sizeof counted);
+        checkTileCounters(counted, columns, sorted, loopLimit);
+      });
+  const VkBufferCopy back{layout.countersAt, out.offset, kTileCounters * 4};
+  vkCmdCopyBuffer(cmd, work.buffer, out.buffer, 1, &back);
 }
 
 // The captured draw's set-up triangles, its epoch's job lists and its window vertices, copied
@@ -693,6 +815,13 @@ void TileFrame::read(std::uint32_t target, const PixelRect& rect, TileReadForm f
 
 void TileFrame::boxes(const std::vector<BoxRequest>& blocks, VkBuffer destination,
                       VkDeviceSize offset) {
+  for (const BoxRequest& b : blocks)
+    if (b.vertexCount > impl_->budgets.boxVertices)
+      throw std::runtime_error(
+          "vulkan-compute: a block of " + std::to_string(b.vertexCount) + " vertices passes the " +
+          std::to_string(impl_->budgets.boxVertices) +
+          " the box stage takes within this driver's loop limit of " +
+          std::to_string(impl_->context.loopLimit()) + " iterations an invocation");
   impl_->recorder.open();
   impl_->boxBatches.push_back({blocks, destination, offset});
 }

@@ -37,6 +37,15 @@ inline raster::PixelRect rectOf(const std::int32_t (&words)[4]) {
 // Command kinds and read forms (tile_common.glsl's kDraw..., kRead...).
 enum class TileCommandKind : std::uint32_t { Draw = 0, ClearDepth = 1, ClearStencil = 2, Read = 3 };
 enum class TileReadForm : std::uint32_t { DepthWords = 0, StencilBytes = 1, DepthFloats = 2 };
+// The frame's counters (tile_common.glsl's kCounter...): what the stages did, which the host
+// compares with what it asked for.
+enum TileCounter : std::uint32_t {
+  kTileCounterRasterColumns = 0,  // job columns the raster stage ran to their end
+  kTileCounterSortedJobs = 1,     // jobs whose lists the sort stage left in order
+  kTileCounterScatterShort = 2,   // scatter invocations whose loop ended early
+  kTileCounterResolveShort = 3,   // resolve invocations whose loop ended early
+};
+inline constexpr std::uint32_t kTileCounters = 4;
 // Epoch flags.
 inline constexpr std::uint32_t kTileEpochLoads = 1;
 inline constexpr std::uint32_t kTileEpochStores = 2;

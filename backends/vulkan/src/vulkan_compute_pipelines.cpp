@@ -56,10 +56,9 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
   resolve = createStage(k_tile_resolve_comp, "tile_resolve");
 }
 
-void TilePipelines::dispatch(VkCommandBuffer cmd, VkPipeline pipeline,
-                             std::initializer_list<TileBuffer> buffers,
-                             const TileFrameConstants& constants, std::uint32_t groupsX,
-                             std::uint32_t groupsY) const {
+void TilePipelines::bind(VkCommandBuffer cmd, VkPipeline pipeline,
+                         std::initializer_list<TileBuffer> buffers,
+                         const TileFrameConstants& constants) const {
   std::array<VkDescriptorBufferInfo, kTileBindings> infos{};
   std::array<VkWriteDescriptorSet, kTileBindings> writes{};
   std::uint32_t n = 0;
@@ -75,7 +74,29 @@ void TilePipelines::dispatch(VkCommandBuffer cmd, VkPipeline pipeline,
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
   push_(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, n, writes.data());
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants, &constants);
+}
+
+void TilePipelines::dispatch(VkCommandBuffer cmd, VkPipeline pipeline,
+                             std::initializer_list<TileBuffer> buffers,
+                             const TileFrameConstants& constants, std::uint32_t groupsX,
+                             std::uint32_t groupsY) const {
+  bind(cmd, pipeline, buffers, constants);
   vkCmdDispatch(cmd, groupsX, groupsY, 1);
+}
+
+void TilePipelines::dispatchIndirect(VkCommandBuffer cmd, VkPipeline pipeline,
+                                     std::initializer_list<TileBuffer> buffers,
+                                     const TileFrameConstants& constants, VkBuffer args,
+                                     VkDeviceSize offset) const {
+  bind(cmd, pipeline, buffers, constants);
+  vkCmdDispatchIndirect(cmd, args, offset);
+}
+
+std::pair<std::uint32_t, std::uint32_t> TilePipelines::linearGroups(std::uint64_t count) {
+  const std::uint64_t groups = (count + 63) / 64;
+  const auto perRow =
+      static_cast<std::uint32_t>(std::clamp<std::uint64_t>(groups, 1, kMaxGroupsPerRow));
+  return {perRow, static_cast<std::uint32_t>((groups + perRow - 1) / perRow)};
 }
 
 void TilePipelines::dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
@@ -83,9 +104,7 @@ void TilePipelines::dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
                                    const TileFrameConstants& constants, std::uint64_t count) const {
   if (count == 0)
     return;
-  const std::uint64_t groups = (count + 63) / 64;
-  const auto perRow = static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, kMaxGroupsPerRow));
-  const auto rows = static_cast<std::uint32_t>((groups + perRow - 1) / perRow);
+  const auto [perRow, rows] = linearGroups(count);
   dispatch(cmd, pipeline, buffers, constants, perRow, rows);
 }
 
@@ -100,11 +119,12 @@ void computeBarrier(VkCommandBuffer cmd) {
   VkMemoryBarrier barrier{};
   barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-  barrier.dstAccessMask =
-      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+  barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                          VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
-                       &barrier, 0, nullptr, 0, nullptr);
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                           VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                       0, 1, &barrier, 0, nullptr, 0, nullptr);
 }
 
 }  // namespace recode::backends::detail

@@ -1,7 +1,7 @@
 #pragma once
 // The compute device's pipelines (shaders/compute/, docs/backends.md "The compute device"): the
 // stages of a frame (tile_frame.hpp): boxes, vertex, set-up, scan, scatter, sort, raster,
-// resolve. All share one pipeline layout: seventeen storage buffers bound by push descriptors
+// resolve. All share one pipeline layout: twenty-one storage buffers bound by push descriptors
 // (VK_KHR_push_descriptor), so a dispatch names its buffers as it is recorded and no descriptor set
 // outlives it, and the `Draw` push constants of tile_common.glsl.
 
@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <utility>
 
 #include "tile_frame_layout.hpp"
 
@@ -36,8 +37,12 @@ enum class TileBinding : std::uint32_t {
   BoxJobs = 14,        // TileBoxJob
   Boxes = 15,          // eight doubles a box job
   LaterEpochs = 16,    // the resolve ranges' later epochs
+  Progress = 17,       // where a job suspended at its budget goes on (raster, sort)
+  Carry = 18,          // 64 words a job: a suspended raster job's pixels
+  Counters = 19,       // what the stages did (tile_common.glsl's kCounter...), checked by the host
+  RoundArgs = 20,      // three words a round: the indirect dispatch of a stage's next round
 };
-inline constexpr std::uint32_t kTileBindings = 17;
+inline constexpr std::uint32_t kTileBindings = 21;
 
 // The push constants, in the layout of tile_common.glsl's `Frame`: one set for every stage of
 // a frame.
@@ -54,8 +59,16 @@ struct TileFrameConstants {
   std::uint32_t resolveRanges = 0;
   std::uint32_t boxJobs = 0;
   std::uint32_t binPass = 0;
+  std::uint32_t rasterBudget = 0;
+  std::uint32_t sortBudget = 0;
+  std::uint32_t sortLanes = 1;
+  std::uint32_t scatterBlocks = 0;
+  std::uint32_t scatterChunks = 1;
+  std::uint32_t round = 0;
+  std::uint32_t roundGroupsX = 0;
+  std::uint32_t roundGroupsY = 0;
 };
-static_assert(sizeof(TileFrameConstants) == 48, "tile_common.glsl's Frame is 12 words");
+static_assert(sizeof(TileFrameConstants) == 80, "tile_common.glsl's Frame is 20 words");
 
 // A buffer range at a binding.
 struct TileBuffer {
@@ -92,8 +105,18 @@ class TilePipelines {
   void dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
                       std::initializer_list<TileBuffer> buffers,
                       const TileFrameConstants& constants, std::uint64_t count) const;
+  // The workgroups (x, y) dispatchLinear makes for `count` invocations.
+  [[nodiscard]] static std::pair<std::uint32_t, std::uint32_t> linearGroups(std::uint64_t count);
+  // The same as dispatch, with the workgroup counts read from `args` at `offset` (three words)
+  // when the dispatch runs.
+  void dispatchIndirect(VkCommandBuffer cmd, VkPipeline pipeline,
+                        std::initializer_list<TileBuffer> buffers,
+                        const TileFrameConstants& constants, VkBuffer args,
+                        VkDeviceSize offset) const;
 
  private:
+  void bind(VkCommandBuffer cmd, VkPipeline pipeline, std::initializer_list<TileBuffer> buffers,
+            const TileFrameConstants& constants) const;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   PFN_vkCmdPushDescriptorSetKHR push_ = nullptr;
@@ -102,7 +125,8 @@ class TilePipelines {
 // The pipelines of the 64-bit context, made on first use and never destroyed (as the context).
 [[nodiscard]] const TilePipelines& tilePipelines();
 
-// Everything a compute stage wrote is visible to the stages and transfers after it.
+// Everything a compute stage wrote is visible to the stages, indirect dispatches and transfers
+// after it.
 void computeBarrier(VkCommandBuffer cmd);
 
 }  // namespace recode::backends::detail

@@ -49,6 +49,16 @@ class VulkanContext {
   // Whether the physical device is a CPU driver (lavapipe): work is then best handed out in
   // fewer, larger pieces.
   [[nodiscard]] bool cpuDriver() const { return cpuDriver_; }
+  // The most loop iterations one shader invocation may run before the driver ends its loops
+  // early without a word, or 0 when the driver sets no such limit. llvmpipe (lavapipe) counts
+  // every iteration of every loop of an invocation against one limit of 65,535 and, once it is
+  // spent, leaves each loop at its next test (Mesa's gallivm: LP_MAX_TGSI_LOOP_ITERATIONS in
+  // lp_bld_limits.h, "shared between every loop", a guard against endless loops). Every CPU
+  // driver is taken to have that limit (for one without it the cost is a few more dispatches);
+  // GPU drivers have none. The compute device splits its work to stay within it
+  // (tile_frame_budgets.hpp).
+  [[nodiscard]] std::uint32_t loopLimit() const { return cpuDriver_ ? kCpuDriverLoopLimit : 0; }
+  static constexpr std::uint32_t kCpuDriverLoopLimit = 65535;
   // The physical device's limits (the native device places its viewport within them).
   [[nodiscard]] const VkPhysicalDeviceLimits& limits() const { return limits_; }
   // What the physical device does with `format` in optimal tiling (the native device picks its

@@ -107,6 +107,36 @@ TEST_CASE("blocks whose lists overflow the bins are drawn from every triangle, i
   expectSameDraw(randomTriangles(rng, 1500, -300.0f, -300.0f, 560.0f, 560.0f), 256, 256);
 }
 
+TEST_CASE(
+    "a block's list of more entries than a CPU driver's loop limit is drawn in full, in order",
+    "[vulkan-compute]") {
+  // 70,000 slivers over one 8x8 block: more list entries than llvmpipe lets one invocation loop
+  // over (65,535 iterations), so the sort and the raster stage each take several rounds there.
+  std::mt19937 rng(52);
+  Draw slivers;
+  std::uniform_real_distribution<float> ux(16.0f, 24.0f), uz(0.0f, 1.0f);
+  for (std::uint32_t t = 0; t < 70000; ++t) {
+    const float x = ux(rng);
+    const float z = uz(rng);
+    // A sliver a tenth of a pixel wide from the block's bottom to its top, at a slant.
+    slivers.vertices.push_back({raster::snapToSubpixel(x), 15.5f, z});
+    slivers.vertices.push_back({raster::snapToSubpixel(x + 0.1f), 15.5f, uz(rng)});
+    slivers.vertices.push_back({raster::snapToSubpixel(x + 0.05f), 24.5f, z});
+    for (std::uint32_t k = 0; k < 3; ++k)
+      slivers.indices.push_back(3 * t + k);
+  }
+  expectSameDraw(slivers, 40, 40);
+}
+
+TEST_CASE("overflowing lists whose fallback draws more triangles than a CPU driver's loop limit",
+          "[vulkan-compute]") {
+  // 8,000 triangles over the whole 64 x 64 frame: their entries pass the lists' capacity, so
+  // every block draws all 8,000 (72,000 work units), past what one invocation may loop over on
+  // llvmpipe: the raster stage takes rounds.
+  std::mt19937 rng(53);
+  expectSameDraw(randomTriangles(rng, 8000, -40.0f, -40.0f, 104.0f, 104.0f), 64, 64);
+}
+
 TEST_CASE("a scissor off the block grid and triangles from the guard band", "[vulkan-compute]") {
   std::mt19937 rng(50);
   expectSameDraw(randomTriangles(rng, 400, -32768.0f, -32768.0f, 32768.0f, 32768.0f), 77, 53,

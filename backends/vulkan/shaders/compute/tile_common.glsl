@@ -28,7 +28,32 @@ layout(push_constant) uniform Frame {
   uint resolveRanges;
   uint boxJobs;        // posed blocks whose world boxes the box stage makes
   uint binPass;        // tile_scatter.comp: 0 counts each job's triangles, 1 lists them
+  // The work budgets that keep every invocation's loops within a CPU driver's limit
+  // (tile_frame_budgets.hpp; kUnbounded on a GPU). A job that has spent its budget stops, keeps
+  // where it is in the Progress words, and the next round of its stage carries on from there.
+  uint rasterBudget;   // a raster job's work units a round (kWorkUnit a command or list entry)
+  uint sortBudget;     // a sort job's loop iterations a round
+  uint sortLanes;      // invocations a sort job has (only the first works)
+  uint scatterBlocks;  // blocks one scatter invocation visits: a triangle's chunk of candidates
+  uint scatterChunks;  // chunks of scatterBlocks each triangle's candidates are cut into
+  uint round;          // the round of the stage being run, from 0
+  uint roundGroupsX;   // the workgroups of a whole round of the stage being run
+  uint roundGroupsY;
 } frame;
+
+// A budget that never runs out (a GPU driver's).
+const uint kUnbounded = 0xFFFFFFFFu;
+// The work a raster job is charged for each command (the loop's test and at most eight rows of
+// a clear or read) and for each list entry or triangle it draws (the loop's test and at most
+// eight rows): an invocation's loop iterations never exceed its work units.
+const uint kWorkUnit = 9u;
+
+// The frame's counters (Counters words, zero at the start of the frame): what each stage did,
+// which the host compares with what it asked for (a loop a driver ended early shows here).
+const uint kCounterRasterColumns = 0u;  // job columns the raster stage ran to their end
+const uint kCounterSortedJobs = 1u;     // jobs whose lists the sort stage left in order
+const uint kCounterScatterShort = 2u;   // scatter invocations whose loop ended early
+const uint kCounterResolveShort = 3u;   // resolve invocations whose loop ended early
 
 layout(buffer_reference, std430, buffer_reference_align = 4) buffer PixelWords { uint pixels[]; };
 layout(buffer_reference, std430, buffer_reference_align = 4) buffer FloatWords { float values[]; };

@@ -19,6 +19,13 @@
 //   then the stencil test, the depth test, the face's ops and the write masks (6).
 // At the end a job that owns its pixels outright (kEpochStores) writes them to the
 // framebuffer; any other keeps them in JobFinal for the resolve stage.
+//
+// Rounds: a job is charged kWorkUnit for each command and each triangle it draws; one that would
+// pass Frame.rasterBudget (a CPU driver's loop limit, tile_frame_budgets.hpp) stops between two
+// of them, keeps its pixels in Carry and its place in Progress, and asks for the next round (its
+// indirect dispatch in RoundArgs), which carries on from there: the same operations in the same
+// order, cut into pieces a driver runs in full. Every column that reaches its job's end with each
+// loop left at its own test counts itself in Counters, which the host checks.
 
 layout(local_size_x = 64) in;
 
@@ -33,6 +40,14 @@ layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint binOffset
 layout(std430, set = 0, binding = 10) readonly buffer Pairs { uint pairs[]; };
 layout(std430, set = 0, binding = 11) writeonly buffer JobFinal { uint jobFinal[]; };
 layout(std430, set = 0, binding = 12) buffer ReadArena { uint readArena[]; };
+// Where a suspended job goes on: the round that goes on with it, the command it stopped at, its
+// list cursor and, on a draw from every triangle, its next triangle. Two sets of jobCount
+// records: round r reads set r % 2 (written in round r - 1) and writes the other, so no column
+// reads its job's record while another column of it writes that record.
+layout(std430, set = 0, binding = 17) buffer Progress { uvec4 progress[]; };
+layout(std430, set = 0, binding = 18) buffer Carry { uint carry[]; };  // 64 words a job
+layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
+layout(std430, set = 0, binding = 20) buffer RoundArgs { uint roundArgs[]; };  // 3 words a round
 
 // The state comes from each draw's command, so the compiler cannot take it as uniform: both
 // functions are selects, not switches, which a CPU driver's SIMD code would run case by case.
@@ -63,6 +78,8 @@ int column;
 int firstRow;
 uint depth[8];
 uint stencil[8];
+// Whether a loop of this invocation ended other than at its own test (a driver's loop limit).
+bool cut = false;
 
 // The state of the draw being run, from its command.
 uint ref;
@@ -127,7 +144,8 @@ void shade(uint t) {
   precise double tx = dzdx * double(xc - v0.x);
   precise double zx = z0 + tx;  // the plane's column part, as CpuDevice keeps it per block
   const uint ops = front ? frontOps : backOps;
-  for (int row = rowStart; row < rowEnd; ++row) {
+  int row = rowStart;
+  for (; row < rowEnd; ++row) {
     if (e0 >= 0l && e1 >= 0l && e2 >= 0l) {
       const int k = row - firstRow;
       const uint s = stencil[k];
@@ -153,11 +171,13 @@ void shade(uint t) {
     e1 += step1;
     e2 += step2;
   }
+  cut = cut || row < rowEnd;
 }
 
 // A clear of this column's pixels inside the command's scissor.
 void clear(Command c) {
-  for (int k = 0; k < 8; ++k) {
+  int k = 0;
+  for (; k < 8; ++k) {
     if (!insideRect(c.rect, column, firstRow + k))
       continue;
     if (c.kind == kClearDepth) {
@@ -167,13 +187,15 @@ void clear(Command c) {
       stencil[k] = (c.value & mask) | (stencil[k] & ~mask & 0xFFu);
     }
   }
+  cut = cut || k < 8;
 }
 
 // A read of this column's pixels inside the command's rectangle, rows from the bottom, into the
 // read arena from word c.first on.
 void read(Command c) {
   const uint rectWidth = uint(c.rect.z - c.rect.x);
-  for (int k = 0; k < 8; ++k) {
+  int k = 0;
+  for (; k < 8; ++k) {
     const int row = firstRow + k;
     if (!insideRect(c.rect, column, row))
       continue;
@@ -185,10 +207,73 @@ void read(Command c) {
     else
       readArena[c.first + at] = floatBitsToUint(float(depth[k]) * (1.0 / 16777216.0));
   }
+  cut = cut || k < 8;
 }
 
-// Runs job j: this invocation's column of it.
+// This column's pixel words of job j: loaded at its first round, or carried from the last.
+void loadPixels(uint j, Epoch epoch, Target target, PixelWords framebuffer, bool resumed) {
+  const uint lane = gl_LocalInvocationID.x & 7u;
+  const bool loads = (epoch.flags & kEpochLoads) != 0u;
+  int k = 0;
+  for (; k < 8; ++k) {
+    const int row = firstRow + k;
+    // An epoch that starts from its own clears reads nothing: its pixels outside them are
+    // never touched (every command of such an epoch lies inside the clears' rectangle).
+    const bool inside = loads && column < int(target.width) && row < int(target.height);
+    uint word = inside ? framebuffer.pixels[uint(row) * target.width + uint(column)]
+                       : packPixel(0xFFFFFFu, 0u);
+    word = resumed ? carry[j * 64u + uint(k) * 8u + lane] : word;
+    depth[k] = depthOf(word);
+    stencil[k] = stencilOf(word);
+  }
+  cut = cut || k < 8;
+}
+
+// Stops job j where it is (command ci, list cursor, next triangle t of a draw from every
+// triangle) for the next round: this column's pixels to Carry, the place to Progress (the same
+// in every column), and the next round's dispatch asked for.
+void suspend(uint j, uint ci, uint cursor, uint t) {
+  const uint lane = gl_LocalInvocationID.x & 7u;
+  int k = 0;
+  for (; k < 8; ++k)
+    carry[j * 64u + uint(k) * 8u + lane] = packPixel(depth[k], stencil[k]);
+  cut = cut || k < 8;
+  if (lane == 0u) {
+    const uint written = ((frame.round + 1u) & 1u) * frame.jobCount + j;
+    progress[written] = uvec4(frame.round + 1u, ci, cursor, t);
+    const uint next = 3u * (frame.round + 1u);
+    atomicExchange(roundArgs[next], frame.roundGroupsX);
+    atomicExchange(roundArgs[next + 1u], frame.roundGroupsY);
+    atomicExchange(roundArgs[next + 2u], 1u);
+  }
+}
+
+// This column's pixels at the end of job j: to the framebuffer when the job owns them, else to
+// JobFinal for the resolve stage.
+void storePixels(uint j, Epoch epoch, Target target, PixelWords framebuffer) {
+  const uint block = j - epoch.firstJob;
+  const bool stores = (epoch.flags & kEpochStores) != 0u;
+  int k = 0;
+  for (; k < 8; ++k) {
+    const uint word = packPixel(depth[k], stencil[k]);
+    if (stores) {
+      if (insideRect(epoch.footprint, column, firstRow + k))
+        framebuffer.pixels[uint(firstRow + k) * target.width + uint(column)] = word;
+    } else {
+      jobFinal[(epoch.firstFinal + block) * 64u + uint(k) * 8u + (gl_LocalInvocationID.x & 7u)] =
+          word;
+    }
+  }
+  cut = cut || k < 8;
+}
+
+// Runs job j, this invocation's column of it, from where an earlier round left it, until its
+// end or its budget.
 void runJob(uint j) {
+  const uvec4 place = frame.round == 0u ? uvec4(0u) : progress[(frame.round & 1u) * frame.jobCount + j];
+  const bool resumed = frame.round > 0u;
+  if (resumed && place.x != frame.round)
+    return;  // done in an earlier round
   const uint e = epochOfJob(j);
   const Epoch epoch = epochs[e];
   const Target target = targets[epoch.target];
@@ -196,51 +281,61 @@ void runJob(uint j) {
   const uint block = j - epoch.firstJob;
   column = epoch.gridOrigin.x + int((block % epoch.gridWidth) * 8u + (gl_LocalInvocationID.x & 7u));
   firstRow = epoch.gridOrigin.y + int((block / epoch.gridWidth) * 8u);
-  const bool loads = (epoch.flags & kEpochLoads) != 0u;
-  for (int k = 0; k < 8; ++k) {
-    const int row = firstRow + k;
-    // An epoch that starts from its own clears reads nothing: its pixels outside them are
-    // never touched (every command of such an epoch lies inside the clears' rectangle).
-    const bool inside = loads && column < int(target.width) && row < int(target.height);
-    const uint word = inside ? framebuffer.pixels[uint(row) * target.width + uint(column)]
-                             : packPixel(0xFFFFFFu, 0u);
-    depth[k] = depthOf(word);
-    stencil[k] = stencilOf(word);
-  }
-  uint cursor = binOffsets[j];
-  const uint listEnd = cursor + binCounts[j];
+  loadPixels(j, epoch, target, framebuffer, resumed);
+  uint cursor = resumed ? place.z : binOffsets[j];
+  const uint listEnd = binOffsets[j] + binCounts[j];
   const bool overflowed = listEnd > frame.pairCapacity;
-  for (uint ci = epoch.firstCommand; ci < epoch.commandEnd; ++ci) {
+  uint spent = 0u;
+  uint ci = resumed ? place.y : epoch.firstCommand;
+  bool midCommand = resumed;  // the first command was begun (and charged) in an earlier round
+  for (; ci < epoch.commandEnd; ++ci) {
     const Command c = commands[ci];
+    if (!midCommand) {
+      if (spent + kWorkUnit > frame.rasterBudget) {
+        suspend(j, ci, cursor, c.first);
+        return;
+      }
+      spent += kWorkUnit;
+    }
     if (c.kind == kDraw) {
       takeState(c);
       const uint drawEnd = c.first + c.count;
       if (overflowed) {
         // The list did not fit: every triangle of the draw, in index order (a set-up triangle
         // that misses this column is skipped by its candidate rectangle).
-        for (uint t = c.first; t < drawEnd; ++t)
+        uint t = midCommand ? place.w : c.first;
+        for (; t < drawEnd; ++t) {
+          if (spent + kWorkUnit > frame.rasterBudget) {
+            suspend(j, ci, cursor, t);
+            return;
+          }
+          spent += kWorkUnit;
           shade(t);
+        }
+        cut = cut || t < drawEnd;
       } else {
         // The list is in frame order, which is command order: this draw's entries are next.
-        for (; cursor < listEnd && pairs[cursor] < drawEnd; ++cursor)
+        for (; cursor < listEnd && pairs[cursor] < drawEnd; ++cursor) {
+          if (spent + kWorkUnit > frame.rasterBudget) {
+            suspend(j, ci, cursor, 0u);
+            return;
+          }
+          spent += kWorkUnit;
           shade(pairs[cursor]);
+        }
+        cut = cut || (cursor < listEnd && pairs[cursor] < drawEnd);
       }
     } else if (c.kind == kRead) {
       read(c);
     } else {
       clear(c);
     }
+    midCommand = false;
   }
-  if ((epoch.flags & kEpochStores) != 0u) {
-    for (int k = 0; k < 8; ++k)
-      if (insideRect(epoch.footprint, column, firstRow + k))
-        framebuffer.pixels[uint(firstRow + k) * target.width + uint(column)] =
-            packPixel(depth[k], stencil[k]);
-  } else {
-    for (int k = 0; k < 8; ++k)
-      jobFinal[(epoch.firstFinal + block) * 64u + uint(k) * 8u + (gl_LocalInvocationID.x & 7u)] =
-          packPixel(depth[k], stencil[k]);
-  }
+  cut = cut || ci < epoch.commandEnd;
+  storePixels(j, epoch, target, framebuffer);
+  if (!cut)
+    atomicAdd(counters[kCounterRasterColumns], 1u);
 }
 
 // Invocation i runs column i % 8 of every eighth job of the workgroup's span, from job i / 8 on:

@@ -6,7 +6,9 @@
 // epoch that meets another epoch of its target): the pixel takes the value the epoch left in
 // JobFinal unless a later epoch of the target holds the pixel too, whose own range then gives
 // it. So each pixel is written once, by the last epoch that held it. (An epoch that meets no
-// other stored its pixels itself, in the raster stage.)
+// other stored its pixels itself, in the raster stage.) The host keeps a range's later epochs
+// within a CPU driver's loop limit (tile_frame_budgets.hpp); an invocation whose loop ended
+// before its end counts itself in Counters, which the host checks.
 
 layout(local_size_x = 64) in;
 
@@ -16,6 +18,7 @@ layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = 11) readonly buffer JobFinal { uint jobFinal[]; };
 layout(std430, set = 0, binding = 13) readonly buffer ResolveRanges { ResolveRange ranges[]; };
 layout(std430, set = 0, binding = 16) readonly buffer LaterEpochs { uint laterEpochs[]; };
+layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
 
 uint rangeOfPixel(uint i) {
   uint found;
@@ -32,9 +35,15 @@ void main() {
   const uint rectWidth = uint(range.rect.z - range.rect.x);
   const int x = range.rect.x + int(k % rectWidth);
   const int y = range.rect.y + int(k / rectWidth);
-  for (uint l = range.firstLater; l < range.firstLater + range.laterCount; ++l)
+  const uint laterEnd = range.firstLater + range.laterCount;
+  uint l = range.firstLater;
+  for (; l < laterEnd; ++l)
     if (insideRect(epochs[laterEpochs[l]].footprint, x, y))
       return;
+  if (l < laterEnd) {
+    atomicAdd(counters[kCounterResolveShort], 1u);
+    return;
+  }
   const Epoch epoch = epochs[range.epoch];
   const uvec2 block = blockOf(epoch, x, y);
   const uint slot = epoch.firstFinal + block.y * epoch.gridWidth + block.x;

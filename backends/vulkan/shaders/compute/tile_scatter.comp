@@ -10,6 +10,11 @@
 // particular order; the next stage (tile_sort.comp) sorts each list by index, which is command
 // order. Entries past the lists' capacity are dropped, and a job whose list did not fit draws
 // each of its draws from every triangle instead (tile_raster.comp).
+//
+// A triangle's candidate blocks, row by row, are cut into Frame.scatterChunks chunks of
+// Frame.scatterBlocks, one invocation a chunk (one chunk of them all on a GPU), so that no
+// invocation's loop passes a CPU driver's limit (tile_frame_budgets.hpp). An invocation whose loop
+// ended before its chunk's end counts itself in Counters, which the host checks.
 
 layout(local_size_x = 64) in;
 
@@ -21,9 +26,12 @@ layout(std430, set = 0, binding = 6) readonly buffer Triangles { uint triangles[
 layout(std430, set = 0, binding = 7) buffer BinCounts { uint binCounts[]; };
 layout(std430, set = 0, binding = 9) buffer BinCursors { uint binCursors[]; };
 layout(std430, set = 0, binding = 10) writeonly buffer Pairs { uint pairs[]; };
+layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
 
 void main() {
-  const uint t = linearInvocation();
+  const uint invocation = linearInvocation();
+  const uint t = invocation / frame.scatterChunks;
+  const uint chunk = invocation % frame.scatterChunks;
   if (t >= frame.triangleCount)
     return;
   const uint base = t * kWordsPerTriangle;
@@ -42,18 +50,25 @@ void main() {
   const i64vec2 p2 = front ? v2 : v1;
   const uvec2 first = blockOf(epoch, x0, y0);
   const uvec2 last = blockOf(epoch, x1 - 1, y1 - 1);
-  for (uint by = first.y; by <= last.y; ++by) {
-    for (uint bx = first.x; bx <= last.x; ++bx) {
-      if (!blockMeetsTriangle(v0, p1, p2, epoch.gridOrigin + ivec2(bx, by) * 8))
-        continue;
-      const uint job = epoch.firstJob + by * epoch.gridWidth + bx;
-      if (frame.binPass == 0u) {
-        atomicAdd(binCounts[job], 1u);
-      } else {
-        const uint slot = atomicAdd(binCursors[job], 1u);
-        if (slot < frame.pairCapacity)
-          pairs[slot] = t;
-      }
+  const uint columns = last.x - first.x + 1u;
+  const uint blocks = columns * (last.y - first.y + 1u);
+  // This invocation's chunk of the blocks, numbered row by row from `first`.
+  const uint begin = min(chunk * frame.scatterBlocks, blocks);
+  const uint end = min(begin + min(frame.scatterBlocks, blocks - begin), blocks);
+  uint k = begin;
+  for (; k < end; ++k) {
+    const uvec2 b = first + uvec2(k % columns, k / columns);
+    if (!blockMeetsTriangle(v0, p1, p2, epoch.gridOrigin + ivec2(b) * 8))
+      continue;
+    const uint job = epoch.firstJob + b.y * epoch.gridWidth + b.x;
+    if (frame.binPass == 0u) {
+      atomicAdd(binCounts[job], 1u);
+    } else {
+      const uint slot = atomicAdd(binCursors[job], 1u);
+      if (slot < frame.pairCapacity)
+        pairs[slot] = t;
     }
   }
+  if (k < end)
+    atomicAdd(counters[kCounterScatterShort], 1u);
 }
