@@ -68,7 +68,8 @@ TEST_CASE("the rounds bound a job's whole work", "[tile-budgets]") {
   // The sort: steps n/2 + n - 1, each charged findMSB(n) + 2.
   const std::uint32_t sortBudget = tileLoopBudgets(kLimit).sortWork;
   CHECK(tileSortRounds(1, sortBudget) == 1);
-  CHECK(tileSortRounds(2000, sortBudget) == 1);  // 2,999 steps of 12: 35,988 > 32,255
+  CHECK(tileSortRounds(1000, sortBudget) == 1);  // 1,499 steps of 11: 16,489 <= 32,255
+  CHECK(tileSortRounds(2000, sortBudget) == 2);  // 2,999 steps of 12: 35,988 > 32,255
   const std::uint64_t steps = 35000 + 70000 - 1;
   const std::uint64_t perSortRound = sortBudget / (16 + 2);  // findMSB(70,000) = 16
   CHECK(tileSortRounds(70000, sortBudget) == (steps + perSortRound - 1) / perSortRound);

@@ -130,11 +130,25 @@ TEST_CASE(
 
 TEST_CASE("overflowing lists whose fallback draws more triangles than a CPU driver's loop limit",
           "[vulkan-compute]") {
-  // 8,000 triangles over the whole 64 x 64 frame: their entries pass the lists' capacity, so
-  // every block draws all 8,000 (72,000 work units), past what one invocation may loop over on
-  // llvmpipe: the raster stage takes rounds.
+  // 8,000 triangles each over the whole 64 x 64 frame, of either facing: their 512,000 entries
+  // pass the lists' capacity, so every block draws all 8,000 on all eight rows (72,000 loop
+  // iterations), past what one invocation may loop over on llvmpipe: the raster stage takes
+  // rounds there.
   std::mt19937 rng(53);
-  expectSameDraw(randomTriangles(rng, 8000, -40.0f, -40.0f, 104.0f, 104.0f), 64, 64);
+  std::uniform_real_distribution<float> jitter(-500.0f, 500.0f), uz(0.0f, 1.0f);
+  Draw big;
+  for (std::uint32_t t = 0; t < 8000; ++t) {
+    const WindowVertex corners[3] = {
+        {raster::snapToSubpixel(-1000.0f + jitter(rng)), -1000.0f, uz(rng)},
+        {raster::snapToSubpixel(3000.0f + jitter(rng)), -1000.0f, uz(rng)},
+        {-1000.0f, raster::snapToSubpixel(3000.0f + jitter(rng)), uz(rng)}};
+    for (const WindowVertex& v : corners)
+      big.vertices.push_back(v);
+    const bool back = (t % 3) == 0;
+    big.indices.insert(big.indices.end(),
+                       {3 * t, back ? 3 * t + 2 : 3 * t + 1, back ? 3 * t + 1 : 3 * t + 2});
+  }
+  expectSameDraw(big, 64, 64);
 }
 
 TEST_CASE("a scissor off the block grid and triangles from the guard band", "[vulkan-compute]") {
