@@ -495,7 +495,6 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   k.boxJobs = static_cast<std::uint32_t>(r.boxJobs.size());
   k.rasterBudget = r.rasterRounds > 1 ? budgets.rasterWork : kTileUnbounded;
   k.sortBudget = r.sortRounds > 1 ? budgets.sortWork : kTileUnbounded;
-  k.sortLanes = budgets.sortLanes;
   k.scatterChunks = tileScatterChunks(r.largestGrid, budgets.scatterBlocks);
   k.scatterBlocks = k.scatterChunks > 1 ? budgets.scatterBlocks : kTileUnbounded;
   const TileBuffer targetsIn = uploaded(TileBinding::Targets, r.targets);
@@ -594,7 +593,7 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
     computeBarrier(cmd);
     // The sort in rounds: the first for every job, each later one (an indirect dispatch whose
     // size the round before writes) only when some job stopped at its budget.
-    const std::uint64_t sortInvocations = std::uint64_t{r.jobs} * k.sortLanes;
+    const std::uint64_t sortInvocations = r.jobs;
     std::tie(k.roundGroupsX, k.roundGroupsY) = TilePipelines::linearGroups(sortInvocations);
     for (k.round = 0; k.round < r.sortRounds; ++k.round) {
       const std::initializer_list<TileBuffer> buffers = {counts,       offsets,  pairs,

@@ -29,8 +29,7 @@ TileLoopBudgets tileLoopBudgets(std::uint32_t loopLimit) {
     return b;
   const std::uint32_t spare = loopLimit - kTileLoopMargin;
   b.rasterWork = spare / kTileJobsPerBundle;
-  b.sortWork = spare / kTileJobsPerBundle;
-  b.sortLanes = kTileJobLanes;
+  b.sortWork = spare / kTileLanesPerBundle;
   b.scatterBlocks = spare / kTileLanesPerBundle;
   b.resolveLater = spare / kTileLanesPerBundle;
   // tile_box.comp: a lane takes every 64th vertex, four iterations each (the vertex and its

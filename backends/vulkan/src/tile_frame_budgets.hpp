@@ -8,15 +8,16 @@
 //   raster   a job's commands and list entries (or, past the lists' capacity, every triangle of
 //            its draws), at most eight rows each: the job is charged kTileWorkUnit for each and
 //            stops at its budget; further rounds go on from where it stopped
-//   sort     a job's heapsort, at most log2(n) + 2 iterations a step: the same, in rounds
+//   sort     a job's heapsort, one invocation a job, at most log2(n) + 2 iterations a step:
+//            the same, in rounds
 //   scatter  a triangle's candidate blocks: cut into chunks, one invocation a chunk
 //   resolve  a pixel's later epochs: a target whose epochs would pass it has them merged
 //   box      a block's vertices, 64 an iteration: a larger block is refused with the limit named
 //   scan     the jobs, a 256th an invocation: a larger frame is refused likewise
 // A CPU driver runs a workgroup's invocations as SIMD bundles of up to 16 lanes (llvmpipe: 8
 // with AVX2, 16 with 512-bit vectors) whose loops run as long as any lane's, so a bundle's count
-// is at most the sum of its lanes' own: a raster or sort job (8 lanes) shares a bundle with at
-// most one other job, and a scatter or resolve lane with at most 15 others. kTileLoopMargin is
+// is at most the sum of its lanes' own: a raster job (8 lanes) shares a bundle with at most one
+// other job, and a sort, scatter or resolve lane with at most 15 others. kTileLoopMargin is
 // left for what no budget counts (binary searches, a job's loads and stores).
 
 #include <array>
@@ -33,13 +34,12 @@ inline constexpr std::uint32_t kTileWorkUnit = 9;
 inline constexpr std::uint32_t kTileLoopMargin = 1024;
 inline constexpr std::uint32_t kTileJobsPerBundle = 2;
 inline constexpr std::uint32_t kTileLanesPerBundle = 16;
-// Invocations a raster job has (its eight columns), and a sort job on a driver with a limit.
+// Invocations a raster job has: its eight columns.
 inline constexpr std::uint32_t kTileJobLanes = 8;
 
 struct TileLoopBudgets {
   std::uint32_t rasterWork = kTileUnbounded;      // work units a raster job runs a round
   std::uint32_t sortWork = kTileUnbounded;        // loop iterations a sort job runs a round
-  std::uint32_t sortLanes = 1;                    // invocations a sort job has
   std::uint32_t scatterBlocks = kTileUnbounded;   // candidate blocks one scatter invocation visits
   std::uint32_t resolveLater = kTileUnbounded;    // later epochs one resolve invocation compares
   std::uint64_t boxVertices = ~std::uint64_t{0};  // vertices of one block the box stage takes

@@ -61,12 +61,12 @@ struct TileFrameConstants {
   std::uint32_t binPass = 0;
   std::uint32_t rasterBudget = 0;
   std::uint32_t sortBudget = 0;
-  std::uint32_t sortLanes = 1;
   std::uint32_t scatterBlocks = 0;
   std::uint32_t scatterChunks = 1;
   std::uint32_t round = 0;
   std::uint32_t roundGroupsX = 0;
   std::uint32_t roundGroupsY = 0;
+  std::uint32_t pad = 0;
 };
 static_assert(sizeof(TileFrameConstants) == 80, "tile_common.glsl's Frame is 20 words");
 

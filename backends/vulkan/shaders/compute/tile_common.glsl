@@ -33,12 +33,12 @@ layout(push_constant) uniform Frame {
   // where it is in the Progress words, and the next round of its stage carries on from there.
   uint rasterBudget;   // a raster job's work units a round (kWorkUnit a command or list entry)
   uint sortBudget;     // a sort job's loop iterations a round
-  uint sortLanes;      // invocations a sort job has (only the first works)
   uint scatterBlocks;  // blocks one scatter invocation visits: a triangle's chunk of candidates
   uint scatterChunks;  // chunks of scatterBlocks each triangle's candidates are cut into
   uint round;          // the round of the stage being run, from 0
   uint roundGroupsX;   // the workgroups of a whole round of the stage being run
   uint roundGroupsY;
+  uint pad;
 } frame;
 
 // A budget that never runs out (a GPU driver's).

@@ -8,10 +8,9 @@
 // driver such as lavapipe more than the sort itself). A job whose list did not fit is left
 // alone: the raster stage draws it from every triangle.
 //
-// A job has Frame.sortLanes invocations, of which the first sorts (a CPU driver runs a SIMD
-// bundle's loops as long as its longest lane, so one job a bundle keeps the count its own). A
-// job is charged each sift's longest walk; one that would pass Frame.sortBudget stops between two
-// sifts, keeps its next step in SortProgress and asks for the next round (RoundArgs), which goes
+// One invocation a job. A job is charged each sift's longest walk; one that would pass
+// Frame.sortBudget (a CPU driver's loop limit shared by a SIMD bundle's lanes,
+// tile_frame_budgets.hpp) stops between two sifts, keeps its next step in SortProgress and asks for the next round (RoundArgs), which goes
 // on from there. A job whose list is in order counts itself in Counters, which the host checks.
 
 layout(local_size_x = 64) in;
@@ -69,9 +68,8 @@ void sortStep(uint offset, uint n, uint s) {
 }
 
 void main() {
-  const uint lane = linearInvocation();
-  const uint block = lane / frame.sortLanes;
-  if (block >= frame.jobCount || lane % frame.sortLanes != 0u)
+  const uint block = linearInvocation();
+  if (block >= frame.jobCount)
     return;
   uint step = 0u;
   if (frame.round > 0u) {
