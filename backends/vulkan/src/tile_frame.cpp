@@ -133,11 +133,9 @@ struct WorkLayout {
   VkDeviceSize bytes = 0;
 };
 
-// Jobs a workgroup of the raster stage runs on a CPU driver: eight at once, one an invocation's
-// eight columns, as on a GPU. Not more: llvmpipe ends an invocation's loops after 65,535
-// iterations in all (its guard against endless loops), and an invocation runs every command,
-// list entry and row of its jobs (a job whose list overflowed, every triangle of each draw).
-constexpr std::uint32_t kCpuJobsPerGroup = 8;
+// Jobs a workgroup of the raster stage runs: eight side by side, one an invocation's eight
+// columns (tile_raster.comp). One job an invocation: its loop budget is its own.
+constexpr std::uint32_t kRasterJobsPerGroup = 8;
 
 // Jobs the serial scan (tile_scan_serial.comp, for CPU drivers) takes: llvmpipe ends a shader's
 // loops after 65,535 iterations in all, so more go to the workgroup's scan, whose invocations
@@ -487,9 +485,6 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   k.jobCount = r.jobs;
   k.epochCount = static_cast<std::uint32_t>(r.epochs.size());
   k.pairCapacity = layout.pairCapacity;
-  // Eight jobs a workgroup on a GPU; on a CPU driver, where each workgroup has a fixed cost of
-  // several microseconds, kCpuJobsPerGroup.
-  k.jobsPerGroup = context.cpuDriver() ? kCpuJobsPerGroup : 8u;
   k.resolvePixels = r.resolvePixels;
   k.resolveRanges = static_cast<std::uint32_t>(r.resolveRanges.size());
   k.boxJobs = static_cast<std::uint32_t>(r.boxJobs.size());
@@ -607,7 +602,7 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   }
   timestamp(cmd, 3);
   // The raster stage in rounds, as the sort.
-  const std::uint64_t rasterGroups = (r.jobs + k.jobsPerGroup - 1) / k.jobsPerGroup;
+  const std::uint64_t rasterGroups = (r.jobs + kRasterJobsPerGroup - 1) / kRasterJobsPerGroup;
   k.roundGroupsX = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(rasterGroups, 1, 65535));
   k.roundGroupsY = static_cast<std::uint32_t>((rasterGroups + k.roundGroupsX - 1) / k.roundGroupsX);
   for (k.round = 0; k.round < r.rasterRounds; ++k.round) {

@@ -54,7 +54,6 @@ struct TileFrameConstants {
   std::uint32_t jobCount = 0;
   std::uint32_t epochCount = 0;
   std::uint32_t pairCapacity = 0;
-  std::uint32_t jobsPerGroup = 8;
   std::uint32_t resolvePixels = 0;
   std::uint32_t resolveRanges = 0;
   std::uint32_t boxJobs = 0;
@@ -66,9 +65,8 @@ struct TileFrameConstants {
   std::uint32_t round = 0;
   std::uint32_t roundGroupsX = 0;
   std::uint32_t roundGroupsY = 0;
-  std::uint32_t pad = 0;
 };
-static_assert(sizeof(TileFrameConstants) == 80, "tile_common.glsl's Frame is 20 words");
+static_assert(sizeof(TileFrameConstants) == 72, "tile_common.glsl's Frame is 18 words");
 
 // A buffer range at a binding.
 struct TileBuffer {

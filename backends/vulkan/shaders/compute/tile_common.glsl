@@ -23,7 +23,6 @@ layout(push_constant) uniform Frame {
   uint jobCount;       // (epoch, 8x8 block) jobs
   uint epochCount;
   uint pairCapacity;   // entries the bins' list holds
-  uint jobsPerGroup;   // the raster stage's jobs a workgroup
   uint resolvePixels;  // pixels the resolve stage visits, over every range
   uint resolveRanges;
   uint boxJobs;        // posed blocks whose world boxes the box stage makes
@@ -38,7 +37,6 @@ layout(push_constant) uniform Frame {
   uint round;          // the round of the stage being run, from 0
   uint roundGroupsX;   // the workgroups of a whole round of the stage being run
   uint roundGroupsY;
-  uint pad;
 } frame;
 
 // A budget that never runs out (a GPU driver's).

@@ -7,8 +7,8 @@
 // commands in order on its 64 pixels, kept in registers from the first command to the last:
 // clears, reads (into the read arena) and draws (the job's sorted list: the draw's triangles
 // that may cover a centre of the block, in index order). Eight invocations take a job, one a
-// column of its pixels; a workgroup of 64 takes eight jobs side by side (and, on a CPU driver,
-// more: Frame.jobsPerGroup). Jobs of different epochs never share a pixel's state, so every
+// column of its pixels; a workgroup of 64 takes eight jobs side by side (one a SIMD bundle of 8
+// lanes on a CPU driver, two of 16, so a bundle's loop count is at most two jobs' own). Jobs of different epochs never share a pixel's state, so every
 // job of the frame runs at once. Per triangle, an invocation works out its column's part once
 // and steps down the rows the triangle's candidates reach, with the same operations in the same
 // order as section 5 and 7 of docs/rasterization.md:
@@ -338,11 +338,9 @@ void runJob(uint j) {
     atomicAdd(counters[kCounterRasterColumns], 1u);
 }
 
-// Invocation i runs column i % 8 of every eighth job of the workgroup's span, from job i / 8 on:
-// eight jobs side by side, and Frame.jobsPerGroup jobs in all.
+// Invocation i runs column i % 8 of the workgroup's job i / 8: eight jobs side by side.
 void main() {
-  const uint first = linearWorkgroup() * frame.jobsPerGroup;
-  const uint end = min(first + frame.jobsPerGroup, frame.jobCount);
-  for (uint j = first + (gl_LocalInvocationID.x >> 3); j < end; j += 8u)
+  const uint j = linearWorkgroup() * 8u + (gl_LocalInvocationID.x >> 3);
+  if (j < frame.jobCount)
     runJob(j);
 }
