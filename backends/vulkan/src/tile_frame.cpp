@@ -268,10 +268,18 @@ struct TileFrame::Impl {
 
   DeviceBuffer work;  // the frame's set-up triangles, bins, job finals, windows, reads, boxes
   VkQueryPool queries = VK_NULL_HANDLE;
-  bool timed = false;  // whether the submission being run wrote the timestamps
+  bool timed = false;      // whether the submission being run wrote the timestamps
+  HostBuffer countersOut;  // the stages' counters after the run (kTileCounters words)
+  // What the submission being run asked of the stages: raster job columns, sorted jobs.
+  struct Expected {
+    std::uint64_t columns = 0;
+    std::uint64_t sorted = 0;
+  };
+  std::optional<Expected> expected;
 
   Impl(VulkanContext& c, CommandRecorder& r, const TilePipelines& p)
       : context(c), recorder(r), pipelines(p), budgets(tileLoopBudgets(c.loopLimit())) {
+    countersOut = context.createHostBuffer(kTileCounters * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     if (context.timestamps()) {
       VkQueryPoolCreateInfo info{};
       info.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
@@ -335,6 +343,7 @@ struct TileFrame::Impl {
   void recordCheck(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
   void recordCapture(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
   void readTimes();
+  void checkCounters();
 };
 
 FrameRecords TileFrame::Impl::records() const {
@@ -646,23 +655,26 @@ void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const FrameRecords& r,
                     regions.data());
 }
 
-// The stages' counters copied back and compared with what the frame asked of them: a stage that
-// did less than all of its work (a loop a driver ended early, a round too few) is an error that
-// names it, never a smaller answer.
+// The stages' counters copied to the frame's own host memory, compared after the run (in
+// checkCounters, before any read-back is delivered) with what the frame asked of them: a stage
+// that did less than all of its work (a loop a driver ended early, a round too few) is an error
+// that names it, never a smaller answer.
 void TileFrame::Impl::recordCheck(VkCommandBuffer cmd, const FrameRecords& r,
                                   const WorkLayout& layout) {
   computeBarrier(cmd);  // the resolve stage counts too
-  const std::uint64_t columns = std::uint64_t{r.jobs} * kTileJobLanes;
-  const std::uint64_t sorted = r.triangles > 0 ? r.jobs : 0;
-  const std::uint32_t loopLimit = context.loopLimit();
-  const CommandRecorder::Staged out =
-      recorder.results(kTileCounters * 4, [columns, sorted, loopLimit](const std::uint8_t* data) {
-        std::array<std::uint32_t, kTileCounters> counted{};
-        std::memcpy(counted.data(), data, sizeof counted);
-        checkTileCounters(counted, columns, sorted, loopLimit);
-      });
-  const VkBufferCopy back{layout.countersAt, out.offset, kTileCounters * 4};
-  vkCmdCopyBuffer(cmd, work.buffer, out.buffer, 1, &back);
+  expected = Expected{std::uint64_t{r.jobs} * kTileJobLanes, r.triangles > 0 ? r.jobs : 0};
+  const VkBufferCopy back{layout.countersAt, 0, kTileCounters * 4};
+  vkCmdCopyBuffer(cmd, work.buffer, countersOut.buffer, 1, &back);
+}
+
+void TileFrame::Impl::checkCounters() {
+  if (!expected)
+    return;
+  const Expected asked = *expected;
+  expected.reset();
+  std::array<std::uint32_t, kTileCounters> counted{};
+  std::memcpy(counted.data(), countersOut.mapped, sizeof counted);
+  checkTileCounters(counted, asked.columns, asked.sorted, context.loopLimit());
 }
 
 // The captured draw's set-up triangles, its epoch's job lists and its window vertices, copied
@@ -738,7 +750,11 @@ TileFrame::TileFrame(VulkanContext& context, CommandRecorder& recorder,
     : impl_(std::make_unique<Impl>(context, recorder, pipelines)) {
   Impl* impl = impl_.get();
   recorder.addSubmitHooks(
-      0, [impl](VkCommandBuffer cmd) { impl->run(cmd); }, [impl] { impl->readTimes(); });
+      0, [impl](VkCommandBuffer cmd) { impl->run(cmd); },
+      [impl] {
+        impl->readTimes();
+        impl->checkCounters();
+      });
 }
 
 TileFrame::~TileFrame() = default;
