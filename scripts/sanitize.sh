@@ -28,9 +28,41 @@ suites=(recode_raster_tests recode_raster_invariant_tests recode_geometry_tests 
 cmake --build "$dir" -j "$jobs" --target "${suites[@]}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-for suite in "${suites[@]}"; do
+# The suites run side by side, as many as there are cores (ctest runs their test cases side by
+# side too), each into its own log, printed whole when the suite fails.
+run_suite() {  # run_suite SUITE: runs it into $dir/sanitize-SUITE.log; a failure leaves .failed
+  local suite=$1 exe log start
   exe=$(find "$dir/tests" -type f -name "$suite" -perm -u+x | head -n 1)
-  echo "sanitize: $suite"
-  "$exe" --reporter compact
+  log="$dir/sanitize-$suite.log"
+  start=$(date +%s)
+  rm -f "$log.failed"
+  if "$exe" --reporter compact >"$log" 2>&1; then
+    echo "sanitize: $suite passed ($(($(date +%s) - start)) s): $(tail -n 1 "$log")"
+  else
+    echo "sanitize: $suite FAILED ($(($(date +%s) - start)) s)"
+    touch "$log.failed"
+  fi
+}
+running=0
+for suite in "${suites[@]}"; do
+  if ((running >= jobs)); then
+    wait -n
+    running=$((running - 1))
+  fi
+  run_suite "$suite" &
+  running=$((running + 1))
 done
+wait
+failed=0
+for suite in "${suites[@]}"; do
+  if [ -e "$dir/sanitize-$suite.log.failed" ]; then
+    echo "sanitize: $suite's output ($dir/sanitize-$suite.log):"
+    cat "$dir/sanitize-$suite.log"
+    failed=1
+  fi
+done
+if [ "$failed" -ne 0 ]; then
+  echo "sanitize: a suite failed under ASan and UBSan"
+  exit 1
+fi
 echo "sanitize: every suite passed under ASan and UBSan"

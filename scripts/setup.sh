@@ -1,12 +1,24 @@
 #!/usr/bin/env bash
-# Installs every Debian package the build, the tests and the tools need.
+# Installs the Debian packages the build, the tests and the tools need.
 # Idempotent: when everything is present it only checks with dpkg and returns.
+#
+#   scripts/setup.sh            every package (scripts/test.sh, CI)
+#   scripts/setup.sh --demo     only what `scripts/build.sh --demo` needs: the compiler, CMake,
+#                               Ninja and the libraries of the `recode` program without its
+#                               optional devices, oracles and peers (scripts/demo.sh)
 set -euo pipefail
 
-packages=(
-  build-essential cmake ninja-build pkg-config clang-format
+# The `recode` program alone: every library it needs that has no option to leave it out.
+demo_packages=(
+  build-essential cmake ninja-build pkg-config
   libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libstb-dev
-  catch2 libbenchmark-dev libtbb-dev libhwy-dev
+  libtbb-dev libhwy-dev
+)
+# The rest: the tests, the oracles, the GPU devices, the peers, the WebAssembly module and
+# browser checks, the Python module, the sanitizer and fuzzing builds, the docs.
+packages=(
+  "${demo_packages[@]}" clang-format
+  catch2 libbenchmark-dev
   libembree-dev libcgal-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers
   clang-14 libfuzzer-14-dev
@@ -15,6 +27,11 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest doxygen
   python3-venv python3-pip python3-setuptools python3-wheel mypy
 )
+case "${1:-}" in
+  "") ;;
+  --demo) packages=("${demo_packages[@]}") ;;
+  *) echo "usage: scripts/setup.sh [--demo]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

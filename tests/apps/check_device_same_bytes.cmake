@@ -7,6 +7,10 @@ cmake_minimum_required(VERSION 3.25)
 # on this machine's CPU driver (every scene batched and from summaries, one scene on 16 devices,
 # the schedules on the hands: the paths of the device interface, not every combination of the
 # core's).
+# The CPU device's outputs are computed once for every device: with DEVICE=cpu the script writes
+# them all (the full round's, of which the light round's are a part) into OUT and compares
+# nothing (the test cli/device-same-bytes-cpu-reference); with REFERENCE set to that folder, a
+# device's round reads them there instead of running the CPU device again.
 
 # Runs `recode ARGS... --device device`; sets <var> to its standard output.
 function(recode_output var device)
@@ -19,14 +23,26 @@ function(recode_output var device)
 endfunction()
 
 function(expect_same what)
-  recode_output(reference cpu ${ARGN})
-  recode_output(candidate ${DEVICE} ${ARGN})
   string(MAKE_C_IDENTIFIER "${what}" name)
+  if(DEFINED REFERENCE)
+    if(NOT EXISTS ${REFERENCE}/${name}.cpu.txt)
+      message(FATAL_ERROR "recode ${what}: no CPU output ${REFERENCE}/${name}.cpu.txt (the test "
+                          "cli/device-same-bytes-cpu-reference writes it; ctest runs it first)")
+    endif()
+    file(READ ${REFERENCE}/${name}.cpu.txt reference)
+  else()
+    recode_output(reference cpu ${ARGN})
+  endif()
   file(WRITE ${OUT}/${name}.cpu.txt "${reference}")
-  file(WRITE ${OUT}/${name}.${DEVICE}.txt "${candidate}")
   if(NOT reference MATCHES "\"interfering_pixels\": [1-9]|\"pair_tests\": [1-9]")
     message(FATAL_ERROR "recode ${what}: no pixel interfered and no pair was tested: nothing was compared")
   endif()
+  if(DEVICE STREQUAL "cpu")
+    message(STATUS "recode ${what}: the CPU device's output written")
+    return()
+  endif()
+  recode_output(candidate ${DEVICE} ${ARGN})
+  file(WRITE ${OUT}/${name}.${DEVICE}.txt "${candidate}")
   if(NOT reference STREQUAL candidate)
     message(FATAL_ERROR "recode ${what}: --device ${DEVICE} differs from --device cpu "
                         "(diff ${OUT}/${name}.cpu.txt ${OUT}/${name}.${DEVICE}.txt)")
@@ -34,6 +50,9 @@ function(expect_same what)
   message(STATUS "recode ${what}: ${DEVICE} and cpu give the same bytes")
 endfunction()
 
+if(DEVICE STREQUAL "cpu")
+  file(REMOVE_RECURSE ${OUT})  # no output of an earlier run read as this one's
+endif()
 file(MAKE_DIRECTORY ${OUT})
 # With LARGE set: the bench's largest tessellation levels instead, a few frames each, where a job
 # of the compute device's lists more triangles than a CPU driver lets one invocation loop over.

@@ -21,7 +21,8 @@ double microsecondsSince(Clock::time_point start) {
 // The bound a conservative extra must keep: the grown blocks meet only if A and B differ by a
 // vector of S - S (twice the growth), and the device may report grown blocks that only come
 // within its rounding of each other (kEdgeTolerancePixels across, kDepthToleranceLsb depth
-// steps of the grown pair's range along the view).
+// steps of the grown pair's range along the view). Only the CGAL check uses it.
+#if RECODE_HAVE_CGAL
 Eigen::Vector3d extraBound(const core::FrameSpec& frame, const core::ConservativeResult& r) {
   Eigen::Vector3d bound = 2.0 * r.growth;
   const int d = static_cast<int>(frame.axis);
@@ -32,6 +33,7 @@ Eigen::Vector3d extraBound(const core::FrameSpec& frame, const core::Conservativ
               static_cast<double>(raster::kDepthMax);
   return bound;
 }
+#endif
 
 void score(MissExtra& m, bool found, bool truth) {
   m.found += found ? 1 : 0;
