@@ -2,7 +2,9 @@
 // The vulkan-compute device's frame: everything the devices of the 64-bit context record between
 // two submissions, kept on the host as a job list and run, just before the submission, as a fixed
 // sequence of at most nine dispatches whatever it holds (docs/backends.md, "A frame is one job
-// list"):
+// list"), and on a driver with a loop limit the sort's and raster's further rounds, each an
+// indirect dispatch that runs only when a job of the round before stopped at its budget
+// (tile_frame_budgets.hpp):
 //
 //   boxes    posed blocks' world boxes (one workgroup a block)
 //   vertex   every posed draw's window vertices (one invocation a vertex)
