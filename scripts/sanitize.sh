@@ -37,7 +37,7 @@ run_suite() {  # run_suite SUITE: runs it into $dir/sanitize-SUITE.log; a failur
   start=$(date +%s)
   rm -f "$log.failed"
   if "$exe" --reporter compact >"$log" 2>&1; then
-    echo "sanitize: $suite passed ($(($(date +%s) - start)) s): $(tail -n 1 "$log")"
+    echo "sanitize: $suite passed ($(($(date +%s) - start)) s): $(grep -v "^$" "$log" | tail -n 1)"
   else
     echo "sanitize: $suite FAILED ($(($(date +%s) - start)) s)"
     touch "$log.failed"
