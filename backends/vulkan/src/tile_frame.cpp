@@ -22,6 +22,8 @@ namespace {
 
 using raster::PixelRect;
 
+static_assert(kTileRoundArgsBytes == sizeof(VkDispatchIndirectCommand));
+
 // The timestamps around the stages (kStages + 1 of them).
 constexpr std::uint32_t kTimestamps = raster::TransferCounters::kStages + 1;
 
@@ -96,20 +98,22 @@ struct WorkLayout {
     cursorsAt = offsetsAt + jobBytes;
     pairsAt = cursorsAt + jobBytes;
     finalsAt = pairsAt + tileAligned(VkDeviceSize{pairCapacity} * 4);
-    windowsAt = finalsAt + tileAligned(VkDeviceSize{r.finals} * 256 + 4);
-    arenaAt = windowsAt + tileAligned(VkDeviceSize{r.windowVertices} * 12 + 4);
+    windowsAt = finalsAt + tileAligned(VkDeviceSize{r.finals} * kTileJobPixelBytes + 4);
+    arenaAt = windowsAt + tileAligned(VkDeviceSize{r.windowVertices} * kTileWindowVertexBytes + 4);
     boxesAt = arenaAt + tileAligned(VkDeviceSize{r.arenaWords} * 4 + 4);
     // The rounds' records, needed only where a stage may take more than one round; the
     // progress, counters and rounds' arguments are zeroed each frame.
-    const VkDeviceSize rasterProgress = r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * 2 * 16 : 16;
-    const VkDeviceSize sortProgress = r.sortRounds > 1 ? VkDeviceSize{r.jobs} * 8 : 16;
-    const VkDeviceSize carry = r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * 256 : 16;
-    progressAt = boxesAt + tileAligned(VkDeviceSize{r.boxJobs.size()} * 64 + 8);
+    const VkDeviceSize rasterProgress =
+        r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * 2 * kTileRasterProgressBytes : 16;
+    const VkDeviceSize sortProgress =
+        r.sortRounds > 1 ? VkDeviceSize{r.jobs} * kTileSortProgressBytes : 16;
+    const VkDeviceSize carry = r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * kTileJobPixelBytes : 16;
+    progressAt = boxesAt + tileAligned(VkDeviceSize{r.boxJobs.size()} * kTileBoxBytes + 8);
     sortProgressAt = progressAt + tileAligned(rasterProgress);
     countersAt = sortProgressAt + tileAligned(sortProgress);
     rasterArgsAt = countersAt + tileAligned(kTileCounters * 4);
-    sortArgsAt = rasterArgsAt + tileAligned(VkDeviceSize{r.rasterRounds + 1} * 12);
-    carryAt = sortArgsAt + tileAligned(VkDeviceSize{r.sortRounds + 1} * 12);
+    sortArgsAt = rasterArgsAt + tileAligned(VkDeviceSize{r.rasterRounds + 1} * kTileRoundArgsBytes);
+    carryAt = sortArgsAt + tileAligned(VkDeviceSize{r.sortRounds + 1} * kTileRoundArgsBytes);
     bytes = carryAt + tileAligned(carry);
   }
   // Entries the jobs' lists hold in all (FrameRecords::listCapacity, at most 2^27: 512 MiB).
@@ -453,8 +457,8 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
   for (std::size_t j = 0; j < vertexJobs.size(); ++j) {
     TileVertexJob job;
     job.local = TileAddress::of(vertexJobs[j].local);
-    job.windows =
-        TileAddress::of(workAddress + layout.windowsAt + VkDeviceSize{r.windowFirst[j]} * 12);
+    job.windows = TileAddress::of(workAddress + layout.windowsAt +
+                                  VkDeviceSize{r.windowFirst[j]} * kTileWindowVertexBytes);
     job.firstVertex = r.windowFirst[j];
     job.vertexCount = vertexJobs[j].vertexCount;
     job.transform = static_cast<std::uint32_t>(j);
@@ -605,7 +609,8 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
       if (k.round == 0)
         dispatchLinear(pipelines.sort, buffers, sortInvocations);
       else
-        indirect(pipelines.sort, buffers, layout.sortArgsAt + VkDeviceSize{k.round} * 12);
+        indirect(pipelines.sort, buffers,
+                 layout.sortArgsAt + VkDeviceSize{k.round} * kTileRoundArgsBytes);
       computeBarrier(cmd);
     }
   }
@@ -621,7 +626,8 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
     if (k.round == 0)
       dispatchGroups(pipelines.raster, buffers, rasterGroups);
     else
-      indirect(pipelines.raster, buffers, layout.rasterArgsAt + VkDeviceSize{k.round} * 12);
+      indirect(pipelines.raster, buffers,
+               layout.rasterArgsAt + VkDeviceSize{k.round} * kTileRoundArgsBytes);
     computeBarrier(cmd);
   }
   k.round = 0;
@@ -646,8 +652,8 @@ void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const FrameRecords& r,
   VkDeviceSize box = 0;
   for (const BoxBatch& batch : boxBatches) {
     if (!batch.blocks.empty())
-      copies[batch.destination].push_back(
-          {layout.boxesAt + box * 64, batch.offset, batch.blocks.size() * 64});
+      copies[batch.destination].push_back({layout.boxesAt + box * kTileBoxBytes, batch.offset,
+                                           batch.blocks.size() * kTileBoxBytes});
     box += batch.blocks.size();
   }
   for (const auto& [destination, regions] : copies)
@@ -687,7 +693,9 @@ void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
   const int job = r.drawVertexJob[drawIndex];
   const VkDeviceSize bytes = layout.finalsAt;  // triangles, bins and lists
   const VkDeviceSize windowBytes =
-      job >= 0 ? VkDeviceSize{r.vertexJobs[static_cast<std::size_t>(job)].vertexCount} * 12 : 0;
+      job >= 0 ? VkDeviceSize{r.vertexJobs[static_cast<std::size_t>(job)].vertexCount} *
+                     kTileWindowVertexBytes
+               : 0;
   const CommandRecorder::Staged out = recorder.results(
       bytes + windowBytes, [d, e, bytes, layout, windowBytes,
                             sink = std::move(capture->sink)](const std::uint8_t* data) {
@@ -724,7 +732,8 @@ void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
   vkCmdCopyBuffer(cmd, work.buffer, out.buffer, 1, &back);
   if (job >= 0) {
     const VkDeviceSize windowsAt =
-        layout.windowsAt + VkDeviceSize{r.windowFirst[static_cast<std::size_t>(job)]} * 12;
+        layout.windowsAt +
+        VkDeviceSize{r.windowFirst[static_cast<std::size_t>(job)]} * kTileWindowVertexBytes;
     const VkBufferCopy windowCopy{windowsAt, out.offset + bytes, windowBytes};
     vkCmdCopyBuffer(cmd, work.buffer, out.buffer, 1, &windowCopy);
   }

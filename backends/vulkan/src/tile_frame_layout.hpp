@@ -16,6 +16,17 @@ inline constexpr std::uint32_t kTileWordsPerTriangle = 16;
 inline constexpr std::uint32_t kTileTransformDoubles = 23;
 inline constexpr std::uint32_t kTilePoseDoubles = 12;
 
+// Strides of the work buffer's regions, in bytes: a window vertex (three floats), a box job's
+// box (eight doubles: min, max, the order-matters flag, 0), a job's 64 pixel words (JobFinal,
+// Carry), a raster job's and a sort job's progress record (tile_raster.comp's uvec4,
+// tile_sort.comp's uvec2) and a round's indirect dispatch (VkDispatchIndirectCommand).
+inline constexpr std::uint64_t kTileWindowVertexBytes = 12;
+inline constexpr std::uint64_t kTileBoxBytes = 64;
+inline constexpr std::uint64_t kTileJobPixelBytes = 256;
+inline constexpr std::uint64_t kTileRasterProgressBytes = 16;
+inline constexpr std::uint64_t kTileSortProgressBytes = 8;
+inline constexpr std::uint64_t kTileRoundArgsBytes = 12;
+
 // Where a region the stages bind may start: the largest minStorageBufferOffsetAlignment the
 // specification allows, so no device needs asking.
 inline constexpr std::uint64_t kTileBindAlignment = 256;

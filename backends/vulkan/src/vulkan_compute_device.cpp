@@ -309,14 +309,14 @@ raster::PendingRead<raster::PosedBox> VulkanComputeDevice::posedBoxesLater(
       blocks[i].vertexCount = r.vertices;
       packPose(meshes[i].transform.pose, blocks[i].pose.data());
     }
-    const VkDeviceSize bytes = VkDeviceSize{n} * 8 * sizeof(double);
+    const VkDeviceSize bytes = VkDeviceSize{n} * detail::kTileBoxBytes;
     d.recorder->makeRoom(bytes);
     const detail::CommandRecorder::Staged out =
         d.recorder->results(bytes, [n, read](const std::uint8_t* data) mutable {
           std::vector<raster::PosedBox> boxes(n);
           for (std::size_t i = 0; i < n; ++i) {
-            double words[8];
-            std::memcpy(words, data + 64 * i, sizeof words);
+            double words[detail::kTileBoxBytes / sizeof(double)];
+            std::memcpy(words, data + detail::kTileBoxBytes * i, sizeof words);
             std::copy(words, words + 3, boxes[i].min.begin());
             std::copy(words + 3, words + 6, boxes[i].max.begin());
             boxes[i].orderMatters = words[6] != 0.0;
