@@ -27,17 +27,18 @@ static_assert(kTileRoundArgsBytes == sizeof(VkDispatchIndirectCommand));
 // The timestamps around the stages (kStages + 1 of them).
 constexpr std::uint32_t kTimestamps = raster::TransferCounters::kStages + 1;
 
-// The interface's state as the shaders read it (tile_common.glsl's Command words).
+// The interface's state as the shaders read it (tile_frame_layout.hpp's packing).
 void putState(const raster::RenderState& s, TileCommand& c) {
   const auto bits = [](auto value) { return static_cast<std::uint32_t>(value); };
-  c.tests = bits(s.depthFunc) | (s.depthWrite ? 8u : 0u) | (bits(s.stencilFunc) << 4) |
-            (bits(s.cull) << 7);
-  c.stencil =
-      bits(s.stencilRef) | (bits(s.stencilValueMask) << 8) | (bits(s.stencilWriteMask) << 16);
+  c.tests = bits(s.depthFunc) | (s.depthWrite ? kTileDepthWriteBit : 0u) |
+            (bits(s.stencilFunc) << kTileStencilFuncShift) | (bits(s.cull) << kTileCullShift);
+  c.stencil = bits(s.stencilRef) | (bits(s.stencilValueMask) << kTileValueMaskShift) |
+              (bits(s.stencilWriteMask) << kTileWriteMaskShift);
   const auto ops = [&](const raster::StencilOps& o) {
-    return bits(o.stencilFail) | (bits(o.depthFail) << 3) | (bits(o.depthPass) << 6);
+    return bits(o.stencilFail) | (bits(o.depthFail) << kTileDepthFailShift) |
+           (bits(o.depthPass) << kTileDepthPassShift);
   };
-  c.ops = ops(s.frontOps) | (ops(s.backOps) << 9);
+  c.ops = ops(s.frontOps) | (ops(s.backOps) << kTileBackOpsShift);
 }
 
 // Words a read of `pixels` in `form` fills in the read arena.
@@ -400,9 +401,8 @@ FrameRecords TileFrame::Impl::records() const {
           r.listCapacity += 4 * std::uint64_t{record.count} +
                             2 * std::uint64_t{e.gridWidth} * e.gridHeight + 4096;
         } else if (record.kind == TileCommandKind::Read) {
-          record.first = r.arenaWords;
-          const std::uint32_t words =
-              readWords(static_cast<TileReadForm>(record.count), p.rect.area());
+          record.arenaWord = r.arenaWords;
+          const std::uint32_t words = readWords(record.readForm, p.rect.area());
           r.readCopies.push_back({p.destination, p.destinationOffset, r.arenaWords, words});
           r.arenaWords += words;
         }
@@ -796,7 +796,7 @@ void TileFrame::clearStencil(std::uint32_t target, const PixelRect& scissor, std
                              std::uint8_t writeMask) {
   Impl::Pending& p = impl_->add(target, TileCommandKind::ClearStencil, scissor);
   p.command.value = value;
-  p.command.stencil = std::uint32_t{writeMask} << 16;
+  p.command.clearMask = writeMask;
 }
 
 void TileFrame::draw(std::uint32_t target, const raster::RenderState& state,
@@ -827,7 +827,7 @@ void TileFrame::draw(std::uint32_t target, const raster::RenderState& state,
 void TileFrame::read(std::uint32_t target, const PixelRect& rect, TileReadForm form,
                      VkBuffer destination, VkDeviceSize offset) {
   Impl::Pending& p = impl_->add(target, TileCommandKind::Read, rect);
-  p.command.count = static_cast<std::uint32_t>(form);
+  p.command.readForm = form;
   p.destination = destination;
   p.destinationOffset = offset;
 }

@@ -36,8 +36,7 @@ EpochCommand epochCommandOf(const TileCommand& command, const PixelRect& rect) {
   EpochCommand e;
   e.kind = command.kind;
   e.rect = rect;
-  e.fullStencilClear =
-      command.kind == TileCommandKind::ClearStencil && ((command.stencil >> 16) & 0xFFu) == 0xFFu;
+  e.fullStencilClear = command.kind == TileCommandKind::ClearStencil && command.clearMask == 0xFFu;
   return e;
 }
 

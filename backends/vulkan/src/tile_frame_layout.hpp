@@ -85,17 +85,33 @@ struct TileTarget {
 };
 static_assert(sizeof(TileTarget) == 16);
 
+// A draw's state packed into three words (tile_common.glsl's decoders read them back): `tests`
+// the depth func (bits 0-2), depth write (3), stencil func (4-6) and cull mode (7-8); `stencil`
+// the reference (bits 0-7), value mask (8-15) and write mask (16-23); `ops` the front face's
+// stencil-fail, depth-fail and depth-pass ops (three bits each), then the back face's from bit 9.
+inline constexpr std::uint32_t kTileDepthWriteBit = 1u << 3;
+inline constexpr std::uint32_t kTileStencilFuncShift = 4;
+inline constexpr std::uint32_t kTileCullShift = 7;
+inline constexpr std::uint32_t kTileValueMaskShift = 8;
+inline constexpr std::uint32_t kTileWriteMaskShift = 16;
+inline constexpr std::uint32_t kTileDepthFailShift = 3;
+inline constexpr std::uint32_t kTileDepthPassShift = 6;
+inline constexpr std::uint32_t kTileBackOpsShift = 9;
+
 struct TileCommand {
   std::int32_t rect[4] = {0, 0, 0, 0};
   TileCommandKind kind = TileCommandKind::Draw;
   std::uint32_t target = 0;
-  std::uint32_t tests = 0;
-  std::uint32_t stencil = 0;
-  std::uint32_t ops = 0;
-  std::uint32_t first = 0;
-  std::uint32_t count = 0;
-  std::uint32_t value = 0;
-  std::uint32_t pad[4] = {0, 0, 0, 0};
+  std::uint32_t tests = 0;                           // a draw's: see above
+  std::uint32_t stencil = 0;                         // a draw's: see above
+  std::uint32_t ops = 0;                             // a draw's: see above
+  std::uint32_t first = 0;                           // a draw's first triangle in the frame
+  std::uint32_t count = 0;                           // a draw's triangles
+  std::uint32_t value = 0;                           // a clear's value: q, or the stencil byte
+  std::uint32_t clearMask = 0;                       // a stencil clear's write mask
+  TileReadForm readForm = TileReadForm::DepthWords;  // a read's form
+  std::uint32_t arenaWord = 0;                       // a read's first word in the read arena
+  std::uint32_t pad = 0;
 };
 static_assert(sizeof(TileCommand) == 64);
 

@@ -82,17 +82,42 @@ struct Command {
   ivec4 rect;   // x0, y0, x1, y1: a draw's or clear's scissor, a read's rectangle (inside the target)
   uint kind;
   uint target;
-  uint tests;   // depth func (bits 0-2), depth write (3), stencil func (4-6), cull (7-8)
-  uint stencil; // ref (bits 0-7), value mask (8-15), write mask (16-23); a stencil clear's mask too
-  uint ops;     // front sfail, dpfail, dppass (3 bits each), then back's, from bit 9
-  uint first;   // a draw's first triangle in the frame; a read's first word in the read arena
-  uint count;   // a draw's triangles; a read's form
+  uint tests;   // a draw's depth and stencil funcs, depth write and cull: read by the decoders below
+  uint stencil; // a draw's stencil reference and masks: likewise
+  uint ops;     // a draw's stencil ops, both faces: likewise
+  uint first;   // a draw's first triangle in the frame
+  uint count;   // a draw's triangles
   uint value;   // a clear's value: q, or the stencil byte
-  uint pad0;
-  uint pad1;
-  uint pad2;
-  uint pad3;
+  uint clearMask;  // a stencil clear's write mask
+  uint readForm;   // a read's form (kRead...)
+  uint arenaWord;  // a read's first word in the read arena
+  uint pad;
 };
+
+// A draw's state, packed by the host in the three words above (tile_frame_layout.hpp's
+// kTile...Shift constants: the same bits).
+const uint kDepthWriteBit = 1u << 3;
+const uint kStencilFuncShift = 4u;
+const uint kCullShift = 7u;
+const uint kValueMaskShift = 8u;
+const uint kWriteMaskShift = 16u;
+const uint kDepthFailShift = 3u;
+const uint kDepthPassShift = 6u;
+const uint kBackOpsShift = 9u;
+uint depthFuncOf(Command c) { return c.tests & 7u; }
+bool depthWriteOf(Command c) { return (c.tests & kDepthWriteBit) != 0u; }
+uint stencilFuncOf(Command c) { return (c.tests >> kStencilFuncShift) & 7u; }
+uint cullModeOf(Command c) { return (c.tests >> kCullShift) & 3u; }  // none, front, back
+uint stencilRefOf(Command c) { return c.stencil & 0xFFu; }
+uint valueMaskOf(Command c) { return (c.stencil >> kValueMaskShift) & 0xFFu; }
+uint writeMaskOf(Command c) { return (c.stencil >> kWriteMaskShift) & 0xFFu; }
+// A face's ops (nine bits: stencil fail, depth fail, depth pass) and one op of them.
+uint faceOpsOf(Command c, bool front) {
+  return front ? c.ops & 0x1FFu : (c.ops >> kBackOpsShift) & 0x1FFu;
+}
+uint stencilFailOp(uint faceOps) { return faceOps & 7u; }
+uint depthFailOp(uint faceOps) { return (faceOps >> kDepthFailShift) & 7u; }
+uint depthPassOp(uint faceOps) { return (faceOps >> kDepthPassShift) & 7u; }
 
 // An epoch: the commands [firstCommand, commandEnd) of one target, drawn over a grid of 8x8
 // blocks from gridOrigin, one job each from firstJob on.

@@ -92,14 +92,14 @@ uint stencilFunc;
 bool depthWrite;
 
 void takeState(Command c) {
-  ref = c.stencil & 0xFFu;
-  valueMask = (c.stencil >> 8) & 0xFFu;
-  writeMask = (c.stencil >> 16) & 0xFFu;
-  frontOps = c.ops & 0x1FFu;
-  backOps = (c.ops >> 9) & 0x1FFu;
-  depthFunc = c.tests & 7u;
-  stencilFunc = (c.tests >> 4) & 7u;
-  depthWrite = (c.tests & 8u) != 0u;
+  ref = stencilRefOf(c);
+  valueMask = valueMaskOf(c);
+  writeMask = writeMaskOf(c);
+  frontOps = faceOpsOf(c, true);
+  backOps = faceOpsOf(c, false);
+  depthFunc = depthFuncOf(c);
+  stencilFunc = stencilFuncOf(c);
+  depthWrite = depthWriteOf(c);
 }
 
 // The edge a -> b of a counter-clockwise triangle at the centre (xc, yc): E minus the fill
@@ -151,15 +151,15 @@ void shade(uint t) {
       const uint s = stencil[k];
       uint op;
       if (!compare(stencilFunc, ref & valueMask, s & valueMask)) {
-        op = ops & 7u;  // stencil fail
+        op = stencilFailOp(ops);
       } else {
         precise double ty = dzdy * double(int64_t(row) * 256l + 128l - v0.y);
         precise double z = zx + ty;
         const uint q = quantizeDepth(z);
         if (!compare(depthFunc, q, depth[k])) {
-          op = (ops >> 3) & 7u;  // depth fail
+          op = depthFailOp(ops);
         } else {
-          op = (ops >> 6) & 7u;  // depth pass
+          op = depthPassOp(ops);
           if (depthWrite)
             depth[k] = q;
         }
@@ -183,15 +183,14 @@ void clear(Command c) {
     if (c.kind == kClearDepth) {
       depth[k] = c.value;
     } else {
-      const uint mask = (c.stencil >> 16) & 0xFFu;
-      stencil[k] = (c.value & mask) | (stencil[k] & ~mask & 0xFFu);
+      stencil[k] = (c.value & c.clearMask) | (stencil[k] & ~c.clearMask & 0xFFu);
     }
   }
   cut = cut || k < 8;
 }
 
 // A read of this column's pixels inside the command's rectangle, rows from the bottom, into the
-// read arena from word c.first on.
+// read arena from word c.arenaWord on.
 void read(Command c) {
   const uint rectWidth = uint(c.rect.z - c.rect.x);
   int k = 0;
@@ -200,12 +199,12 @@ void read(Command c) {
     if (!insideRect(c.rect, column, row))
       continue;
     const uint at = uint(row - c.rect.y) * rectWidth + uint(column - c.rect.x);
-    if (c.count == kReadStencilBytes)
-      atomicOr(readArena[c.first + at / 4u], stencil[k] << (8u * (at % 4u)));
-    else if (c.count == kReadDepthWords)
-      readArena[c.first + at] = depth[k];
+    if (c.readForm == kReadStencilBytes)
+      atomicOr(readArena[c.arenaWord + at / 4u], stencil[k] << (8u * (at % 4u)));
+    else if (c.readForm == kReadDepthWords)
+      readArena[c.arenaWord + at] = depth[k];
     else
-      readArena[c.first + at] = floatBitsToUint(float(depth[k]) * (1.0 / 16777216.0));
+      readArena[c.arenaWord + at] = floatBitsToUint(float(depth[k]) * (1.0 / 16777216.0));
   }
   cut = cut || k < 8;
 }

@@ -50,7 +50,7 @@ void main() {
   const i64vec2 v2 = snapped(i2);
   const int64_t area = twiceArea(v0, v1, v2);
   const bool front = area > 0l;
-  const uint cull = (command.tests >> 7) & 3u;  // CullMode: none, front, back
+  const uint cull = cullModeOf(command);
   if (area == 0l || (cull == 1u && front) || (cull == 2u && !front)) {
     writeEmpty(base);
     return;
