@@ -3,7 +3,7 @@
 // stages of a frame (tile_frame.hpp): boxes, vertex, set-up, scan, scatter, sort, raster,
 // resolve. All share one pipeline layout: twenty-one storage buffers bound by push descriptors
 // (VK_KHR_push_descriptor), so a dispatch names its buffers as it is recorded and no descriptor set
-// outlives it, and the `Draw` push constants of tile_common.glsl.
+// outlives it, and the `Frame` push constants of tile_common.glsl.
 
 #include <vulkan/vulkan_core.h>
 

@@ -5,12 +5,18 @@
 // four (E' < 0, docs/rasterization.md section 4) holds no covered centre and is left out, which
 // drops most of the blocks of a long sliver's bounding box. Needs GL_ARB_gpu_shader_int64.
 
+// The fill rule's bias of an edge of a counter-clockwise triangle going (dx, dy): 0 on an
+// inclusive (top or left) edge, 1 on another (docs/rasterization.md section 4).
+int64_t fillRuleBias(int64_t dx, int64_t dy) {
+  return (dy < 0l || (dy == 0l && dx > 0l)) ? 0l : 1l;
+}
+
 // The largest of E' = dx (Y - Ya) - dy (X - Xa) - bias over the corner centres of the block whose
 // lower-left pixel is `corner`, for the directed edge a -> b of a counter-clockwise triangle.
 int64_t largestEdgeValue(i64vec2 a, i64vec2 b, ivec2 corner) {
   const int64_t dx = b.x - a.x;
   const int64_t dy = b.y - a.y;
-  const int64_t bias = (dy < 0l || (dy == 0l && dx > 0l)) ? 0l : 1l;
+  const int64_t bias = fillRuleBias(dx, dy);
   // E grows with Y when dx > 0 and with X when dy < 0: take the corner that maximises each term.
   const int64_t x = int64_t(corner.x) * 256l + 128l + (dy < 0l ? 7l * 256l : 0l);
   const int64_t y = int64_t(corner.y) * 256l + 128l + (dx > 0l ? 7l * 256l : 0l);

@@ -226,6 +226,11 @@ uint stencilOf(uint word) {
   return word & 0xFFu;
 }
 
+// Pixel (row, column) of a job's 8x8 block in an array of 64 words a job (JobFinal, Carry).
+uint pixelSlot(uint job, uint row, uint column) {
+  return job * 64u + row * 8u + column;
+}
+
 bool insideRect(ivec4 r, int x, int y) {
   return x >= r.x && x < r.z && y >= r.y && y < r.w;
 }

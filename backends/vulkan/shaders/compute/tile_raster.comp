@@ -32,6 +32,7 @@ layout(local_size_x = 64) in;
 #include "exact_contract.glsl"
 #include "tile_common.glsl"
 #include "tile_frame_inputs.glsl"
+#include "tile_block_test.glsl"
 
 // The set-up triangles (tile_common.glsl's layout) read four words at a time.
 layout(std430, set = 0, binding = 6) readonly buffer Triangles { uvec4 triangles[]; };
@@ -108,8 +109,7 @@ void takeState(Command c) {
 int64_t biasedEdge(i64vec2 a, i64vec2 b, int64_t xc, int64_t yc) {
   const int64_t dx = b.x - a.x;
   const int64_t dy = b.y - a.y;
-  const int64_t bias = (dy < 0l || (dy == 0l && dx > 0l)) ? 0l : 1l;
-  return dx * (yc - a.y) - dy * (xc - a.x) - bias;
+  return dx * (yc - a.y) - dy * (xc - a.x) - fillRuleBias(dx, dy);
 }
 
 // Frame triangle t's fragments in this column.
@@ -221,7 +221,7 @@ void loadPixels(uint j, Epoch epoch, Target target, PixelWords framebuffer, bool
     const bool inside = loads && column < int(target.width) && row < int(target.height);
     uint word = inside ? framebuffer.pixels[uint(row) * target.width + uint(column)]
                        : packPixel(0xFFFFFFu, 0u);
-    word = resumed ? carry[j * 64u + uint(k) * 8u + lane] : word;
+    word = resumed ? carry[pixelSlot(j, uint(k), lane)] : word;
     depth[k] = depthOf(word);
     stencil[k] = stencilOf(word);
   }
@@ -235,7 +235,7 @@ void suspend(uint j, uint ci, uint cursor, uint t) {
   const uint lane = gl_LocalInvocationID.x & 7u;
   int k = 0;
   for (; k < 8; ++k)
-    carry[j * 64u + uint(k) * 8u + lane] = packPixel(depth[k], stencil[k]);
+    carry[pixelSlot(j, uint(k), lane)] = packPixel(depth[k], stencil[k]);
   cut = cut || k < 8;
   if (lane == 0u) {
     const uint written = ((frame.round + 1u) & 1u) * frame.jobCount + j;
@@ -259,8 +259,7 @@ void storePixels(uint j, Epoch epoch, Target target, PixelWords framebuffer) {
       if (insideRect(epoch.footprint, column, firstRow + k))
         framebuffer.pixels[uint(firstRow + k) * target.width + uint(column)] = word;
     } else {
-      jobFinal[(epoch.firstFinal + block) * 64u + uint(k) * 8u + (gl_LocalInvocationID.x & 7u)] =
-          word;
+      jobFinal[pixelSlot(epoch.firstFinal + block, uint(k), gl_LocalInvocationID.x & 7u)] = word;
     }
   }
   cut = cut || k < 8;

@@ -50,6 +50,6 @@ void main() {
   const Target target = targets[range.target];
   PixelWords framebuffer = PixelWords(target.pixels);
   framebuffer.pixels[uint(y) * target.width + uint(x)] =
-      jobFinal[slot * 64u + uint(y - epoch.gridOrigin.y - int(block.y) * 8) * 8u +
-               uint(x - epoch.gridOrigin.x - int(block.x) * 8)];
+      jobFinal[pixelSlot(slot, uint(y - epoch.gridOrigin.y - int(block.y) * 8),
+                         uint(x - epoch.gridOrigin.x - int(block.x) * 8))];
 }
