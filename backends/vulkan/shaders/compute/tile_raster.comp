@@ -221,7 +221,8 @@ void loadPixels(uint j, Epoch epoch, Target target, PixelWords framebuffer, bool
     const bool inside = loads && column < int(target.width) && row < int(target.height);
     uint word = inside ? framebuffer.pixels[uint(row) * target.width + uint(column)]
                        : packPixel(0xFFFFFFu, 0u);
-    word = resumed ? carry[pixelSlot(j, uint(k), lane)] : word;
+    if (resumed)  // Carry holds a record a job only where a job may be resumed
+      word = carry[pixelSlot(j, uint(k), lane)];
     depth[k] = depthOf(word);
     stencil[k] = stencilOf(word);
   }
@@ -268,10 +269,15 @@ void storePixels(uint j, Epoch epoch, Target target, PixelWords framebuffer) {
 // Runs job j, this invocation's column of it, from where an earlier round left it, until its
 // end or its budget.
 void runJob(uint j) {
-  const uvec4 place = frame.round == 0u ? uvec4(0u) : progress[(frame.round & 1u) * frame.jobCount + j];
+  // Progress is read only from the second round on: in the first (the only one where the
+  // budget is unbounded) its buffer may hold no record a job.
   const bool resumed = frame.round > 0u;
-  if (resumed && place.x != frame.round)
-    return;  // done in an earlier round
+  uvec4 place = uvec4(0u);
+  if (resumed) {
+    place = progress[(frame.round & 1u) * frame.jobCount + j];
+    if (place.x != frame.round)
+      return;  // done in an earlier round
+  }
   const uint e = epochOfJob(j);
   const Epoch epoch = epochs[e];
   const Target target = targets[epoch.target];
