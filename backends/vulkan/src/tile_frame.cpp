@@ -554,6 +554,26 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
     pipelines.dispatchIndirect(cmd, p, buffers, k, w, args);
     ++dispatches;
   };
+  // A stage in rounds: the first for every job (`groups` workgroups, x and y), each later one an
+  // indirect dispatch whose size the round before writes at `argsAt` (zero unless some job
+  // stopped at its budget), a barrier after each.
+  const auto inRounds = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
+                            std::pair<std::uint32_t, std::uint32_t> groups, std::uint32_t rounds,
+                            VkDeviceSize argsAt) {
+    if (r.jobs == 0)
+      return;
+    std::tie(k.roundGroupsX, k.roundGroupsY) = groups;
+    for (k.round = 0; k.round < rounds; ++k.round) {
+      if (k.round == 0) {
+        pipelines.dispatch(cmd, p, buffers, k, groups.first, groups.second);
+        ++dispatches;
+      } else {
+        indirect(p, buffers, argsAt + VkDeviceSize{k.round} * kTileRoundArgsBytes);
+      }
+      computeBarrier(cmd);
+    }
+    k.round = 0;
+  };
   const auto dispatchGroups = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
                                   std::uint64_t groups) {
     if (groups == 0)
@@ -599,38 +619,21 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
         {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs, counters},
         scatterInvocations);
     computeBarrier(cmd);
-    // The sort in rounds: the first for every job, each later one (an indirect dispatch whose
-    // size the round before writes) only when some job stopped at its budget.
-    const std::uint64_t sortInvocations = r.jobs;
-    std::tie(k.roundGroupsX, k.roundGroupsY) = TilePipelines::linearGroups(sortInvocations);
-    for (k.round = 0; k.round < r.sortRounds; ++k.round) {
-      const std::initializer_list<TileBuffer> buffers = {counts,       offsets,  pairs,
-                                                         sortProgress, counters, sortArgs};
-      if (k.round == 0)
-        dispatchLinear(pipelines.sort, buffers, sortInvocations);
-      else
-        indirect(pipelines.sort, buffers,
-                 layout.sortArgsAt + VkDeviceSize{k.round} * kTileRoundArgsBytes);
-      computeBarrier(cmd);
-    }
+    // The sort in rounds.
+    inRounds(pipelines.sort, {counts, offsets, pairs, sortProgress, counters, sortArgs},
+             TilePipelines::linearGroups(r.jobs), r.sortRounds, layout.sortArgsAt);
   }
   timestamp(cmd, 3);
-  // The raster stage in rounds, as the sort.
+  // The raster stage in rounds: eight jobs a workgroup.
   const std::uint64_t rasterGroups = (r.jobs + kRasterJobsPerGroup - 1) / kRasterJobsPerGroup;
-  k.roundGroupsX = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(rasterGroups, 1, 65535));
-  k.roundGroupsY = static_cast<std::uint32_t>((rasterGroups + k.roundGroupsX - 1) / k.roundGroupsX);
-  for (k.round = 0; k.round < r.rasterRounds; ++k.round) {
-    const std::initializer_list<TileBuffer> buffers = {
-        targetsIn, epochsIn, commandsIn, drawsIn,  triangles, counts,   offsets,
-        pairs,     finals,   arena,      progress, carry,     counters, rasterArgs};
-    if (k.round == 0)
-      dispatchGroups(pipelines.raster, buffers, rasterGroups);
-    else
-      indirect(pipelines.raster, buffers,
-               layout.rasterArgsAt + VkDeviceSize{k.round} * kTileRoundArgsBytes);
-    computeBarrier(cmd);
-  }
-  k.round = 0;
+  const auto rasterPerRow =
+      static_cast<std::uint32_t>(std::clamp<std::uint64_t>(rasterGroups, 1, 65535));
+  inRounds(
+      pipelines.raster,
+      {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, offsets, pairs, finals, arena,
+       progress, carry, counters, rasterArgs},
+      {rasterPerRow, static_cast<std::uint32_t>((rasterGroups + rasterPerRow - 1) / rasterPerRow)},
+      r.rasterRounds, layout.rasterArgsAt);
   timestamp(cmd, 4);
   dispatchLinear(pipelines.resolve,
                  {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn, laterIn, counters},
