@@ -578,9 +578,8 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
                                   std::uint64_t groups) {
     if (groups == 0)
       return;
-    const auto perRow = static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, 65535));
-    pipelines.dispatch(cmd, p, buffers, k, perRow,
-                       static_cast<std::uint32_t>((groups + perRow - 1) / perRow));
+    const auto [perRow, rows] = TilePipelines::groupGrid(groups);
+    pipelines.dispatch(cmd, p, buffers, k, perRow, rows);
     ++dispatches;
   };
   // What the devices recorded before (uploads, framebuffer fills) is visible to the stages.
@@ -625,15 +624,11 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   }
   timestamp(cmd, 3);
   // The raster stage in rounds: eight jobs a workgroup.
-  const std::uint64_t rasterGroups = (r.jobs + kRasterJobsPerGroup - 1) / kRasterJobsPerGroup;
-  const auto rasterPerRow =
-      static_cast<std::uint32_t>(std::clamp<std::uint64_t>(rasterGroups, 1, 65535));
-  inRounds(
-      pipelines.raster,
-      {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, offsets, pairs, finals, arena,
-       progress, carry, counters, rasterArgs},
-      {rasterPerRow, static_cast<std::uint32_t>((rasterGroups + rasterPerRow - 1) / rasterPerRow)},
-      r.rasterRounds, layout.rasterArgsAt);
+  inRounds(pipelines.raster,
+           {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, offsets, pairs, finals,
+            arena, progress, carry, counters, rasterArgs},
+           TilePipelines::groupGrid((r.jobs + kRasterJobsPerGroup - 1) / kRasterJobsPerGroup),
+           r.rasterRounds, layout.rasterArgsAt);
   timestamp(cmd, 4);
   dispatchLinear(pipelines.resolve,
                  {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn, laterIn, counters},

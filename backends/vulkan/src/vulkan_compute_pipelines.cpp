@@ -92,11 +92,14 @@ void TilePipelines::dispatchIndirect(VkCommandBuffer cmd, VkPipeline pipeline,
   vkCmdDispatchIndirect(cmd, args, offset);
 }
 
-std::pair<std::uint32_t, std::uint32_t> TilePipelines::linearGroups(std::uint64_t count) {
-  const std::uint64_t groups = (count + 63) / 64;
+std::pair<std::uint32_t, std::uint32_t> TilePipelines::groupGrid(std::uint64_t groups) {
   const auto perRow =
       static_cast<std::uint32_t>(std::clamp<std::uint64_t>(groups, 1, kMaxGroupsPerRow));
   return {perRow, static_cast<std::uint32_t>((groups + perRow - 1) / perRow)};
+}
+
+std::pair<std::uint32_t, std::uint32_t> TilePipelines::linearGroups(std::uint64_t count) {
+  return groupGrid((count + 63) / 64);
 }
 
 void TilePipelines::dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,

@@ -103,7 +103,10 @@ class TilePipelines {
   void dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
                       std::initializer_list<TileBuffer> buffers,
                       const TileFrameConstants& constants, std::uint64_t count) const;
-  // The workgroups (x, y) dispatchLinear makes for `count` invocations.
+  // `groups` workgroups (at least one) as rows of at most 65535 (x) and the rows (y), which
+  // linearWorkgroup() numbers back; and the workgroups dispatchLinear makes for `count`
+  // invocations of a 64-wide stage.
+  [[nodiscard]] static std::pair<std::uint32_t, std::uint32_t> groupGrid(std::uint64_t groups);
   [[nodiscard]] static std::pair<std::uint32_t, std::uint32_t> linearGroups(std::uint64_t count);
   // The same as dispatch, with the workgroup counts read from `args` at `offset` (three words)
   // when the dispatch runs.
