@@ -82,7 +82,7 @@ struct Command {
   ivec4 rect;   // x0, y0, x1, y1: a draw's or clear's scissor, a read's rectangle (inside the target)
   uint kind;
   uint target;
-  uint tests;   // a draw's depth and stencil funcs, depth write and cull: read by the decoders below
+  uint tests;   // a draw's depth and stencil funcs, depth write, cull: see the decoders below
   uint stencil; // a draw's stencil reference and masks: likewise
   uint ops;     // a draw's stencil ops, both faces: likewise
   uint first;   // a draw's first triangle in the frame

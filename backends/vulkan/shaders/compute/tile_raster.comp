@@ -8,7 +8,8 @@
 // clears, reads (into the read arena) and draws (the job's sorted list: the draw's triangles
 // that may cover a centre of the block, in index order). Eight invocations take a job, one a
 // column of its pixels; a workgroup of 64 takes eight jobs side by side (one a SIMD bundle of 8
-// lanes on a CPU driver, two of 16, so a bundle's loop count is at most two jobs' own). Jobs of different epochs never share a pixel's state, so every
+// lanes on a CPU driver, two of 16, so a bundle's loop count is at most two jobs' own). Jobs of
+// different epochs never share a pixel's state, so every
 // job of the frame runs at once. Per triangle, an invocation works out its column's part once
 // and steps down the rows the triangle's candidates reach, with the same operations in the same
 // order as section 5 and 7 of docs/rasterization.md:
@@ -33,6 +34,7 @@ layout(local_size_x = 64) in;
 #include "tile_common.glsl"
 #include "tile_frame_inputs.glsl"
 #include "tile_block_test.glsl"
+#include "tile_rounds.glsl"
 
 // The set-up triangles (tile_common.glsl's layout) read four words at a time.
 layout(std430, set = 0, binding = 6) readonly buffer Triangles { uvec4 triangles[]; };
@@ -48,7 +50,6 @@ layout(std430, set = 0, binding = 12) buffer ReadArena { uint readArena[]; };
 layout(std430, set = 0, binding = 17) buffer Progress { uvec4 progress[]; };
 layout(std430, set = 0, binding = 18) buffer Carry { uint carry[]; };  // 64 words a job
 layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
-layout(std430, set = 0, binding = 20) buffer RoundArgs { uint roundArgs[]; };  // 3 words a round
 
 // The state comes from each draw's command, so the compiler cannot take it as uniform: both
 // functions are selects, not switches, which a CPU driver's SIMD code would run case by case.
@@ -81,6 +82,17 @@ uint depth[8];
 uint stencil[8];
 // Whether a loop of this invocation ended other than at its own test (a driver's loop limit).
 bool cut = false;
+// The work units this invocation's job has spent this round.
+uint spent = 0u;
+
+// Charges the job one more unit of work (a command, or a triangle it draws) when its budget
+// allows; false when the job must stop for the next round first.
+bool affords() {
+  if (spent + kWorkUnit > frame.rasterBudget)
+    return false;
+  spent += kWorkUnit;
+  return true;
+}
 
 // The state of the draw being run, from its command.
 uint ref;
@@ -219,10 +231,12 @@ void loadPixels(uint j, Epoch epoch, Target target, PixelWords framebuffer, bool
     // An epoch that starts from its own clears reads nothing: its pixels outside them are
     // never touched (every command of such an epoch lies inside the clears' rectangle).
     const bool inside = loads && column < int(target.width) && row < int(target.height);
-    uint word = inside ? framebuffer.pixels[uint(row) * target.width + uint(column)]
-                       : packPixel(0xFFFFFFu, 0u);
+    uint word;
     if (resumed)  // Carry holds a record a job only where a job may be resumed
       word = carry[pixelSlot(j, uint(k), lane)];
+    else
+      word = inside ? framebuffer.pixels[uint(row) * target.width + uint(column)]
+                    : packPixel(0xFFFFFFu, 0u);
     depth[k] = depthOf(word);
     stencil[k] = stencilOf(word);
   }
@@ -241,10 +255,7 @@ void suspend(uint j, uint ci, uint cursor, uint t) {
   if (lane == 0u) {
     const uint written = ((frame.round + 1u) & 1u) * frame.jobCount + j;
     progress[written] = uvec4(frame.round + 1u, ci, cursor, t);
-    const uint next = 3u * (frame.round + 1u);
-    atomicExchange(roundArgs[next], frame.roundGroupsX);
-    atomicExchange(roundArgs[next + 1u], frame.roundGroupsY);
-    atomicExchange(roundArgs[next + 2u], 1u);
+    askNextRound();
   }
 }
 
@@ -289,17 +300,13 @@ void runJob(uint j) {
   uint cursor = resumed ? place.z : binOffsets[j];
   const uint listEnd = binOffsets[j] + binCounts[j];
   const bool overflowed = listEnd > frame.pairCapacity;
-  uint spent = 0u;
   uint ci = resumed ? place.y : epoch.firstCommand;
   bool midCommand = resumed;  // the first command was begun (and charged) in an earlier round
   for (; ci < epoch.commandEnd; ++ci) {
     const Command c = commands[ci];
-    if (!midCommand) {
-      if (spent + kWorkUnit > frame.rasterBudget) {
-        suspend(j, ci, cursor, c.first);
-        return;
-      }
-      spent += kWorkUnit;
+    if (!midCommand && !affords()) {
+      suspend(j, ci, cursor, c.first);
+      return;
     }
     if (c.kind == kDraw) {
       takeState(c);
@@ -309,22 +316,20 @@ void runJob(uint j) {
         // that misses this column is skipped by its candidate rectangle).
         uint t = midCommand ? place.w : c.first;
         for (; t < drawEnd; ++t) {
-          if (spent + kWorkUnit > frame.rasterBudget) {
+          if (!affords()) {
             suspend(j, ci, cursor, t);
             return;
           }
-          spent += kWorkUnit;
           shade(t);
         }
         cut = cut || t < drawEnd;
       } else {
         // The list is in frame order, which is command order: this draw's entries are next.
         for (; cursor < listEnd && pairs[cursor] < drawEnd; ++cursor) {
-          if (spent + kWorkUnit > frame.rasterBudget) {
+          if (!affords()) {
             suspend(j, ci, cursor, 0u);
             return;
           }
-          spent += kWorkUnit;
           shade(pairs[cursor]);
         }
         cut = cut || (cursor < listEnd && pairs[cursor] < drawEnd);

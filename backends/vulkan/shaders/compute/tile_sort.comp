@@ -10,12 +10,14 @@
 //
 // One invocation a job. A job is charged each sift's longest walk; one that would pass
 // Frame.sortBudget (a CPU driver's loop limit shared by a SIMD bundle's lanes,
-// tile_frame_budgets.hpp) stops between two sifts, keeps its next step in SortProgress and asks for the next round (RoundArgs), which goes
-// on from there. A job whose list is in order counts itself in Counters, which the host checks.
+// tile_frame_budgets.hpp) stops between two sifts, keeps its next step in SortProgress and asks
+// for the next round (tile_rounds.glsl), which goes on from there. A job whose list is in order
+// counts itself in Counters, which the host checks.
 
 layout(local_size_x = 64) in;
 
 #include "tile_common.glsl"
+#include "tile_rounds.glsl"
 
 layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint blockCounts[]; };
 layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint blockOffsets[]; };
@@ -23,7 +25,6 @@ layout(std430, set = 0, binding = 10) buffer Pairs { uint pairs[]; };
 // A suspended job's round to go on in and its next step (written and read by its one lane).
 layout(std430, set = 0, binding = 17) buffer SortProgress { uvec2 sortProgress[]; };
 layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
-layout(std430, set = 0, binding = 20) buffer RoundArgs { uint roundArgs[]; };  // 3 words a round
 
 // Whether a loop of this invocation ended other than at its own test (a driver's loop limit).
 bool cut = false;
@@ -88,10 +89,7 @@ void main() {
     for (; step < steps; ++step) {
       if (spent + stepCost > frame.sortBudget) {
         sortProgress[block] = uvec2(frame.round + 1u, step);
-        const uint next = 3u * (frame.round + 1u);
-        atomicExchange(roundArgs[next], frame.roundGroupsX);
-        atomicExchange(roundArgs[next + 1u], frame.roundGroupsY);
-        atomicExchange(roundArgs[next + 2u], 1u);
+        askNextRound();
         return;
       }
       spent += stepCost;
