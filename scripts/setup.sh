@@ -26,6 +26,7 @@ packages=(
   chromium python3-websocket emscripten
   pybind11-dev python3-dev python3-numpy python3-pytest doxygen
   python3-venv python3-pip python3-setuptools python3-wheel mypy
+  git bc
 )
 case "${1:-}" in
   "") ;;
