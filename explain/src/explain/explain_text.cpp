@@ -126,6 +126,29 @@ StepWords stepWords(PairStep step) {
   return {"?", ""};
 }
 
+std::span<const std::string_view> stepOperands(PairStep step) {
+  static constexpr std::array<std::string_view, 1> kSetZ = {"a_covers"};
+  static constexpr std::array<std::string_view, 3> kTestZ = {"a_back", "b_front", "b_back"};
+  static constexpr std::array<std::string_view, 2> kFront = {"a_front", "b_front"};
+  static constexpr std::array<std::string_view, 2> kBack = {"a_front", "b_back"};
+  switch (step) {
+    case PairStep::SetZ:
+      return kSetZ;
+    case PairStep::TestZ:
+      return kTestZ;
+    case PairStep::TestAminFront:
+      return kFront;
+    case PairStep::TestAminBack:
+      return kBack;
+    case PairStep::LoadAmin:     // write mask 0
+    case PairStep::ReadStencil:  // reads the stencil only
+    case PairStep::ContactNear:  // the stencil is kept
+    case PairStep::ContactFar:
+      break;
+  }
+  return {};
+}
+
 std::string stepTitle(PairStep step) {
   const auto titled = [step](std::string_view what) {
     return std::string(stepWords(step).name) + ": " + std::string(what);
