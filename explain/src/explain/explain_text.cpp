@@ -226,7 +226,8 @@ std::string stateText(const raster::RenderState& st, double clearDepth) {
            std::string(raster::toString(o.depthPass));
   };
   std::ostringstream t;
-  t << "<p class=\"state\"><b>Device state</b> (read from the device after the step): scissor "
+  t << "<p class=\"state\"><a href=\"#device-state-terms\"><b>Device state</b></a> (read from "
+       "the device after the step): scissor "
     << rectText(st.scissor);
   if (clearDepth >= 0.0)
     t << ", depth cleared to " << formatNumber(clearDepth);
@@ -431,9 +432,10 @@ std::string verdictHtml(const core::PairResult& result) {
     t << "The bounding boxes do not overlap: decided without drawing anything.";
   else
     t << result.interferingPixels << " of the MOR's " << result.mor.area()
-      << " pixels interfere (cases 3-6). Contact area " << formatNumber(result.contact.area)
-      << " world units&sup2;, greatest overlap depth " << formatNumber(result.contact.maxDepth)
-      << " world units.";
+      << " pixels interfere (cases 3-6: the ray passes through a point inside both blocks). "
+         "Contact area "
+      << formatNumber(result.contact.area) << " world units&sup2;, greatest overlap depth "
+      << formatNumber(result.contact.maxDepth) << " world units.";
   t << "</p>";
   return t.str();
 }
