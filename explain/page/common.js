@@ -1,7 +1,7 @@
 // What the explain pages' scripts share (inspector.js, interactive.js, scene3d.js, predict.js):
-// HTML escaping, rectangles, the ray data's crop index and encodings (coverage bits, cases),
-// the blocks' colours, the view axes and the reading of the steps' names, rules and operands
-// from the ray data. Loaded before the other scripts.
+// HTML escaping, rectangles, the ray data's crop index and encodings (coverage and stencil
+// bits, cases), the blocks' colours, the view axes and the reading of the steps' names, rules
+// and operands from the ray data. Loaded before the other scripts.
 window.recodeCommon = (function () {
   'use strict';
 
@@ -39,7 +39,11 @@ window.recodeCommon = (function () {
   const CASES = [0, 1, 2, 3, 4, 5, 6, 7, 8];
   const NOT_EXAMINED = -1;
   const INTERFERING = [3, 4, 5, 6];
+  // The stencil: the count in bits 0-1 (COUNT_BITS), bit 2 (FRONT_BIT, value 4) and bit 3
+  // (BACK_BIT, value 8), which passes 4 and 5 write.
+  const COUNT_BITS = 3, FRONT_BIT = 4, BACK_BIT = 8;
   function covers(coverage, bit) { return (coverage & bit) !== 0; }
+  function countOf(stencil) { return stencil & COUNT_BITS; }
   function interferes(kase) { return INTERFERING.indexOf(kase) >= 0; }
 
   // The steps' names, rules and operands (what decides the stencil each leaves besides the
@@ -60,6 +64,7 @@ window.recodeCommon = (function () {
 
   return {esc: esc, inRect: inRect, cropIndex: cropIndex, COLOURS: COLOURS, AXES: AXES,
     PLANE: PLANE, PERM: PERM, COVER_A: COVER_A, COVER_B: COVER_B, CASES: CASES,
-    NOT_EXAMINED: NOT_EXAMINED, INTERFERING: INTERFERING, covers: covers,
-    interferes: interferes, stepWords: stepWords};
+    NOT_EXAMINED: NOT_EXAMINED, INTERFERING: INTERFERING, FRONT_BIT: FRONT_BIT,
+    BACK_BIT: BACK_BIT, covers: covers, countOf: countOf, interferes: interferes,
+    stepWords: stepWords};
 })();

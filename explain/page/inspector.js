@@ -44,7 +44,7 @@ window.recodeInspector = (function () {
     const stored = k > 0 ? data.depth[k - 1][i] : 0;
     const cov = data.coverage[i];
     const hasA = covers(cov, common.COVER_A), hasB = covers(cov, common.COVER_B);
-    const count = before & 3;
+    const count = common.countOf(before);
     if (id !== 'contact_near' && id !== 'contact_far' && id !== 'read_stencil' &&
         !inRect(data.mor, x, y))
       return ['outside the MOR: the scissor keeps the step off this pixel', 'none'];
@@ -62,9 +62,9 @@ window.recodeInspector = (function () {
         let t = 'stencil test 1 &le; count passes; depth LEQUAL A<sub>max</sub> ' + norm(stored) +
           ': B front ' + norm(data.b_front[i]) + (f ? ' passes' : ' fails') + ', B back ' +
           norm(data.b_back[i]) + (b ? ' passes' : ' fails');
-        if (((count + n) & 3) !== (after & 3))
-          t += ' <span class="warn">(recorded count ' + (after & 3) + ': more than one fragment of a face here)</span>';
-        return [t, n === 0 ? 'KEEP (dpfail) twice' : 'INCR &times;' + n + ' &rarr; count ' + (after & 3)];
+        if (common.countOf(count + n) !== common.countOf(after))
+          t += ' <span class="warn">(recorded count ' + common.countOf(after) + ': more than one fragment of a face here)</span>';
+        return [t, n === 0 ? 'KEEP (dpfail) twice' : 'INCR &times;' + n + ' &rarr; count ' + common.countOf(after)];
       }
       case 'load_amin':
         return hasA
@@ -74,7 +74,7 @@ window.recodeInspector = (function () {
       case 'test_amin_front':
       case 'test_amin_back': {
         const front = id === 'test_amin_front';
-        const bit = front ? 4 : 8;
+        const bit = front ? common.FRONT_BIT : common.BACK_BIT;
         const face = front ? data.b_front[i] : data.b_back[i];
         const flipped = ((before ^ after) & bit) !== 0;
         const label = front ? 'B front (B<sub>min</sub>)' : 'B back (B<sub>max</sub>)';

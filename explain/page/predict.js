@@ -398,7 +398,7 @@ window.recodePredict = (function () {
   }
 
   function stencilText(v) {
-    return v + ' (binary ' + v.toString(2).padStart(4, '0') + ', count ' + (v & 3) + ')';
+    return v + ' (binary ' + v.toString(2).padStart(4, '0') + ', count ' + common.countOf(v) + ')';
   }
 
   // What pass k (0-4; 5: the read-back) tested at the pixel: whether the pixel is in the MOR,
