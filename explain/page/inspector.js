@@ -13,11 +13,24 @@ window.recodeInspector = (function () {
   const stepName = document.getElementById('step-name');
   let ids = [];
   const common = window.recodeCommon;
-  const esc = common.esc, inRect = common.inRect;
+  const esc = common.esc, inRect = common.inRect, covers = common.covers;
   let TITLES = {};  // each step's name by its id, from the ray data
   let pixel = null;
   let pinned = false;
   let step = 0;
+  const idleHtml = panel.innerHTML;  // what the panel says while no pixel is chosen
+  const pixelListeners = [];  // told the pixel shown (or null) whenever it changes
+
+  // Shows pixel p ([x, y], or null: none) and tells the listeners; `pin`: keep it while the
+  // pointer moves elsewhere.
+  function choose(p, pin) {
+    const same = p && pixel ? p[0] === pixel[0] && p[1] === pixel[1] : p === pixel;
+    pixel = p ? [p[0], p[1]] : null;
+    pinned = pin && pixel !== null;
+    if (pixel) show(); else panel.innerHTML = idleHtml;
+    markAll();
+    if (!same) pixelListeners.forEach(function (f) { f(pixel && pixel.slice()); });
+  }
 
   function index(x, y) { return common.cropIndex(data, x, y); }
   function norm(d) { return (d / D).toFixed(6); }
@@ -30,8 +43,8 @@ window.recodeInspector = (function () {
     const after = data.stencil[k][i];
     const stored = k > 0 ? data.depth[k - 1][i] : 0;
     const cov = data.coverage[i];
-    const hasA = (cov & 1) !== 0, hasB = (cov & 2) !== 0;
-    const count = before & 3;
+    const hasA = covers(cov, common.COVER_A), hasB = covers(cov, common.COVER_B);
+    const count = common.countOf(before);
     if (id !== 'contact_near' && id !== 'contact_far' && id !== 'read_stencil' &&
         !inRect(data.mor, x, y))
       return ['outside the MOR: the scissor keeps the step off this pixel', 'none'];
@@ -49,9 +62,9 @@ window.recodeInspector = (function () {
         let t = 'stencil test 1 &le; count passes; depth LEQUAL A<sub>max</sub> ' + norm(stored) +
           ': B front ' + norm(data.b_front[i]) + (f ? ' passes' : ' fails') + ', B back ' +
           norm(data.b_back[i]) + (b ? ' passes' : ' fails');
-        if (((count + n) & 3) !== (after & 3))
-          t += ' <span class="warn">(recorded count ' + (after & 3) + ': more than one fragment of a face here)</span>';
-        return [t, n === 0 ? 'KEEP (dpfail) twice' : 'INCR &times;' + n + ' &rarr; count ' + (after & 3)];
+        if (common.countOf(count + n) !== common.countOf(after))
+          t += ' <span class="warn">(recorded count ' + common.countOf(after) + ': more than one fragment of a face here)</span>';
+        return [t, n === 0 ? 'KEEP (dpfail) twice' : 'INCR &times;' + n + ' &rarr; count ' + common.countOf(after)];
       }
       case 'load_amin':
         return hasA
@@ -61,7 +74,7 @@ window.recodeInspector = (function () {
       case 'test_amin_front':
       case 'test_amin_back': {
         const front = id === 'test_amin_front';
-        const bit = front ? 4 : 8;
+        const bit = front ? common.FRONT_BIT : common.BACK_BIT;
         const face = front ? data.b_front[i] : data.b_back[i];
         const flipped = ((before ^ after) & bit) !== 0;
         const label = front ? 'B front (B<sub>min</sub>)' : 'B back (B<sub>max</sub>)';
@@ -96,7 +109,7 @@ window.recodeInspector = (function () {
   // chosen step.
   function rayDrawing(i, k) {
     const cov = data.coverage[i];
-    const hasA = (cov & 1) !== 0, hasB = (cov & 2) !== 0;
+    const hasA = covers(cov, common.COVER_A), hasB = covers(cov, common.COVER_B);
     const vals = [];
     if (hasA) vals.push(data.a_front[i], data.a_back[i]);
     if (hasB) vals.push(data.b_front[i], data.b_back[i]);
@@ -150,7 +163,7 @@ window.recodeInspector = (function () {
     }
     const c = data['case'][i];
     h += '<p class="case-big" id="inspector-case">' + (c < 0 ? 'outside the MOR: not examined'
-      : 'case ' + c + ': ' + esc(data.case_names[c]) + (c >= 3 && c <= 6 ? ' (interferes)' : '')) + '</p>';
+      : 'case ' + c + ': ' + esc(data.case_names[c]) + (common.interferes(c) ? ' (interferes)' : '')) + '</p>';
     h += rayDrawing(i, step);
     h += '<table id="inspector-passes"><tr><th>step</th><th>depth after</th><th>stencil after</th>' +
       '<th>test</th><th>stencil op</th></tr>';
@@ -210,23 +223,21 @@ window.recodeInspector = (function () {
       w.appendChild(m);
       img.addEventListener('mousemove', function (ev) {
         if (pinned || ev.buttons) return;
-        pixel = pixelOf(ev, img); show(); markAll();
+        choose(pixelOf(ev, img), false);
       });
       img.addEventListener('click', function (ev) {
         if (ev.defaultPrevented) return;  // the end of a drag, not a click on a pixel
-        pixel = pixelOf(ev, img); pinned = true; show(); markAll();
+        choose(pixelOf(ev, img), true);
       });
     });
   }
 
   // A pixel chosen by the page (an exercise's): pinned, shown and marked, whatever was pinned
-  // before; null: follow the pointer again.
-  function showPixel(p) {
-    pixel = p ? [p[0], p[1]] : null;
-    pinned = p !== null;
-    if (pixel) show();
-    markAll();
-  }
+  // before; null: no pixel (the panel says how to choose one), follow the pointer again.
+  function showPixel(p) { choose(p, true); }
+
+  // f(pixel) after every change of the pixel shown: [x, y], or null when none is.
+  function onPixel(f) { pixelListeners.push(f); }
 
   // New ray data and pictures (the interactive page after every change): the step and a pixel
   // still inside the frame are kept, so that one ray can be watched while a block moves.
@@ -261,6 +272,6 @@ window.recodeInspector = (function () {
   });
   const inline = document.getElementById('ray-data');
   if (inline) attach(JSON.parse(inline.textContent));
-  return {attach: attach, showPixel: showPixel,
+  return {attach: attach, showPixel: showPixel, onPixel: onPixel,
     pixel: function () { return pixel && pixel.slice(); }};
 })();

@@ -30,17 +30,35 @@
   const $ = function (id) { return document.getElementById(id); };
   let module = null, runPage = null, lastError = null;
   let dirty = true, playing = false, playDirection = 1;
+  let drag = null;  // a drag on a picture in progress (see "dragging a block" below)
   let view3d = null, rayPixel = null, fixedRay = false, rayMarks = true;
-  const page = window.recodePage = {ready: false, updates: 0, lastMs: 0, moduleMs: 0, times: [],
-    error: null, pair: null, rayData: null, scene3d: null, sceneText: sceneText, state: state,
-    update: update, load: load, pose: pose, signature: signature, showRay: showRay,
-    rayIndex: rayIndex, morOf: morOf, view3d: null,
+  const page = window.recodePage = {ready: false, error: null, pair: null, rayData: null,
+    scene3d: null, sceneText: sceneText, state: state, update: update, load: load, pose: pose,
+    signature: signature, showRay: showRay, rayIndex: rayIndex, morOf: morOf, view3d: null,
     onUpdate: [],  // functions called with the ray data after every update (page/predict.js)
-    pending: function () { return dirty || drag !== null || playing; }};
+    pending: function () { return dirty || drag !== null || playing; },
+    // What the tests and the timing read: the updates run, the last one's time in ms (the
+    // module's share apart) and every update's.
+    metrics: {updates: 0, lastMs: 0, moduleMs: 0, times: []}};
 
   function number(v) { return Math.round(v * 1e6) / 1e6; }
 
-  // The block's node of the scene file, at its position plus the sweep for the swept block.
+  // How far the slider has moved block `index` from its position: along the sweep axis for B
+  // (the block the slider and Play move), nothing for A.
+  function sweepOffset(index) {
+    const o = [0, 0, 0];
+    if (index === 1) o[AXES.indexOf(state.sweepAxis)] = state.sweep * state.sweepRange;
+    return o;
+  }
+
+  // Where block `index` is: its position plus the slider's offset. Its position fields show
+  // this, and the scene file (what the page runs and Export saves) has it.
+  function placed(index) {
+    const o = sweepOffset(index);
+    return state.blocks[index].position.map(function (v, k) { return number(v + o[k]); });
+  }
+
+  // The block's node of the scene file, where the block is placed.
   function objectOf(b, index) {
     const o = {name: b.name};
     if (b.shape === 'obj') {
@@ -49,9 +67,7 @@
     } else {
       o.shape = Object.assign({type: b.shape}, b.sizes);
     }
-    const p = b.position.slice();
-    if (index === 1) p[AXES.indexOf(state.sweepAxis)] += state.sweep * state.sweepRange;
-    o.position = p.map(number);
+    o.position = placed(index);
     if (b.rotation.some(function (r) { return r !== 0; })) o.rotation_deg = b.rotation.map(number);
     return o;
   }
@@ -102,6 +118,16 @@
   function update() {
     dirty = false;
     if (!module) return;
+    const waiting = state.blocks.filter(function (b) { return b.shape === 'obj' && !b.obj; });
+    if (waiting.length) {  // nothing to run yet: say so, instead of showing the last pose
+      page.error = 'Block ' + waiting.map(function (b) { return b.name; }).join(' and ') +
+        ' has the shape obj but no OBJ file yet: choose one with its file field or drop one ' +
+        'on its panel (or choose another shape). The pictures below are of the last pose ' +
+        'that ran.';
+      $('live-error').textContent = page.error;
+      $('live-error').hidden = false;
+      return;
+    }
     const started = performance.now();
     const text = sceneText();
     module.FS.writeFile('/page/scene.json', text);
@@ -141,33 +167,31 @@
     }
     page.onUpdate.forEach(function (f) { f(page.rayData); });
     const ms = performance.now() - started;
-    page.updates += 1;
-    page.lastMs = ms;
-    page.moduleMs = moduleMs;
-    page.times.push({resolution: state.resolution, ms: ms, module_ms: moduleMs});
+    const m = page.metrics;
+    m.updates += 1;
+    m.lastMs = ms;
+    m.moduleMs = moduleMs;
+    m.times.push({resolution: state.resolution, ms: ms, module_ms: moduleMs});
     $('update-ms').textContent = ms.toFixed(1) + ' ms (the pair and its pictures in WebAssembly: ' +
       moduleMs.toFixed(1) + ' ms)';
   }
 
   // The inspector's data: the module's JSON and its per-pixel arrays, copied out of the
-  // module's memory as typed arrays (read like the static page's JSON arrays).
+  // module's memory as typed arrays under the names ray_arrays.order gives them, in its order
+  // (per_step: one array per step), so that they read like the static page's JSON arrays.
   function rayData(result) {
-    const d = result.ray_data;
-    const n = result.ray_arrays.pixels, steps = d.steps.length;
-    const all = new Int32Array(module.HEAPU8.buffer, result.ray_arrays.offset,
-      n * (2 * steps + 6)).slice();
+    const d = result.ray_data, arrays = result.ray_arrays;
+    const n = arrays.pixels, steps = d.steps.length;
+    const count = arrays.order.reduce(function (sum, a) { return sum + (a.per_step ? steps : 1); },
+      0);
+    const all = new Int32Array(module.HEAPU8.buffer, arrays.offset, n * count).slice();
     let at = 0;
     const next = function () { at += n; return all.subarray(at - n, at); };
-    d.depth = [];
-    d.stencil = [];
-    for (let k = 0; k < steps; ++k) d.depth.push(next());
-    for (let k = 0; k < steps; ++k) d.stencil.push(next());
-    d.a_front = next();
-    d.a_back = next();
-    d.b_front = next();
-    d.b_back = next();
-    d.coverage = next();
-    d['case'] = next();
+    arrays.order.forEach(function (a) {
+      if (!a.per_step) { d[a.name] = next(); return; }
+      d[a.name] = [];
+      for (let k = 0; k < steps; ++k) d[a.name].push(next());
+    });
     return d;
   }
 
@@ -203,15 +227,17 @@
   function showSummary(pair) {
     $('live-verdict').textContent = pair.collide ? 'collide' : 'apart';
     $('live-verdict').className = 'verdict ' + (pair.collide ? 'yes' : 'no');
-    let row = '<tr><th>case</th>';
+    let row = '<tr><th><a href="#term-cases">case</a></th>';
     let counts = '<tr><th>pixels</th>';
-    for (let c = 0; c <= 8; ++c) {
+    common.CASES.forEach(function (c) {
       row += '<th>' + c + '</th>';
       counts += '<td data-case="' + c + '">' + pair.case_counts[String(c)] + '</td>';
-    }
+    });
     $('case-counts').innerHTML = row + '</tr>' + counts + '</tr>';
-    $('live-interfering').textContent = pair.interfering_pixels + ' interfering pixels, frame ' +
-      pair.frame.resolution.join(' x ') + ' along ' + pair.frame.axis;
+    $('live-interfering').innerHTML = pair.interfering_pixels + ' <a href="#term-interfering">' +
+      'interfering pixels</a> (cases ' + common.INTERFERING.join(', ') + ': the ray passes ' +
+      'through a point inside both blocks), frame ' + pair.frame.resolution.join(' x ') +
+      ' along ' + pair.frame.axis;
   }
 
   // --- the 3-D view (page/scene3d.js) ---------------------------------------------------------
@@ -234,33 +260,29 @@
     if (!rayPixel || !d) { view3d.setRay(null); return; }
     const x = rayPixel[0], y = rayPixel[1];
     const i = rayMarks ? rayIndex(x, y) : -1;
+    const on = function (bit) { return i >= 0 && common.covers(d.coverage[i], bit); };
     view3d.setRay({pixel: [x, y],
-      a: i >= 0 && (d.coverage[i] & 1) ? [d.a_front[i], d.a_back[i]] : null,
-      b: i >= 0 && (d.coverage[i] & 2) ? [d.b_front[i], d.b_back[i]] : null});
+      a: on(common.COVER_A) ? [d.a_front[i], d.a_back[i]] : null,
+      b: on(common.COVER_B) ? [d.b_front[i], d.b_back[i]] : null});
   }
 
   // A pixel chosen by the page (an exercise), or null: the ray follows the inspector again.
   // marks false: the ray without its entry and exit points (an exercise that asks for them).
   function showRay(pixel, marks) {
     fixedRay = pixel !== null;
-    rayPixel = pixel;
+    rayPixel = fixedRay ? pixel : window.recodeInspector.pixel();
     rayMarks = marks !== false;
     drawRay();
   }
 
-  // The ray follows the inspector's pixel: its title names it ("pixel (x, y)") whenever it
-  // shows one, so the view and the inspector's table are about the same ray.
+  // The ray follows the inspector's pixel, so the view and the inspector's table are about the
+  // same ray (unless the page fixed the ray).
   function followInspector() {
-    const body = $('inspector-body');
-    new MutationObserver(function () {
+    window.recodeInspector.onPixel(function (p) {
       if (fixedRay) return;
-      const t = $('inspector-title');
-      const m = t && /^pixel \((\d+), (\d+)\)$/.exec(t.textContent);
-      const p = m ? [Number(m[1]), Number(m[2])] : null;
-      if (p && rayPixel && p[0] === rayPixel[0] && p[1] === rayPixel[1]) return;
       rayPixel = p;
       drawRay();
-    }).observe(body, {childList: true, subtree: true});
+    });
   }
 
   function setUpView3d() {
@@ -341,6 +363,30 @@
     return span;
   }
 
+  // The block's position fields: where it is placed (B with the slider's offset). A value
+  // typed places the block there, the slider keeping its offset.
+  function positionInputs(index) {
+    const b = state.blocks[index];
+    const span = document.createElement('span');
+    placed(index).forEach(function (v, k) {
+      span.appendChild(numberInput(v, 0.05, function (x) {
+        b.position[k] = number(x - sweepOffset(index)[k]);
+      }, 'pos-' + b.name + '-' + AXES[k]));
+    });
+    return span;
+  }
+
+  // The position fields after the blocks moved (the slider, Play, a drag): where each block is
+  // now. The field being typed in is left alone.
+  function showPlacement() {
+    state.blocks.forEach(function (b, index) {
+      placed(index).forEach(function (v, k) {
+        const input = $('pos-' + b.name + '-' + AXES[k]);
+        if (input && input !== document.activeElement) input.value = String(v);
+      });
+    });
+  }
+
   function blockControls(b, index) {
     const box = document.createElement('fieldset');
     box.id = 'block-' + b.name;
@@ -369,7 +415,7 @@
       sizes.appendChild(field(b.obj ? 'OBJ loaded; another' : 'OBJ file (or drop one here)', file));
     }
     box.appendChild(sizes);
-    box.appendChild(field('position', vectorInputs(b.position, 0.05, 'pos-' + b.name + '-')));
+    box.appendChild(field('position', positionInputs(index)));
     box.appendChild(field('rotation (degrees)',
       vectorInputs(b.rotation, 5, 'rot-' + b.name + '-')));
     box.addEventListener('dragover', function (ev) { ev.preventDefault(); });
@@ -443,11 +489,15 @@
     c.appendChild(viewControls());
   }
 
-  function changed() { dirty = true; }
+  // Anything changed: the next frame runs the pair again; the position fields show where the
+  // blocks now are.
+  function changed() {
+    dirty = true;
+    showPlacement();
+  }
 
   // --- dragging a block over any picture ----------------------------------------------------
 
-  let drag = null;
   document.addEventListener('pointerdown', function (ev) {
     const canvas = ev.target.closest && ev.target.closest('#live-result canvas[data-region]');
     if (!canvas || !page.pair || ev.button !== 0) return;
@@ -518,7 +568,7 @@
       state.sweep = number(s);
       const slider = $('sweep');
       if (slider) slider.value = String(state.sweep);
-      dirty = true;
+      changed();
     }
     if (dirty) {
       try {

@@ -5,28 +5,54 @@
 // or the blocks' ranges along the view axis; which MOR modes examine the pixel; whether the
 // box test stops the pair; the stencil after each of the five passes and the case the
 // read-back decodes. Each answer is checked against the reference's own values (the ray data
-// the WebAssembly module recorded, its MOR in each mode, its box test); a wrong one names the
-// first step misapplied, says that step's rule and the student's inputs to it, and shows that
-// pass's pictures only when asked. Progress stays in this browser (localStorage), never sent
-// anywhere. Every term the exercises use links to its definition in the page's Terms.
+// the WebAssembly module recorded, its MOR in each mode, its box test), step by step in that
+// order (STEPS); a wrong one names the first step misapplied, says that step's rule and the
+// student's inputs to it, and shows that pass's pictures only when asked. Progress stays in
+// this browser (localStorage), never sent anywhere. Every term the exercises use links to its
+// definition in the page's Terms.
 window.recodePredict = (function () {
   'use strict';
   const page = window.recodePage;
   const common = window.recodeCommon;
-  const esc = common.esc, inRect = common.inRect;
+  const esc = common.esc, inRect = common.inRect, covers = common.covers;
   const $ = function (id) { return document.getElementById(id); };
   const STORE = 'recode.predict.v1';
-  const NOT_EXAMINED = -1;  // the "case" of a pixel outside the MOR: never read back
-  // The five passes and the read-back with their names and rules, from the ray data (the C++
-  // that writes the sections states them); set by the first update, before any exercise opens.
+  const NOT_EXAMINED = common.NOT_EXAMINED;  // the "case" of a pixel outside the MOR
+  // The five passes and the read-back with their names, rules and operands, from the ray data
+  // (the C++ that writes the sections states them); set by the first update, before any
+  // exercise opens.
   let PASSES = [], DECODE = null;
   const MODES = ['min', 'max', 'full'];
+  const BLOCKS = ['A', 'B'];
   // How far a depth the student reads may lie from the reference's (world units along the
   // view axis): the exercises' faces lie on round values, far more than this apart.
   const TOLERANCE = 0.01;
-  const DEPTH_ONE = 16777215;
+  // The face depths a step's operands name (the ray data's arrays): the block, which end of it
+  // the student gives, and the name the rules use.
+  const FACES = {
+    a_front: {block: 'A', end: 'near', label: 'A<sub>min</sub>'},
+    a_back: {block: 'A', end: 'far', label: 'A<sub>max</sub>'},
+    b_front: {block: 'B', end: 'near', label: 'B<sub>min</sub>'},
+    b_back: {block: 'B', end: 'far', label: 'B<sub>max</sub>'},
+  };
+  // The two questions on a block's near and far ends: the field names and their words.
+  const ENDS = {
+    depths: {field: 'depth', title: 'the depths of ', noun: 'Depths', what: 'depth',
+      term: 'term-entry-exit'},
+    ranges: {field: 'range', title: 'the range of ', noun: 'Range', what: 'range',
+      term: 'term-bounding-box'},
+  };
 
   function term(id, text) { return '<a href="#' + id + '">' + text + '</a>'; }
+
+  // Every answer field's id, minted here only: the form's builders, render and readAnswers all
+  // call it. fieldId('depth', 'A', 'near') is 'predict-depth-A-near'; fieldId('stencil', 3),
+  // fieldId('bits', 3), fieldId('mor', 'max'), fieldId('box'), fieldId('case').
+  function fieldId(what, block, end) {
+    return ['predict', what, block, end].filter(function (p) {
+      return p !== undefined;
+    }).join('-');
+  }
 
   // Boxes seen along z (the viewer on +z: a larger z is nearer); A is 2 deep unless said
   // otherwise. Every exercise names the case its pixel must have, so a change to the reference
@@ -125,11 +151,16 @@ window.recodePredict = (function () {
       terms: ['term-mor', 'term-mor-min', 'term-mor-max', 'term-mor-full', 'term-cases']},
   ];
 
-  let current = null;    // {exercise, pixel, index, truth, signature, wrongStep}
-  let pending = null;    // the exercise whose pose the page is running
-  let choosing = false;  // the own-pixel exercise waits for a click
-  let saved = null;      // the pose the first exercise replaced: leaving restores it
-  let note = '';         // why an exercise was closed, shown until the next one opens
+  // The exercise's state, one of:
+  //   {name: 'idle', note}: no exercise; `note` (HTML, may be '') says why the last one closed;
+  //   {name: 'posing', exercise, saved}: the exercise's pose is loading, its first update
+  //     chooses the pixel and opens it;
+  //   {name: 'choosing', exercise, saved}: the own-pixel exercise waits for a click;
+  //   {name: 'open', exercise, saved, pixel, index, truth, signature}: the question is on
+  //     screen, about `pixel` ([x, y], or null) at crop index `index`; `truth` the reference's
+  //     answers; `signature` the pose it was asked on.
+  // `saved`: the pose the first exercise replaced, which leaving restores.
+  let mode = {name: 'idle', note: ''};
   const progress = load();
 
   function load() {
@@ -173,7 +204,7 @@ window.recodePredict = (function () {
       return pickWhere(rays, function (i) { return rays['case'][i] === pick.kase; });
     if (pick.outsideMor)
       return pickWhere(rays, function (i, x, y) {
-        return (rays.coverage[i] & 1) !== 0 && !inRect(rays.mor, x, y);
+        return covers(rays.coverage[i], common.COVER_A) && !inRect(rays.mor, x, y);
       });
     if (pick.outsideMax) {  // on no block, two pixels or more outside the MOR of mode max
       const m = page.morOf('max');
@@ -184,17 +215,17 @@ window.recodePredict = (function () {
     }
     if (pick.touching)  // interfering, and one block's far end is the other's near end
       return pickWhere(rays, function (i) {
-        const k = rays['case'][i];
-        return k >= 3 && k <= 6 && (rays.b_back[i] === rays.a_front[i] ||
-                                    rays.a_back[i] === rays.b_front[i]);
+        return common.interferes(rays['case'][i]) && (rays.b_back[i] === rays.a_front[i] ||
+                                                      rays.a_back[i] === rays.b_front[i]);
       });
     return null;
   }
 
-  // A 24-bit depth as the coordinate along the view axis (the 3-D view's conversion).
+  // A depth of the ray data (0 to depth_max) as the coordinate along the view axis (the 3-D
+  // view's conversion).
   function worldDepth(rays, z) {
     const r = rays.depth_range;
-    return r[1] - (z / DEPTH_ONE) * (r[1] - r[0]);
+    return r[1] - (z / rays.depth_max) * (r[1] - r[0]);
   }
 
   // The reference's answers: at crop index i (when there is a pixel) the ray's depths, the
@@ -210,11 +241,12 @@ window.recodePredict = (function () {
         return k < 0 ? 0 : rays.stencil[k][i];  // a pass that did not run left the clear, 0
       });
       t.kase = rays['case'][i];
-      const cov = rays.coverage[i];
-      t.depths = {
-        A: cov & 1 ? [worldDepth(rays, rays.a_front[i]), worldDepth(rays, rays.a_back[i])] : null,
-        B: cov & 2 ? [worldDepth(rays, rays.b_front[i]), worldDepth(rays, rays.b_back[i])] : null,
+      const ends = function (bit, front, back) {
+        return covers(rays.coverage[i], bit)
+          ? [worldDepth(rays, front[i]), worldDepth(rays, back[i])] : null;
       };
+      t.depths = {A: ends(common.COVER_A, rays.a_front, rays.a_back),
+        B: ends(common.COVER_B, rays.b_front, rays.b_back)};
       t.inMor = inRect(rays.mor, pixel[0], pixel[1]);
     }
     const s = page.scene3d, k = common.PERM[s.axis][2];
@@ -225,7 +257,7 @@ window.recodePredict = (function () {
         lo = Math.min(lo, b.positions[v]);
         hi = Math.max(hi, b.positions[v]);
       }
-      t.ranges[n === 0 ? 'A' : 'B'] = [hi, lo];  // near end first: the viewer is on +axis
+      t.ranges[BLOCKS[n]] = [hi, lo];  // near end first: the viewer is on +axis
     });
     if (asks(e, 'mor')) {
       t.mor = {};
@@ -265,78 +297,97 @@ window.recodePredict = (function () {
       TOLERANCE + ').';
   }
 
+  // A refusal: `step` the question ('depths', 'ranges', 'mor', 'boxtest', 'pass'), the step
+  // misapplied (its title and rule), what is wrong, the student's inputs to it (HTML); for a
+  // pass, `pass` (1-5, 6 for the read-back) and `stepId`, the section whose pictures show it.
+  function refusal(step, title, rule, message, inputs, pass, stepId) {
+    return {correct: false, step: step, pass: pass || 0, title: title, rule: rule,
+      message: message, inputs: inputs || '', stepId: stepId};
+  }
+
+  // Each block's near and far ends (ENDS: where the ray enters and leaves it, or its range
+  // along the view axis), A then B.
+  function checkEnds(what, answers, open) {
+    const q = ENDS[what], t = open.truth;
+    for (let n = 0; n < BLOCKS.length; ++n) {
+      const name = BLOCKS[n], given = answers[what][name];
+      const other = what === 'depths' ? t.depths[BLOCKS[1 - n]] : null;
+      const err = depthError(name, given, t[what][name], other, q.what);
+      if (!err) continue;
+      const none = '(not on this ray)';
+      return refusal(what, q.title + name, definition(q.term), q.noun + ' of ' + name + ': ' +
+        err, 'you gave: near end ' + esc(given.none ? none : given.near) + ', far end ' +
+        esc(given.none ? none : given.far));
+    }
+    return null;
+  }
+
+  // Which MOR modes examine the pixel, in the order min, max, full.
+  function checkMor(answers, open) {
+    const m = MODES.find(function (x) { return Boolean(answers.mor[x]) !== open.truth.mor[x]; });
+    if (!m) return null;
+    return refusal('mor', 'MOR ' + m, definition('term-mor-' + m), 'MOR ' + m + ': you said it ' +
+      (answers.mor[m] ? 'examines' : 'does not examine') + ' this pixel; read its definition ' +
+      'again (the modes before it are right).',
+      'pixel (' + open.pixel[0] + ', ' + open.pixel[1] + ')');
+  }
+
+  // Whether the box test stops the pair, against the ranges the student gave.
+  function checkBoxTest(answers, open) {
+    if ((answers.box === 'stops') === open.truth.boxStops) return null;
+    const r = asks(open.exercise, 'ranges') ? answers.ranges : answers.depths;
+    return refusal('boxtest', 'the box test', definition('term-box-test'), 'Box test: ' +
+      'misapplied: you said ' + (answers.box === 'stops' ? 'it stops the pair before any pass' :
+      'the passes run') + '. Compare the two blocks\u2019 ranges along the view axis (touching ' +
+      'counts as meeting) and their footprints.', BLOCKS.map(function (n) {
+        return n + ' from ' + esc(r[n].near) + ' to ' + esc(r[n].far);
+      }).join('; ') + ' (as you gave them)');
+  }
+
+  // The stencil after each pass, then the case read back.
+  function checkPasses(answers, open) {
+    const t = open.truth;
+    const k = PASSES.findIndex(function (p, n) {
+      return Number(answers.stencil[n]) !== t.stencil[n];
+    });
+    if (k >= 0)
+      return refusal('pass', PASSES[k].title, PASSES[k].rule, 'Pass ' + PASSES[k].title +
+        ': its rule was misapplied here (the passes before it are right).',
+        passInputs(k, answers), k + 1, PASSES[k].id);
+    if (Number(answers.kase) === t.kase) return null;
+    return refusal('pass', DECODE.title, DECODE.rule, 'Pass ' + DECODE.title + ': the case ' +
+      'was misread from the stencil (the passes before it are right).',
+      passInputs(PASSES.length, answers), PASSES.length + 1, DECODE.id);
+  }
+
+  // The questions in the order the student answers them, each checked only where the exercise
+  // asks it: the first that returns a refusal is the step misapplied (the ones before it are
+  // right).
+  const STEPS = [
+    {ask: 'depths', check: function (a, open) { return checkEnds('depths', a, open); }},
+    {ask: 'ranges', check: function (a, open) { return checkEnds('ranges', a, open); }},
+    {ask: 'mor', check: checkMor},
+    {ask: 'boxtest', check: checkBoxTest},
+    {ask: 'passes', check: checkPasses},
+  ];
+
   // answers = {depths: {A: {near, far, none}, B: ...}, ranges: {A: {near, far}, B: ...},
   // mor: {min, max, full}, box: 'stops' | 'runs', stencil: [five numbers], kase: number (-1:
-  // not examined)}; only what the exercise asks is read. The first step whose answer differs
-  // from the reference's is the one misapplied (the steps before it are right). Returns
-  // {correct, step ('depths', 'ranges', 'mor', 'boxtest', 'pass'), pass (1-5, 6 for the
-  // read-back), title, rule, message, inputs (HTML: what the step tested, as answered)}.
+  // not examined)}; only what the exercise asks is read. Returns the first step's refusal
+  // (refusal() above), or {correct: true, message} and records the exercise solved.
   function check(answers) {
-    if (!current) throw new Error('no exercise is open');
-    const e = current.exercise, t = current.truth;
+    if (mode.name !== 'open') throw new Error('no exercise is open');
+    const open = mode, e = open.exercise;
     let v = null;
-    const wrong = function (step, title, rule, message, inputs) {
-      v = {correct: false, step: step, pass: 0, title: title, rule: rule, message: message,
-        inputs: inputs || ''};
-    };
-    ['depths', 'ranges'].forEach(function (what) {
-      if (v || !asks(e, what)) return;
-      ['A', 'B'].forEach(function (name) {
-        if (v) return;
-        const given = answers[what][name];
-        const truth = what === 'depths' ? t.depths[name] : t.ranges[name];
-        const other = what === 'depths' ? t.depths[name === 'A' ? 'B' : 'A'] : null;
-        const err = depthError(name, given, truth, other, what === 'depths' ? 'depth' : 'range');
-        if (err)
-          wrong(what, what === 'depths' ? 'the depths of ' + name : 'the range of ' + name,
-            definition(what === 'depths' ? 'term-entry-exit' : 'term-bounding-box'),
-            (what === 'depths' ? 'Depths' : 'Range') + ' of ' + name + ': ' + err,
-            'you gave: near end ' + esc(given.none ? '(not on this ray)' : given.near) +
-            ', far end ' + esc(given.none ? '(not on this ray)' : given.far));
-      });
+    STEPS.some(function (s) {
+      v = asks(e, s.ask) ? s.check(answers, open) : null;
+      return v !== null;
     });
-    if (!v && asks(e, 'mor')) {
-      MODES.forEach(function (m) {
-        if (v || Boolean(answers.mor[m]) === t.mor[m]) return;
-        wrong('mor', 'MOR ' + m, definition('term-mor-' + m), 'MOR ' + m + ': you said it ' +
-          (answers.mor[m] ? 'examines' : 'does not examine') + ' this pixel; read its ' +
-          'definition again (the modes before it are right).',
-          'pixel (' + current.pixel[0] + ', ' + current.pixel[1] + ')');
-      });
-    }
-    if (!v && asks(e, 'boxtest') && (answers.box === 'stops') !== t.boxStops) {
-      const r = asks(e, 'ranges') ? answers.ranges : answers.depths;
-      wrong('boxtest', 'the box test', definition('term-box-test'), 'Box test: misapplied: ' +
-        'you said ' + (answers.box === 'stops' ? 'it stops the pair before any pass' :
-        'the passes run') + '. Compare the two blocks\u2019 ranges along the view axis (touching ' +
-        'counts as meeting) and their footprints.', ['A', 'B'].map(function (n) {
-          return n + ' from ' + esc(r[n].near) + ' to ' + esc(r[n].far);
-        }).join('; ') + ' (as you gave them)');
-    }
-    if (!v && asks(e, 'passes')) {
-      for (let k = 0; k < PASSES.length && !v; ++k) {
-        if (Number(answers.stencil[k]) !== t.stencil[k]) {
-          wrong('pass', PASSES[k].title, PASSES[k].rule, 'Pass ' + PASSES[k].title + ': its ' +
-            'rule was misapplied here (the passes before it are right).',
-            passInputs(k, answers));
-          v.pass = k + 1;
-          v.stepId = PASSES[k].id;
-        }
-      }
-      if (!v && Number(answers.kase) !== t.kase) {
-        wrong('pass', DECODE.title, DECODE.rule, 'Pass ' + DECODE.title + ': the case was ' +
-          'misread from the stencil (the passes before it are right).', passInputs(5, answers));
-        v.pass = 6;
-        v.stepId = DECODE.id;
-      }
-    }
-    if (!v) {
-      v = {correct: true, step: '', pass: 0, title: '', rule: '', inputs: '',
-        message: 'Right: every step agrees with the reference.'};
-      progress.solved[e.id] = true;
-      save();
-    }
-    return v;
+    if (v) return v;
+    progress.solved[e.id] = true;
+    save();
+    return {correct: true, step: '', pass: 0, title: '', rule: '', inputs: '',
+      message: 'Right: every step agrees with the reference.'};
   }
 
   // The definition the page's Terms give for `id` (its <dd>), as text.
@@ -346,36 +397,36 @@ window.recodePredict = (function () {
     return dd ? dd.textContent.replace(/\s+/g, ' ').trim() : '';
   }
 
-  // What pass k (0-4; 5: the read-back) tested at the pixel: the stencil before it, as the
-  // student answered the pass before (right, or the check would have stopped there), and the
-  // depths it compares, as the student gave them or as the exercise gave them.
+  function stencilText(v) {
+    return v + ' (binary ' + v.toString(2).padStart(4, '0') + ', count ' + common.countOf(v) + ')';
+  }
+
+  // What pass k (0-4; 5: the read-back) tested at the pixel: whether the pixel is in the MOR,
+  // the stencil before it, as the student answered the pass before (right, or the check would
+  // have stopped there), and the step's operands (common.js's stepWords): the face depths it
+  // compares, as the student gave them or as the exercise gave them, and whether A is on the
+  // ray.
   function passInputs(k, answers) {
-    const t = current.truth, e = current.exercise;
-    const before = k === 0 ? 0 : Number(answers.stencil[k - 1]);
-    const stencil = (k === 0 ? 'stencil before it: the clear value 0' : 'stencil before it: ' +
-      before + ' (binary ' + before.toString(2).padStart(4, '0') + ', count ' + (before & 3) +
-      ')');
-    const given = asks(e, 'depths');
-    const depth = function (name, end) {
-      const label = name + (end ? '<sub>max</sub>' : '<sub>min</sub>');
-      if (given) {
-        const d = answers.depths[name];
-        return label + ' ' + (d.none ? 'none (not on this ray)' : esc(end ? d.far : d.near));
+    const open = mode, t = open.truth;
+    const step = k < PASSES.length ? PASSES[k] : DECODE;
+    const studentDepths = asks(open.exercise, 'depths');
+    const operand = function (name) {
+      if (name === 'a_covers') return 'A ' + (t.depths.A ? 'on' : 'not on') + ' this ray';
+      const f = FACES[name];
+      if (!f) return esc(name);  // named by the C++ but unknown here: shown as it is named
+      if (studentDepths) {
+        const d = answers.depths[f.block];
+        return f.label + ' ' + (d.none ? 'none (not on this ray)' : esc(d[f.end]));
       }
-      const rays = page.rayData, i = current.index;
-      if (!t.depths[name]) return label + ' none (not on this ray)';
-      const faces = name === 'A' ? [rays.a_front, rays.a_back] : [rays.b_front, rays.b_back];
-      return label + ' ' + depthText(rays, faces[end][i]);
+      if (!t.depths[f.block]) return f.label + ' none (not on this ray)';
+      return f.label + ' ' + depthText(page.rayData, page.rayData[name][open.index]);
     };
-    const where = 'pixel ' + (t.inMor ? 'inside' : 'outside') + ' the MOR';
-    const parts = [[where, 'A ' + (t.depths.A ? 'on' : 'not on') + ' this ray', stencil],
-      [where, stencil, depth('A', 1), depth('B', 0), depth('B', 1)],
-      [where, stencil],
-      [where, stencil, depth('A', 0), depth('B', 0)],
-      [where, stencil, depth('A', 0), depth('B', 1)],
-      [where, 'stencil after pass 5: ' + esc(answers.stencil[4])]][k];
-    return parts.join('; ') + (!given || k === 0 || k === 2 || k === 5 ? '' :
-      ' (depths as coordinates along the view axis: the larger is nearer the viewer)');
+    const parts = ['pixel ' + (t.inMor ? 'inside' : 'outside') + ' the MOR',
+      'stencil before it: ' + (k === 0 ? 'the clear value 0' :
+        stencilText(Number(answers.stencil[k - 1])))].concat(step.operands.map(operand));
+    const compares = step.operands.some(function (o) { return FACES[o] !== undefined; });
+    return parts.join('; ') + (studentDepths && compares ?
+      ' (depths as coordinates along the view axis: the larger is nearer the viewer)' : '');
   }
 
   // --- the panel -------------------------------------------------------------------------------
@@ -390,55 +441,79 @@ window.recodePredict = (function () {
   }
 
   function depthInputs(what) {
-    const id = 'predict-' + (what === 'depths' ? 'depth' : 'range');
-    let h = '<fieldset id="' + id + 's"><legend>' + (what === 'depths'
+    const f = ENDS[what].field;
+    const number = function (n, end) {
+      return '<label>' + end + ' end <input type="number" step="any" required id="' +
+        fieldId(f, n, end) + '"></label>';
+    };
+    let h = '<fieldset id="predict-' + what + '"><legend>' + (what === 'depths'
       ? 'Where the ray enters and leaves each block (' + term('term-entry-exit', 'entry and ' +
         'exit') + '), as the coordinate along the ' + term('term-view-axis', 'view axis') +
         ', to within ' + TOLERANCE
       : 'Each block\u2019s range along the ' + term('term-view-axis', 'view axis') + ' (its ' +
         term('term-bounding-box', 'bounding box') + '), to within ' + TOLERANCE) +
       '</legend><table id="predict-inputs">';
-    ['A', 'B'].forEach(function (n) {
-      h += '<tr><th>' + n + '</th><td><label>near end <input type="number" step="any" ' +
-        'required id="' + id + '-' + n + '-near"></label></td><td><label>far end <input ' +
-        'type="number" step="any" required id="' + id + '-' + n + '-far"></label></td>' +
-        (what === 'depths' ? '<td><label><input type="checkbox" id="' + id + '-' + n +
-        '-none"> not on this ray</label></td>' : '') + '</tr>';
+    BLOCKS.forEach(function (n) {
+      h += '<tr><th>' + n + '</th><td>' + number(n, 'near') + '</td><td>' + number(n, 'far') +
+        '</td>' + (what === 'depths' ? '<td><label><input type="checkbox" id="' +
+        fieldId(f, n, 'none') + '"> not on this ray</label></td>' : '') + '</tr>';
     });
     return h + '</table></fieldset>';
   }
 
-  function question(e, rays) {
-    let h = '';
-    const pixel = current.pixel;
-    const given = !e.ask;
-    if (pixel) {
-      const x = pixel[0], y = pixel[1], i = current.index;
-      h += '<p id="predict-pixel">' + term('term-pixel', 'Pixel') + ' (' + x + ', ' + y + ')';
-      if (!asks(e, 'mor'))
-        h += ', ' + (inRect(rays.mor, x, y) ? 'inside' : '<b>outside</b>') + ' the ' +
-          term('term-mor', 'MOR') + ' [' + (rays.mor ? rays.mor.join(', ') : '') + ')';
-      if (given) {
-        const cov = rays.coverage[i];
-        const line = function (name, has, front, back) {
-          return '<li><b>' + name + '</b>: ' + (has ? 'enters at depth ' +
-            depthText(rays, front) + ', leaves at ' + depthText(rays, back) :
-            'not on this ray') + '</li>';
-        };
-        h += '. Its ray (' + term('term-depth', 'depth') + ' 0 nearest the viewer, 1 ' +
-          'farthest; the 3-D view marks where it enters and leaves each block):</p><ul>' +
-          line('A', cov & 1, rays.a_front[i], rays.a_back[i]) +
-          line('B', cov & 2, rays.b_front[i], rays.b_back[i]) + '</ul>';
-      } else {
-        h += '.</p>';
-      }
-    }
-    if (!given) {
+  // The pixel, and its ray's depths where the exercise gives them.
+  function pixelText(e, rays, open) {
+    const x = open.pixel[0], y = open.pixel[1], i = open.index;
+    let h = '<p id="predict-pixel">' + term('term-pixel', 'Pixel') + ' (' + x + ', ' + y + ')';
+    if (!asks(e, 'mor'))
+      h += ', ' + (inRect(rays.mor, x, y) ? 'inside' : '<b>outside</b>') + ' the ' +
+        term('term-mor', 'MOR') + ' [' + (rays.mor ? rays.mor.join(', ') : '') + ')';
+    if (e.ask) return h + '.</p>';
+    const line = function (name, bit, front, back) {
+      return '<li><b>' + name + '</b>: ' + (covers(rays.coverage[i], bit) ? 'enters at depth ' +
+        depthText(rays, front) + ', leaves at ' + depthText(rays, back) :
+        'not on this ray') + '</li>';
+    };
+    return h + '. Its ray (' + term('term-depth', 'depth') + ' 0 nearest the viewer, 1 ' +
+      'farthest; the 3-D view marks where it enters and leaves each block):</p><ul>' +
+      line('A', common.COVER_A, rays.a_front[i], rays.a_back[i]) +
+      line('B', common.COVER_B, rays.b_front[i], rays.b_back[i]) + '</ul>';
+  }
+
+  function passFields() {
+    let h = '<table><tr><th>after pass</th><th>' + term('term-stencil', 'stencil') +
+      ' (0-15)</th></tr>';
+    PASSES.forEach(function (p, k) {
+      h += '<tr><td>' + term('term-pass-' + (k + 1), esc(p.title)) + '</td><td><input ' +
+        'type="number" min="0" max="15" step="1" id="' + fieldId('stencil', k + 1) +
+        '" required> <span class="bits" id="' + fieldId('bits', k + 1) + '"></span></td></tr>';
+    });
+    h += '<tr><td>' + term('term-read-back', esc(DECODE.title)) + ': the case</td><td>' +
+      '<select id="' + fieldId('case') + '" required><option value="">choose</option>';
+    common.CASES.forEach(function (c) {
+      h += '<option value="' + c + '">case ' + c + '</option>';
+    });
+    h += '<option value="' + NOT_EXAMINED + '">not examined (outside the MOR)</option></select>' +
+      '</td></tr></table>';
+    return h + '<details id="predict-rules"><summary>The rules of the passes and of the ' +
+      'read-back</summary><ol>' + PASSES.concat([DECODE]).map(function (p, k) {
+      return '<li><b>' + term(k < PASSES.length ? 'term-pass-' + (k + 1) : 'term-read-back',
+        esc(p.title)) + '</b>: ' + esc(p.rule) + '</li>';
+    }).join('') + '</ol><p>Depth tests compare 24-bit values; equal depths pass both LEQUAL ' +
+      'and GEQUAL (' + term('term-depth-test', 'depth tests') + '). The stencil test 1 &le; ' +
+      'count reads bits 0-1 only. The read-back’s decoding: ' +
+      term('term-stencil-encoding', 'stencil encoding') + ', ' +
+      term('term-cases', 'the nine cases') + '.</p></details>';
+  }
+
+  function question(e, rays, open) {
+    let h = open.pixel ? pixelText(e, rays, open) : '';
+    if (e.ask) {
       h += '<p id="predict-blocks">The blocks, seen along ' + esc(page.state.axis) +
         ' (the viewer on the side of larger ' + esc(page.state.axis) + '): ' +
         e.blocks.map(blockText).join('; ') + '. The 3-D view is turned to show the depth ' +
         'scale on the view axis (its ticks are ' + esc(page.state.axis) + ' values)' +
-        (pixel ? ' and the pixel\u2019s ray (yellow)' : '') + '.</p>';
+        (open.pixel ? ' and the pixel\u2019s ray (yellow)' : '') + '.</p>';
     }
     h += '<form id="predict-form">';
     if (asks(e, 'depths')) h += depthInputs('depths');
@@ -446,39 +521,17 @@ window.recodePredict = (function () {
     if (asks(e, 'mor')) {
       h += '<fieldset id="predict-mor"><legend>Which ' + term('term-mor', 'MOR') + ' modes ' +
         'examine this pixel?</legend>' + MODES.map(function (m) {
-          return '<label><input type="checkbox" id="predict-mor-' + m + '"> ' +
+          return '<label><input type="checkbox" id="' + fieldId('mor', m) + '"> ' +
             term('term-mor-' + m, 'MOR ' + m) + '</label> ';
         }).join('') + '</fieldset>';
     }
     if (asks(e, 'boxtest')) {
       h += '<fieldset id="predict-boxtest"><legend>The ' + term('term-box-test', 'box test') +
-        '</legend><select id="predict-box" required><option value="">choose</option>' +
-        '<option value="stops">stops the pair: no pass runs</option><option value="runs">' +
-        'lets the passes run</option></select></fieldset>';
+        '</legend><select id="' + fieldId('box') + '" required><option value="">choose' +
+        '</option><option value="stops">stops the pair: no pass runs</option><option ' +
+        'value="runs">lets the passes run</option></select></fieldset>';
     }
-    if (asks(e, 'passes')) {
-      h += '<table><tr><th>after pass</th><th>' + term('term-stencil', 'stencil') +
-        ' (0-15)</th></tr>';
-      PASSES.forEach(function (p, k) {
-        h += '<tr><td>' + term('term-pass-' + (k + 1), esc(p.title)) + '</td><td><input ' +
-          'type="number" min="0" max="15" step="1" id="predict-stencil-' + (k + 1) +
-          '" required> <span class="bits" id="predict-bits-' + (k + 1) + '"></span></td></tr>';
-      });
-      h += '<tr><td>' + term('term-read-back', esc(DECODE.title)) + ': the case</td><td>' +
-        '<select id="predict-case" required><option value="">choose</option>';
-      for (let c = 0; c <= 8; ++c) h += '<option value="' + c + '">case ' + c + '</option>';
-      h += '<option value="-1">not examined (outside the MOR)</option></select></td></tr>';
-      h += '</table>';
-      h += '<details id="predict-rules"><summary>The rules of the passes and of the ' +
-        'read-back</summary><ol>' + PASSES.concat([DECODE]).map(function (p, k) {
-        return '<li><b>' + term(k < PASSES.length ? 'term-pass-' + (k + 1) : 'term-read-back',
-          esc(p.title)) + '</b>: ' + esc(p.rule) + '</li>';
-      }).join('') + '</ol><p>Depth tests compare 24-bit values; equal depths pass both LEQUAL ' +
-        'and GEQUAL (' + term('term-depth-test', 'depth tests') + '). The stencil test 1 &le; ' +
-        'count reads bits 0-1 only. The read-back’s decoding: ' +
-        term('term-stencil-encoding', 'stencil encoding') + ', ' +
-        term('term-cases', 'the nine cases') + '.</p></details>';
-    }
+    if (asks(e, 'passes')) h += passFields();
     h += '<button type="submit" id="predict-check">Check</button> ' +
       '<button type="button" id="predict-close">Leave the exercise</button></form>' +
       '<div id="predict-feedback" aria-live="polite"></div>';
@@ -509,35 +562,34 @@ window.recodePredict = (function () {
     let h = '<h2>Predict</h2><p>Each exercise poses the blocks and chooses a pixel; the ' +
       'buffers are hidden until you answer. Answer what it asks (the depths, the MOR, the box ' +
       'test, the stencil after each pass and the case), then check.</p>' +
-      (note ? '<p class="note" id="predict-note">' + note + '</p>' : '') +
+      (mode.note ? '<p class="note" id="predict-note">' + mode.note + '</p>' : '') +
       '<div id="predict-list-wrap">' + listHtml() + '</div>';
-    if (current) {
-      const e = current.exercise;
+    if (mode.exercise && mode.name !== 'posing') {
+      const e = mode.exercise;
       h += '<div id="predict-exercise"><h3>' + esc(e.title) + '</h3><p>' + e.intro + '</p>' +
-        practises(e) + question(e, page.rayData) + '</div>';
-    } else if (choosing) {
-      const e = EXERCISES.find(function (x) { return x.pick.own; });
-      h += '<div id="predict-exercise"><h3>' + esc(e.title) + '</h3><p>' + e.intro + '</p>' +
-        practises(e) + '</div>';
+        practises(e) + (mode.name === 'open' ? question(e, page.rayData, mode) : '') + '</div>';
     }
     panel.innerHTML = h;
     bindList();
-    if (!current) return;
+    if (mode.name === 'open') bindForm();
+  }
+
+  function bindForm() {
     PASSES.forEach(function (p, k) {
-      const input = $('predict-stencil-' + (k + 1));
+      const input = $(fieldId('stencil', k + 1));
       if (!input) return;
       input.addEventListener('input', function () {
         const v = Number(input.value);
-        $('predict-bits-' + (k + 1)).textContent =
+        $(fieldId('bits', k + 1)).textContent =
           input.value !== '' && v >= 0 && v <= 15 ? 'binary ' + v.toString(2).padStart(4, '0') : '';
       });
     });
-    ['A', 'B'].forEach(function (n) {  // "not on this ray": no depths to give
-      const none = $('predict-depth-' + n + '-none');
+    BLOCKS.forEach(function (n) {  // "not on this ray": no depths to give
+      const none = $(fieldId('depth', n, 'none'));
       if (!none) return;
       none.addEventListener('change', function () {
         ['near', 'far'].forEach(function (end) {
-          const input = $('predict-depth-' + n + '-' + end);
+          const input = $(fieldId('depth', n, end));
           input.disabled = none.checked;
           input.required = !none.checked;
         });
@@ -555,21 +607,24 @@ window.recodePredict = (function () {
     $('predict-close').addEventListener('click', leave);
   }
 
+  // The form's answers as check() takes them, each field read by its fieldId.
   function readAnswers() {
     const value = function (id) { const n = $(id); return n ? n.value : ''; };
-    const ends = function (prefix, n) {
-      const none = $(prefix + n + '-none');
-      return {near: value(prefix + n + '-near'), far: value(prefix + n + '-far'),
-        none: !!(none && none.checked)};
+    const ticked = function (id) { const n = $(id); return !!(n && n.checked); };
+    const ends = function (what, n) {
+      const f = ENDS[what].field;
+      return {near: value(fieldId(f, n, 'near')), far: value(fieldId(f, n, 'far')),
+        none: ticked(fieldId(f, n, 'none'))};
     };
-    const a = {depths: {}, ranges: {}, mor: {}, box: value('predict-box'),
-      stencil: PASSES.map(function (p, k) { return value('predict-stencil-' + (k + 1)); }),
-      kase: value('predict-case') === '' ? NaN : Number(value('predict-case'))};
-    ['A', 'B'].forEach(function (n) {
-      a.depths[n] = ends('predict-depth-', n);
-      a.ranges[n] = ends('predict-range-', n);
+    const kase = value(fieldId('case'));
+    const a = {depths: {}, ranges: {}, mor: {}, box: value(fieldId('box')),
+      stencil: PASSES.map(function (p, k) { return value(fieldId('stencil', k + 1)); }),
+      kase: kase === '' ? NaN : Number(kase)};
+    BLOCKS.forEach(function (n) {
+      a.depths[n] = ends('depths', n);
+      a.ranges[n] = ends('ranges', n);
     });
-    MODES.forEach(function (m) { const c = $('predict-mor-' + m); a.mor[m] = !!(c && c.checked); });
+    MODES.forEach(function (m) { a.mor[m] = ticked(fieldId('mor', m)); });
     return a;
   }
 
@@ -611,7 +666,7 @@ window.recodePredict = (function () {
       }
     } else {
       document.body.classList.remove('predicting');
-      const p = current.pixel;
+      const p = mode.pixel;
       if (p) {
         page.showRay([p[0], p[1]]);
         window.recodeInspector.showPixel([p[0], p[1]]);
@@ -637,97 +692,82 @@ window.recodePredict = (function () {
 
   // --- opening and leaving an exercise ------------------------------------------------------
 
+  // idle, posing, choosing or open -> posing (choosing for the own-pixel exercise).
   function start(id) {
     const e = EXERCISES.find(function (x) { return x.id === id; });
     if (!e) throw new Error('no exercise ' + id);
-    if (!current && !choosing && !pending) saved = page.pose();
-    current = null;
-    choosing = false;
-    note = '';
+    const saved = mode.name === 'idle' ? page.pose() : mode.saved;
     hideSections();
     document.body.classList.add('predicting');
-    if (e.pick.own) {
-      choosing = true;
-      pending = null;
-      render();
-      return;
-    }
-    page.load({blocks: e.blocks, axis: 'z', resolution: 64, mor: e.mor,
-      boxTest: e.boxTest !== false});
-    pending = e;
+    mode = {name: e.pick.own ? 'choosing' : 'posing', exercise: e, saved: saved};
+    if (!e.pick.own)
+      page.load({blocks: e.blocks, axis: 'z', resolution: 64, mor: e.mor,
+        boxTest: e.boxTest !== false});
     render();
   }
 
-  function open(e, pixel, rays) {
-    current = {exercise: e, pixel: pixel ? [pixel[0], pixel[1]] : null,
-      index: pixel ? pixel[2] : -1, truth: truthAt(e, rays, pixel),
-      signature: page.signature()};
+  // posing or choosing -> open, at `pixel` ([x, y, crop index], or null).
+  function open(pixel, rays) {
+    const e = mode.exercise;
+    mode = {name: 'open', exercise: e, saved: mode.saved,
+      pixel: pixel ? [pixel[0], pixel[1]] : null, index: pixel ? pixel[2] : -1,
+      truth: truthAt(e, rays, pixel), signature: page.signature()};
     // The inspector (hidden until the answer) and the 3-D ray are about this pixel, whatever
     // was pinned before; where the student reads the depths, the ray has no entry and exit
     // marks and the view is turned to show the depth scale.
-    window.recodeInspector.showPixel(pixel ? [pixel[0], pixel[1]] : null);
-    page.showRay(pixel ? [pixel[0], pixel[1]] : null, !asks(e, 'depths'));
+    window.recodeInspector.showPixel(mode.pixel);
+    page.showRay(mode.pixel, !asks(e, 'depths'));
     if (page.view3d && (asks(e, 'depths') || asks(e, 'ranges'))) page.view3d.lookFromSide();
     render();
   }
 
-  // Ends the exercise: `restore` puts back the pose the first exercise replaced.
-  function finish(restore) {
-    current = null;
-    choosing = false;
-    pending = null;
+  // Any -> idle: the page shows the buffers again and the inspector no pixel; `restore` puts
+  // back the pose the first exercise replaced; `note` (HTML) says why the exercise closed.
+  function finish(restore, note) {
+    const saved = mode.saved;
+    mode = {name: 'idle', note: note || ''};
     document.body.classList.remove('predicting');
     hideSections();
-    page.showRay(null);
     window.recodeInspector.showPixel(null);
+    page.showRay(null);
     if (restore && saved) page.load(saved);
-    saved = null;
-  }
-
-  function leave() {
-    finish(true);
-    note = '';
     render();
   }
+
+  function leave() { finish(true); }
 
   // After every update of the page: an exercise whose pose just ran gets its pixel; one whose
   // pose the student changed is closed, and the page says so (its answer would no longer be
   // this pose's); the student's pose stays.
   page.onUpdate.push(function (rays) {
-    const words = common.stepWords(rays);
     if (!DECODE) {
+      const words = common.stepWords(rays);
       PASSES = words.passes;
       DECODE = words.readBack;
       fillTerms();
     }
-    if (pending) {
-      const e = pending;
-      pending = null;
+    if (mode.name === 'posing') {
+      const e = mode.exercise;
       const p = e.pick.none ? null : choosePixel(e.pick, rays);
-      if (!p && !e.pick.none) {
-        document.body.classList.remove('predicting');
-        $('predict').querySelector('#predict-exercise') ||
-          $('predict').insertAdjacentHTML('beforeend', '<div id="predict-exercise"></div>');
-        $('predict-exercise').innerHTML = '<p class="wrong">This pose has no pixel for the ' +
-          'exercise (the reference no longer gives it): please report it.</p>';
-        return;
+      if (p || e.pick.none) {
+        open(p, rays);
+      } else {
+        finish(false, 'The exercise \u201c' + esc(e.title) + '\u201d has no pixel on its pose ' +
+          '(the reference no longer gives it): please report it.');
       }
-      open(e, p, rays);
       return;
     }
-    if (current && current.signature !== page.signature()) {
-      const title = current.exercise.title;
-      finish(false);
-      note = 'The exercise \u201c' + esc(title) + '\u201d was closed: the pose changed, and its ' +
-        'answers belong to its own pose. Open it again to go back to that pose.';
-      render();
+    if (mode.name === 'open' && mode.signature !== page.signature()) {
+      finish(false, 'The exercise \u201c' + esc(mode.exercise.title) + '\u201d was closed: the ' +
+        'pose changed, and its answers belong to its own pose. Open it again to go back to ' +
+        'that pose.');
     }
   });
 
   // The own-pixel exercise: a click on the picture "Coverage of A and B" (the only one shown)
   // picks it.
   document.addEventListener('click', function (ev) {
-    if (!choosing) return;
+    if (mode.name !== 'choosing') return;
     const img = ev.target.closest && ev.target.closest('#live-result [data-region]');
     if (!img) return;
     const rays = page.rayData;
@@ -748,8 +788,7 @@ window.recodePredict = (function () {
         'margin).</p>');
       return;
     }
-    choosing = false;
-    open(EXERCISES.find(function (e) { return e.pick.own; }), [x, y, i], rays);
+    open([x, y, i], rays);
   }, true);
 
   // The passes' entries in the page's Terms, from the ray data.
@@ -766,7 +805,8 @@ window.recodePredict = (function () {
   return {
     get passes() { return PASSES; }, get decode() { return DECODE; },
     exercises: EXERCISES, tolerance: TOLERANCE, start: start,
-    close: leave, check: check, current: function () { return current; },
+    close: leave, check: check, current: function () { return mode.name === 'open' ? mode : null; },
+    mode: function () { return mode.name; },
     progress: function () { return progress; }, choosePixel: choosePixel,
   };
 })();

@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -176,6 +177,18 @@ TEST_CASE(
     CHECK(words[k]["name"].get<std::string>().rfind(std::to_string(k + 1) + " ", 0) == 0);
     CHECK(words[k]["rule"].get<std::string>().size() > 40);
   }
+  // Each step's operands are what the page can read at a pixel: one of the ray data's arrays
+  // (a face depth) or whether A covers the pixel; TestZ compares three depths.
+  const nlohmann::json rays = explain::rayDataJson(explained.rays);
+  const std::set<std::string> faces = {"a_front", "a_back", "b_front", "b_back"};
+  for (const auto& w : words) {
+    for (const auto& o : w["operands"]) {
+      const std::string name = o.get<std::string>();
+      CAPTURE(w["id"], name);
+      CHECK((name == "a_covers" || (faces.count(name) == 1 && rays.contains(name))));
+    }
+  }
+  CHECK(words[1]["operands"] == nlohmann::json({"a_back", "b_front", "b_back"}));
   int headed = 0;
   for (const explain::Section& s : explained.sections) {
     for (const auto& w : words) {

@@ -5,7 +5,10 @@ Loads the page from file:// with no console error, waits for the WebAssembly mod
 answer, drags a picture (moving block B), exports the scene with the page's button, and requires
 the page's verdict, case counts and whole `recode pair` object to equal the native `recode pair
 --json` on the exported file. Then a second pose through the page's controls (B's position and
-the MOR mode), checked the same way. Saves screenshots, and reports the time of one update at
+the MOR mode), checked the same way. B's position fields show where B is after the slider and
+Play (the scene the page runs has B there, and Export saves it), and a position typed with the
+slider off centre places B there. Choosing the shape obj with no file says that block B needs an
+OBJ file. Saves screenshots, and reports the time of one update at
 256 and 512 pixels as the page measures it (reported, not judged).
 
 Usage: check_interactive_browser.py RECODE WORKDIR
@@ -42,7 +45,7 @@ def settle(dt, updates_before):
     """Waits until the page has run an update after `updates_before` and has nothing pending."""
     deadline = time.time() + TIMEOUT_S
     while time.time() < deadline:
-        s = dt.evaluate("({u: recodePage.updates, p: recodePage.pending(), e: recodePage.error})")
+        s = dt.evaluate("({u: recodePage.metrics.updates, p: recodePage.pending(), e: recodePage.error})")
         if s["e"]:
             fail("the page reports an error: " + s["e"])
         if s["u"] > updates_before and not s["p"]:
@@ -132,15 +135,102 @@ def compare_with_native(recode, dt, scene, what):
     return native
 
 
+FIELDS_JS = """
+(function () {
+  const fields = ['x', 'y', 'z'].map(function (a) {
+    return Number(document.getElementById('pos-B-' + a).value);
+  });
+  const b = JSON.parse(recodePage.sceneText()).objects[1];
+  return {fields: fields, scene: b.position, sweep: recodePage.state.sweep};
+})()
+"""
+
+
+def b_fields_match(dt, what):
+    """B's position fields show where B is: the position the scene file (what Export saves and
+    the page runs) gives it."""
+    got = dt.evaluate(FIELDS_JS)
+    if any(abs(f - s) > 1e-9 for f, s in zip(got["fields"], got["scene"])):
+        fail("%s: B's position fields show %s, the scene the page runs and exports has B at %s "
+             "(slider at %s)" % (what, got["fields"], got["scene"], got["sweep"]))
+    return got
+
+
+def check_sweep_fields(dt, downloads, updates):
+    """The slider and Play move B; its position fields follow, a position typed places B there,
+    and Export saves the pose the fields show."""
+    dt.evaluate("(function () { const s = document.getElementById('sweep'); s.value = '0.5';"
+                " s.dispatchEvent(new Event('input')); })()")
+    updates = settle(dt, updates)
+    moved = b_fields_match(dt, "after the slider")
+    if moved["sweep"] != 0.5:
+        fail("the slider did not move B: the page's sweep is %s" % moved["sweep"])
+    exported = json.load(open(export_scene(dt, downloads, "pose-3-slider.json")))
+    if exported["objects"][1]["position"] != moved["scene"]:
+        fail("Export saved B at %s, its fields show %s"
+             % (exported["objects"][1]["position"], moved["fields"]))
+    # Play for a few updates, then Stop.
+    dt.evaluate("document.getElementById('play').click(); 0")
+    deadline = time.time() + TIMEOUT_S
+    while dt.evaluate("recodePage.metrics.updates") < updates + 5:
+        if time.time() > deadline:
+            fail("Play ran no update within %d s" % TIMEOUT_S)
+        time.sleep(0.05)
+    dt.evaluate("document.getElementById('play').click(); 0")
+    updates = settle(dt, updates)
+    played = b_fields_match(dt, "after Play")
+    if played["sweep"] == moved["sweep"]:
+        fail("Play did not move B: the sweep stayed at %s" % played["sweep"])
+    # A position typed while the slider is off centre: B is where the field says.
+    dt.evaluate("(function () { const z = document.getElementById('pos-B-z'); z.value = '3.25';"
+                " z.dispatchEvent(new Event('change')); })()")
+    updates = settle(dt, updates)
+    typed = b_fields_match(dt, "after typing B's z")
+    if typed["scene"][2] != 3.25:
+        fail("B's z typed as 3.25 with the slider at %s runs B at z %s"
+             % (typed["sweep"], typed["scene"][2]))
+    print("B's position fields follow the slider (%s) and Play (%s), a typed z places B there; "
+          "Export saves what they show" % (moved["fields"], played["fields"]))
+    return updates
+
+
+def check_obj_without_file(dt, updates):
+    """Choosing the shape obj without a file says what is missing instead of silently keeping
+    the last shape; choosing a shape again runs it."""
+    dt.evaluate("(function () { const s = document.getElementById('shape-B'); s.value = 'obj';"
+                " s.dispatchEvent(new Event('change')); })()")
+    deadline = time.time() + TIMEOUT_S
+    while True:
+        e = dt.evaluate("(function () { const e = document.getElementById('live-error');"
+                        " return {hidden: e.hidden, text: e.textContent,"
+                        " pending: recodePage.pending()}; })()")
+        if not e["pending"] and not e["hidden"]:
+            break
+        if time.time() > deadline:
+            fail("shape obj without a file: no message within %d s (the page shows %r)"
+                 % (TIMEOUT_S, e))
+        time.sleep(0.05)
+    if "Block B" not in e["text"] or "OBJ file" not in e["text"]:
+        fail("shape obj without a file: the message %r does not say that block B needs an OBJ "
+             "file" % e["text"])
+    dt.evaluate("(function () { const s = document.getElementById('shape-B'); s.value = 'cone';"
+                " s.dispatchEvent(new Event('change')); })()")
+    updates = settle(dt, updates)
+    if not dt.evaluate("document.getElementById('live-error').hidden"):
+        fail("after choosing the cone again the message stays")
+    print("shape obj without a file: %r" % e["text"])
+    return updates
+
+
 def timing(dt, resolution, runs=7):
     dt.evaluate("(function () { const s = document.getElementById('resolution'); s.value = '%d';"
                 " s.dispatchEvent(new Event('change')); })()" % resolution)
-    settle(dt, dt.evaluate("recodePage.updates") - 1)
+    settle(dt, dt.evaluate("recodePage.metrics.updates") - 1)
     ms, module_ms = [], []
     for _ in range(runs):
         dt.evaluate("recodePage.update()")
-        ms.append(dt.evaluate("recodePage.lastMs"))
-        module_ms.append(dt.evaluate("recodePage.moduleMs"))
+        ms.append(dt.evaluate("recodePage.metrics.lastMs"))
+        module_ms.append(dt.evaluate("recodePage.metrics.moduleMs"))
     return statistics.median(ms), statistics.median(module_ms)
 
 
@@ -196,6 +286,8 @@ def main():
                                     "after the controls")
         if first == second or second == third:
             fail("two poses gave the same answer: the poses did not change what the page ran")
+        updates = check_sweep_fields(dt, downloads, updates)
+        updates = check_obj_without_file(dt, updates)
         if dt.problems():
             fail("console errors: " + "; ".join(dt.problems()))
 

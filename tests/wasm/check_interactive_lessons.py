@@ -19,7 +19,7 @@ file (docs/, .md); a picture an exercise names is one the page shows; the feedba
 are the form's.
 
 The inspector and the layout: after a pixel pinned by a click, an exercise's inspector shows
-the exercise's pixel at open and after a solve; an answer the browser refuses clears the
+the exercise's pixel at open and after a solve, and no pixel once the exercise is left; an answer the browser refuses clears the
 verdict before it; leaving an exercise restores the pose it replaced; a pose change that closes
 an exercise says so; at 800 and 1400 pixels wide the inspector covers no text or picture. The
 3-D view's depth scale marks the view axis's coordinate. The page is under 3 MB; the time of a
@@ -165,7 +165,7 @@ def refused(e, v, what, words):
 
 
 def start(dt, eid):
-    updates = dt.evaluate("recodePage.updates")
+    updates = dt.evaluate("recodePage.metrics.updates")
     dt.evaluate("recodePredict.start(%s); 0" % json.dumps(eid))
     settle(dt, updates)
     cur = dt.evaluate("(function () { const c = recodePredict.current(); return c && {pixel:"
@@ -333,7 +333,7 @@ def check_inspector(dt):
     """A pixel pinned by a click before an exercise never shows in the exercise's inspector."""
     # Pin a pixel of the default pose at 64 pixels (a picture pixel is several screen pixels)
     # by a click on its first picture.
-    updates = dt.evaluate("recodePage.updates")
+    updates = dt.evaluate("recodePage.metrics.updates")
     dt.evaluate("recodePage.load({resolution: 64}); 0")
     settle(dt, updates)
     target = dt.evaluate("(function () { const d = recodePage.rayData; const w = d.crop[2] -"
@@ -356,8 +356,12 @@ def check_inspector(dt):
         fail("after a solve the inspector shows %s, not the exercise's pixel %s"
              % (got, cur["pixel"]))
     leave(dt, before)
+    got = inspector_pixel(dt)
+    if got["pixel"] is not None or (got["title"] or "").startswith("pixel ("):
+        fail("after leaving the exercise the inspector still shows %s (the exercise's pixel was "
+             "%s)" % (got, cur["pixel"]))
     print("inspector: pinned %s before, shows the exercise's pixel %s at open and after the "
-          "solve" % (target, cur["pixel"]))
+          "solve, and no pixel after leaving (%r)" % (target, cur["pixel"], got["title"]))
 
 
 def check_refused_and_leave(dt):
@@ -385,7 +389,7 @@ def check_refused_and_leave(dt):
             click_pixel(dt, "#silhouettes canvas[data-region]", *px)
             if not dt.evaluate("!!recodePredict.current()"):
                 fail("own pixel: the click chose no pixel")
-        updates = dt.evaluate("recodePage.updates")
+        updates = dt.evaluate("recodePage.metrics.updates")
         dt.evaluate("(function () { const i = document.getElementById('pos-B-x');"
                     " i.value = String(Number(i.value) + 0.05);"
                     " i.dispatchEvent(new Event('change')); })()")
@@ -396,7 +400,7 @@ def check_refused_and_leave(dt):
             fail("%s: a pose change left %s" % (eid, s))
     print("a refused answer clears the verdict; leaving restores the pose; a pose change that "
           "closes an exercise says so (exercise and own pixel)")
-    updates = dt.evaluate("recodePage.updates")
+    updates = dt.evaluate("recodePage.metrics.updates")
     dt.evaluate("recodePage.load(%s); 0" % json.dumps({"axis": "x", "resolution": 256,
                                                        "mor": "min", "boxTest": True}))
     settle(dt, updates)

@@ -333,7 +333,7 @@ def broken(truth, k):
 
 
 def check_exercise(recode, work, dt, e):
-    updates = dt.evaluate("recodePage.updates")
+    updates = dt.evaluate("recodePage.metrics.updates")
     dt.evaluate("recodePredict.start(%s); 0" % json.dumps(e["id"]))
     settle(dt, updates)
     cur = dt.evaluate("(function () { const c = recodePredict.current(); return c && {pixel:"
@@ -442,7 +442,7 @@ def drag_timing(dt):
     box = dt.evaluate("(function () { const c = document.querySelector('#live-result canvas');"
                       " c.scrollIntoView({block: 'center'}); const b = c.getBoundingClientRect();"
                       " return {x: b.left + b.width / 2, y: b.top + b.height / 2}; })()")
-    updates, after_drag = dt.evaluate("recodePage.updates"), []
+    updates, after_drag = dt.evaluate("recodePage.metrics.updates"), []
     for k in range(7):
         x, y = box["x"], box["y"]
         step = 4 if k % 2 == 0 else -4
@@ -453,7 +453,7 @@ def drag_timing(dt):
         dt.call("Input.dispatchMouseEvent", type="mouseReleased", x=x + step, y=y, button="left",
                 buttons=0, clickCount=1)
         updates = settle(dt, updates)
-        after_drag.append(dt.evaluate("recodePage.lastMs"))
+        after_drag.append(dt.evaluate("recodePage.metrics.lastMs"))
     return statistics.median(after_drag)
 
 
@@ -461,7 +461,7 @@ def timing(dt):
     """A redraw after a drag at the page's 256 pixels and at its largest, 512, and a turn of
     the 3-D view alone (median of 7)."""
     at256 = drag_timing(dt)
-    updates = dt.evaluate("recodePage.updates")
+    updates = dt.evaluate("recodePage.metrics.updates")
     dt.evaluate("(function () { const s = document.getElementById('resolution'); s.value = '512';"
                 " s.dispatchEvent(new Event('change')); })()")
     settle(dt, updates)
@@ -500,7 +500,7 @@ def main():
         dt.screenshot(os.path.join(work, "view3d.png"))
         drag256, drag512, turn_ms = timing(dt)
         # A second pose: other shapes, turned about every axis, seen along y at 128 pixels.
-        updates = dt.evaluate("recodePage.updates")
+        updates = dt.evaluate("recodePage.metrics.updates")
         dt.evaluate("recodePage.load(%s); 0" % json.dumps(SECOND_POSE))
         settle(dt, updates)
         check_silhouettes(dt, dt.evaluate("recodePage.scene3d"))

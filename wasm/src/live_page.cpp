@@ -4,6 +4,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <string_view>
+#include <type_traits>
+#include <vector>
 
 #include "explain/explain_page.hpp"
 #include "explain/explain_rays.hpp"
@@ -33,16 +36,21 @@ LivePage livePage(const PairRequestText& request) {
       explain::explainRun(setup, run.result, recorder.snapshots(), run.request.mor,
                           run.request.boxTest, {}, &page.pictures, {});
   const explain::RayArrays& arrays = explained.rays;
-  // One block of numbers, in the order of "ray_arrays" below: the page makes typed arrays of
-  // it instead of reading hundreds of thousands of numbers as JSON.
-  for (const auto& step : arrays.depth)
-    page.rays.insert(page.rays.end(), step.begin(), step.end());
-  for (const auto& step : arrays.stencil)
-    page.rays.insert(page.rays.end(), step.begin(), step.end());
-  for (const auto* a :
-       {&arrays.aFront, &arrays.aBack, &arrays.bFront, &arrays.bBack, &arrays.coverage})
-    page.rays.insert(page.rays.end(), a->begin(), a->end());
-  page.rays.insert(page.rays.end(), arrays.cases.begin(), arrays.cases.end());
+  // One block of numbers, the arrays one after the other in the order "ray_arrays.order"
+  // names them (per_step: one array per step): the page makes typed arrays of it by those
+  // names instead of reading hundreds of thousands of numbers as JSON.
+  nlohmann::ordered_json order = nlohmann::ordered_json::array();
+  explain::forEachRayArray(arrays, [&](std::string_view name, const auto& values) {
+    using Values = std::decay_t<decltype(values)>;
+    constexpr bool perStep = std::is_same_v<Values, std::vector<std::vector<std::uint32_t>>>;
+    order.push_back({{"name", name}, {"per_step", perStep}});
+    if constexpr (perStep) {
+      for (const auto& step : values)
+        page.rays.insert(page.rays.end(), step.begin(), step.end());
+    } else {
+      page.rays.insert(page.rays.end(), values.begin(), values.end());
+    }
+  });
   const explain::Page shown{setup,          std::string(core::toString(run.request.mor)),
                             run.result,     explained.scale,
                             explained.view, explained.sections,
@@ -55,9 +63,7 @@ LivePage livePage(const PairRequestText& request) {
   j["scene3d"] = explain::sceneViewJson(setup, run.result);
   j["ray_arrays"] = {{"offset", reinterpret_cast<std::uintptr_t>(page.rays.data())},
                      {"pixels", arrays.cases.size()},
-                     {"order",
-                      "depth after each step, stencil after each step, a_front, "
-                      "a_back, b_front, b_back, coverage, case"}};
+                     {"order", order}};
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const explain::KeptPicture& p : page.pictures)
     list.push_back({{"file", p.file},

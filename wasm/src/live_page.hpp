@@ -15,9 +15,9 @@ namespace recode::wasm {
 
 struct LivePage {
   // {"pair", "body", "ray_data", "scene3d" (explain/scene_view.hpp), "ray_arrays": {"offset",
-  // "pixels", "order"}, "pictures": [{"file", "width", "height", "offset"}]}; an offset is where
-  // the data lies in the module's memory: the ray inspector's per-pixel arrays as 32-bit
-  // integers, a picture's RGB bytes (rows from the top).
+  // "pixels", "order": [{"name", "per_step"}]}, "pictures": [{"file", "width", "height",
+  // "offset"}]}; an offset is where the data lies in the module's memory: the ray inspector's
+  // per-pixel arrays as 32-bit integers, a picture's RGB bytes (rows from the top).
   std::string json;
   std::vector<explain::KeptPicture> pictures;  // what the pictures' offsets point into
   std::vector<std::int32_t> rays;              // what ray_arrays.offset points into

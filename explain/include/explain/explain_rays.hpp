@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <string_view>
 #include <vector>
 
 #include "explain/explain_recorder.hpp"
@@ -38,7 +39,8 @@ struct RayInputs {
 // bottom row first, over the crop, crop.area() values.
 struct RayArrays {
   nlohmann::json scalars;  // "frame", "crop", "capped", "steps": [{"id"}], "mor",
-                           // "step_words": [{"id", "name", "rule"}] of every step, ...
+                           // "step_words": [{"id", "name", "rule", "operands"}] of every
+                           // step (explain_text.hpp's stepWords, stepOperands), ...
   std::vector<std::vector<std::uint32_t>> depth;    // after each step
   std::vector<std::vector<std::uint32_t>> stencil;  // after each step
   std::vector<std::uint32_t> aFront, aBack, bFront, bBack, coverage;
@@ -51,5 +53,21 @@ struct RayArrays {
 // "a_back", "b_front", "b_back", "coverage", "case", ...}: the arrays and the rest as one JSON
 // object (the inline data of `recode explain`'s page).
 [[nodiscard]] nlohmann::json rayDataJson(RayArrays arrays);
+
+// Calls f(name, values) for every per-pixel array of `r`, in the one order both pages read
+// them by name: "depth" and "stencil" (one array per step), "a_front", "a_back", "b_front",
+// "b_back", "coverage", "case". The static page's JSON keys and the WebAssembly page's block
+// of numbers ("ray_arrays.order") both follow it.
+template <class F>
+void forEachRayArray(const RayArrays& r, F&& f) {
+  f("depth", r.depth);
+  f("stencil", r.stencil);
+  f("a_front", r.aFront);
+  f("a_back", r.aBack);
+  f("b_front", r.bFront);
+  f("b_back", r.bBack);
+  f("coverage", r.coverage);
+  f("case", r.cases);
+}
 
 }  // namespace recode::explain

@@ -2,6 +2,7 @@
 // What the explain page says, for a student who has not read the paper (HTML fragments).
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -22,6 +23,13 @@ struct StepWords {
   std::string_view rule;
 };
 [[nodiscard]] StepWords stepWords(core::PairStep step);
+// What decides the stencil a step leaves at a pixel, besides the stencil before it and whether
+// the pixel is in the MOR: the face depths it compares, named as the ray data's arrays
+// ("a_front" is A's entry Amin, "a_back" its exit Amax, likewise "b_front", "b_back"), and
+// "a_covers", whether A covers the pixel. Empty for a step that leaves the stencil as it found
+// it or only reads it. Sent with the names ("step_words"): the exercises show a wrong pass's
+// inputs by it.
+[[nodiscard]] std::span<const std::string_view> stepOperands(core::PairStep step);
 // The heading of a step's section: its name and what it draws.
 [[nodiscard]] std::string stepTitle(core::PairStep step);
 // Whether the step is the paper's or was added here, with one sentence why (a paragraph).

@@ -102,9 +102,13 @@ RayArrays rayArrays(const RayInputs& in, const PixelRect& frame, const PixelRect
   for (int k = 0; k < core::kPairStepCount; ++k) {
     const auto step = static_cast<core::PairStep>(k);
     const StepWords w = stepWords(step);
+    nlohmann::json operands = nlohmann::json::array();
+    for (const std::string_view o : stepOperands(step))
+      operands.push_back(std::string(o));
     words.push_back({{"id", std::string(core::toString(step))},
                      {"name", std::string(w.name)},
-                     {"rule", std::string(w.rule)}});
+                     {"rule", std::string(w.rule)},
+                     {"operands", operands}});
   }
   j["step_words"] = words;
   return r;
@@ -112,14 +116,8 @@ RayArrays rayArrays(const RayInputs& in, const PixelRect& frame, const PixelRect
 
 nlohmann::json rayDataJson(RayArrays r) {
   nlohmann::json j = std::move(r.scalars);
-  j["depth"] = r.depth;
-  j["stencil"] = r.stencil;
-  j["a_front"] = r.aFront;
-  j["a_back"] = r.aBack;
-  j["b_front"] = r.bFront;
-  j["b_back"] = r.bBack;
-  j["coverage"] = r.coverage;
-  j["case"] = r.cases;
+  forEachRayArray(
+      r, [&j](std::string_view name, const auto& values) { j[std::string(name)] = values; });
   return j;
 }
 

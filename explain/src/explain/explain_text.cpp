@@ -126,6 +126,29 @@ StepWords stepWords(PairStep step) {
   return {"?", ""};
 }
 
+std::span<const std::string_view> stepOperands(PairStep step) {
+  static constexpr std::array<std::string_view, 1> kSetZ = {"a_covers"};
+  static constexpr std::array<std::string_view, 3> kTestZ = {"a_back", "b_front", "b_back"};
+  static constexpr std::array<std::string_view, 2> kFront = {"a_front", "b_front"};
+  static constexpr std::array<std::string_view, 2> kBack = {"a_front", "b_back"};
+  switch (step) {
+    case PairStep::SetZ:
+      return kSetZ;
+    case PairStep::TestZ:
+      return kTestZ;
+    case PairStep::TestAminFront:
+      return kFront;
+    case PairStep::TestAminBack:
+      return kBack;
+    case PairStep::LoadAmin:     // write mask 0
+    case PairStep::ReadStencil:  // reads the stencil only
+    case PairStep::ContactNear:  // the stencil is kept
+    case PairStep::ContactFar:
+      break;
+  }
+  return {};
+}
+
 std::string stepTitle(PairStep step) {
   const auto titled = [step](std::string_view what) {
     return std::string(stepWords(step).name) + ": " + std::string(what);
@@ -203,7 +226,8 @@ std::string stateText(const raster::RenderState& st, double clearDepth) {
            std::string(raster::toString(o.depthPass));
   };
   std::ostringstream t;
-  t << "<p class=\"state\"><b>Device state</b> (read from the device after the step): scissor "
+  t << "<p class=\"state\"><a href=\"#device-state-terms\"><b>Device state</b></a> (read from "
+       "the device after the step): scissor "
     << rectText(st.scissor);
   if (clearDepth >= 0.0)
     t << ", depth cleared to " << formatNumber(clearDepth);
@@ -408,9 +432,10 @@ std::string verdictHtml(const core::PairResult& result) {
     t << "The bounding boxes do not overlap: decided without drawing anything.";
   else
     t << result.interferingPixels << " of the MOR's " << result.mor.area()
-      << " pixels interfere (cases 3-6). Contact area " << formatNumber(result.contact.area)
-      << " world units&sup2;, greatest overlap depth " << formatNumber(result.contact.maxDepth)
-      << " world units.";
+      << " pixels interfere (cases 3-6: the ray passes through a point inside both blocks). "
+         "Contact area "
+      << formatNumber(result.contact.area) << " world units&sup2;, greatest overlap depth "
+      << formatNumber(result.contact.maxDepth) << " world units.";
   t << "</p>";
   return t.str();
 }
