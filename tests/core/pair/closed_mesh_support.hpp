@@ -1,40 +1,13 @@
 #pragma once
-// Closed meshes that are not convex, for the layered pair's suites: a torus, a hollow shell
-// (a sphere with a spherical cavity), and the operations that build them.
+// Closed meshes that are not convex, for the layered pair's suites (besides core::makeTorus): a
+// hollow shell (a sphere with a spherical cavity) and the operations that build it.
 
 #include <Eigen/Geometry>
-#include <cmath>
-#include <numbers>
 
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/mesh.hpp"
 
 namespace recode::test {
-
-// A torus about the z axis through the origin: tube centre radius R, tube radius r, `segments`
-// around the z axis and `rings` around the tube; outward, counter-clockwise seen from outside.
-inline core::TriangleMesh makeTorus(double R, double r, int segments, int rings) {
-  core::TriangleMesh m;
-  for (int i = 0; i < segments; ++i) {
-    const double phi = 2.0 * std::numbers::pi * i / segments;
-    for (int j = 0; j < rings; ++j) {
-      const double theta = 2.0 * std::numbers::pi * j / rings;
-      const double w = R + r * std::cos(theta);
-      m.vertices.emplace_back(w * std::cos(phi), w * std::sin(phi), r * std::sin(theta));
-    }
-  }
-  const auto at = [&](int i, int j) {
-    return static_cast<std::uint32_t>(((i % segments) * rings) + (j % rings));
-  };
-  for (int i = 0; i < segments; ++i)
-    for (int j = 0; j < rings; ++j) {
-      // Around the z axis (i) then around the tube (j): the cross product of the two directions
-      // points out of the tube.
-      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return m;
-}
 
 // The same surface facing the other way (every triangle's winding reversed).
 inline core::TriangleMesh reversed(core::TriangleMesh m) {

@@ -57,7 +57,7 @@ constexpr ViewAxis kAxes[] = {ViewAxis::X, ViewAxis::Y, ViewAxis::Z};
 }  // namespace
 
 TEST_CASE("a ball in a torus's hole does not touch it, seen along every axis") {
-  const core::TriangleMesh torus = test::makeTorus(2.0, 0.5, 48, 24);
+  const core::TriangleMesh torus = core::makeTorus(2.0, 0.5, 48, 24);
   const core::TriangleMesh ball = core::makeSphere(0.5, 24, 12);
   for (const ViewAxis axis : kAxes) {
     INFO("axis " << static_cast<int>(axis));
@@ -76,7 +76,7 @@ TEST_CASE("a ball in a torus's hole does not touch it, seen along every axis") {
 }
 
 TEST_CASE("a ball inside the torus's tube collides and is contained") {
-  const core::TriangleMesh torus = test::makeTorus(2.0, 0.5, 48, 24);
+  const core::TriangleMesh torus = core::makeTorus(2.0, 0.5, 48, 24);
   const core::TriangleMesh ball = test::shifted(core::makeSphere(0.2, 16, 8), {2.0, 0.0, 0.0});
   for (const ViewAxis axis : kAxes) {
     INFO("axis " << static_cast<int>(axis));
@@ -113,10 +113,10 @@ TEST_CASE("a ball in a hollow ball's cavity does not touch it; in its wall it do
 }
 
 TEST_CASE("interlocked rings: apart with clearance, colliding when pushed together") {
-  const core::TriangleMesh a = test::makeTorus(2.0, 0.5, 48, 16);
+  const core::TriangleMesh a = core::makeTorus(2.0, 0.5, 48, 16);
   // B's circle passes through A's hole and stays 2 from A's tube circle: a clearance of 1.
-  const core::TriangleMesh linked = turnedAboutX(test::makeTorus(2.0, 0.5, 48, 16), {2, 0, 0});
-  const core::TriangleMesh pushed = turnedAboutX(test::makeTorus(2.0, 0.5, 48, 16), {3.2, 0, 0});
+  const core::TriangleMesh linked = turnedAboutX(core::makeTorus(2.0, 0.5, 48, 16), {2, 0, 0});
+  const core::TriangleMesh pushed = turnedAboutX(core::makeTorus(2.0, 0.5, 48, 16), {3.2, 0, 0});
   for (const ViewAxis axis : kAxes) {
     INFO("axis " << static_cast<int>(axis));
     CHECK_FALSE(runLayered(a, linked, frameAround(axis, a, linked, 128)).collide);

@@ -33,3 +33,10 @@ target_link_libraries(recode_verify_normal_tests PRIVATE recode_verify recode_wa
                                                          Catch2::Catch2WithMain)
 target_include_directories(recode_verify_normal_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/core/pair)
 catch_discover_tests(recode_verify_normal_tests)
+
+# The layered pair against CGAL: pixels against exact crossings, verdicts, the overlap volume.
+add_executable(recode_verify_layer_tests oracles/layer_oracle_test.cpp)
+target_link_libraries(recode_verify_layer_tests PRIVATE recode_verify recode_warnings
+                                                        Catch2::Catch2WithMain)
+target_include_directories(recode_verify_layer_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/core/pair)
+catch_discover_tests(recode_verify_layer_tests)
