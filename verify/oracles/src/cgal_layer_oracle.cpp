@@ -35,7 +35,9 @@ struct SnappedTriangle {
 
 // An integer of the coverage arithmetic as an exact rational: its magnitude stays below 2^53
 // (docs/rasterization.md section 2 bounds it by 2^49), so the double holds it exactly.
-Rational exactly(long long v) { return Rational(static_cast<double>(v)); }
+Rational exactly(long long v) {
+  return Rational(static_cast<double>(v));
+}
 
 long long snap(float v) {
   return static_cast<long long>(std::nearbyint(double{v} * 256.0));
@@ -203,6 +205,11 @@ bool closedMeshesMeet(const core::TriangleMesh& a, const core::TriangleMesh& b) 
   const cgal::ExactMesh ea = cgal::toExactMesh(a, "mesh A"), eb = cgal::toExactMesh(b, "mesh B");
   return PMP::do_intersect(ea, eb, CGAL::parameters::do_overlap_test_of_bounded_sides(true),
                            CGAL::parameters::do_overlap_test_of_bounded_sides(true));
+}
+
+bool closedSurfacesMeet(const core::TriangleMesh& a, const core::TriangleMesh& b) {
+  const cgal::ExactMesh ea = cgal::toExactMesh(a, "mesh A"), eb = cgal::toExactMesh(b, "mesh B");
+  return PMP::do_intersect(ea, eb);
 }
 
 double closedMeshesOverlapVolume(const core::TriangleMesh& a, const core::TriangleMesh& b) {

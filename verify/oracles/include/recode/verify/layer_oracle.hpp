@@ -45,6 +45,11 @@ struct LayerPixelJudgement {
 // bounded-sides test). Throws core::MeshError when a mesh is not a closed manifold surface.
 [[nodiscard]] bool closedMeshesMeet(const core::TriangleMesh& a, const core::TriangleMesh& b);
 
+// Whether the two surfaces meet (do_intersect without the bounded-sides test): what a test of
+// surfaces alone, such as FCL's mesh-mesh test, answers; a mesh wholly inside another is apart
+// for it. Throws as closedMeshesMeet.
+[[nodiscard]] bool closedSurfacesMeet(const core::TriangleMesh& a, const core::TriangleMesh& b);
+
 // The volume of the intersection of two closed, outward, self-intersection-free meshes,
 // computed by CGAL's corefinement in exact arithmetic and rounded to double (0 when they do not
 // overlap). Throws core::MeshError when a mesh is not such a surface, std::runtime_error when the
