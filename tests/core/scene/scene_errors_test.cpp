@@ -293,7 +293,7 @@ TEST_CASE("scene errors: frames", "[scene][errors]") {
 TEST_CASE("scene errors: shape types and sizes", "[scene][errors]") {
   CHECK_THAT(errorOf(oneShape(R"("type": "pyramid", "radius": 1)")),
              StartsWith("s.json: objects[0].shape.type: unknown shape type \"pyramid\" (expected "
-                        "one of cone, cylinder, capped_cone, ellipsoid, sphere, box)"));
+                        "one of cone, cylinder, capped_cone, ellipsoid, sphere, box, torus)"));
   CHECK_THAT(errorOf(oneShape(R"("radius": 1)")),
              StartsWith("s.json: objects[0].shape: missing key \"type\""));
   CHECK_THAT(errorOf(oneShape(R"("type": "cone", "radius": -2, "height": 1)")),
