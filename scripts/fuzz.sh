@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/) with Clang, AddressSanitizer and UndefinedBehaviorSanitizer,
 # the libraries instrumented too, and runs each for a fixed number of executions from a seed
-# corpus made of this tree's data (scenes, golden vectors, meshes) and of the inputs that once
-# found a defect (fuzz/regressions/). A crash, a sanitizer report,
+# corpus made of this tree's data (scenes, golden vectors, meshes), of small seeds for the formats
+# the tree has no data in (fuzz/seeds/: STL, PLY) and of the inputs that once found a defect
+# (fuzz/regressions/). A crash, a sanitizer report,
 # a leak, a timeout or an exception other than the readers' own errors fails the script.
 #
 #   scripts/fuzz.sh [RUNS] [BUILD_DIR]      (defaults: 20000 runs per target, build-fuzz)
@@ -17,7 +18,7 @@ flags+=" -fsanitize-coverage-ignorelist=$PWD/fuzz/coverage_ignorelist.txt"
 cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DRECODE_LIBRARY_ONLY=ON -DRECODE_BUILD_FUZZERS=ON >/dev/null
-targets=(scene_fuzzer command_stream_fuzzer obj_fuzzer off_fuzzer)
+targets=(scene_fuzzer command_stream_fuzzer obj_fuzzer off_fuzzer stl_fuzzer ply_fuzzer)
 cmake --build "$dir" -j "$jobs" --target "${targets[@]}"
 
 # Each target starts from a copy of its seeds: libFuzzer adds what it finds to the first corpus
@@ -35,6 +36,8 @@ declare -A seeds=(
   [command_stream_fuzzer]="data/golden/fill_square.json data/golden/masks_and_cull.json data/golden/recode_passes.json"
   [obj_fuzzer]="data/meshes fuzz/regressions/obj"
   [off_fuzzer]="data/meshes"
+  [stl_fuzzer]="fuzz/seeds/stl"
+  [ply_fuzzer]="fuzz/seeds/ply"
 )
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 for target in "${targets[@]}"; do

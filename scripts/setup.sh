@@ -14,11 +14,13 @@ demo_packages=(
   libeigen3-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libstb-dev
   libtbb-dev libhwy-dev
 )
-# The rest: the tests, the oracles, the GPU devices, the peers, the WebAssembly module and
-# browser checks, the Python module, the sanitizer and fuzzing builds, the docs.
+# The rest: the tests (with CGAL's demo meshes), the PLY reader (assimp), the oracles, the GPU
+# devices, the peers, the WebAssembly module and browser checks, the Python module, the sanitizer
+# and fuzzing builds, the docs.
 packages=(
   "${demo_packages[@]}" clang-format
   catch2 libbenchmark-dev
+  libassimp-dev libcgal-demo
   libembree-dev libcgal-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libvulkan-dev mesa-vulkan-drivers glslang-tools vulkan-validationlayers
   clang-14 libfuzzer-14-dev

@@ -95,6 +95,10 @@ int runExplain(const ExplainOptions& options) {
         overrides);
   }
   const explain::PairSetup& setup = chosen.setup;
+  if (setup.layered())
+    throw std::invalid_argument(
+        "recode explain shows RECODE's passes on two convex blocks; this pair has a closed mesh "
+        "(recode pair decides it by layers, docs/algorithm.md section 13)");
   const core::FrameSpec& f = setup.frame;
   // Removed again, with what was written into it, if anything below fails.
   const fs::path dir(options.out);

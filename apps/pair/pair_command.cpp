@@ -45,6 +45,10 @@ int runPairCommand(const PairOptions& o) {
   options.axisRule = viewAxisRule(o.viewAxis);
   const explain::PairRun run = explain::runPair(
       options, [&](int width, int height) { return makeNamedDevice(o.device, width, height); });
+  if (!o.dumpCases.empty() && run.layered)
+    throw std::invalid_argument(
+        "--dump-cases writes RECODE's cases 0-8, which a pair with a closed "
+        "mesh does not have (its interference is in --json)");
   if (!o.dumpCases.empty())
     output::writePgmBottomUp(o.dumpCases, run.setup.frame.width, run.setup.frame.height,
                              explain::frameCaseImage(run.setup.frame, run.result));

@@ -12,6 +12,8 @@ VerifyPairs scenePairs(const core::Scene& scene, const core::FrameOverrides& ove
     throw core::SceneError(scene.sourceName, "objects",
                            "verifying needs at least two objects, the file has " +
                                std::to_string(scene.objects.size()));
+  // The judges of recode verify compare RECODE's passes with convex oracles.
+  core::requireConvexBlocks(scene, "recode verify");
   VerifyPairs out;
   out.source = scene.sourceName;
   std::vector<core::ObjectTree> trees;

@@ -2,7 +2,8 @@ cmake_minimum_required(VERSION 3.25)
 # `recode pair` and `recode run` with --device DEVICE give the CPU device's output bytes, timing
 # aside (--no-timing): the built-in pair in every mode and with --pixel, and every built-in scene
 # (batched, from the device's summaries, on several devices a frame size, and the hands also pair
-# by pair). Expects RECODE, DEVICE, OUT; with LARGE set, the bench's largest meshes instead
+# by pair), and the layered pair of two closed meshes. Expects RECODE, DEVICE, OUT, SCENES (the
+# project's data/scenes); with LARGE set, the bench's largest meshes instead
 # (below); with LIGHT set, a lighter round for a device that is slow
 # on this machine's CPU driver (every scene batched and from summaries, one scene on 16 devices,
 # the schedules on the hands: the paths of the device interface, not every combination of the
@@ -69,6 +70,10 @@ foreach(mode reference adaptive conservative skip-apart)
   expect_same("pair --mode ${mode}" pair --json --no-timing --mode ${mode})
 endforeach()
 expect_same("pair --pixel 128,128" pair --json --no-timing --pixel 128,128)
+# Closed meshes: the layered pair's count and capture passes (SCENES: data/scenes).
+expect_same("pair rings-overlapping" pair ${SCENES}/rings-overlapping.json --json --no-timing)
+expect_same("pair rings-overlapping --mor max" pair ${SCENES}/rings-overlapping.json --json
+            --no-timing --mor max)
 # Every built-in scene, whole: a frame's pair tests run as one batch on a device that defers
 # its commands, so every frame size and contact schedule of the scenes is compared.
 foreach(scene comb-translate-aligned comb-translate-offset comb-rotate-aligned comb-rotate-offset

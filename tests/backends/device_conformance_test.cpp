@@ -21,8 +21,10 @@
 #include <string>
 #include <vector>
 
+#include "closed_mesh_support.hpp"
 #include "exact_test_streams.hpp"
 #include "recode/backends/device_registry.hpp"
+#include "recode/pair/layered_pair.hpp"
 #include "recode/pair/pair_batch.hpp"
 #include "recode/pair/pair_result_compare.hpp"
 #include "recode/raster/command_stream.hpp"
@@ -265,6 +267,45 @@ TEST_CASE("the generated pair suite without its pixels gives the same results fr
       CHECK(afterVerdict.submissions == 2);
       CHECK(afterVerdict.readbackBytes == (drawn + secondRound) * summaryBytes);
     }
+  }
+}
+
+TEST_CASE("the layered pair of closed meshes gives the CPU device's results on every device",
+          "[conformance][layered]") {
+  // Rings, a hollow ball and a ball in poses that collide, hold one inside the other or stay
+  // apart, seen along each axis: every count and capture pass, compared through the results
+  // (the per-pixel overlap lengths are the captured depths' sums, so one depth off shows).
+  const core::TriangleMesh ring = core::makeTorus(2.0, 0.5, 40, 16);
+  const core::TriangleMesh others[] = {
+      test::shifted(core::makeSphere(0.3, 16, 8), {2.0, 0.0, 0.1}),
+      test::shifted(test::makeHollowBall(1.0, 0.7, 16, 8), {1.6, 0.4, 0.3}),
+      test::shifted(core::makeTorus(1.5, 0.4, 32, 12), {0.5, -0.3, 0.2}),
+      test::shifted(core::makeSphere(0.5, 16, 8), {0.0, 0.1, 0.0})};
+  for (const ConformingDevice& d : conformingDevices()) {
+    INFO("device " << d.label);
+    int n = 0;
+    for (const core::TriangleMesh& b : others)
+      for (const auto axis : {core::ViewAxis::X, core::ViewAxis::Y, core::ViewAxis::Z}) {
+        INFO("pair " << n++);
+        core::Aabb bounds = core::boundingBox(ring);
+        bounds.extend(core::boundingBox(b));
+        core::PairRequest request;
+        request.frame.axis = axis;
+        request.frame.width = request.frame.height = 96;
+        request.frame.window = core::defaultWindow(axis, bounds, std::array<int, 2>{96, 96});
+        raster::CpuDevice reference(96, 96);
+        const auto device = d.make(96, 96);
+        const core::LayeredPairResult want = core::collideLayered(reference, ring, b, request);
+        const core::LayeredPairResult got = core::collideLayered(*device, ring, b, request);
+        CHECK(got.mor == want.mor);
+        CHECK(got.layersA == want.layersA);
+        CHECK(got.layersB == want.layersB);
+        CHECK(got.interferingPixels == want.interferingPixels);
+        CHECK(got.interferes.data == want.interferes.data);
+        CHECK(got.overlapSteps.data == want.overlapSteps.data);
+        CHECK(got.containment == want.containment);
+        CHECK(got.contact.collapsedPixels == want.contact.collapsedPixels);
+      }
   }
 }
 

@@ -30,6 +30,10 @@ LivePage livePage(const PairRequestText& request) {
         return std::make_unique<raster::CpuDevice>(width, height);
       },
       &recorder);
+  if (run.layered)
+    throw std::invalid_argument(
+        "the page shows RECODE's passes on two convex blocks; this pair "
+        "has a closed mesh (recode pair decides it by layers)");
   const explain::PairSetup& setup = run.setup;
   LivePage page;
   const explain::ExplainedRun explained =

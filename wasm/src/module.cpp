@@ -5,6 +5,7 @@
 
 #include <exception>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "golden_check.hpp"
@@ -47,6 +48,10 @@ EMSCRIPTEN_KEEPALIVE const char* recode_pair(const char* request) {
         recode::explain::runPair(r.options, [](int width, int height) {
           return std::make_unique<recode::raster::CpuDevice>(width, height);
         });
+    if (!r.dumpCases.empty() && run.layered)
+      throw std::invalid_argument(
+          "dump_cases writes RECODE's cases 0-8, which a pair with a "
+          "closed mesh does not have");
     if (!r.dumpCases.empty())
       recode::output::writePgmBottomUp(
           r.dumpCases, run.setup.frame.width, run.setup.frame.height,

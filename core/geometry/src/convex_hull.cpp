@@ -16,9 +16,6 @@
 namespace recode::core {
 namespace {
 
-// Beyond this the exact arithmetic's products of three coordinate differences could overflow.
-constexpr double kMaxHullCoordinate = 1e100;
-
 [[noreturn]] void fail(std::string_view sourceName, const std::string& problem) {
   throw MeshError(std::string(sourceName) + ": " + problem);
 }
@@ -37,7 +34,7 @@ void checkSpansVolume(std::span<const Eigen::Vector3d> points, std::string_view 
     if (!points[i].allFinite())
       fail(sourceName, "convex hull: point " + std::to_string(i) + " " +
                            detail::formatPoint(points[i]) + " has a non-finite coordinate");
-    if (points[i].cwiseAbs().maxCoeff() > kMaxHullCoordinate)
+    if (points[i].cwiseAbs().maxCoeff() > kMaxExactCoordinate)
       throw std::invalid_argument(std::string(sourceName) + ": convex hull: point " +
                                   std::to_string(i) + " has a coordinate beyond 1e100");
   }

@@ -190,6 +190,43 @@ TriangleMesh makeSphere(double radius, int segments, int rings) {
   return makeEllipsoid(radius, radius, radius, segments, rings);
 }
 
+TriangleMesh makeTorus(double radius, double tubeRadius, int segments, int rings) {
+  constexpr const char* kFunction = "makeTorus";
+  requirePositive(kFunction, "radius", radius);
+  requirePositive(kFunction, "tubeRadius", tubeRadius);
+  if (!(tubeRadius < radius)) {
+    throw std::invalid_argument(std::string(kFunction) + ": tubeRadius must be below radius (" +
+                                formatDouble(radius) + ") so that the hole stays open, got " +
+                                formatDouble(tubeRadius));
+  }
+  requireAtLeast(kFunction, "segments", segments, 3);
+  requireAtLeast(kFunction, "rings", rings, 3);
+  requireTriangleBudget(
+      kFunction, "segments = " + std::to_string(segments) + " and rings = " + std::to_string(rings),
+      2.0 * static_cast<double>(segments) * static_cast<double>(rings));
+  TriangleMesh m;
+  m.vertices.reserve(static_cast<std::size_t>(segments) * static_cast<std::size_t>(rings));
+  for (int i = 0; i < segments; ++i) {
+    const double phi = 2.0 * std::numbers::pi * i / segments;
+    for (int j = 0; j < rings; ++j) {
+      const double theta = 2.0 * std::numbers::pi * j / rings;
+      const double w = radius + tubeRadius * std::cos(theta);
+      m.vertices.emplace_back(w * std::cos(phi), w * std::sin(phi), tubeRadius * std::sin(theta));
+    }
+  }
+  const auto at = [&](int i, int j) {
+    return static_cast<VertexIndex>((i % segments) * rings + (j % rings));
+  };
+  m.triangles.reserve(2 * m.vertices.size());
+  for (int i = 0; i < segments; ++i)
+    for (int j = 0; j < rings; ++j) {
+      // The azimuth's direction (i) crossed with the tube angle's (j) points out of the tube.
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
 TriangleMesh makeBox(double hx, double hy, double hz) {
   constexpr const char* kFunction = "makeBox";
   requirePositive(kFunction, "hx", hx);

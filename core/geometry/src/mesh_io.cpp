@@ -1,6 +1,6 @@
 // The mesh readers' entry points (reading the file, choosing the format) and the message
-// builders declared in mesh_io_text.hpp. The formats are parsed in mesh_io_off.cpp and
-// mesh_io_obj.cpp.
+// builders declared in mesh_io_text.hpp. The formats are parsed in mesh_io_off.cpp,
+// mesh_io_obj.cpp, mesh_io_stl.cpp and mesh_io_ply.cpp.
 
 #include "recode/geometry/mesh_io.hpp"
 
@@ -83,6 +83,14 @@ TriangleMesh readOff(const std::filesystem::path& path) {
   return detail::parseOff(path, readWholeFile(path));
 }
 
+TriangleMesh readStl(const std::filesystem::path& path) {
+  return detail::parseStl(path, readWholeFile(path));
+}
+
+TriangleMesh readPly(const std::filesystem::path& path) {
+  return detail::parsePly(path, readWholeFile(path));
+}
+
 TriangleMesh readMesh(const std::filesystem::path& path) {
   const std::string ext = lowercaseExtension(path);
   if (ext == ".obj") {
@@ -91,9 +99,15 @@ TriangleMesh readMesh(const std::filesystem::path& path) {
   if (ext == ".off") {
     return readOff(path);
   }
+  if (ext == ".stl") {
+    return readStl(path);
+  }
+  if (ext == ".ply") {
+    return readPly(path);
+  }
   fail(path, "unknown mesh file extension " +
                  (ext.empty() ? std::string("(none)") : detail::quote(ext)) +
-                 " (expected .obj or .off)");
+                 " (expected .obj, .off, .stl or .ply)");
 }
 
 }  // namespace recode::core

@@ -1,9 +1,9 @@
 #pragma once
 // Internal to the mesh readers (not installed, not public API): the error, line and token
-// helpers that the OFF reader (mesh_io_off.cpp) and the OBJ line check (mesh_io_obj.cpp)
-// share, so that both read numbers and word their messages the same way. The per-token
-// helpers are inline because they run once per token of a possibly large file; the message
-// builders are defined in mesh_io.cpp.
+// helpers that the OFF reader (mesh_io_off.cpp), the OBJ line check (mesh_io_obj.cpp), the ASCII
+// STL reader (mesh_io_stl.cpp) and the PLY header check (mesh_io_ply.cpp) share, so that both read
+// numbers and word their messages the same way. The per-token helpers are inline because they run
+// once per token of a possibly large file; the message builders are defined in mesh_io.cpp.
 
 #include <charconv>
 #include <cmath>
@@ -143,8 +143,10 @@ inline void appendFan(std::vector<Triangle>& triangles, const std::vector<Vertex
   }
 }
 
-// The two readers, given the file's whole contents; path is for messages only.
+// The readers, given the file's whole contents; path is for messages only.
 TriangleMesh parseOff(const std::filesystem::path& path, std::string_view text);
+TriangleMesh parseStl(const std::filesystem::path& path, std::string_view data);
+TriangleMesh parsePly(const std::filesystem::path& path, std::string_view data);
 TriangleMesh parseObj(const std::filesystem::path& path, const std::string& text);
 std::vector<MeshGroup> parseObjGroups(const std::filesystem::path& path, const std::string& text);
 

@@ -1,6 +1,7 @@
 // checkConvexBlock's order of stages, and the stages that look at single vertices and
-// triangles (1-3) or the whole volume (5). Stage 4 is in validate_topology.cpp, stages 6
-// and 7 in validate_convexity.cpp; validate.hpp lists what each stage checks.
+// triangles (1-3) or the whole volume (5); stages 1 and 2 serve checkClosedMesh too. Stage 4 is in
+// validate_topology.cpp, stages 6 and 7 in validate_convexity.cpp; validate.hpp lists what each
+// stage checks.
 
 #include "recode/geometry/validate.hpp"
 
@@ -21,47 +22,6 @@ using detail::formatDouble;
 using detail::formatPoint;
 using detail::Recorder;
 using detail::triangleName;
-
-// Stage 1: there is something to check; every later stage assumes at least one triangle.
-// Returns true if it found a problem.
-bool checkHasTriangles(const TriangleMesh& mesh, Recorder& recorder) {
-  if (mesh.triangles.empty()) {
-    recorder.add(MeshProblemKind::NoTriangles, "the mesh has no triangles");
-    return true;
-  }
-  return false;
-}
-
-// Stage 2: every coordinate is finite and every index names a vertex, so that the later
-// stages can do arithmetic on the points that the triangles index. Returns true if it found
-// a problem.
-bool checkCoordinatesAndIndices(const TriangleMesh& mesh, Recorder& recorder) {
-  const std::size_t before = recorder.count();
-  const std::size_t vertexCount = mesh.vertices.size();
-  for (std::size_t i = 0; i < vertexCount; ++i) {
-    if (!mesh.vertices[i].allFinite()) {
-      if (recorder.add(MeshProblemKind::NonFiniteCoordinate, "vertex " + std::to_string(i) +
-                                                                 " has a non-finite coordinate " +
-                                                                 formatPoint(mesh.vertices[i]))) {
-        return true;
-      }
-    }
-  }
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    for (const VertexIndex v : mesh.triangles[t]) {
-      if (v >= vertexCount) {
-        if (recorder.add(MeshProblemKind::IndexOutOfRange,
-                         "triangle " + std::to_string(t) + " has vertex index " +
-                             std::to_string(v) + " out of range (" + std::to_string(vertexCount) +
-                             " vertices)")) {
-          return true;
-        }
-        break;  // one message per triangle
-      }
-    }
-  }
-  return recorder.count() > before;
-}
 
 // The vertices relative to the bounding-box centre, and the tolerance (needs stage 2).
 CentredPoints centrePoints(const TriangleMesh& mesh, double relativeTolerance) {
@@ -156,6 +116,51 @@ bool checkOutwardOrientation(const TriangleMesh& mesh, Recorder& recorder) {
 
 }  // namespace
 
+namespace detail {
+
+// Stage 1 (of both checks): there is something to check; every later stage assumes at least one
+// triangle. Returns true if it found a problem.
+bool checkHasTriangles(const TriangleMesh& mesh, Recorder& recorder) {
+  if (mesh.triangles.empty()) {
+    recorder.add(MeshProblemKind::NoTriangles, "the mesh has no triangles");
+    return true;
+  }
+  return false;
+}
+
+// Stage 2 (of both checks): every coordinate is finite and every index names a vertex, so that the
+// later stages can do arithmetic on the points that the triangles index. Returns true if it found
+// a problem.
+bool checkCoordinatesAndIndices(const TriangleMesh& mesh, Recorder& recorder) {
+  const std::size_t before = recorder.count();
+  const std::size_t vertexCount = mesh.vertices.size();
+  for (std::size_t i = 0; i < vertexCount; ++i) {
+    if (!mesh.vertices[i].allFinite()) {
+      if (recorder.add(MeshProblemKind::NonFiniteCoordinate, "vertex " + std::to_string(i) +
+                                                                 " has a non-finite coordinate " +
+                                                                 formatPoint(mesh.vertices[i]))) {
+        return true;
+      }
+    }
+  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (const VertexIndex v : mesh.triangles[t]) {
+      if (v >= vertexCount) {
+        if (recorder.add(MeshProblemKind::IndexOutOfRange,
+                         "triangle " + std::to_string(t) + " has vertex index " +
+                             std::to_string(v) + " out of range (" + std::to_string(vertexCount) +
+                             " vertices)")) {
+          return true;
+        }
+        break;  // one message per triangle
+      }
+    }
+  }
+  return recorder.count() > before;
+}
+
+}  // namespace detail
+
 std::string_view toString(MeshProblemKind kind) {
   switch (kind) {
     case MeshProblemKind::NoTriangles:
@@ -182,6 +187,14 @@ std::string_view toString(MeshProblemKind kind) {
       return "not convex";
     case MeshProblemKind::MultipleWinding:
       return "multiple winding";
+    case MeshProblemKind::CoordinateOutOfRange:
+      return "coordinate out of range";
+    case MeshProblemKind::NonManifoldVertex:
+      return "non-manifold vertex";
+    case MeshProblemKind::SelfIntersection:
+      return "self-intersection";
+    case MeshProblemKind::NestedShell:
+      return "nested shell";
   }
   return "unknown problem";
 }
@@ -200,7 +213,8 @@ ValidationReport checkConvexBlock(const TriangleMesh& mesh, double relativeToler
   }
   ValidationReport report;
   Recorder recorder(report, maxProblems);
-  if (checkHasTriangles(mesh, recorder) || checkCoordinatesAndIndices(mesh, recorder)) {
+  if (detail::checkHasTriangles(mesh, recorder) ||
+      detail::checkCoordinatesAndIndices(mesh, recorder)) {
     return report;
   }
   const CentredPoints centred = centrePoints(mesh, relativeTolerance);

@@ -1,10 +1,11 @@
 // Stage 4 of checkConvexBlock: the triangles form one closed, manifold, consistently
 // oriented surface of genus 0. The later, geometric stages (volume, convexity, winding)
-// are only meaningful on such a surface.
+// are only meaningful on such a surface. checkClosedMesh uses the edge check and adds the
+// vertex fans: closed and manifold, of any genus and in any number of pieces.
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,31 +14,6 @@
 
 namespace recode::core::detail {
 namespace {
-
-// Union-find for connected components.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) {
-    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
-  }
-  std::size_t find(std::size_t i) {
-    while (parent_[i] != i) {
-      parent_[i] = parent_[parent_[i]];
-      i = parent_[i];
-    }
-    return i;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) {
-      parent_[std::max(a, b)] = std::min(a, b);
-    }
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
 
 struct HalfEdge {
   std::uint64_t key;       // (min index << 32) | max index
@@ -111,30 +87,6 @@ bool recordEdgeProblem(const std::vector<HalfEdge>& halfEdges, std::size_t first
   return false;
 }
 
-// Closed, manifold and consistently oriented: every edge used by exactly two triangles, in
-// opposite directions. Returns the number of distinct edges (for the Euler characteristic),
-// or nullopt if it found a problem.
-std::optional<std::size_t> checkEdges(const std::vector<Triangle>& triangles, Recorder& recorder) {
-  const std::size_t before = recorder.count();
-  const std::vector<HalfEdge> halfEdges = sortedHalfEdges(triangles);
-  std::size_t edgeCount = 0;
-  for (std::size_t i = 0; i < halfEdges.size();) {
-    std::size_t j = i;
-    while (j < halfEdges.size() && halfEdges[j].key == halfEdges[i].key) {
-      ++j;
-    }
-    ++edgeCount;
-    if (recordEdgeProblem(halfEdges, i, j, recorder)) {
-      return std::nullopt;
-    }
-    i = j;
-  }
-  if (recorder.count() > before) {
-    return std::nullopt;
-  }
-  return edgeCount;
-}
-
 // The number of connected components among the vertices that triangles use.
 std::size_t countComponents(const TriangleMesh& mesh) {
   DisjointSets sets(mesh.vertices.size());
@@ -181,7 +133,101 @@ bool checkSingleSurface(const TriangleMesh& mesh, std::size_t usedVertexCount,
   return false;
 }
 
+// A triangle's corner: corner 3t + k is vertex triangles[t][k].
+struct DirectedEdge {
+  VertexIndex from;
+  VertexIndex to;
+  std::uint32_t corner;  // the corner at `from` of the triangle running from -> to
+
+  [[nodiscard]] bool before(VertexIndex f, VertexIndex t) const {
+    return from < f || (from == f && to < t);
+  }
+};
+
 }  // namespace
+
+// Around vertex v, triangle t = (v, next, prev) and the triangle that runs next -> v (the
+// other side of edge (v, next)) are neighbours in v's fan. After checkEdges each directed edge
+// is used once, so the neighbours join v's corners into cycles: one for a manifold vertex,
+// several where separate fans only share the vertex (two cones tip to tip).
+bool checkVertexFans(const TriangleMesh& mesh, Recorder& recorder) {
+  const std::size_t cornerCount = 3 * mesh.triangles.size();
+  std::vector<DirectedEdge> edges;
+  edges.reserve(cornerCount);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    for (std::size_t k = 0; k < 3; ++k) {
+      edges.push_back({tri[k], tri[(k + 1) % 3], static_cast<std::uint32_t>(3 * t + k)});
+    }
+  }
+  std::sort(edges.begin(), edges.end(),
+            [](const DirectedEdge& l, const DirectedEdge& r) { return l.before(r.from, r.to); });
+  DisjointSets fans(cornerCount);
+  for (const DirectedEdge& e : edges) {
+    const auto back = std::lower_bound(
+        edges.begin(), edges.end(), e,
+        [](const DirectedEdge& l, const DirectedEdge& r) { return l.before(r.to, r.from); });
+    if (back != edges.end() && back->from == e.to && back->to == e.from) {
+      // back runs to -> from and has its corner at `to`; its corner at `from` is the next one.
+      const std::uint32_t t = back->corner / 3;
+      fans.unite(e.corner, 3 * t + (back->corner % 3 + 1) % 3);
+    }
+  }
+  // A fan's root is its corner of lowest index; a vertex with a second root is pinched.
+  std::vector<std::uint32_t> firstFan(mesh.vertices.size(),
+                                      std::numeric_limits<std::uint32_t>::max());
+  std::vector<std::uint32_t> fanCount(mesh.vertices.size(), 0);
+  std::vector<std::uint32_t> secondFan(mesh.vertices.size(),
+                                       std::numeric_limits<std::uint32_t>::max());
+  for (std::size_t c = 0; c < cornerCount; ++c) {
+    if (fans.find(c) != c) {
+      continue;
+    }
+    const VertexIndex v = mesh.triangles[c / 3][c % 3];
+    if (++fanCount[v] == 1) {
+      firstFan[v] = static_cast<std::uint32_t>(c / 3);
+    } else if (fanCount[v] == 2) {
+      secondFan[v] = static_cast<std::uint32_t>(c / 3);
+    }
+  }
+  const std::size_t before = recorder.count();
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (fanCount[v] > 1 &&
+        recorder.add(MeshProblemKind::NonManifoldVertex,
+                     "vertex " + std::to_string(v) + " is shared by " +
+                         std::to_string(fanCount[v]) + " separate fans of triangles (triangles " +
+                         std::to_string(firstFan[v]) + " and " + std::to_string(secondFan[v]) +
+                         " are in different fans): the surface pinches there; give each fan a "
+                         "vertex of its own and move them apart, or join the pieces")) {
+      return true;
+    }
+  }
+  return recorder.count() > before;
+}
+
+// Closed, manifold and consistently oriented: every edge used by exactly two triangles, in
+// opposite directions. Returns the number of distinct edges (for the Euler characteristic),
+// or nullopt if it found a problem.
+std::optional<std::size_t> checkEdges(const std::vector<Triangle>& triangles, Recorder& recorder) {
+  const std::size_t before = recorder.count();
+  const std::vector<HalfEdge> halfEdges = sortedHalfEdges(triangles);
+  std::size_t edgeCount = 0;
+  for (std::size_t i = 0; i < halfEdges.size();) {
+    std::size_t j = i;
+    while (j < halfEdges.size() && halfEdges[j].key == halfEdges[i].key) {
+      ++j;
+    }
+    ++edgeCount;
+    if (recordEdgeProblem(halfEdges, i, j, recorder)) {
+      return std::nullopt;
+    }
+    i = j;
+  }
+  if (recorder.count() > before) {
+    return std::nullopt;
+  }
+  return edgeCount;
+}
 
 bool checkTopology(const TriangleMesh& mesh, std::size_t usedVertexCount, Recorder& recorder) {
   const std::optional<std::size_t> edgeCount = checkEdges(mesh.triangles, recorder);

@@ -334,15 +334,16 @@ void concludeContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
   std::vector<Eigen::Vector3d> ends;
   measureContact(nearDepth, farDepth, view, r, request.normal ? &ends : nullptr);
   if (request.normal) {
-    // Half a pixel along the image plane's two world axes, none along the view axis.
-    const Eigen::Vector3d halfPixel =
-        (view.fromPlane({0.5 * view.pixelWidth(), 0.5 * view.pixelHeight(), 0.0}) -
-         view.fromPlane(Eigen::Vector3d::Zero()))
-            .cwiseAbs();
-    r.contact.normal =
-        contactNormal(OverlapSamples{ends, halfPixel}, a.mesh().vertices, b.mesh().vertices);
+    r.contact.normal = contactNormal(OverlapSamples{ends, halfPixelExtent(view)}, a.mesh().vertices,
+                                     b.mesh().vertices);
   }
   r.timing.classifyUs += microsecondsSince(t);
+}
+
+Eigen::Vector3d halfPixelExtent(const OrthoView& view) {
+  return (view.fromPlane({0.5 * view.pixelWidth(), 0.5 * view.pixelHeight(), 0.0}) -
+          view.fromPlane(Eigen::Vector3d::Zero()))
+      .cwiseAbs();
 }
 
 const raster::StencilClasses& caseClasses() {

@@ -91,6 +91,10 @@ void concludeContact(const raster::PixelBuffer<std::uint32_t>& nearDepth,
 void concludeSummaryContact(const raster::DepthIntervals& depth, const OrthoView& view,
                             PairResult& r);
 
+// Half a pixel along the image plane's two world axes, none along the view axis: the extent a
+// sample stands for in the contact normal's widths (OverlapSamples::halfPixel).
+[[nodiscard]] Eigen::Vector3d halfPixelExtent(const OrthoView& view);
+
 // Empties the case map and the contact points unless the request keeps the pixels.
 void dropPixelsUnlessKept(const PairRequest& request, PairResult& r);
 

@@ -67,4 +67,26 @@ Scene loadScene(const std::filesystem::path& file, const SceneReadLimits& limits
   return parseScene(text, file.string(), file.parent_path(), limits);
 }
 
+namespace {
+
+const SceneObject* firstClosedLeaf(const std::vector<SceneObject>& nodes) {
+  for (const SceneObject& node : nodes) {
+    if (node.isLeaf() && node.closed)
+      return &node;
+    if (const SceneObject* found = firstClosedLeaf(node.children))
+      return found;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+void requireConvexBlocks(const Scene& scene, std::string_view who) {
+  if (const SceneObject* leaf = firstClosedLeaf(scene.objects))
+    throw SceneError(scene.sourceName, leaf->jsonPath,
+                     "a closed mesh (\"closed\": true or a torus) is decided by `recode pair` "
+                     "alone; " +
+                         std::string(who) + " takes convex blocks");
+}
+
 }  // namespace recode::core

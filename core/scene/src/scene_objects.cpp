@@ -32,9 +32,10 @@ void ObjectReader::checkUnusedParts() {
 SceneObject ObjectReader::node(const json& v, const std::string& path,
                                const std::string& defaultName, int depth) {
   fields_.requireObject(v, path);
-  fields_.requireOnlyKeys(v, path,
-                          {"name", "mesh", "hull", "parts_from_groups", "shape", "children", "part",
-                           "position", "rotation_deg", "motion", "keyframes", "joint"});
+  fields_.requireOnlyKeys(
+      v, path,
+      {"name", "mesh", "hull", "parts_from_groups", "closed", "shape", "children", "part",
+       "position", "rotation_deg", "motion", "keyframes", "joint"});
   if (depth > kMaxDepth)
     fields_.fail(path, "objects nested more than " + std::to_string(kMaxDepth) + " levels deep");
   requireOneGeometry(v, path);
@@ -93,7 +94,9 @@ void ObjectReader::geometry(const json& v, const std::string& path, int depth,
     return;
   }
   countBlocks(1, path);
-  object.localMesh = shapes_.leafMesh(v, path);
+  LeafMesh leaf = shapes_.leafMesh(v, path);
+  object.localMesh = std::move(leaf.mesh);
+  object.closed = leaf.closed;
 }
 
 // Children of one node need distinct names, so that every block has its own path.
@@ -128,7 +131,8 @@ SceneObject ObjectReader::part(const std::string& name, const std::string& usePa
   const std::string path = childPath("parts", name);
   const json& v = parts_.definition(name);
   fields_.requireObject(v, path);
-  fields_.requireOnlyKeys(v, path, {"mesh", "hull", "parts_from_groups", "shape", "children"},
+  fields_.requireOnlyKeys(v, path,
+                          {"mesh", "hull", "parts_from_groups", "closed", "shape", "children"},
                           " for a part (a part is geometry only; place it where it is used)");
   const int given = static_cast<int>(v.contains("mesh")) + static_cast<int>(v.contains("shape")) +
                     static_cast<int>(v.contains("children"));

@@ -46,7 +46,17 @@ class TriangleBudget {
   std::size_t used_ = 0;
 };
 
-// The block of a leaf: its "mesh" file or its "shape", validated closed and convex
+// What a mesh file's faces are taken as: a convex block (validated convex), the convex hull of
+// its vertices ("hull": true), or a closed mesh of any shape ("closed": true).
+enum class MeshUse { ConvexBlock, Hull, Closed };
+
+// A leaf's local mesh and whether it is a closed mesh (SceneObject::closed).
+struct LeafMesh {
+  TriangleMesh mesh;
+  bool closed = false;
+};
+
+// The block of a leaf: its "mesh" file or its "shape", validated as what it is taken for
 // (scene_shapes.cpp). Every block's triangles are counted in the scene's budget.
 class ShapeReader {
  public:
@@ -55,10 +65,11 @@ class ShapeReader {
       : fields_(fields), baseDir_(std::move(baseDir)), triangles_(triangles) {}
 
   // The local mesh of a node (or part) `v` at `path` that has "mesh" or "shape" (a mesh
-  // hulled when it says "hull": true).
-  [[nodiscard]] TriangleMesh leafMesh(const json& v, const std::string& path) const;
-  // Refuses "hull" and "parts_from_groups" on a node without "mesh", or that are not booleans;
-  // returns "parts_from_groups" (false when absent).
+  // hulled when it says "hull": true, a closed mesh when it says "closed": true or is a torus).
+  [[nodiscard]] LeafMesh leafMesh(const json& v, const std::string& path) const;
+  // Refuses "hull", "parts_from_groups" and "closed" on a node without "mesh", that are not
+  // booleans, or "closed" beside either of the others; returns "parts_from_groups" (false when
+  // absent).
   [[nodiscard]] bool checkMeshOptions(const json& v, const std::string& path) const;
   // The blocks of a node with "mesh" and "parts_from_groups": true, one per OBJ object or
   // group (name, block), each validated, or hulled with "hull": true.
@@ -66,12 +77,13 @@ class ShapeReader {
       const json& v, const std::string& path) const;
 
  private:
-  // The block of a mesh file at `path` (the value of "mesh"), validated or hulled.
-  [[nodiscard]] TriangleMesh meshFile(const json& v, const std::string& path, bool hull) const;
-  // A block from a mesh read from `file`: its vertices within range, then validated (with a
-  // hint to use "hull" when that fails) or replaced by their hull. `what` names it in messages.
+  // The block of a mesh file at `path` (the value of "mesh"), taken as `use`.
+  [[nodiscard]] TriangleMesh meshFile(const json& v, const std::string& path, MeshUse use) const;
+  // A block from a mesh read from `file`: its vertices within range, then validated as `use`
+  // says (with a hint to use "hull" when a convex block fails) or replaced by their hull. `what`
+  // names it in messages.
   [[nodiscard]] TriangleMesh meshBlock(TriangleMesh mesh, const std::string& what,
-                                       const std::string& path, bool hull) const;
+                                       const std::string& path, MeshUse use) const;
   // The shape's mesh; *typeName is set to its "type".
   [[nodiscard]] TriangleMesh shape(const json& v, const std::string& path,
                                    std::string* typeName) const;

@@ -1,5 +1,5 @@
 // The block of a leaf: a mesh file or a generated shape (cone, cylinder, capped cone,
-// ellipsoid, sphere, box), validated closed and convex.
+// ellipsoid, sphere, box: convex blocks; torus: a closed mesh), validated as what it is.
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "recode/geometry/closed_mesh.hpp"
 #include "recode/geometry/convex_hull.hpp"
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/mesh_error.hpp"
@@ -35,7 +36,8 @@ struct ShapeSpec {
 constexpr const char* kHullHint =
     " (to use the convex hull of its vertices instead, give \"hull\": true)";
 
-constexpr std::string_view kShapeTypesText = "cone, cylinder, capped_cone, ellipsoid, sphere, box";
+constexpr std::string_view kShapeTypesText =
+    "cone, cylinder, capped_cone, ellipsoid, sphere, box, torus";
 
 const ShapeSpec kShapes[] = {
     {"cone", {"radius", "height", "segments"}},
@@ -44,7 +46,13 @@ const ShapeSpec kShapes[] = {
     {"ellipsoid", {"radii", "segments", "rings"}},
     {"sphere", {"radius", "segments", "rings"}},
     {"box", {"size"}},
+    {"torus", {"radius", "tube_radius", "segments", "rings"}},
 };
+
+// The one shape that is not convex: generated as a closed mesh.
+bool isClosedShape(std::string_view type) {
+  return type == "torus";
+}
 
 // The size and count fields of one shape object, whose type is known and keys checked.
 class ShapeFields {
@@ -137,31 +145,51 @@ TriangleMesh generate(const ShapeFields& f, const json& v, const std::string& pa
     budget.check(2.0 * (rings - 1) * segments, path);
     return makeSphere(radius, segments, rings);
   }
+  if (type == "torus") {
+    const double radius = f.size("radius");
+    const double tube = f.size("tube_radius");
+    if (!(tube < radius))
+      f.fail(childPath(path, "tube_radius"), "must be below radius (" + jsonText(v.at("radius")) +
+                                                 ") so that the hole stays open, "
+                                                 "got " +
+                                                 jsonText(v.at("tube_radius")));
+    const int segments = f.count("segments", 32, 3);
+    const int rings = f.count("rings", 16, 3);
+    budget.check(2.0 * segments * rings, path);
+    return makeTorus(radius, tube, segments, rings);
+  }
   const Eigen::Vector3d full = f.sizes3("size", "3 positive numbers [sx, sy, sz]");
   return makeBox(full / 2.0);
 }
 
 }  // namespace
 
-TriangleMesh ShapeReader::leafMesh(const json& v, const std::string& path) const {
+LeafMesh ShapeReader::leafMesh(const json& v, const std::string& path) const {
+  const auto flag = [&v](const char* key) { return v.contains(key) && v.at(key).get<bool>(); };
   if (v.contains("mesh")) {
-    const bool hull = v.contains("hull") && v.at("hull").get<bool>();
-    return meshFile(v.at("mesh"), childPath(path, "mesh"), hull);
+    const MeshUse use = flag("hull")     ? MeshUse::Hull
+                        : flag("closed") ? MeshUse::Closed
+                                         : MeshUse::ConvexBlock;
+    return {meshFile(v.at("mesh"), childPath(path, "mesh"), use), use == MeshUse::Closed};
   }
   const std::string p = childPath(path, "shape");
   std::string type;
   TriangleMesh mesh = shape(v.at("shape"), p, &type);
+  const bool closed = isClosedShape(type);
   try {
-    validateConvexBlock(mesh, "the generated " + type);
+    if (closed)
+      validateClosedMesh(mesh, "the generated " + type);
+    else
+      validateConvexBlock(mesh, "the generated " + type);
   } catch (const MeshError& e) {
     fields_.fail(p, e.what());
   }
-  return mesh;
+  return {std::move(mesh), closed};
 }
 
 bool ShapeReader::checkMeshOptions(const json& v, const std::string& path) const {
   bool groups = false;
-  for (const char* key : {"hull", "parts_from_groups"}) {
+  for (const char* key : {"hull", "parts_from_groups", "closed"}) {
     if (!v.contains(key))
       continue;
     const std::string p = childPath(path, key);
@@ -172,11 +200,16 @@ bool ShapeReader::checkMeshOptions(const json& v, const std::string& path) const
     if (std::string_view(key) == "parts_from_groups")
       groups = v.at(key).get<bool>();
   }
+  const auto on = [&v](const char* key) { return v.contains(key) && v.at(key).get<bool>(); };
+  if (on("closed") && (on("hull") || on("parts_from_groups")))
+    fields_.fail(childPath(path, "closed"),
+                 "a closed mesh is the file's faces as one surface: give \"closed\": true "
+                 "without \"hull\" or \"parts_from_groups\"");
   return groups;
 }
 
 // Relative to the scene file's directory; the mesh reader's and validator's messages are kept.
-TriangleMesh ShapeReader::meshFile(const json& v, const std::string& path, bool hull) const {
+TriangleMesh ShapeReader::meshFile(const json& v, const std::string& path, MeshUse use) const {
   const fs::path file = baseDir_ / fs::path(fields_.nonEmptyString(v, path));
   TriangleMesh mesh;
   try {
@@ -184,7 +217,7 @@ TriangleMesh ShapeReader::meshFile(const json& v, const std::string& path, bool 
   } catch (const MeshError& e) {
     fields_.fail(path, e.what());
   }
-  return meshBlock(std::move(mesh), file.string(), path, hull);
+  return meshBlock(std::move(mesh), file.string(), path, use);
 }
 
 std::vector<std::pair<std::string, TriangleMesh>> ShapeReader::meshGroups(
@@ -201,7 +234,8 @@ std::vector<std::pair<std::string, TriangleMesh>> ShapeReader::meshGroups(
   std::vector<std::pair<std::string, TriangleMesh>> blocks;
   for (MeshGroup& group : groups) {
     TriangleMesh block =
-        meshBlock(std::move(group.mesh), file.string() + ": group '" + group.name + "'", p, hull);
+        meshBlock(std::move(group.mesh), file.string() + ": group '" + group.name + "'", p,
+                  hull ? MeshUse::Hull : MeshUse::ConvexBlock);
     blocks.emplace_back(group.name, std::move(block));
   }
   return blocks;
@@ -210,7 +244,7 @@ std::vector<std::pair<std::string, TriangleMesh>> ShapeReader::meshGroups(
 // Vertices are held to the scene's coordinate range before validation, whose tolerances
 // overflow for coordinates near 1e300 ("height ... is -nan (tolerance inf)").
 TriangleMesh ShapeReader::meshBlock(TriangleMesh mesh, const std::string& what,
-                                    const std::string& path, bool hull) const {
+                                    const std::string& path, MeshUse use) const {
   triangles_.take(mesh.triangles.size(), path);
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Eigen::Vector3d& p = mesh.vertices[i];
@@ -221,12 +255,20 @@ TriangleMesh ShapeReader::meshBlock(TriangleMesh mesh, const std::string& what,
                              ") has a coordinate outside -1e+09..1e+09 (world units)");
     }
   }
-  if (hull) {
+  if (use == MeshUse::Hull) {
     try {
       return convexHullBlock(mesh.vertices, what);
     } catch (const MeshError& e) {
       fields_.fail(path, e.what());
     }
+  }
+  if (use == MeshUse::Closed) {
+    try {
+      validateClosedMesh(mesh, what);
+    } catch (const MeshError& e) {
+      fields_.fail(path, e.what());
+    }
+    return mesh;
   }
   try {
     validateConvexBlock(mesh, what);

@@ -211,6 +211,8 @@ double runPixelSize(const ViewSpec& view, const Aabb& bounds, const FrameOverrid
 }
 
 Simulation::Simulation(const Scene& scene, RunOptions options) : options_(std::move(options)) {
+  // A run decides every pair with RECODE's passes, which need convex blocks.
+  requireConvexBlocks(scene, "a simulation (recode run, the hierarchy page of recode explain)");
   if (options_.threads < 0)
     throw std::invalid_argument("the run's thread count " + std::to_string(options_.threads) +
                                 " is negative (0: all hardware threads)");

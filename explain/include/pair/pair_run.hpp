@@ -12,6 +12,7 @@
 
 #include "pair/pair_report.hpp"
 #include "pair/pair_setup.hpp"
+#include "recode/pair/layered_pair.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/raster/device.hpp"
 #include "recode/refine/pair_mode.hpp"
@@ -38,7 +39,8 @@ using PairDeviceMaker =
 struct PairRun {
   PairSetup setup;  // its frame along the axis the rule chose
   core::PairRequest request;
-  core::PairResult result;
+  core::PairResult result;                         // RECODE's passes (empty for a layered pair)
+  std::optional<core::LayeredPairResult> layered;  // when either object is a closed mesh
   core::ViewAxisRule axisRule = core::ViewAxisRule::Scene;
   std::optional<nlohmann::ordered_json> modeReport;  // when the mode is not the reference
   std::optional<PixelProbe> probe;                   // when a pixel was asked for
@@ -46,7 +48,9 @@ struct PairRun {
 
 // Runs the pair as `recode pair` does. `observer`, when given, sees every step of the
 // reference run (beside the pixel probe). Throws what loading the scene throws, and
-// std::invalid_argument for a --pixel outside the frame (naming the option and the rule).
+// std::invalid_argument for a --pixel outside the frame (naming the option and the rule), and
+// for --pixel, --mode or --view-axis on a pair with a closed mesh (RECODE's passes alone have
+// them).
 [[nodiscard]] PairRun runPair(const PairRunOptions& options, const PairDeviceMaker& makeDevice,
                               core::PairObserver* observer = nullptr);
 

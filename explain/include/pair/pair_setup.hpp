@@ -15,8 +15,12 @@ namespace recode::explain {
 struct PairSetup {
   std::string source;  // the scene file, or "built-in pair"
   std::string nameA, nameB;
-  core::TriangleMesh a, b;  // world coordinates
+  core::TriangleMesh a, b;                // world coordinates
+  bool closedA = false, closedB = false;  // a closed mesh, decided by the layered pair
   core::FrameSpec frame;
+
+  // Whether the pair is decided by the layered pair (either object a closed mesh).
+  [[nodiscard]] bool layered() const { return closedA || closedB; }
 };
 
 // The first two objects of the scene as A and B at frame 0, and the frame for them. Throws

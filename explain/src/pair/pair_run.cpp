@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "output/timing_fields.hpp"
+#include "pair/layered_report.hpp"
 #include "recode/refine/adaptive.hpp"
 #include "recode/refine/proven_apart.hpp"
 
@@ -105,12 +106,29 @@ class TwoObservers final : public core::PairObserver {
   core::PairObserver* second_;
 };
 
+// The options only RECODE's passes have, refused for a pair with a closed mesh.
+void requireReferenceOnlyOptions(const PairRunOptions& o) {
+  const auto refuse = [](const std::string& option) {
+    throw std::invalid_argument(option +
+                                " applies to a pair of convex blocks: this pair has a closed mesh, "
+                                "decided by the layered pair (docs/algorithm.md section 13)");
+  };
+  if (!o.pixel.empty())
+    refuse("--pixel");
+  if (o.mode != core::PairMode::Reference)
+    refuse("--mode " + std::string(core::toString(o.mode)));
+  if (o.axisRule != core::ViewAxisRule::Scene)
+    refuse("--view-axis " + std::string(core::toString(o.axisRule)));
+}
+
 }  // namespace
 
 PairRun runPair(const PairRunOptions& o, const PairDeviceMaker& makeDevice,
                 core::PairObserver* observer) {
-  PairRun run{loadPairSetup(o.scene, o.overrides), {}, {}, o.axisRule, {}, {}};
+  PairRun run{loadPairSetup(o.scene, o.overrides), {}, {}, {}, o.axisRule, {}, {}};
   PairSetup& setup = run.setup;
+  if (setup.layered())
+    requireReferenceOnlyOptions(o);
   // Another axis than the scene's: the frame is rebuilt along it at the same pixel size.
   if (o.axisRule != core::ViewAxisRule::Scene) {
     core::Aabb bounds = core::boundingBox(setup.a);
@@ -137,6 +155,10 @@ PairRun runPair(const PairRunOptions& o, const PairDeviceMaker& makeDevice,
   // (timing_us) then follows what the MOR covers; building them is not part of it.
   const core::PairBlock a = core::PairBlock::withHierarchy(setup.a);
   const core::PairBlock b = core::PairBlock::withHierarchy(setup.b);
+  if (setup.layered()) {
+    run.layered = core::collideLayered(*device, a, b, request);
+    return run;
+  }
   run.result =
       core::collidePair(*device, a, b, request, run.probe || observer ? &observers : nullptr);
   if (o.mode != core::PairMode::Reference)
@@ -145,7 +167,8 @@ PairRun runPair(const PairRunOptions& o, const PairDeviceMaker& makeDevice,
 }
 
 nlohmann::ordered_json pairRunJson(const PairRun& run, bool noTiming) {
-  nlohmann::ordered_json j = pairResultToJson(run.setup, run.request, run.result);
+  nlohmann::ordered_json j = run.layered ? layeredResultToJson(run.setup, run.request, *run.layered)
+                                         : pairResultToJson(run.setup, run.request, run.result);
   if (run.modeReport)
     j["mode"] = *run.modeReport;
   if (run.axisRule != core::ViewAxisRule::Scene) {
@@ -163,7 +186,10 @@ void printPairRun(std::ostream& out, const PairRun& run, bool picture) {
   if (run.axisRule != core::ViewAxisRule::Scene)
     out << "view axis " << core::toString(run.setup.frame.axis) << " (rule "
         << core::toString(run.axisRule) << ")\n";
-  printPairReport(out, run.setup, run.request, run.result, picture);
+  if (run.layered)
+    printLayeredReport(out, run.setup, run.request, *run.layered, picture);
+  else
+    printPairReport(out, run.setup, run.request, run.result, picture);
   if (run.modeReport)
     printMode(out, *run.modeReport);
 }

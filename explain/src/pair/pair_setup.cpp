@@ -33,11 +33,13 @@ PairSetup pairSetupFromScene(const core::Scene& scene, const core::FrameOverride
     const core::SceneObject& o = scene.objects[static_cast<std::size_t>(i)];
     if (!o.isLeaf())
       throw core::SceneError(scene.sourceName, o.jsonPath,
-                             "a pair needs two convex blocks, and this object has children "
-                             "(recode run handles objects made of several blocks)");
+                             "a pair needs two blocks (convex or closed meshes), and this object "
+                             "has children (recode run handles objects made of several blocks)");
   }
   s.a = scene.objects[0].worldMesh();
   s.b = scene.objects[1].worldMesh();
+  s.closedA = scene.objects[0].closed;
+  s.closedB = scene.objects[1].closed;
   core::Aabb bounds = core::boundingBox(s.a);
   bounds.extend(core::boundingBox(s.b));
   s.frame = resolveFrameNamed(scene, bounds, overrides);

@@ -118,10 +118,11 @@ TEST_CASE("readMesh chooses the reader by extension, ignoring case", "[mesh_io]"
   CHECK(readMesh(dir.path() / "CUBE.OFF").triangles == kCubeTriangles);
   CHECK(readMesh(dir.path() / "Cube.Obj").triangles == kCubeTriangles);
 
-  const auto stl = dir.write("part.stl", "solid x\nendsolid x\n");
-  CHECK_THAT(meshErrorMessage([&] { (void)readMesh(stl); }),
-             StartsWith(stl.string() + ": ") &&
-                 Contains("unknown mesh file extension '.stl' (expected .obj or .off)"));
+  const auto unknown = dir.write("part.3mf", "solid x\nendsolid x\n");
+  CHECK_THAT(
+      meshErrorMessage([&] { (void)readMesh(unknown); }),
+      StartsWith(unknown.string() + ": ") &&
+          Contains("unknown mesh file extension '.3mf' (expected .obj, .off, .stl or .ply)"));
   const auto bare = dir.write("mesh", "OFF\n");
   CHECK_THAT(meshErrorMessage([&] { (void)readMesh(bare); }),
              Contains("unknown mesh file extension (none)"));

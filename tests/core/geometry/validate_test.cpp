@@ -14,10 +14,12 @@
 #include "core_test_support.hpp"
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/validate.hpp"
+#include "test_shapes.hpp"
 
 using namespace recode::core;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
+using recode::core::test::makeTorus;
 using recode::core::test::meshErrorMessage;
 
 namespace {
@@ -57,28 +59,6 @@ bool firstConvexityViolation(const TriangleMesh& mesh, double relativeTolerance,
     }
   }
   return false;
-}
-
-// A torus made of an n x m grid of quads (each split into two triangles): closed,
-// consistently oriented, connected, Euler characteristic 0.
-TriangleMesh makeTorus(int n, int m) {
-  TriangleMesh mesh;
-  for (int i = 0; i < n; ++i) {
-    const double u = 2.0 * std::numbers::pi * i / n;
-    for (int j = 0; j < m; ++j) {
-      const double v = 2.0 * std::numbers::pi * j / m;
-      const double rho = 2.0 + 0.5 * std::cos(v);
-      mesh.vertices.emplace_back(rho * std::cos(u), rho * std::sin(u), 0.5 * std::sin(v));
-    }
-  }
-  auto id = [&](int i, int j) { return static_cast<VertexIndex>((i % n) * m + (j % m)); };
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < m; ++j) {
-      mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  }
-  return mesh;
 }
 
 }  // namespace

@@ -293,7 +293,7 @@ TEST_CASE("scene errors: frames", "[scene][errors]") {
 TEST_CASE("scene errors: shape types and sizes", "[scene][errors]") {
   CHECK_THAT(errorOf(oneShape(R"("type": "pyramid", "radius": 1)")),
              StartsWith("s.json: objects[0].shape.type: unknown shape type \"pyramid\" (expected "
-                        "one of cone, cylinder, capped_cone, ellipsoid, sphere, box)"));
+                        "one of cone, cylinder, capped_cone, ellipsoid, sphere, box, torus)"));
   CHECK_THAT(errorOf(oneShape(R"("radius": 1)")),
              StartsWith("s.json: objects[0].shape: missing key \"type\""));
   CHECK_THAT(errorOf(oneShape(R"("type": "cone", "radius": -2, "height": 1)")),
@@ -352,7 +352,7 @@ TEST_CASE("scene errors: mesh files", "[scene][errors]") {
                   "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\n"
                   "f 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n");
   (void)dir.write("broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
-  (void)dir.write("mesh.stl", "solid x\nendsolid x\n");
+  (void)dir.write("mesh.3mf", "solid x\nendsolid x\n");
   const auto errorIn = [&](const std::string& mesh) {
     try {
       (void)parseScene(R"({"objects": [{"shape": {"type": "box", "size": [1, 1, 1]}},
@@ -373,7 +373,7 @@ TEST_CASE("scene errors: mesh files", "[scene][errors]") {
   CHECK_THAT(dented, Contains("dented.obj") && Contains("convex"));
   CHECK_THAT(errorIn("broken.off"), StartsWith("s.json: objects[1].mesh: ") &&
                                         Contains("broken.off:6: ") && Contains("7"));
-  CHECK_THAT(errorIn("mesh.stl"),
+  CHECK_THAT(errorIn("mesh.3mf"),
              StartsWith("s.json: objects[1].mesh: ") && Contains("unknown mesh file extension"));
   CHECK_THAT(errorIn(""), StartsWith("s.json: objects[1].mesh: expected a non-empty string"));
 }

@@ -125,7 +125,7 @@ TEST_CASE("scene hierarchy errors: parts", "[scene][errors]") {
                          "objects": [{"part": "a"}]})"),
              StartsWith("h.json: parts.a.position: unknown key for a part (a part is geometry "
                         "only; place it where it is used) (allowed: mesh, hull, parts_from_groups, "
-                        "shape, children)"));
+                        "closed, shape, children)"));
   CHECK_THAT(errorOf(R"({"parts": [], "objects": [{)" + kBox + "}]}"),
              StartsWith("h.json: parts: expected an object of named parts, got an array"));
   // An unused part is still checked.

@@ -33,3 +33,19 @@ target_link_libraries(recode_verify_normal_tests PRIVATE recode_verify recode_wa
                                                          Catch2::Catch2WithMain)
 target_include_directories(recode_verify_normal_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/core/pair)
 catch_discover_tests(recode_verify_normal_tests)
+
+# The layered pair against CGAL: pixels against exact crossings, verdicts, the overlap volume.
+add_executable(recode_verify_layer_tests oracles/layer_oracle_test.cpp)
+target_link_libraries(recode_verify_layer_tests PRIVATE recode_verify recode_warnings
+                                                        Catch2::Catch2WithMain)
+target_include_directories(recode_verify_layer_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/core/pair)
+catch_discover_tests(recode_verify_layer_tests)
+
+# The layered pair on CGAL's demo meshes (the fixture of tests/core unpacks them at test time).
+add_executable(recode_verify_layer_real_tests oracles/layer_real_meshes_test.cpp)
+target_link_libraries(recode_verify_layer_real_tests PRIVATE recode_verify recode_warnings
+                                                             Catch2::Catch2WithMain)
+target_compile_definitions(recode_verify_layer_real_tests PRIVATE
+  RECODE_CGAL_DEMO_MESHES="${PROJECT_BINARY_DIR}/tests/core/cgal_demo/data/meshes")
+catch_discover_tests(recode_verify_layer_real_tests
+                     PROPERTIES FIXTURES_REQUIRED cgal_demo_meshes COST 60)

@@ -33,6 +33,8 @@
 #include "recode/geometry/validate.hpp"
 #include "recode/verify/cgal_oracle.hpp"
 
+#include "cgal_exact_mesh.hpp"
+
 namespace recode::verify {
 
 namespace {
@@ -41,27 +43,9 @@ using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Segment = Kernel::Segment_3;
 using Triangle = Kernel::Triangle_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using Mesh = cgal::ExactMesh;
+using cgal::toExactMesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-// An exact copy. validateConvexBlock has already checked that the mesh is closed and
-// consistently oriented; the checks here guard CGAL's own preconditions all the same.
-Mesh toExactMesh(const core::TriangleMesh& mesh, const std::string& name) {
-  Mesh out;
-  std::vector<Mesh::Vertex_index> ids;
-  ids.reserve(mesh.vertices.size());
-  for (const Eigen::Vector3d& p : mesh.vertices)
-    ids.push_back(out.add_vertex(Point(p.x(), p.y(), p.z())));
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const core::Triangle& tri = mesh.triangles[t];
-    if (out.add_face(ids[tri[0]], ids[tri[1]], ids[tri[2]]) == Mesh::null_face())
-      throw core::MeshError(name + ": triangle " + std::to_string(t) +
-                            " does not fit its neighbours as a manifold surface");
-  }
-  if (!CGAL::is_closed(out))
-    throw core::MeshError(name + ": the surface is not closed");
-  return out;
-}
 
 std::vector<Triangle> trianglesOf(const Mesh& mesh) {
   std::vector<Triangle> out;

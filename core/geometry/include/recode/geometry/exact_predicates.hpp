@@ -15,6 +15,11 @@
 
 namespace recode::core {
 
+// The largest coordinate magnitude that the predicates' callers accept (the convex hull, the
+// self-intersection search): products of three differences of such coordinates stay far from
+// overflow.
+inline constexpr double kMaxExactCoordinate = 1e100;
+
 // +1 when d lies below the plane through a, b, c (a, b, c counter-clockwise seen from above,
 // i.e. from the side their normal (b - a) x (c - a) points to), -1 when above, 0 when the four
 // points are coplanar. It is the sign of det[a - d; b - d; c - d].

@@ -1,7 +1,7 @@
 #pragma once
-// Tessellated primitive solids, each a closed convex TriangleMesh that passes
-// validateConvexBlock: vertices are shared (no duplicates; every pole, apex and cap centre
-// is one vertex), faces are counter-clockwise seen from outside.
+// Tessellated primitive solids, each (but the torus, at the end) a closed convex TriangleMesh
+// that passes validateConvexBlock: vertices are shared (no duplicates; every pole, apex and cap
+// centre is one vertex), faces are counter-clockwise seen from outside.
 //
 // Round solids are built from rings of `segments` vertices around the z axis. Ring vertex
 // j (0 <= j < segments) lies at azimuth 2*pi*j/segments measured from +x toward +y.
@@ -60,5 +60,16 @@ inline constexpr std::size_t kMaxGeneratedTriangles = std::size_t{1} << 25;
 // bit 0 of i, y from bit 1 and z from bit 2 (set bit: +).
 [[nodiscard]] TriangleMesh makeBox(double hx, double hy, double hz);
 [[nodiscard]] TriangleMesh makeBox(const Eigen::Vector3d& halfExtents);
+
+// Not convex: a closed mesh for the layered pair (layered_pair.hpp), which validateConvexBlock
+// refuses and core::validateClosedMesh accepts.
+//
+// Torus about the z axis through the origin: the tube's centre circle has `radius` in the
+// z = 0 plane, the tube `tubeRadius` (0 < tubeRadius < radius, so the hole stays open).
+// `segments` rings of vertices around the z axis (segments >= 3), each of `rings` vertices
+// around the tube (rings >= 3); vertex (i, j) is index i * rings + j, at azimuth 2*pi*i/segments
+// and tube angle 2*pi*j/rings measured from the outside of the tube toward +z:
+// V = segments * rings, F = 2 * segments * rings.
+[[nodiscard]] TriangleMesh makeTorus(double radius, double tubeRadius, int segments, int rings);
 
 }  // namespace recode::core

@@ -1,7 +1,7 @@
 #pragma once
-// Reading triangle meshes from Wavefront OBJ and OFF files.
+// Reading triangle meshes from Wavefront OBJ, OFF, STL and PLY files.
 //
-// Both readers keep every vertex of the file in file order (vertex k of the file is
+// The OBJ and OFF readers keep every vertex of the file in file order (vertex k of the file is
 // mesh.vertices[k]) and fan-triangulate each polygon v0 v1 ... v(n-1) into
 // (v0, v1, v2), (v0, v2, v3), ..., (v0, v(n-2), v(n-1)), keeping its winding. They check
 // the file's syntax, that coordinates are finite and that face indices are in range; they
@@ -49,7 +49,28 @@ struct MeshGroup {
 // lines may follow the last face.
 [[nodiscard]] TriangleMesh readOff(const std::filesystem::path& path);
 
-// Chooses the reader by the file extension, ignoring case: ".obj" or ".off".
+// STL, binary or ASCII. A file whose size is exactly 84 + 50 n bytes, n the triangle count in
+// bytes 80-83 (little endian), is binary (even if its header starts with "solid"); otherwise it
+// must be ASCII, one statement a line: "solid [name]", then per triangle "facet normal nx ny nz",
+// "outer loop", exactly three "vertex x y z" lines (finite numbers), "endloop", "endfacet", and
+// "endsolid [name]"; several solids may follow one another. Normals and attribute bytes are
+// ignored. STL stores corners by value: corners with exactly equal coordinates become one
+// vertex (no tolerance), numbered in order of first appearance; the triangles keep the file's
+// order and corner order. Binary coordinates are floats, read exactly; ASCII ones are read as
+// doubles, correctly rounded, as OBJ and OFF are.
+[[nodiscard]] TriangleMesh readStl(const std::filesystem::path& path);
+
+// PLY, ASCII or binary (either byte order): the `vertex` element's x, y, z and the `face`
+// element's `vertex_indices` (or `vertex_index`) lists; other elements and properties are
+// ignored. The header is checked here (grammar, and that every declared element fits in the
+// bytes after it, so no count can make the reader allocate beyond the file's size); the body is
+// parsed by assimp, with no post-processing, in single precision (coordinates are rounded to
+// float). Vertices keep file order; faces are fan-triangulated in file order as OFF faces are.
+// A build without assimp (docs/geometry.md) throws "<path>: this build of RECODE has no PLY
+// reader ..." for every PLY file whose header is valid.
+[[nodiscard]] TriangleMesh readPly(const std::filesystem::path& path);
+
+// Chooses the reader by the file extension, ignoring case: ".obj", ".off", ".stl" or ".ply".
 [[nodiscard]] TriangleMesh readMesh(const std::filesystem::path& path);
 
 }  // namespace recode::core

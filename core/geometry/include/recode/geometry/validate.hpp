@@ -47,9 +47,15 @@ enum class MeshProblemKind {
   InwardOrientation,        // signed volume <= 0
   NotConvex,
   MultipleWinding,
+  // The closed-mesh check's own (closed_mesh.hpp):
+  CoordinateOutOfRange,  // beyond +-kMaxExactCoordinate, where the exact predicates overflow
+  NonManifoldVertex,     // the triangles around a vertex form more than one fan
+  SelfIntersection,      // two triangles meet other than at their shared edge or vertex
+  NestedShell,           // a shell's orientation disagrees with the shells around it
 };
 
-// Short name of a problem kind, e.g. "not convex".
+// Short name of a problem kind, e.g. "not convex". Both checks report with these kinds and
+// ValidationReport: checkConvexBlock here, checkClosedMesh in closed_mesh.hpp.
 [[nodiscard]] std::string_view toString(MeshProblemKind kind);
 
 struct MeshProblem {

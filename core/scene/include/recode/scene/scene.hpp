@@ -34,13 +34,15 @@ class SceneError : public recode::json::JsonError {
   explicit SceneError(const recode::json::JsonError& error) : recode::json::JsonError(error) {}
 };
 
-// A node of an object: a convex block (a leaf, with localMesh) or a group of child nodes
-// placed relative to it (its Placement: rest pose, motion, keyframes, joint). The objects of a
-// scene are the roots.
+// A node of an object: a block (a leaf, with localMesh) or a group of child nodes placed
+// relative to it (its Placement: rest pose, motion, keyframes, joint). The objects of a scene
+// are the roots. A leaf is a convex block, or with `closed` a closed mesh of any shape, which
+// the layered pair decides (docs/algorithm.md section 13).
 struct SceneObject : Placement {
   std::string name;        // "name", or "object <index>" / "child <index>" when not given
   std::string jsonPath;    // "objects[<index>]", "objects[0].children[2]", for messages
-  TriangleMesh localMesh;  // leaves: in the node's own frame, validated closed and convex
+  TriangleMesh localMesh;  // leaves: in the node's own frame, validated (convex unless closed)
+  bool closed = false;     // leaves: a closed mesh ("closed": true, or a torus shape)
   std::vector<SceneObject> children;  // empty for a leaf
 
   [[nodiscard]] bool isLeaf() const { return children.empty(); }
@@ -93,5 +95,9 @@ struct Scene {
 [[nodiscard]] Scene parseScene(std::string_view jsonText, const std::string& sourceName,
                                const std::filesystem::path& baseDir,
                                const SceneReadLimits& limits = {});
+
+// Refuses a scene with a closed-mesh leaf where only convex blocks are decided (`who`, e.g.
+// "recode run"): throws SceneError naming the first such leaf's JSON path and `who`.
+void requireConvexBlocks(const Scene& scene, std::string_view who);
 
 }  // namespace recode::core
