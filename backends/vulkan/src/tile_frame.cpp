@@ -92,7 +92,7 @@ struct FrameRecords {
 struct WorkLayout {
   explicit WorkLayout(const FrameRecords& r)
       : pairCapacity(static_cast<std::uint32_t>(std::min<std::uint64_t>(r.listCapacity, 1u << 27))),
-        triangleBytes(tileAligned(VkDeviceSize{r.triangles} * kTileWordsPerTriangle * 4 + 4)),
+        triangleBytes(tileAligned(VkDeviceSize{r.triangles} * sizeof(TileSetUpTriangle) + 4)),
         jobBytes(tileAligned(VkDeviceSize{r.jobs} * 4 + 4)) {
     countsAt = triangleBytes;
     offsetsAt = countsAt + jobBytes;
@@ -704,9 +704,10 @@ void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
         };
         TileDrawCapture c;
         c.firstTriangle = d.firstTriangle;
-        for (std::uint32_t i = 0; i < d.triangleCount * kTileWordsPerTriangle; ++i)
-          c.triangleWords.push_back(
-              word((VkDeviceSize{d.firstTriangle} * kTileWordsPerTriangle + i) * 4));
+        c.triangles.resize(d.triangleCount);
+        std::memcpy(c.triangles.data(),
+                    data + VkDeviceSize{d.firstTriangle} * sizeof(TileSetUpTriangle),
+                    c.triangles.size() * sizeof(TileSetUpTriangle));
         c.gridOrigin[0] = e.gridOrigin[0];
         c.gridOrigin[1] = e.gridOrigin[1];
         c.gridWidth = e.gridWidth;

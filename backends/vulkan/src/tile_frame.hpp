@@ -56,9 +56,9 @@ struct TileVertices {
 };
 
 // What the stages made of one draw, copied back for tests (VulkanComputeDevice::DrawStages):
-// the words of its set-up triangles, its epoch's grid and each job's list, in frame numbering.
+// its set-up triangles, its epoch's grid and each job's list, in frame numbering.
 struct TileDrawCapture {
-  std::vector<std::uint32_t> triangleWords;  // kTileWordsPerTriangle a triangle of the draw
+  std::vector<TileSetUpTriangle> triangles;
   std::int32_t gridOrigin[2] = {0, 0};
   std::uint32_t gridWidth = 0;
   std::uint32_t gridHeight = 0;

@@ -26,7 +26,7 @@ enum class TileBinding : std::uint32_t {
   Draws = 3,       // TileDrawSource
   VertexJobs = 4,  // TileVertexJob
   Transforms = 5,  // doubles: 23 a vertex job's transform, or 12 a box job's pose
-  Triangles = 6,   // set-up triangles, kTileWordsPerTriangle words each
+  Triangles = 6,   // TileSetUpTriangle
   BinCounts = 7,   // triangles a job's list holds
   BinOffsets = 8,
   BinCursors = 9,

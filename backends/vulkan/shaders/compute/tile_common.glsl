@@ -183,18 +183,19 @@ struct BoxJob {
   uint pose;
 };
 
-const uint kWordsPerTriangle = 16u;
-// A set-up triangle's words (Triangles[]):
-//  0-5   snapped X0, Y0, X1, Y1, X2, Y2 (24.8 fixed point, |value| <= 2^23) as int bits
-//  6     1 front-facing, 0 back-facing
-//  7-10  candidate pixels inside the scissor, half-open x0, y0, x1, y1 (empty: draws nothing)
-//  11    z0's float bits
-//  12-13 dzdx's double bits, low word first; 14-15 dzdy's
-const uint kTriangleX0 = 0u;
-const uint kTriangleFront = 6u;
-const uint kTriangleCandidates = 7u;
-const uint kTriangleZ0 = 11u;
-const uint kTriangleSlopes = 12u;
+// A set-up triangle (Triangles[]): what the set-up stage makes of a triangle for the binning and
+// raster stages. Scalars and two-word vectors only, so that std430 lays it out as 16 words with
+// no padding, as the host's TileSetUpTriangle (whose layout a test reads from these shaders'
+// SPIR-V).
+struct SetUpTriangle {
+  int x0, y0, x1, y1, x2, y2;  // the snapped vertices (24.8 fixed point, |value| <= 2^23)
+  uint front;                  // 1 front-facing, 0 back-facing
+  int candidates[4];  // candidate pixels inside the scissor, half-open x0, y0, x1, y1 (empty:
+                      // draws nothing; the only words a culled triangle's record is given)
+  uint z0;            // z0's float bits
+  uvec2 dzdx;         // the depth plane's slopes as double bits, low word first
+  uvec2 dzdy;
+};
 
 // Sets `result` to the last index k below `count` whose array[k].field <= key, for records sorted
 // by `field` with array[0].field <= key: the binary search that finds a frame index's record (a

@@ -36,8 +36,7 @@ layout(local_size_x = 64) in;
 #include "tile_block_test.glsl"
 #include "tile_rounds.glsl"
 
-// The set-up triangles (tile_common.glsl's layout) read four words at a time.
-layout(std430, set = 0, binding = 6) readonly buffer Triangles { uvec4 triangles[]; };
+layout(std430, set = 0, binding = 6) readonly buffer Triangles { SetUpTriangle triangles[]; };
 layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint binCounts[]; };
 layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint binOffsets[]; };
 layout(std430, set = 0, binding = 10) readonly buffer Pairs { uint pairs[]; };
@@ -126,18 +125,16 @@ int64_t biasedEdge(i64vec2 a, i64vec2 b, int64_t xc, int64_t yc) {
 
 // Frame triangle t's fragments in this column.
 void shade(uint t) {
-  const uvec4 rectWords = triangles[4u * t + 1u];  // X2, Y2, front, x0
-  const uvec4 moreWords = triangles[4u * t + 2u];  // y0, x1, y1, z0
   // Its candidate rows in this block (the candidates lie inside the scissor).
-  const int rowStart = max(int(moreWords.x), firstRow);
-  const int rowEnd = min(int(moreWords.z), firstRow + 8);
-  if (rowStart >= rowEnd || column < int(rectWords.w) || column >= int(moreWords.y))
+  const int rowStart = max(triangles[t].candidates[1], firstRow);
+  const int rowEnd = min(triangles[t].candidates[3], firstRow + 8);
+  if (rowStart >= rowEnd || column < triangles[t].candidates[0] ||
+      column >= triangles[t].candidates[2])
     return;
-  const uvec4 vertexWords = triangles[4u * t];  // X0, Y0, X1, Y1
-  const i64vec2 v0 = i64vec2(ivec2(vertexWords.xy));
-  const i64vec2 v1 = i64vec2(ivec2(vertexWords.zw));
-  const i64vec2 v2 = i64vec2(ivec2(rectWords.xy));
-  const bool front = rectWords.z != 0u;
+  const i64vec2 v0 = i64vec2(triangles[t].x0, triangles[t].y0);
+  const i64vec2 v1 = i64vec2(triangles[t].x1, triangles[t].y1);
+  const i64vec2 v2 = i64vec2(triangles[t].x2, triangles[t].y2);
+  const bool front = triangles[t].front != 0u;
   // Counter-clockwise: (v0, v1, v2) when front-facing, (v0, v2, v1) when back-facing.
   const i64vec2 p1 = front ? v1 : v2;
   const i64vec2 p2 = front ? v2 : v1;
@@ -149,10 +146,9 @@ void shade(uint t) {
   const int64_t step0 = (p1.x - v0.x) * 256l;
   const int64_t step1 = (p2.x - p1.x) * 256l;
   const int64_t step2 = (v0.x - p2.x) * 256l;
-  const double z0 = double(uintBitsToFloat(moreWords.w));
-  const uvec4 slopeWords = triangles[4u * t + 3u];
-  const double dzdx = packDouble2x32(slopeWords.xy);
-  const double dzdy = packDouble2x32(slopeWords.zw);
+  const double z0 = double(uintBitsToFloat(triangles[t].z0));
+  const double dzdx = packDouble2x32(triangles[t].dzdx);
+  const double dzdy = packDouble2x32(triangles[t].dzdy);
   precise double tx = dzdx * double(xc - v0.x);
   precise double zx = z0 + tx;  // the plane's column part, as CpuDevice keeps it per block
   const uint ops = front ? frontOps : backOps;
