@@ -24,8 +24,18 @@ using raster::PixelRect;
 
 static_assert(kTileRoundArgsBytes == sizeof(VkDispatchIndirectCommand));
 
-// The timestamps around the stages (kStages + 1 of them).
-constexpr std::uint32_t kTimestamps = raster::TransferCounters::kStages + 1;
+// The timestamps around the groups of stages that TransferCounters::stageUs times, in the order
+// of its kStageNames: a group's time runs from its own timestamp to the next.
+enum class TileTimer : std::uint32_t {
+  Vertex = 0,   // the box and vertex stages
+  SetUp = 1,    // the set-up stage
+  Binning = 2,  // count, scan, scatter, sort
+  Raster = 3,   // the raster stage's rounds
+  Reads = 4,    // the resolve stage, the reads' and boxes' copies, the counters' copy
+  End = 5,
+};
+static_assert(static_cast<std::size_t>(TileTimer::End) == raster::TransferCounters::kStages);
+constexpr std::uint32_t kTimestamps = static_cast<std::uint32_t>(TileTimer::End) + 1;
 
 // The interface's state as the shaders read it (tile_frame_layout.hpp's packing).
 void putState(const raster::RenderState& s, TileCommand& c) {
@@ -88,7 +98,8 @@ struct FrameRecords {
   std::optional<std::pair<std::uint32_t, std::uint32_t>> captured;
 };
 
-// Where the frame's regions lie in its work buffer.
+// Where the frame's regions lie in its work buffer: each at least a word (every region is bound
+// for every stage, and a binding's range may not be empty).
 struct WorkLayout {
   explicit WorkLayout(const FrameRecords& r)
       : pairCapacity(static_cast<std::uint32_t>(std::min<std::uint64_t>(r.listCapacity, 1u << 27))),
@@ -98,7 +109,7 @@ struct WorkLayout {
     offsetsAt = countsAt + jobBytes;
     cursorsAt = offsetsAt + jobBytes;
     pairsAt = cursorsAt + jobBytes;
-    finalsAt = pairsAt + tileAligned(VkDeviceSize{pairCapacity} * 4);
+    finalsAt = pairsAt + tileAligned(VkDeviceSize{pairCapacity} * 4 + 4);
     windowsAt = finalsAt + tileAligned(VkDeviceSize{r.finals} * kTileJobPixelBytes + 4);
     arenaAt = windowsAt + tileAligned(VkDeviceSize{r.windowVertices} * kTileWindowVertexBytes + 4);
     boxesAt = arenaAt + tileAligned(VkDeviceSize{r.arenaWords} * 4 + 4);
@@ -335,13 +346,17 @@ struct TileFrame::Impl {
             VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   }
 
-  void timestamp(VkCommandBuffer cmd, std::uint32_t k) {
+  void timestamp(VkCommandBuffer cmd, TileTimer timer) {
     if (timed)
-      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, k);
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries,
+                          static_cast<std::uint32_t>(timer));
   }
 
   [[nodiscard]] FrameRecords records() const;
   void run(VkCommandBuffer cmd);
+  [[nodiscard]] TileFrameConstants constantsOf(const FrameRecords& r,
+                                               const WorkLayout& layout) const;
+  [[nodiscard]] std::vector<TileBuffer> buffersOf(const FrameRecords& r, const WorkLayout& layout);
   void recordStages(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
   void recordCopies(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
   void clearRecorded();
@@ -473,7 +488,7 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
   if (r.captured)
     recordCapture(cmd, r, layout);
   computeBarrier(cmd);
-  timestamp(cmd, kTimestamps - 1);
+  timestamp(cmd, TileTimer::End);
   clearRecorded();
 }
 
@@ -486,10 +501,9 @@ void TileFrame::Impl::clearRecorded() {
   capture.reset();
 }
 
-// The stages, each one dispatch (none when it has nothing to do), with a compute barrier
-// between dependent ones and a timestamp after each group of kStageNames.
-void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
-                                   const WorkLayout& layout) {
+// The push constants every stage of the frame starts from.
+TileFrameConstants TileFrame::Impl::constantsOf(const FrameRecords& r,
+                                                const WorkLayout& layout) const {
   TileFrameConstants k;
   k.vertexCount = r.windowVertices;
   k.vertexJobs = static_cast<std::uint32_t>(r.vertexJobs.size());
@@ -505,136 +519,148 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   k.sortBudget = r.sortRounds > 1 ? budgets.sortWork : kTileUnbounded;
   k.scatterChunks = tileScatterChunks(r.largestGrid, budgets.scatterBlocks);
   k.scatterBlocks = k.scatterChunks > 1 ? budgets.scatterBlocks : kTileUnbounded;
-  const TileBuffer targetsIn = uploaded(TileBinding::Targets, r.targets);
-  const TileBuffer epochsIn = uploaded(TileBinding::Epochs, r.epochs);
-  const TileBuffer commandsIn = uploaded(TileBinding::Commands, r.commands);
-  const TileBuffer drawsIn = uploaded(TileBinding::Draws, r.draws);
-  const TileBuffer vertexJobsIn = uploaded(TileBinding::VertexJobs, r.vertexJobs);
-  const TileBuffer transformsIn = uploaded(TileBinding::Transforms, r.transforms);
-  const TileBuffer posesIn = uploaded(TileBinding::Transforms, r.poses);
-  const TileBuffer resolveIn = uploaded(TileBinding::ResolveRanges, r.resolveRanges);
-  const TileBuffer laterIn = uploaded(TileBinding::LaterEpochs, r.laterEpochs);
-  const TileBuffer boxJobsIn = uploaded(TileBinding::BoxJobs, r.boxJobs);
-  const VkBuffer w = work.buffer;
-  const TileBuffer triangles{TileBinding::Triangles, w, 0, layout.triangleBytes};
-  const TileBuffer counts{TileBinding::BinCounts, w, layout.countsAt, layout.jobBytes};
-  const TileBuffer offsets{TileBinding::BinOffsets, w, layout.offsetsAt, layout.jobBytes};
-  const TileBuffer cursors{TileBinding::BinCursors, w, layout.cursorsAt, layout.jobBytes};
-  const TileBuffer pairs{TileBinding::Pairs, w, layout.pairsAt, layout.finalsAt - layout.pairsAt};
-  const TileBuffer finals{TileBinding::JobFinal, w, layout.finalsAt,
-                          layout.windowsAt - layout.finalsAt};
-  const TileBuffer arena{TileBinding::ReadArena, w, layout.arenaAt,
-                         layout.boxesAt - layout.arenaAt};
-  const TileBuffer boxes{TileBinding::Boxes, w, layout.boxesAt, layout.progressAt - layout.boxesAt};
-  const TileBuffer progress{TileBinding::Progress, w, layout.progressAt,
-                            layout.sortProgressAt - layout.progressAt};
-  const TileBuffer sortProgress{TileBinding::Progress, w, layout.sortProgressAt,
-                                layout.countersAt - layout.sortProgressAt};
-  const TileBuffer counters{TileBinding::Counters, w, layout.countersAt,
-                            layout.rasterArgsAt - layout.countersAt};
-  const TileBuffer rasterArgs{TileBinding::RoundArgs, w, layout.rasterArgsAt,
-                              layout.sortArgsAt - layout.rasterArgsAt};
-  const TileBuffer sortArgs{TileBinding::RoundArgs, w, layout.sortArgsAt,
-                            layout.carryAt - layout.sortArgsAt};
-  const TileBuffer carry{TileBinding::Carry, w, layout.carryAt, layout.bytes - layout.carryAt};
+  return k;
+}
 
-  timed = queries != VK_NULL_HANDLE;
-  if (timed)
-    vkCmdResetQueryPool(cmd, queries, 0, kTimestamps);
-  long long dispatches = 0;
-  const auto dispatchLinear = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
-                                  std::uint64_t count) {
-    if (count == 0)
-      return;
-    pipelines.dispatchLinear(cmd, p, buffers, k, count);
-    ++dispatches;
+// Every buffer the stages bind, one a binding: the records uploaded, and the work buffer's
+// regions (each from its start to the next region's).
+std::vector<TileBuffer> TileFrame::Impl::buffersOf(const FrameRecords& r,
+                                                   const WorkLayout& layout) {
+  const VkBuffer w = work.buffer;
+  const auto region = [w](TileBinding binding, VkDeviceSize at, VkDeviceSize end) {
+    return TileBuffer{binding, w, at, end - at};
   };
-  const auto indirect = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
-                            VkDeviceSize args) {
-    pipelines.dispatchIndirect(cmd, p, buffers, k, w, args);
-    ++dispatches;
+  return {
+      uploaded(TileBinding::Targets, r.targets),
+      uploaded(TileBinding::Epochs, r.epochs),
+      uploaded(TileBinding::Commands, r.commands),
+      uploaded(TileBinding::Draws, r.draws),
+      uploaded(TileBinding::VertexJobs, r.vertexJobs),
+      uploaded(TileBinding::Transforms, r.transforms),
+      uploaded(TileBinding::ResolveRanges, r.resolveRanges),
+      uploaded(TileBinding::LaterEpochs, r.laterEpochs),
+      uploaded(TileBinding::BoxJobs, r.boxJobs),
+      uploaded(TileBinding::Poses, r.poses),
+      region(TileBinding::Triangles, 0, layout.triangleBytes),
+      region(TileBinding::BinCounts, layout.countsAt, layout.countsAt + layout.jobBytes),
+      region(TileBinding::BinOffsets, layout.offsetsAt, layout.offsetsAt + layout.jobBytes),
+      region(TileBinding::BinCursors, layout.cursorsAt, layout.cursorsAt + layout.jobBytes),
+      region(TileBinding::Pairs, layout.pairsAt, layout.finalsAt),
+      region(TileBinding::JobFinal, layout.finalsAt, layout.windowsAt),
+      region(TileBinding::ReadArena, layout.arenaAt, layout.boxesAt),
+      region(TileBinding::Boxes, layout.boxesAt, layout.progressAt),
+      region(TileBinding::RasterProgress, layout.progressAt, layout.sortProgressAt),
+      region(TileBinding::SortProgress, layout.sortProgressAt, layout.countersAt),
+      region(TileBinding::Counters, layout.countersAt, layout.rasterArgsAt),
+      region(TileBinding::RasterRoundArgs, layout.rasterArgsAt, layout.sortArgsAt),
+      region(TileBinding::SortRoundArgs, layout.sortArgsAt, layout.carryAt),
+      region(TileBinding::Carry, layout.carryAt, layout.bytes),
   };
-  // A stage in rounds: the first for every job (`groups` workgroups, x and y), each later one an
-  // indirect dispatch whose size the round before writes at `argsAt` (zero unless some job
-  // stopped at its budget), a barrier after each.
-  const auto inRounds = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
-                            std::pair<std::uint32_t, std::uint32_t> groups, std::uint32_t rounds,
-                            VkDeviceSize argsAt) {
-    if (r.jobs == 0)
-      return;
-    std::tie(k.roundGroupsX, k.roundGroupsY) = groups;
-    for (k.round = 0; k.round < rounds; ++k.round) {
-      if (k.round == 0) {
-        pipelines.dispatch(cmd, p, buffers, k, groups.first, groups.second);
-        ++dispatches;
-      } else {
-        indirect(p, buffers, argsAt + VkDeviceSize{k.round} * kTileRoundArgsBytes);
-      }
-      computeBarrier(cmd);
-    }
-    k.round = 0;
-  };
-  const auto dispatchGroups = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
-                                  std::uint64_t groups) {
+}
+
+namespace {
+
+// The frame's stages as they are recorded: each a call that binds its pipeline, pushes the
+// constants as they are then and dispatches (nothing when the stage has nothing to do), on top of
+// the buffers pushed once for the frame; it counts the dispatches.
+class StageRecorder {
+ public:
+  StageRecorder(VkCommandBuffer cmd, const TilePipelines& pipelines, TileFrameConstants& constants,
+                VkBuffer work)
+      : cmd_(cmd), pipelines_(pipelines), k_(constants), work_(work) {}
+
+  // `count` invocations of a 64-wide stage that reads linearInvocation().
+  void linear(VkPipeline pipeline, std::uint64_t count) { groups(pipeline, (count + 63) / 64); }
+
+  // `groups` workgroups of a stage that reads linearWorkgroup().
+  void groups(VkPipeline pipeline, std::uint64_t groups) {
     if (groups == 0)
       return;
     const auto [perRow, rows] = TilePipelines::groupGrid(groups);
-    pipelines.dispatch(cmd, p, buffers, k, perRow, rows);
-    ++dispatches;
-  };
+    pipelines_.dispatch(cmd_, pipeline, k_, perRow, rows);
+    ++dispatches_;
+  }
+
+  // A stage in `rounds`: the first of `groups` workgroups, each later one an indirect dispatch
+  // whose size the round before writes at `argsAt` in the work buffer (zero unless some job
+  // stopped at its budget), a barrier after each.
+  void inRounds(VkPipeline pipeline, std::uint64_t groups, std::uint32_t rounds,
+                VkDeviceSize argsAt) {
+    if (groups == 0)
+      return;
+    std::tie(k_.roundGroupsX, k_.roundGroupsY) = TilePipelines::groupGrid(groups);
+    for (k_.round = 0; k_.round < rounds; ++k_.round) {
+      if (k_.round == 0)
+        pipelines_.dispatch(cmd_, pipeline, k_, k_.roundGroupsX, k_.roundGroupsY);
+      else
+        pipelines_.dispatchIndirect(cmd_, pipeline, k_, work_,
+                                    argsAt + VkDeviceSize{k_.round} * kTileRoundArgsBytes);
+      ++dispatches_;
+      computeBarrier(cmd_);
+    }
+    k_.round = 0;
+  }
+
+  [[nodiscard]] long long dispatches() const { return dispatches_; }
+
+ private:
+  VkCommandBuffer cmd_;
+  const TilePipelines& pipelines_;
+  TileFrameConstants& k_;
+  VkBuffer work_;
+  long long dispatches_ = 0;
+};
+
+}  // namespace
+
+// The stages in order, with a compute barrier between dependent ones and a timestamp before each
+// group of them (TileTimer).
+void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
+                                   const WorkLayout& layout) {
+  TileFrameConstants k = constantsOf(r, layout);
+  const VkBuffer w = work.buffer;
+  timed = queries != VK_NULL_HANDLE;
+  if (timed)
+    vkCmdResetQueryPool(cmd, queries, 0, kTimestamps);
+  pipelines.pushBuffers(cmd, buffersOf(r, layout));
+  StageRecorder stage(cmd, pipelines, k, w);
   // What the devices recorded before (uploads, framebuffer fills) is visible to the stages.
   computeBarrier(cmd);
   vkCmdFillBuffer(cmd, w, layout.countsAt, layout.jobBytes, 0);
   vkCmdFillBuffer(cmd, w, layout.arenaAt, layout.boxesAt - layout.arenaAt, 0);  // ORed into
   vkCmdFillBuffer(cmd, w, layout.progressAt, layout.carryAt - layout.progressAt, 0);
   computeBarrier(cmd);
-  timestamp(cmd, 0);
-  dispatchGroups(pipelines.box, {boxJobsIn, posesIn, boxes}, k.boxJobs);
-  dispatchLinear(pipelines.vertex,
-                 {targetsIn, epochsIn, commandsIn, drawsIn, vertexJobsIn, transformsIn},
-                 r.windowVertices);
+  timestamp(cmd, TileTimer::Vertex);
+  stage.groups(pipelines.box, r.boxJobs.size());  // a workgroup a block
+  stage.linear(pipelines.vertex, r.windowVertices);
   computeBarrier(cmd);
-  timestamp(cmd, 1);
-  dispatchLinear(pipelines.setup, {targetsIn, epochsIn, commandsIn, drawsIn, triangles},
-                 r.triangles);
+  timestamp(cmd, TileTimer::SetUp);
+  stage.linear(pipelines.setup, r.triangles);
   computeBarrier(cmd);
-  timestamp(cmd, 2);
+  timestamp(cmd, TileTimer::Binning);
   if (r.triangles > 0) {
-    // The scatter counts (binPass 0), the scan places the lists, the scatter fills them.
+    // The scatter counts (binPass 0), the scan places the lists, the scatter fills them, the
+    // sort puts each in order.
     const std::uint64_t scatterInvocations = std::uint64_t{r.triangles} * k.scatterChunks;
-    dispatchLinear(
-        pipelines.scatter,
-        {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs, counters},
-        scatterInvocations);
+    stage.linear(pipelines.scatter, scatterInvocations);
     computeBarrier(cmd);
     const bool serial = context.cpuDriver() && r.jobs <= kMostSerialScanJobs;
-    pipelines.dispatch(cmd, serial ? pipelines.scanSerial : pipelines.scan,
-                       {counts, offsets, cursors}, k, 1, 1);
-    ++dispatches;
+    stage.groups(serial ? pipelines.scanSerial : pipelines.scan, 1);
     computeBarrier(cmd);
     k.binPass = 1;
-    dispatchLinear(
-        pipelines.scatter,
-        {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs, counters},
-        scatterInvocations);
+    stage.linear(pipelines.scatter, scatterInvocations);
     computeBarrier(cmd);
-    // The sort in rounds.
-    inRounds(pipelines.sort, {counts, offsets, pairs, sortProgress, counters, sortArgs},
-             TilePipelines::linearGroups(r.jobs), r.sortRounds, layout.sortArgsAt);
+    stage.inRounds(pipelines.sort, (std::uint64_t{r.jobs} + 63) / 64, r.sortRounds,
+                   layout.sortArgsAt);  // a job an invocation
   }
-  timestamp(cmd, 3);
-  // The raster stage in rounds: eight jobs a workgroup.
-  inRounds(pipelines.raster,
-           {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, offsets, pairs, finals,
-            arena, progress, carry, counters, rasterArgs},
-           TilePipelines::groupGrid((r.jobs + kRasterJobsPerGroup - 1) / kRasterJobsPerGroup),
-           r.rasterRounds, layout.rasterArgsAt);
-  timestamp(cmd, 4);
-  dispatchLinear(pipelines.resolve,
-                 {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn, laterIn, counters},
-                 r.resolvePixels);
+  timestamp(cmd, TileTimer::Raster);
+  stage.inRounds(pipelines.raster,
+                 (std::uint64_t{r.jobs} + kRasterJobsPerGroup - 1) / kRasterJobsPerGroup,
+                 r.rasterRounds, layout.rasterArgsAt);
+  timestamp(cmd, TileTimer::Reads);
+  stage.linear(pipelines.resolve, r.resolvePixels);
   raster::TransferCounters counted;
-  counted.dispatches = dispatches;
+  counted.dispatches = stage.dispatches();
   recorder.count(counted);
 }
 

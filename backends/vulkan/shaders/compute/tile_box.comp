@@ -17,7 +17,7 @@ layout(local_size_x = 64) in;
 
 layout(std430, set = 0, binding = 14) readonly buffer BoxJobs { BoxJob boxJobs[]; };
 // Twelve doubles a block: its pose's linear part row by row, then its translation.
-layout(std430, set = 0, binding = 5) readonly buffer Poses { double poses[]; };
+layout(std430, set = 0, binding = 21) readonly buffer Poses { double poses[]; };
 layout(std430, set = 0, binding = 15) writeonly buffer Boxes { double boxes[]; };
 
 shared double lows[3][64];

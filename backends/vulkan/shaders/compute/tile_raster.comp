@@ -23,10 +23,10 @@
 //
 // Rounds: a job is charged kWorkUnit for each command and each triangle it draws; one that would
 // pass Frame.rasterBudget (a CPU driver's loop limit, tile_frame_budgets.hpp) stops between two
-// of them, keeps its pixels in Carry and its place in Progress, and asks for the next round (its
-// indirect dispatch in RoundArgs), which carries on from there: the same operations in the same
-// order, cut into pieces a driver runs in full. Every column that reaches its job's end with each
-// loop left at its own test counts itself in Counters, which the host checks.
+// of them, keeps its pixels in Carry and its place in RasterProgress, and asks for the next round
+// (its indirect dispatch in RasterRoundArgs), which carries on from there: the same operations in
+// the same order, cut into pieces a driver runs in full. Every column that reaches its job's end
+// with each loop left at its own test counts itself in Counters, which the host checks.
 
 layout(local_size_x = 64) in;
 
@@ -34,7 +34,6 @@ layout(local_size_x = 64) in;
 #include "tile_common.glsl"
 #include "tile_frame_inputs.glsl"
 #include "tile_block_test.glsl"
-#include "tile_rounds.glsl"
 
 layout(std430, set = 0, binding = 6) readonly buffer Triangles { SetUpTriangle triangles[]; };
 layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint binCounts[]; };
@@ -46,9 +45,13 @@ layout(std430, set = 0, binding = 12) buffer ReadArena { uint readArena[]; };
 // list cursor and, on a draw from every triangle, its next triangle. Two sets of jobCount
 // records: round r reads set r % 2 (written in round r - 1) and writes the other, so no column
 // reads its job's record while another column of it writes that record.
-layout(std430, set = 0, binding = 17) buffer Progress { uvec4 progress[]; };
+layout(std430, set = 0, binding = 17) buffer RasterProgress { uvec4 progress[]; };
 layout(std430, set = 0, binding = 18) buffer Carry { uint carry[]; };  // 64 words a job
 layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
+// The rounds' indirect dispatches, three words a round (tile_rounds.glsl).
+layout(std430, set = 0, binding = 20) buffer RasterRoundArgs { uint roundArgs[]; };
+
+#include "tile_rounds.glsl"
 
 // The state comes from each draw's command, so the compiler cannot take it as uniform: both
 // functions are selects, not switches, which a CPU driver's SIMD code would run case by case.
@@ -240,8 +243,8 @@ void loadPixels(uint j, Epoch epoch, Target target, PixelWords framebuffer, bool
 }
 
 // Stops job j where it is (command ci, list cursor, next triangle t of a draw from every
-// triangle) for the next round: this column's pixels to Carry, the place to Progress (the same
-// in every column), and the next round's dispatch asked for.
+// triangle) for the next round: this column's pixels to Carry, the place to RasterProgress (the
+// same in every column), and the next round's dispatch asked for.
 void suspend(uint j, uint ci, uint cursor, uint t) {
   const uint lane = gl_LocalInvocationID.x & 7u;
   int k = 0;
@@ -276,7 +279,7 @@ void storePixels(uint j, Epoch epoch, Target target, PixelWords framebuffer) {
 // Runs job j, this invocation's column of it, from where an earlier round left it, until its
 // end or its budget.
 void runJob(uint j) {
-  // Progress is read only from the second round on: in the first (the only one where the
+  // RasterProgress is read only from the second round on: in the first (the only one where the
   // budget is unbounded) its buffer may hold no record a job.
   const bool resumed = frame.round > 0u;
   uvec4 place = uvec4(0u);

@@ -17,14 +17,17 @@
 layout(local_size_x = 64) in;
 
 #include "tile_common.glsl"
-#include "tile_rounds.glsl"
 
 layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint blockCounts[]; };
 layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint blockOffsets[]; };
 layout(std430, set = 0, binding = 10) buffer Pairs { uint pairs[]; };
 // A suspended job's round to go on in and its next step (written and read by its one lane).
-layout(std430, set = 0, binding = 17) buffer SortProgress { uvec2 sortProgress[]; };
+layout(std430, set = 0, binding = 22) buffer SortProgress { uvec2 sortProgress[]; };
 layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
+// The rounds' indirect dispatches, three words a round (tile_rounds.glsl).
+layout(std430, set = 0, binding = 23) buffer SortRoundArgs { uint roundArgs[]; };
+
+#include "tile_rounds.glsl"
 
 // Whether a loop of this invocation ended other than at its own test (a driver's loop limit).
 bool cut = false;
