@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "tile_frame_budgets.hpp"
-#include "tile_frame_epochs.hpp"
+#include "tile_frame_records.hpp"
 #include "vulkan_compute_pipelines.hpp"
 #include "vulkan_recorder.hpp"
 
@@ -51,104 +51,6 @@ void putState(const raster::RenderState& s, TileCommand& c) {
   c.ops = ops(s.frontOps) | (ops(s.backOps) << kTileBackOpsShift);
 }
 
-// Words a read of `pixels` in `form` fills in the read arena.
-std::uint32_t readWords(TileReadForm form, long long pixels) {
-  return static_cast<std::uint32_t>(form == TileReadForm::StencilBytes ? (pixels + 3) / 4 : pixels);
-}
-
-// The frame's records as the stages read them, target by target, each target's commands cut
-// into epochs, numbered in command order.
-struct FrameRecords {
-  std::vector<TileTarget> targets;
-  std::vector<TileCommand> commands;
-  std::vector<TileEpoch> epochs;
-  std::vector<TileDrawSource> draws;
-  std::vector<TileResolveRange> resolveRanges;
-  std::vector<std::uint32_t> laterEpochs;  // the ranges' later epochs
-  std::vector<TileVertexJob> vertexJobs;
-  std::vector<double> transforms;  // kTileTransformDoubles a vertex job
-  std::vector<TileBoxJob> boxJobs;
-  std::vector<double> poses;  // kTilePoseDoubles a box job
-  // A read's words in the read arena and where they go after the frame.
-  struct ReadCopy {
-    VkBuffer destination = VK_NULL_HANDLE;
-    VkDeviceSize offset = 0;
-    std::uint32_t firstWord = 0;
-    std::uint32_t words = 0;
-  };
-  std::vector<ReadCopy> readCopies;
-  std::uint32_t triangles = 0;
-  std::uint32_t jobs = 0;
-  std::uint32_t finals = 0;  // jobs of epochs that leave their pixels to the resolve stage
-  std::uint32_t arenaWords = 0;
-  std::uint32_t resolvePixels = 0;
-  // Entries the jobs' lists hold in all: for each draw, 4 a triangle, 2 a job of its epoch and
-  // 4,096. A job whose list would pass the end draws each of its draws from every triangle
-  // instead (tile_raster.comp), so this bounds memory, not results.
-  std::uint64_t listCapacity = 0;
-  // What bounds the stages' loops (tile_frame_budgets.hpp): the rounds the raster and sort
-  // stages may need for the longest job, and the most blocks a triangle's candidates may reach.
-  std::uint32_t rasterRounds = 1;
-  std::uint32_t sortRounds = 1;
-  std::uint64_t largestGrid = 0;
-  std::uint32_t windowVertices = 0;        // the vertex jobs' vertices, in all
-  std::vector<std::uint32_t> windowFirst;  // vertex job k's first window vertex
-  std::vector<int> drawVertexJob;          // each draw's vertex job, or -1 (window vertices given)
-  // The captured draw's record and its epoch's.
-  std::optional<std::pair<std::uint32_t, std::uint32_t>> captured;
-};
-
-// Where the frame's regions lie in its work buffer: each at least a word (every region is bound
-// for every stage, and a binding's range may not be empty).
-struct WorkLayout {
-  explicit WorkLayout(const FrameRecords& r)
-      : pairCapacity(static_cast<std::uint32_t>(std::min<std::uint64_t>(r.listCapacity, 1u << 27))),
-        triangleBytes(tileAligned(VkDeviceSize{r.triangles} * sizeof(TileSetUpTriangle) + 4)),
-        jobBytes(tileAligned(VkDeviceSize{r.jobs} * 4 + 4)) {
-    countsAt = triangleBytes;
-    offsetsAt = countsAt + jobBytes;
-    cursorsAt = offsetsAt + jobBytes;
-    pairsAt = cursorsAt + jobBytes;
-    finalsAt = pairsAt + tileAligned(VkDeviceSize{pairCapacity} * 4 + 4);
-    windowsAt = finalsAt + tileAligned(VkDeviceSize{r.finals} * kTileJobPixelBytes + 4);
-    arenaAt = windowsAt + tileAligned(VkDeviceSize{r.windowVertices} * kTileWindowVertexBytes + 4);
-    boxesAt = arenaAt + tileAligned(VkDeviceSize{r.arenaWords} * 4 + 4);
-    // The rounds' records, needed only where a stage may take more than one round; the
-    // progress, counters and rounds' arguments are zeroed each frame.
-    const VkDeviceSize rasterProgress =
-        r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * 2 * kTileRasterProgressBytes : 16;
-    const VkDeviceSize sortProgress =
-        r.sortRounds > 1 ? VkDeviceSize{r.jobs} * kTileSortProgressBytes : 16;
-    const VkDeviceSize carry = r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * kTileJobPixelBytes : 16;
-    progressAt = boxesAt + tileAligned(VkDeviceSize{r.boxJobs.size()} * kTileBoxBytes + 8);
-    sortProgressAt = progressAt + tileAligned(rasterProgress);
-    countersAt = sortProgressAt + tileAligned(sortProgress);
-    rasterArgsAt = countersAt + tileAligned(kTileCounters * 4);
-    sortArgsAt = rasterArgsAt + tileAligned(VkDeviceSize{r.rasterRounds + 1} * kTileRoundArgsBytes);
-    carryAt = sortArgsAt + tileAligned(VkDeviceSize{r.sortRounds + 1} * kTileRoundArgsBytes);
-    bytes = carryAt + tileAligned(carry);
-  }
-  // Entries the jobs' lists hold in all (FrameRecords::listCapacity, at most 2^27: 512 MiB).
-  std::uint32_t pairCapacity;
-  VkDeviceSize triangleBytes;
-  VkDeviceSize jobBytes;
-  VkDeviceSize countsAt = 0;
-  VkDeviceSize offsetsAt = 0;
-  VkDeviceSize cursorsAt = 0;
-  VkDeviceSize pairsAt = 0;
-  VkDeviceSize finalsAt = 0;
-  VkDeviceSize windowsAt = 0;
-  VkDeviceSize arenaAt = 0;
-  VkDeviceSize boxesAt = 0;
-  VkDeviceSize progressAt = 0;
-  VkDeviceSize sortProgressAt = 0;
-  VkDeviceSize countersAt = 0;
-  VkDeviceSize rasterArgsAt = 0;
-  VkDeviceSize sortArgsAt = 0;
-  VkDeviceSize carryAt = 0;  // up to here zeroed each frame
-  VkDeviceSize bytes = 0;
-};
-
 // Jobs a workgroup of the raster stage runs: eight side by side, one an invocation's eight
 // columns (tile_raster.comp). One job an invocation: its loop budget is its own.
 constexpr std::uint32_t kRasterJobsPerGroup = 8;
@@ -158,83 +60,6 @@ constexpr std::uint32_t kRasterJobsPerGroup = 8;
 // each loop over a 256th of them.
 constexpr std::uint32_t kMostSerialScanJobs = 32768;
 
-// Jobs whose pixels a frame may keep for the resolve stage (64 words each: 64 MiB in all).
-constexpr std::uint64_t kMostFinalJobs = std::uint64_t{1} << 18;
-
-// The 8x8 blocks, from multiples of 8, that hold footprint `f`.
-struct BlockGrid {
-  explicit BlockGrid(const PixelRect& f)
-      : x0(f.x0 & ~7),
-        y0(f.y0 & ~7),
-        width(static_cast<std::uint32_t>(((f.x1 - 1) >> 3) - (f.x0 >> 3) + 1)),
-        height(static_cast<std::uint32_t>(((f.y1 - 1) >> 3) - (f.y0 >> 3) + 1)) {}
-  std::int32_t x0;
-  std::int32_t y0;
-  std::uint32_t width;
-  std::uint32_t height;
-  [[nodiscard]] std::uint64_t blocks() const { return std::uint64_t{width} * height; }
-};
-
-// `epochs`, or, when the epochs that meet another would keep more jobs than the frame has left
-// of kMostFinalJobs (`finals` kept so far), one epoch of all the commands that starts from the
-// framebuffer and stores its own pixels: the same results, its blocks' commands run one after
-// another instead of side by side, and no pixel kept for the resolve stage.
-// The same when more epochs meet another than a resolve invocation may compare (`mostLater`
-// later epochs: a CPU driver's loop limit, tile_frame_budgets.hpp).
-std::vector<EpochSpan> withinFinalBudget(std::vector<EpochSpan> epochs, std::uint64_t finals,
-                                         std::uint32_t mostLater) {
-  std::uint64_t kept = 0;
-  std::uint64_t shared = 0;
-  for (const EpochSpan& e : epochs) {
-    if (!e.alone) {
-      kept += BlockGrid(e.footprint).blocks();
-      ++shared;
-    }
-  }
-  if (kept == 0 || (finals + kept <= kMostFinalJobs && shared <= std::uint64_t{mostLater} + 1))
-    return epochs;
-  EpochSpan all{epochs.front().begin, epochs.back().end, epochs.front().footprint, true, true};
-  for (const EpochSpan& e : epochs)
-    all.footprint = unite(all.footprint, e.footprint);
-  return {all};
-}
-
-// The resolve stage's ranges for one target's epochs that meet another (`shared`, in command
-// order): each such epoch's footprint, with the later ones that meet it, which own the pixels
-// they hold. Past kMostEpochsCompared every later one is listed, unsorted out.
-void addResolveRanges(FrameRecords& r, const std::vector<std::uint32_t>& shared,
-                      std::uint32_t target) {
-  const bool compare = shared.size() <= kMostEpochsCompared;
-  for (std::size_t i = 0; i < shared.size(); ++i) {
-    const PixelRect f = rectOf(r.epochs[shared[i]].footprint);
-    TileResolveRange range;
-    putRect(f, range.rect);
-    range.target = target;
-    range.epoch = shared[i];
-    range.firstLater = static_cast<std::uint32_t>(r.laterEpochs.size());
-    for (std::size_t j = i + 1; j < shared.size(); ++j)
-      if (!compare || !f.intersect(rectOf(r.epochs[shared[j]].footprint)).empty())
-        r.laterEpochs.push_back(shared[j]);
-    range.laterCount = static_cast<std::uint32_t>(r.laterEpochs.size()) - range.firstLater;
-    range.firstPixel = r.resolvePixels;
-    r.resolvePixels += static_cast<std::uint32_t>(f.area());
-    r.resolveRanges.push_back(range);
-  }
-}
-
-TileEpoch epochRecord(const EpochSpan& span, std::uint32_t target) {
-  TileEpoch e;
-  putRect(span.footprint, e.footprint);
-  const BlockGrid grid(span.footprint);
-  e.gridOrigin[0] = grid.x0;
-  e.gridOrigin[1] = grid.y0;
-  e.gridWidth = grid.width;
-  e.gridHeight = grid.height;
-  e.target = target;
-  e.flags = (span.loads ? kTileEpochLoads : 0u) | (span.alone ? kTileEpochStores : 0u);
-  return e;
-}
-
 }  // namespace
 
 struct TileFrame::Impl {
@@ -243,44 +68,9 @@ struct TileFrame::Impl {
   const TilePipelines& pipelines;
   const TileLoopBudgets budgets;  // within the driver's loop limit (tile_frame_budgets.hpp)
 
-  struct Target {
-    bool live = false;
-    VkDeviceAddress pixels = 0;
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-  };
-  std::vector<Target> targets;
-
-  // A command as recorded: what the shaders read, and what the host still needs.
-  struct Pending {
-    TileCommand command;
-    PixelRect rect;
-    // A draw's sources: window vertices by address, or a vertex job's (vertexJob >= 0).
-    VkDeviceAddress vertices = 0;
-    int vertexJob = -1;
-    VkDeviceAddress indices = 0;
-    // A read's destination.
-    VkBuffer destination = VK_NULL_HANDLE;
-    VkDeviceSize destinationOffset = 0;
-  };
-  std::vector<std::vector<Pending>> commands;  // by target
-
-  std::vector<TileVertices> vertexJobs;
-  std::map<std::uint64_t, int> vertexJobOfKey;  // content key -> vertex job, this frame
-
-  struct BoxBatch {
-    std::vector<BoxRequest> blocks;
-    VkBuffer destination = VK_NULL_HANDLE;
-    VkDeviceSize offset = 0;
-  };
-  std::vector<BoxBatch> boxBatches;
-
-  struct Capture {
-    std::uint32_t target = 0;
-    std::size_t command = 0;
-    std::function<void(TileDrawCapture)> sink;
-  };
-  std::optional<Capture> capture;
+  TileRecorded recorded;
+  std::map<std::uint64_t, int> vertexJobOfKey;       // content key -> vertex job, this frame
+  std::function<void(TileDrawCapture)> captureSink;  // where recorded.captured goes
 
   DeviceBuffer work;  // the frame's set-up triangles, bins, job finals, windows, reads, boxes
   VkQueryPool queries = VK_NULL_HANDLE;
@@ -305,18 +95,11 @@ struct TileFrame::Impl {
     }
   }
 
-  bool empty() const {
-    if (!vertexJobs.empty() || !boxBatches.empty())
-      return false;
-    return std::all_of(commands.begin(), commands.end(),
-                       [](const std::vector<Pending>& c) { return c.empty(); });
-  }
-
-  Pending& add(std::uint32_t target, TileCommandKind kind, const PixelRect& rect) {
-    if (target >= targets.size() || !targets[target].live)
+  TileRecorded::Pending& add(std::uint32_t target, TileCommandKind kind, const PixelRect& rect) {
+    if (target >= recorded.targets.size() || !recorded.targets[target].live)
       throw std::logic_error("TileFrame: a command for a framebuffer it does not hold");
     recorder.open();
-    Pending& p = commands[target].emplace_back();
+    TileRecorded::Pending& p = recorded.commands[target].emplace_back();
     p.command.kind = kind;
     p.command.target = target;
     p.rect = rect;
@@ -352,110 +135,26 @@ struct TileFrame::Impl {
                           static_cast<std::uint32_t>(timer));
   }
 
-  [[nodiscard]] FrameRecords records() const;
   void run(VkCommandBuffer cmd);
-  [[nodiscard]] TileFrameConstants constantsOf(const FrameRecords& r,
-                                               const WorkLayout& layout) const;
-  [[nodiscard]] std::vector<TileBuffer> buffersOf(const FrameRecords& r, const WorkLayout& layout);
-  void recordStages(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
-  void recordCopies(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
+  [[nodiscard]] TileFrameConstants constantsOf(const TileFrameRecords& r,
+                                               const TileWorkLayout& layout) const;
+  [[nodiscard]] std::vector<TileBuffer> buffersOf(const TileFrameRecords& r,
+                                                  const TileWorkLayout& layout);
+  void recordStages(VkCommandBuffer cmd, const TileFrameRecords& r, const TileWorkLayout& layout);
+  void recordCopies(VkCommandBuffer cmd, const TileFrameRecords& r, const TileWorkLayout& layout);
   void clearRecorded();
-  void recordCheck(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
-  void recordCapture(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
+  void recordCheck(VkCommandBuffer cmd, const TileFrameRecords& r, const TileWorkLayout& layout);
+  void recordCapture(VkCommandBuffer cmd, const TileFrameRecords& r, const TileWorkLayout& layout);
   void readTimes();
   void checkCounters();
 };
 
-FrameRecords TileFrame::Impl::records() const {
-  FrameRecords r;
-  for (const Target& t : targets)
-    r.targets.push_back({TileAddress::of(t.pixels), t.width, t.height});
-  for (const TileVertices& job : vertexJobs) {
-    r.windowFirst.push_back(r.windowVertices);
-    r.windowVertices += job.vertexCount;
-    r.transforms.insert(r.transforms.end(), job.transform.begin(), job.transform.end());
-  }
-  for (std::uint32_t t = 0; t < targets.size(); ++t) {
-    const std::vector<Pending>& list = commands[t];
-    if (list.empty())
-      continue;
-    std::vector<EpochCommand> shapes;
-    shapes.reserve(list.size());
-    for (const Pending& p : list)
-      shapes.push_back(epochCommandOf(p.command, p.rect));
-    std::vector<std::uint32_t> shared;  // this target's epochs that meet another
-    for (const EpochSpan& span :
-         withinFinalBudget(cutIntoEpochs(shapes), r.finals, budgets.resolveLater)) {
-      TileEpoch e = epochRecord(span, t);
-      const auto epochIndex = static_cast<std::uint32_t>(r.epochs.size());
-      e.firstJob = r.jobs;
-      e.firstFinal = r.finals;
-      e.firstCommand = static_cast<std::uint32_t>(r.commands.size());
-      const std::uint32_t firstTriangle = r.triangles;
-      if (!span.alone) {
-        r.finals += e.gridWidth * e.gridHeight;
-        shared.push_back(epochIndex);
-      }
-      for (std::size_t c = span.begin; c < span.end; ++c) {
-        const Pending& p = list[c];
-        TileCommand record = p.command;
-        if (record.kind == TileCommandKind::Draw) {
-          if (capture && capture->target == t && capture->command == c)
-            r.captured = std::make_pair(static_cast<std::uint32_t>(r.draws.size()), epochIndex);
-          record.first = r.triangles;
-          TileDrawSource d;
-          d.vertices = TileAddress::of(p.vertices);  // a vertex job's: set once work is laid out
-          r.drawVertexJob.push_back(p.vertexJob);
-          d.indices = TileAddress::of(p.indices);
-          d.firstTriangle = r.triangles;
-          d.triangleCount = record.count;
-          d.command = static_cast<std::uint32_t>(r.commands.size());
-          d.epoch = epochIndex;
-          r.draws.push_back(d);
-          r.triangles += record.count;
-          r.listCapacity += 4 * std::uint64_t{record.count} +
-                            2 * std::uint64_t{e.gridWidth} * e.gridHeight + 4096;
-        } else if (record.kind == TileCommandKind::Read) {
-          record.arenaWord = r.arenaWords;
-          const std::uint32_t words = readWords(record.readForm, p.rect.area());
-          r.readCopies.push_back({p.destination, p.destinationOffset, r.arenaWords, words});
-          r.arenaWords += words;
-        }
-        r.commands.push_back(record);
-      }
-      e.commandEnd = static_cast<std::uint32_t>(r.commands.size());
-      // A job of the epoch lists at most every triangle of its draws.
-      const std::uint64_t epochTriangles = r.triangles - firstTriangle;
-      r.rasterRounds =
-          std::max(r.rasterRounds,
-                   tileRasterRounds(span.end - span.begin, epochTriangles, budgets.rasterWork));
-      r.sortRounds = std::max(r.sortRounds, tileSortRounds(epochTriangles, budgets.sortWork));
-      if (epochTriangles > 0)
-        r.largestGrid = std::max<std::uint64_t>(r.largestGrid, BlockGrid(span.footprint).blocks());
-      r.jobs += e.gridWidth * e.gridHeight;
-      r.epochs.push_back(e);
-    }
-    addResolveRanges(r, shared, t);
-  }
-  for (const BoxBatch& batch : boxBatches) {
-    for (const BoxRequest& b : batch.blocks) {
-      TileBoxJob job;
-      job.local = TileAddress::of(b.local);
-      job.vertexCount = b.vertexCount;
-      job.pose = static_cast<std::uint32_t>(r.boxJobs.size());
-      r.poses.insert(r.poses.end(), b.pose.begin(), b.pose.end());
-      r.boxJobs.push_back(job);
-    }
-  }
-  return r;
-}
-
 // Runs everything recorded since the last submission: see tile_frame.hpp for the stages.
 void TileFrame::Impl::run(VkCommandBuffer cmd) {
   timed = false;
-  if (empty())
+  if (recorded.empty())
     return;
-  FrameRecords r = records();
+  TileFrameRecords r = tileFrameRecords(recorded, budgets);
   if (r.jobs > budgets.scanJobs) {
     clearRecorded();
     throw std::runtime_error("vulkan-compute: a frame of " + std::to_string(r.jobs) +
@@ -464,24 +163,9 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
                              " the scan stage takes within this driver's loop limit of " +
                              std::to_string(context.loopLimit()) + " iterations an invocation");
   }
-  const WorkLayout layout(r);
+  const TileWorkLayout layout(r);
   reserveWork(layout.bytes);
-  const VkBuffer w = work.buffer;
-  const VkDeviceAddress workAddress = context.address(w);
-  // The posed draws' window vertices, made by the vertex stage into the work buffer.
-  for (std::size_t j = 0; j < vertexJobs.size(); ++j) {
-    TileVertexJob job;
-    job.local = TileAddress::of(vertexJobs[j].local);
-    job.windows = TileAddress::of(workAddress + layout.windowsAt +
-                                  VkDeviceSize{r.windowFirst[j]} * kTileWindowVertexBytes);
-    job.firstVertex = r.windowFirst[j];
-    job.vertexCount = vertexJobs[j].vertexCount;
-    job.transform = static_cast<std::uint32_t>(j);
-    r.vertexJobs.push_back(job);
-  }
-  for (std::size_t d = 0; d < r.draws.size(); ++d)
-    if (r.drawVertexJob[d] >= 0)
-      r.draws[d].vertices = r.vertexJobs[static_cast<std::size_t>(r.drawVertexJob[d])].windows;
+  placeVertexJobs(r, recorded.vertexJobs, layout, context.address(work.buffer));
   recordStages(cmd, r, layout);
   recordCopies(cmd, r, layout);
   recordCheck(cmd, r, layout);
@@ -493,17 +177,18 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
 }
 
 void TileFrame::Impl::clearRecorded() {
-  for (std::vector<Pending>& list : commands)
+  for (std::vector<TileRecorded::Pending>& list : recorded.commands)
     list.clear();
-  vertexJobs.clear();
+  recorded.vertexJobs.clear();
   vertexJobOfKey.clear();
-  boxBatches.clear();
-  capture.reset();
+  recorded.boxBatches.clear();
+  recorded.captured.reset();
+  captureSink = nullptr;
 }
 
 // The push constants every stage of the frame starts from.
-TileFrameConstants TileFrame::Impl::constantsOf(const FrameRecords& r,
-                                                const WorkLayout& layout) const {
+TileFrameConstants TileFrame::Impl::constantsOf(const TileFrameRecords& r,
+                                                const TileWorkLayout& layout) const {
   TileFrameConstants k;
   k.vertexCount = r.windowVertices;
   k.vertexJobs = static_cast<std::uint32_t>(r.vertexJobs.size());
@@ -524,8 +209,8 @@ TileFrameConstants TileFrame::Impl::constantsOf(const FrameRecords& r,
 
 // Every buffer the stages bind, one a binding: the records uploaded, and the work buffer's
 // regions (each from its start to the next region's).
-std::vector<TileBuffer> TileFrame::Impl::buffersOf(const FrameRecords& r,
-                                                   const WorkLayout& layout) {
+std::vector<TileBuffer> TileFrame::Impl::buffersOf(const TileFrameRecords& r,
+                                                   const TileWorkLayout& layout) {
   const VkBuffer w = work.buffer;
   const auto region = [w](TileBinding binding, VkDeviceSize at, VkDeviceSize end) {
     return TileBuffer{binding, w, at, end - at};
@@ -615,8 +300,8 @@ class StageRecorder {
 
 // The stages in order, with a compute barrier between dependent ones and a timestamp before each
 // group of them (TileTimer).
-void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
-                                   const WorkLayout& layout) {
+void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const TileFrameRecords& r,
+                                   const TileWorkLayout& layout) {
   TileFrameConstants k = constantsOf(r, layout);
   const VkBuffer w = work.buffer;
   timed = queries != VK_NULL_HANDLE;
@@ -666,15 +351,15 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
 
 // The reads and boxes to their destinations (the summaries' dispatch comes after, with its own
 // barrier), one copy command a destination buffer.
-void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const FrameRecords& r,
-                                   const WorkLayout& layout) {
+void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const TileFrameRecords& r,
+                                   const TileWorkLayout& layout) {
   std::map<VkBuffer, std::vector<VkBufferCopy>> copies;
-  for (const FrameRecords::ReadCopy& read : r.readCopies)
+  for (const TileFrameRecords::ReadCopy& read : r.readCopies)
     if (read.words > 0)
       copies[read.destination].push_back({layout.arenaAt + VkDeviceSize{read.firstWord} * 4,
                                           read.offset, VkDeviceSize{read.words} * 4});
   VkDeviceSize box = 0;
-  for (const BoxBatch& batch : boxBatches) {
+  for (const TileRecorded::BoxBatch& batch : recorded.boxBatches) {
     if (!batch.blocks.empty())
       copies[batch.destination].push_back({layout.boxesAt + box * kTileBoxBytes, batch.offset,
                                            batch.blocks.size() * kTileBoxBytes});
@@ -689,8 +374,8 @@ void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const FrameRecords& r,
 // checkCounters, before any read-back is delivered) with what the frame asked of them: a stage
 // that did less than all of its work (a loop a driver ended early, a round too few) is an error
 // that names it, never a smaller answer.
-void TileFrame::Impl::recordCheck(VkCommandBuffer cmd, const FrameRecords& r,
-                                  const WorkLayout& layout) {
+void TileFrame::Impl::recordCheck(VkCommandBuffer cmd, const TileFrameRecords& r,
+                                  const TileWorkLayout& layout) {
   computeBarrier(cmd);  // the resolve stage counts too
   expected = Expected{std::uint64_t{r.jobs} * kTileJobLanes, r.triangles > 0 ? r.jobs : 0};
   const VkBufferCopy back{layout.countersAt, 0, kTileCounters * 4};
@@ -709,8 +394,8 @@ void TileFrame::Impl::checkCounters() {
 
 // The captured draw's set-up triangles, its epoch's job lists and its window vertices, copied
 // back and handed to the capture's sink.
-void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
-                                    const WorkLayout& layout) {
+void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const TileFrameRecords& r,
+                                    const TileWorkLayout& layout) {
   const auto [drawIndex, epochIndex] = *r.captured;
   const TileDrawSource d = r.draws[drawIndex];
   const TileEpoch e = r.epochs[epochIndex];
@@ -721,8 +406,8 @@ void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
                      kTileWindowVertexBytes
                : 0;
   const CommandRecorder::Staged out = recorder.results(
-      bytes + windowBytes, [d, e, bytes, layout, windowBytes,
-                            sink = std::move(capture->sink)](const std::uint8_t* data) {
+      bytes + windowBytes,
+      [d, e, bytes, layout, windowBytes, sink = std::move(captureSink)](const std::uint8_t* data) {
         const auto word = [&](VkDeviceSize at) {
           std::uint32_t v = 0;
           std::memcpy(&v, data + at, 4);
@@ -795,22 +480,24 @@ TileFrame::~TileFrame() = default;
 
 std::uint32_t TileFrame::addTarget(VkBuffer framebuffer, int width, int height) {
   Impl& f = *impl_;
-  Impl::Target target{true, f.context.address(framebuffer), static_cast<std::uint32_t>(width),
-                      static_cast<std::uint32_t>(height)};
-  for (std::uint32_t t = 0; t < f.targets.size(); ++t) {
-    if (!f.targets[t].live && f.commands[t].empty()) {
-      f.targets[t] = target;
+  TileRecorded::Target target{true, f.context.address(framebuffer),
+                              static_cast<std::uint32_t>(width),
+                              static_cast<std::uint32_t>(height)};
+  TileRecorded& r = f.recorded;
+  for (std::uint32_t t = 0; t < r.targets.size(); ++t) {
+    if (!r.targets[t].live && r.commands[t].empty()) {
+      r.targets[t] = target;
       return t;
     }
   }
-  f.targets.push_back(target);
-  f.commands.emplace_back();
-  return static_cast<std::uint32_t>(f.targets.size() - 1);
+  r.targets.push_back(target);
+  r.commands.emplace_back();
+  return static_cast<std::uint32_t>(r.targets.size() - 1);
 }
 
 void TileFrame::removeTarget(std::uint32_t target) {
-  impl_->targets.at(target).live = false;
-  impl_->commands.at(target).clear();
+  impl_->recorded.targets.at(target).live = false;
+  impl_->recorded.commands.at(target).clear();
 }
 
 void TileFrame::clearDepth(std::uint32_t target, const PixelRect& scissor, std::uint32_t q) {
@@ -819,7 +506,7 @@ void TileFrame::clearDepth(std::uint32_t target, const PixelRect& scissor, std::
 
 void TileFrame::clearStencil(std::uint32_t target, const PixelRect& scissor, std::uint8_t value,
                              std::uint8_t writeMask) {
-  Impl::Pending& p = impl_->add(target, TileCommandKind::ClearStencil, scissor);
+  TileRecorded::Pending& p = impl_->add(target, TileCommandKind::ClearStencil, scissor);
   p.command.value = value;
   p.command.clearMask = writeMask;
 }
@@ -828,7 +515,7 @@ void TileFrame::draw(std::uint32_t target, const raster::RenderState& state,
                      const TileVertices& vertices, VkDeviceAddress indices,
                      std::uint32_t triangles) {
   Impl& f = *impl_;
-  Impl::Pending& p = f.add(target, TileCommandKind::Draw, state.scissor);
+  TileRecorded::Pending& p = f.add(target, TileCommandKind::Draw, state.scissor);
   putState(state, p.command);
   p.command.count = triangles;
   p.indices = indices;
@@ -843,15 +530,15 @@ void TileFrame::draw(std::uint32_t target, const raster::RenderState& state,
       return;
     }
   }
-  p.vertexJob = static_cast<int>(f.vertexJobs.size());
-  f.vertexJobs.push_back(vertices);
+  p.vertexJob = static_cast<int>(f.recorded.vertexJobs.size());
+  f.recorded.vertexJobs.push_back(vertices);
   if (vertices.contentKey != 0)
     f.vertexJobOfKey[vertices.contentKey] = p.vertexJob;
 }
 
 void TileFrame::read(std::uint32_t target, const PixelRect& rect, TileReadForm form,
                      VkBuffer destination, VkDeviceSize offset) {
-  Impl::Pending& p = impl_->add(target, TileCommandKind::Read, rect);
+  TileRecorded::Pending& p = impl_->add(target, TileCommandKind::Read, rect);
   p.command.readForm = form;
   p.destination = destination;
   p.destinationOffset = offset;
@@ -867,15 +554,16 @@ void TileFrame::boxes(const std::vector<BoxRequest>& blocks, VkBuffer destinatio
           " the box stage takes within this driver's loop limit of " +
           std::to_string(impl_->context.loopLimit()) + " iterations an invocation");
   impl_->recorder.open();
-  impl_->boxBatches.push_back({blocks, destination, offset});
+  impl_->recorded.boxBatches.push_back({blocks, destination, offset});
 }
 
 void TileFrame::captureLastDraw(std::uint32_t target, std::function<void(TileDrawCapture)> sink) {
   Impl& f = *impl_;
-  const std::vector<Impl::Pending>& list = f.commands.at(target);
+  const std::vector<TileRecorded::Pending>& list = f.recorded.commands.at(target);
   for (std::size_t c = list.size(); c > 0; --c) {
     if (list[c - 1].command.kind == TileCommandKind::Draw) {
-      f.capture = Impl::Capture{target, c - 1, std::move(sink)};
+      f.recorded.captured = std::make_pair(target, c - 1);
+      f.captureSink = std::move(sink);
       return;
     }
   }
