@@ -196,7 +196,7 @@ TileFrameConstants TileFrame::Impl::constantsOf(const TileFrameRecords& r,
   k.drawCount = static_cast<std::uint32_t>(r.draws.size());
   k.jobCount = r.jobs;
   k.epochCount = static_cast<std::uint32_t>(r.epochs.size());
-  k.pairCapacity = layout.pairCapacity;
+  k.entryCapacity = layout.entryCapacity;
   k.resolvePixels = r.resolvePixels;
   k.resolveRanges = static_cast<std::uint32_t>(r.resolveRanges.size());
   k.boxJobs = static_cast<std::uint32_t>(r.boxJobs.size());
@@ -227,10 +227,10 @@ std::vector<TileBuffer> TileFrame::Impl::buffersOf(const TileFrameRecords& r,
       uploaded(TileBinding::BoxJobs, r.boxJobs),
       uploaded(TileBinding::Poses, r.poses),
       region(TileBinding::Triangles, 0, layout.triangleBytes),
-      region(TileBinding::BinCounts, layout.countsAt, layout.countsAt + layout.jobBytes),
+      region(TileBinding::BinEntries, layout.binEntriesAt, layout.binEntriesAt + layout.jobBytes),
       region(TileBinding::BinOffsets, layout.offsetsAt, layout.offsetsAt + layout.jobBytes),
       region(TileBinding::BinCursors, layout.cursorsAt, layout.cursorsAt + layout.jobBytes),
-      region(TileBinding::Pairs, layout.pairsAt, layout.finalsAt),
+      region(TileBinding::Lists, layout.listsAt, layout.finalsAt),
       region(TileBinding::JobFinal, layout.finalsAt, layout.windowsAt),
       region(TileBinding::ReadArena, layout.arenaAt, layout.boxesAt),
       region(TileBinding::Boxes, layout.boxesAt, layout.progressAt),
@@ -311,7 +311,7 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const TileFrameRecords& 
   StageRecorder stage(cmd, pipelines, k, w);
   // What the devices recorded before (uploads, framebuffer fills) is visible to the stages.
   computeBarrier(cmd);
-  vkCmdFillBuffer(cmd, w, layout.countsAt, layout.jobBytes, 0);
+  vkCmdFillBuffer(cmd, w, layout.binEntriesAt, layout.jobBytes, 0);
   vkCmdFillBuffer(cmd, w, layout.arenaAt, layout.boxesAt - layout.arenaAt, 0);  // ORed into
   vkCmdFillBuffer(cmd, w, layout.progressAt, layout.carryAt - layout.progressAt, 0);
   computeBarrier(cmd);
@@ -425,12 +425,12 @@ void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const TileFrameRecords&
         c.gridHeight = e.gridHeight;
         for (std::uint32_t b = 0; b < e.gridWidth * e.gridHeight; ++b) {
           const VkDeviceSize at = VkDeviceSize{e.firstJob + b} * 4;
-          const std::uint32_t n = word(layout.countsAt + at);
+          const std::uint32_t n = word(layout.binEntriesAt + at);
           const std::uint32_t first = word(layout.offsetsAt + at);
-          const bool overflowed = VkDeviceSize{first} + n > layout.pairCapacity;
+          const bool overflowed = VkDeviceSize{first} + n > layout.entryCapacity;
           std::vector<std::uint32_t> list;
           for (std::uint32_t i = 0; i < n && !overflowed; ++i)
-            list.push_back(word(layout.pairsAt + (VkDeviceSize{first} + i) * 4));
+            list.push_back(word(layout.listsAt + (VkDeviceSize{first} + i) * 4));
           c.overflowed.push_back(overflowed);
           c.jobLists.push_back(std::move(list));
         }

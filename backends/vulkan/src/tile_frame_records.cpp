@@ -178,14 +178,14 @@ TileFrameRecords tileFrameRecords(const TileRecorded& recorded, const TileLoopBu
 }
 
 TileWorkLayout::TileWorkLayout(const TileFrameRecords& r)
-    : pairCapacity(static_cast<std::uint32_t>(std::min(r.listCapacity, kTileMostListEntries))),
+    : entryCapacity(static_cast<std::uint32_t>(std::min(r.listCapacity, kTileMostListEntries))),
       triangleBytes(tileAligned(VkDeviceSize{r.triangles} * sizeof(TileSetUpTriangle) + 4)),
       jobBytes(tileAligned(VkDeviceSize{r.jobs} * 4 + 4)) {
-  countsAt = triangleBytes;
-  offsetsAt = countsAt + jobBytes;
+  binEntriesAt = triangleBytes;
+  offsetsAt = binEntriesAt + jobBytes;
   cursorsAt = offsetsAt + jobBytes;
-  pairsAt = cursorsAt + jobBytes;
-  finalsAt = pairsAt + tileAligned(VkDeviceSize{pairCapacity} * 4 + 4);
+  listsAt = cursorsAt + jobBytes;
+  finalsAt = listsAt + tileAligned(VkDeviceSize{entryCapacity} * 4 + 4);
   windowsAt = finalsAt + tileAligned(VkDeviceSize{r.finals} * kTileJobPixelBytes + 4);
   arenaAt = windowsAt + tileAligned(VkDeviceSize{r.windowVertices} * kTileWindowVertexBytes + 4);
   boxesAt = arenaAt + tileAligned(VkDeviceSize{r.arenaWords} * 4 + 4);

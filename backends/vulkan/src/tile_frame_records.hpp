@@ -144,13 +144,13 @@ struct TileWorkLayout {
   explicit TileWorkLayout(const TileFrameRecords& r);
   // Entries the jobs' lists hold in all (TileFrameRecords::listCapacity, at most
   // kTileMostListEntries).
-  std::uint32_t pairCapacity;
+  std::uint32_t entryCapacity;
   VkDeviceSize triangleBytes;  // from 0
   VkDeviceSize jobBytes;       // each of the counts, offsets and cursors
-  VkDeviceSize countsAt = 0;
+  VkDeviceSize binEntriesAt = 0;
   VkDeviceSize offsetsAt = 0;
   VkDeviceSize cursorsAt = 0;
-  VkDeviceSize pairsAt = 0;
+  VkDeviceSize listsAt = 0;
   VkDeviceSize finalsAt = 0;
   VkDeviceSize windowsAt = 0;
   VkDeviceSize arenaAt = 0;

@@ -21,17 +21,17 @@ class VulkanContext;
 // The bindings of the shared layout (tile_frame_inputs.glsl and the stages declare the same
 // numbers; tile_frame_layout.hpp has the records).
 enum class TileBinding : std::uint32_t {
-  Targets = 0,     // TileTarget a device's framebuffer
-  Epochs = 1,      // TileEpoch
-  Commands = 2,    // TileCommand
-  Draws = 3,       // TileDrawSource
-  VertexJobs = 4,  // TileVertexJob
-  Transforms = 5,  // kTileTransformDoubles doubles a vertex job
-  Triangles = 6,   // TileSetUpTriangle
-  BinCounts = 7,   // triangles a job's list holds
-  BinOffsets = 8,
-  BinCursors = 9,
-  Pairs = 10,           // the jobs' lists, one after the other
+  Targets = 0,          // TileTarget a device's framebuffer
+  Epochs = 1,           // TileEpoch
+  Commands = 2,         // TileCommand
+  Draws = 3,            // TileDrawSource
+  VertexJobs = 4,       // TileVertexJob
+  Transforms = 5,       // kTileTransformDoubles doubles a vertex job
+  Triangles = 6,        // TileSetUpTriangle
+  BinEntries = 7,       // entries of a job's list: triangles that may cover a centre of its block
+  BinOffsets = 8,       // a job's first entry in Lists
+  BinCursors = 9,       // the scatter's next free entry of a job's list
+  Lists = 10,           // the jobs' lists, one after another: frame triangle indices
   JobFinal = 11,        // 64 words a job: its pixels at the end of its epoch
   ReadArena = 12,       // the reads' words, before they are copied to their destinations
   ResolveRanges = 13,   // TileResolveRange
@@ -59,7 +59,7 @@ struct TileFrameConstants {
   std::uint32_t drawCount = 0;
   std::uint32_t jobCount = 0;
   std::uint32_t epochCount = 0;
-  std::uint32_t pairCapacity = 0;
+  std::uint32_t entryCapacity = 0;
   std::uint32_t resolvePixels = 0;
   std::uint32_t resolveRanges = 0;
   std::uint32_t boxJobs = 0;

@@ -284,7 +284,7 @@ TEST_CASE("the frame's other records and push constants have their host mirrors'
                              {"drawCount", at(&T::drawCount)},
                              {"jobCount", at(&T::jobCount)},
                              {"epochCount", at(&T::epochCount)},
-                             {"pairCapacity", at(&T::pairCapacity)},
+                             {"entryCapacity", at(&T::entryCapacity)},
                              {"resolvePixels", at(&T::resolvePixels)},
                              {"resolveRanges", at(&T::resolveRanges)},
                              {"boxJobs", at(&T::boxJobs)},

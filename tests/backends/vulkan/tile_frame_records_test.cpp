@@ -191,14 +191,14 @@ TEST_CASE(
   r.sortRounds = 2;
   r.listCapacity = 10;
   const TileWorkLayout w(r);
-  CHECK(w.pairCapacity == 10);
+  CHECK(w.entryCapacity == 10);
   // Each region from its start to the next one's, and the least it must hold.
   const std::vector<std::pair<VkDeviceSize, VkDeviceSize>> regions = {
       {0, 3 * sizeof(TileSetUpTriangle)},
-      {w.countsAt, 5 * 4},
+      {w.binEntriesAt, 5 * 4},
       {w.offsetsAt, 5 * 4},
       {w.cursorsAt, 5 * 4},
-      {w.pairsAt, 10 * 4},
+      {w.listsAt, 10 * 4},
       {w.finalsAt, 2 * kTileJobPixelBytes},
       {w.windowsAt, 7 * kTileWindowVertexBytes},
       {w.arenaAt, 9 * 4},
@@ -215,16 +215,16 @@ TEST_CASE(
     CHECK(regions[k].first % kTileBindAlignment == 0);
     CHECK(regions[k + 1].first >= regions[k].first + regions[k].second);
   }
-  CHECK(w.triangleBytes == w.countsAt);
-  CHECK(w.jobBytes == w.offsetsAt - w.countsAt);
+  CHECK(w.triangleBytes == w.binEntriesAt);
+  CHECK(w.jobBytes == w.offsetsAt - w.binEntriesAt);
   // An empty frame's regions hold a word each still: every one is bound, and a binding's range
   // may not be empty.
   const TileWorkLayout empty{TileFrameRecords{}};
   const std::vector<VkDeviceSize> starts = {0,
-                                            empty.countsAt,
+                                            empty.binEntriesAt,
                                             empty.offsetsAt,
                                             empty.cursorsAt,
-                                            empty.pairsAt,
+                                            empty.listsAt,
                                             empty.finalsAt,
                                             empty.windowsAt,
                                             empty.arenaAt,
@@ -242,7 +242,7 @@ TEST_CASE(
   }
   // The lists never hold more than 2^27 entries, however many the draws would give them.
   r.listCapacity = std::uint64_t{1} << 30;
-  CHECK(TileWorkLayout(r).pairCapacity == kTileMostListEntries);
+  CHECK(TileWorkLayout(r).entryCapacity == kTileMostListEntries);
 }
 
 TEST_CASE(

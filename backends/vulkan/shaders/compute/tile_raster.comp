@@ -9,10 +9,10 @@
 // that may cover a centre of the block, in index order). Eight invocations take a job, one a
 // column of its pixels; a workgroup of 64 takes eight jobs side by side (one a SIMD bundle of 8
 // lanes on a CPU driver, two of 16, so a bundle's loop count is at most two jobs' own). Jobs of
-// different epochs never share a pixel's state, so every
-// job of the frame runs at once. Per triangle, an invocation works out its column's part once
-// and steps down the rows the triangle's candidates reach, with the same operations in the same
-// order as section 5 and 7 of docs/rasterization.md:
+// different epochs never share a pixel's state, so every job of the frame runs at once. Per
+// triangle (its SetUpTriangle), an invocation works out its column's part once and steps down
+// the rows the triangle's candidates reach, with the same operations in the same order as
+// sections 5 and 7 of docs/rasterization.md:
 //   coverage: each edge function E = dx (Yc - Ya) - dy (Xc - Xa) at the first row, then plus
 //   256 dx a row (exact 64-bit integers), covered when E > 0 or E = 0 on an inclusive edge (4);
 //   depth: z = (z0 + tx) + ty with tx = dzdx (Xc - X0) for the column and ty = dzdy (Yc - Y0)
@@ -36,9 +36,9 @@ layout(local_size_x = 64) in;
 #include "tile_block_test.glsl"
 
 layout(std430, set = 0, binding = 6) readonly buffer Triangles { SetUpTriangle triangles[]; };
-layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint binCounts[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BinEntries { uint binEntries[]; };
 layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint binOffsets[]; };
-layout(std430, set = 0, binding = 10) readonly buffer Pairs { uint pairs[]; };
+layout(std430, set = 0, binding = 10) readonly buffer Lists { uint lists[]; };
 layout(std430, set = 0, binding = 11) writeonly buffer JobFinal { uint jobFinal[]; };
 layout(std430, set = 0, binding = 12) buffer ReadArena { uint readArena[]; };
 // Where a suspended job goes on: the round that goes on with it, the command it stopped at, its
@@ -297,8 +297,8 @@ void runJob(uint j) {
   firstRow = epoch.gridOrigin.y + int((block / epoch.gridWidth) * 8u);
   loadPixels(j, epoch, target, framebuffer, resumed);
   uint cursor = resumed ? place.z : binOffsets[j];
-  const uint listEnd = binOffsets[j] + binCounts[j];
-  const bool overflowed = listEnd > frame.pairCapacity;
+  const uint listEnd = binOffsets[j] + binEntries[j];
+  const bool overflowed = listEnd > frame.entryCapacity;
   uint ci = resumed ? place.y : epoch.firstCommand;
   bool midCommand = resumed;  // the first command was begun (and charged) in an earlier round
   for (; ci < epoch.commandEnd; ++ci) {
@@ -324,14 +324,14 @@ void runJob(uint j) {
         cut = cut || t < drawEnd;
       } else {
         // The list is in frame order, which is command order: this draw's entries are next.
-        for (; cursor < listEnd && pairs[cursor] < drawEnd; ++cursor) {
+        for (; cursor < listEnd && lists[cursor] < drawEnd; ++cursor) {
           if (!affords()) {
             suspend(j, ci, cursor, 0u);
             return;
           }
-          shade(pairs[cursor]);
+          shade(lists[cursor]);
         }
-        cut = cut || (cursor < listEnd && pairs[cursor] < drawEnd);
+        cut = cut || (cursor < listEnd && lists[cursor] < drawEnd);
       }
     } else if (c.kind == kRead) {
       read(c);

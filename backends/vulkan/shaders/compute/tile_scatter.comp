@@ -23,9 +23,9 @@ layout(local_size_x = 64) in;
 #include "tile_block_test.glsl"
 
 layout(std430, set = 0, binding = 6) readonly buffer Triangles { SetUpTriangle triangles[]; };
-layout(std430, set = 0, binding = 7) buffer BinCounts { uint binCounts[]; };
+layout(std430, set = 0, binding = 7) buffer BinEntries { uint binEntries[]; };
 layout(std430, set = 0, binding = 9) buffer BinCursors { uint binCursors[]; };
-layout(std430, set = 0, binding = 10) writeonly buffer Pairs { uint pairs[]; };
+layout(std430, set = 0, binding = 10) writeonly buffer Lists { uint lists[]; };
 layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
 
 void main() {
@@ -61,11 +61,11 @@ void main() {
       continue;
     const uint job = epoch.firstJob + b.y * epoch.gridWidth + b.x;
     if (frame.binPass == 0u) {
-      atomicAdd(binCounts[job], 1u);
+      atomicAdd(binEntries[job], 1u);
     } else {
       const uint slot = atomicAdd(binCursors[job], 1u);
-      if (slot < frame.pairCapacity)
-        pairs[slot] = t;
+      if (slot < frame.entryCapacity)
+        lists[slot] = t;
     }
   }
   if (k < end)
