@@ -35,6 +35,11 @@ layout(local_size_x = 64) in;
 #include "tile_frame_inputs.glsl"
 #include "tile_block_test.glsl"
 
+// Read field by field. Against four uvec4 loads a record (the words named only in comments),
+// on lavapipe with comb-translate-offset (12 alternating pairs of runs of 6 to 12 frames on a
+// shared 2-core machine), the field reads' raster stage took 0.60 to 3.05 times as long, median
+// 1.18: within the noise of one binary's own runs (up to 3x), so the named fields stay. On a
+// GPU the wide loads are untimed (scripts/gpu-check.sh prints stage_ms_raster).
 layout(std430, set = 0, binding = 6) readonly buffer Triangles { SetUpTriangle triangles[]; };
 layout(std430, set = 0, binding = 7) readonly buffer BinEntries { uint binEntries[]; };
 layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint binOffsets[]; };
