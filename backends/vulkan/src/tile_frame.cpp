@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "tile_frame_budgets.hpp"
-#include "tile_frame_epochs.hpp"
+#include "tile_frame_records.hpp"
 #include "vulkan_compute_pipelines.hpp"
 #include "vulkan_recorder.hpp"
 
@@ -24,8 +24,18 @@ using raster::PixelRect;
 
 static_assert(kTileRoundArgsBytes == sizeof(VkDispatchIndirectCommand));
 
-// The timestamps around the stages (kStages + 1 of them).
-constexpr std::uint32_t kTimestamps = raster::TransferCounters::kStages + 1;
+// The timestamps around the groups of stages that TransferCounters::stageUs times, in the order
+// of its kStageNames: a group's time runs from its own timestamp to the next.
+enum class TileTimer : std::uint32_t {
+  Vertex = 0,   // the box and vertex stages
+  SetUp = 1,    // the set-up stage
+  Binning = 2,  // count, scan, scatter, sort
+  Raster = 3,   // the raster stage's rounds
+  Reads = 4,    // the resolve stage, the reads' and boxes' copies, the counters' copy
+  End = 5,
+};
+static_assert(static_cast<std::size_t>(TileTimer::End) == raster::TransferCounters::kStages);
+constexpr std::uint32_t kTimestamps = static_cast<std::uint32_t>(TileTimer::End) + 1;
 
 // The interface's state as the shaders read it (tile_frame_layout.hpp's packing).
 void putState(const raster::RenderState& s, TileCommand& c) {
@@ -41,103 +51,6 @@ void putState(const raster::RenderState& s, TileCommand& c) {
   c.ops = ops(s.frontOps) | (ops(s.backOps) << kTileBackOpsShift);
 }
 
-// Words a read of `pixels` in `form` fills in the read arena.
-std::uint32_t readWords(TileReadForm form, long long pixels) {
-  return static_cast<std::uint32_t>(form == TileReadForm::StencilBytes ? (pixels + 3) / 4 : pixels);
-}
-
-// The frame's records as the stages read them, target by target, each target's commands cut
-// into epochs, numbered in command order.
-struct FrameRecords {
-  std::vector<TileTarget> targets;
-  std::vector<TileCommand> commands;
-  std::vector<TileEpoch> epochs;
-  std::vector<TileDrawSource> draws;
-  std::vector<TileResolveRange> resolveRanges;
-  std::vector<std::uint32_t> laterEpochs;  // the ranges' later epochs
-  std::vector<TileVertexJob> vertexJobs;
-  std::vector<double> transforms;  // kTileTransformDoubles a vertex job
-  std::vector<TileBoxJob> boxJobs;
-  std::vector<double> poses;  // kTilePoseDoubles a box job
-  // A read's words in the read arena and where they go after the frame.
-  struct ReadCopy {
-    VkBuffer destination = VK_NULL_HANDLE;
-    VkDeviceSize offset = 0;
-    std::uint32_t firstWord = 0;
-    std::uint32_t words = 0;
-  };
-  std::vector<ReadCopy> readCopies;
-  std::uint32_t triangles = 0;
-  std::uint32_t jobs = 0;
-  std::uint32_t finals = 0;  // jobs of epochs that leave their pixels to the resolve stage
-  std::uint32_t arenaWords = 0;
-  std::uint32_t resolvePixels = 0;
-  // Entries the jobs' lists hold in all: for each draw, 4 a triangle, 2 a job of its epoch and
-  // 4,096. A job whose list would pass the end draws each of its draws from every triangle
-  // instead (tile_raster.comp), so this bounds memory, not results.
-  std::uint64_t listCapacity = 0;
-  // What bounds the stages' loops (tile_frame_budgets.hpp): the rounds the raster and sort
-  // stages may need for the longest job, and the most blocks a triangle's candidates may reach.
-  std::uint32_t rasterRounds = 1;
-  std::uint32_t sortRounds = 1;
-  std::uint64_t largestGrid = 0;
-  std::uint32_t windowVertices = 0;        // the vertex jobs' vertices, in all
-  std::vector<std::uint32_t> windowFirst;  // vertex job k's first window vertex
-  std::vector<int> drawVertexJob;          // each draw's vertex job, or -1 (window vertices given)
-  // The captured draw's record and its epoch's.
-  std::optional<std::pair<std::uint32_t, std::uint32_t>> captured;
-};
-
-// Where the frame's regions lie in its work buffer.
-struct WorkLayout {
-  explicit WorkLayout(const FrameRecords& r)
-      : pairCapacity(static_cast<std::uint32_t>(std::min<std::uint64_t>(r.listCapacity, 1u << 27))),
-        triangleBytes(tileAligned(VkDeviceSize{r.triangles} * kTileWordsPerTriangle * 4 + 4)),
-        jobBytes(tileAligned(VkDeviceSize{r.jobs} * 4 + 4)) {
-    countsAt = triangleBytes;
-    offsetsAt = countsAt + jobBytes;
-    cursorsAt = offsetsAt + jobBytes;
-    pairsAt = cursorsAt + jobBytes;
-    finalsAt = pairsAt + tileAligned(VkDeviceSize{pairCapacity} * 4);
-    windowsAt = finalsAt + tileAligned(VkDeviceSize{r.finals} * kTileJobPixelBytes + 4);
-    arenaAt = windowsAt + tileAligned(VkDeviceSize{r.windowVertices} * kTileWindowVertexBytes + 4);
-    boxesAt = arenaAt + tileAligned(VkDeviceSize{r.arenaWords} * 4 + 4);
-    // The rounds' records, needed only where a stage may take more than one round; the
-    // progress, counters and rounds' arguments are zeroed each frame.
-    const VkDeviceSize rasterProgress =
-        r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * 2 * kTileRasterProgressBytes : 16;
-    const VkDeviceSize sortProgress =
-        r.sortRounds > 1 ? VkDeviceSize{r.jobs} * kTileSortProgressBytes : 16;
-    const VkDeviceSize carry = r.rasterRounds > 1 ? VkDeviceSize{r.jobs} * kTileJobPixelBytes : 16;
-    progressAt = boxesAt + tileAligned(VkDeviceSize{r.boxJobs.size()} * kTileBoxBytes + 8);
-    sortProgressAt = progressAt + tileAligned(rasterProgress);
-    countersAt = sortProgressAt + tileAligned(sortProgress);
-    rasterArgsAt = countersAt + tileAligned(kTileCounters * 4);
-    sortArgsAt = rasterArgsAt + tileAligned(VkDeviceSize{r.rasterRounds + 1} * kTileRoundArgsBytes);
-    carryAt = sortArgsAt + tileAligned(VkDeviceSize{r.sortRounds + 1} * kTileRoundArgsBytes);
-    bytes = carryAt + tileAligned(carry);
-  }
-  // Entries the jobs' lists hold in all (FrameRecords::listCapacity, at most 2^27: 512 MiB).
-  std::uint32_t pairCapacity;
-  VkDeviceSize triangleBytes;
-  VkDeviceSize jobBytes;
-  VkDeviceSize countsAt = 0;
-  VkDeviceSize offsetsAt = 0;
-  VkDeviceSize cursorsAt = 0;
-  VkDeviceSize pairsAt = 0;
-  VkDeviceSize finalsAt = 0;
-  VkDeviceSize windowsAt = 0;
-  VkDeviceSize arenaAt = 0;
-  VkDeviceSize boxesAt = 0;
-  VkDeviceSize progressAt = 0;
-  VkDeviceSize sortProgressAt = 0;
-  VkDeviceSize countersAt = 0;
-  VkDeviceSize rasterArgsAt = 0;
-  VkDeviceSize sortArgsAt = 0;
-  VkDeviceSize carryAt = 0;  // up to here zeroed each frame
-  VkDeviceSize bytes = 0;
-};
-
 // Jobs a workgroup of the raster stage runs: eight side by side, one an invocation's eight
 // columns (tile_raster.comp). One job an invocation: its loop budget is its own.
 constexpr std::uint32_t kRasterJobsPerGroup = 8;
@@ -147,83 +60,6 @@ constexpr std::uint32_t kRasterJobsPerGroup = 8;
 // each loop over a 256th of them.
 constexpr std::uint32_t kMostSerialScanJobs = 32768;
 
-// Jobs whose pixels a frame may keep for the resolve stage (64 words each: 64 MiB in all).
-constexpr std::uint64_t kMostFinalJobs = std::uint64_t{1} << 18;
-
-// The 8x8 blocks, from multiples of 8, that hold footprint `f`.
-struct BlockGrid {
-  explicit BlockGrid(const PixelRect& f)
-      : x0(f.x0 & ~7),
-        y0(f.y0 & ~7),
-        width(static_cast<std::uint32_t>(((f.x1 - 1) >> 3) - (f.x0 >> 3) + 1)),
-        height(static_cast<std::uint32_t>(((f.y1 - 1) >> 3) - (f.y0 >> 3) + 1)) {}
-  std::int32_t x0;
-  std::int32_t y0;
-  std::uint32_t width;
-  std::uint32_t height;
-  [[nodiscard]] std::uint64_t blocks() const { return std::uint64_t{width} * height; }
-};
-
-// `epochs`, or, when the epochs that meet another would keep more jobs than the frame has left
-// of kMostFinalJobs (`finals` kept so far), one epoch of all the commands that starts from the
-// framebuffer and stores its own pixels: the same results, its blocks' commands run one after
-// another instead of side by side, and no pixel kept for the resolve stage.
-// The same when more epochs meet another than a resolve invocation may compare (`mostLater`
-// later epochs: a CPU driver's loop limit, tile_frame_budgets.hpp).
-std::vector<EpochSpan> withinFinalBudget(std::vector<EpochSpan> epochs, std::uint64_t finals,
-                                         std::uint32_t mostLater) {
-  std::uint64_t kept = 0;
-  std::uint64_t shared = 0;
-  for (const EpochSpan& e : epochs) {
-    if (!e.alone) {
-      kept += BlockGrid(e.footprint).blocks();
-      ++shared;
-    }
-  }
-  if (kept == 0 || (finals + kept <= kMostFinalJobs && shared <= std::uint64_t{mostLater} + 1))
-    return epochs;
-  EpochSpan all{epochs.front().begin, epochs.back().end, epochs.front().footprint, true, true};
-  for (const EpochSpan& e : epochs)
-    all.footprint = unite(all.footprint, e.footprint);
-  return {all};
-}
-
-// The resolve stage's ranges for one target's epochs that meet another (`shared`, in command
-// order): each such epoch's footprint, with the later ones that meet it, which own the pixels
-// they hold. Past kMostEpochsCompared every later one is listed, unsorted out.
-void addResolveRanges(FrameRecords& r, const std::vector<std::uint32_t>& shared,
-                      std::uint32_t target) {
-  const bool compare = shared.size() <= kMostEpochsCompared;
-  for (std::size_t i = 0; i < shared.size(); ++i) {
-    const PixelRect f = rectOf(r.epochs[shared[i]].footprint);
-    TileResolveRange range;
-    putRect(f, range.rect);
-    range.target = target;
-    range.epoch = shared[i];
-    range.firstLater = static_cast<std::uint32_t>(r.laterEpochs.size());
-    for (std::size_t j = i + 1; j < shared.size(); ++j)
-      if (!compare || !f.intersect(rectOf(r.epochs[shared[j]].footprint)).empty())
-        r.laterEpochs.push_back(shared[j]);
-    range.laterCount = static_cast<std::uint32_t>(r.laterEpochs.size()) - range.firstLater;
-    range.firstPixel = r.resolvePixels;
-    r.resolvePixels += static_cast<std::uint32_t>(f.area());
-    r.resolveRanges.push_back(range);
-  }
-}
-
-TileEpoch epochRecord(const EpochSpan& span, std::uint32_t target) {
-  TileEpoch e;
-  putRect(span.footprint, e.footprint);
-  const BlockGrid grid(span.footprint);
-  e.gridOrigin[0] = grid.x0;
-  e.gridOrigin[1] = grid.y0;
-  e.gridWidth = grid.width;
-  e.gridHeight = grid.height;
-  e.target = target;
-  e.flags = (span.loads ? kTileEpochLoads : 0u) | (span.alone ? kTileEpochStores : 0u);
-  return e;
-}
-
 }  // namespace
 
 struct TileFrame::Impl {
@@ -232,44 +68,9 @@ struct TileFrame::Impl {
   const TilePipelines& pipelines;
   const TileLoopBudgets budgets;  // within the driver's loop limit (tile_frame_budgets.hpp)
 
-  struct Target {
-    bool live = false;
-    VkDeviceAddress pixels = 0;
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-  };
-  std::vector<Target> targets;
-
-  // A command as recorded: what the shaders read, and what the host still needs.
-  struct Pending {
-    TileCommand command;
-    PixelRect rect;
-    // A draw's sources: window vertices by address, or a vertex job's (vertexJob >= 0).
-    VkDeviceAddress vertices = 0;
-    int vertexJob = -1;
-    VkDeviceAddress indices = 0;
-    // A read's destination.
-    VkBuffer destination = VK_NULL_HANDLE;
-    VkDeviceSize destinationOffset = 0;
-  };
-  std::vector<std::vector<Pending>> commands;  // by target
-
-  std::vector<TileVertices> vertexJobs;
-  std::map<std::uint64_t, int> vertexJobOfKey;  // content key -> vertex job, this frame
-
-  struct BoxBatch {
-    std::vector<BoxRequest> blocks;
-    VkBuffer destination = VK_NULL_HANDLE;
-    VkDeviceSize offset = 0;
-  };
-  std::vector<BoxBatch> boxBatches;
-
-  struct Capture {
-    std::uint32_t target = 0;
-    std::size_t command = 0;
-    std::function<void(TileDrawCapture)> sink;
-  };
-  std::optional<Capture> capture;
+  TileRecorded recorded;
+  std::map<std::uint64_t, int> vertexJobOfKey;       // content key -> vertex job, this frame
+  std::function<void(TileDrawCapture)> captureSink;  // where recorded.captured goes
 
   DeviceBuffer work;  // the frame's set-up triangles, bins, job finals, windows, reads, boxes
   VkQueryPool queries = VK_NULL_HANDLE;
@@ -294,18 +95,11 @@ struct TileFrame::Impl {
     }
   }
 
-  bool empty() const {
-    if (!vertexJobs.empty() || !boxBatches.empty())
-      return false;
-    return std::all_of(commands.begin(), commands.end(),
-                       [](const std::vector<Pending>& c) { return c.empty(); });
-  }
-
-  Pending& add(std::uint32_t target, TileCommandKind kind, const PixelRect& rect) {
-    if (target >= targets.size() || !targets[target].live)
+  TileRecorded::Pending& add(std::uint32_t target, TileCommandKind kind, const PixelRect& rect) {
+    if (target >= recorded.targets.size() || !recorded.targets[target].live)
       throw std::logic_error("TileFrame: a command for a framebuffer it does not hold");
     recorder.open();
-    Pending& p = commands[target].emplace_back();
+    TileRecorded::Pending& p = recorded.commands[target].emplace_back();
     p.command.kind = kind;
     p.command.target = target;
     p.rect = rect;
@@ -335,112 +129,32 @@ struct TileFrame::Impl {
             VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   }
 
-  void timestamp(VkCommandBuffer cmd, std::uint32_t k) {
+  void timestamp(VkCommandBuffer cmd, TileTimer timer) {
     if (timed)
-      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, k);
+      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries,
+                          static_cast<std::uint32_t>(timer));
   }
 
-  [[nodiscard]] FrameRecords records() const;
   void run(VkCommandBuffer cmd);
-  void recordStages(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
-  void recordCopies(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
+  [[nodiscard]] TileFrameConstants constantsOf(const TileFrameRecords& r,
+                                               const TileWorkLayout& layout) const;
+  [[nodiscard]] std::vector<TileBuffer> buffersOf(const TileFrameRecords& r,
+                                                  const TileWorkLayout& layout);
+  void recordStages(VkCommandBuffer cmd, const TileFrameRecords& r, const TileWorkLayout& layout);
+  void recordCopies(VkCommandBuffer cmd, const TileFrameRecords& r, const TileWorkLayout& layout);
   void clearRecorded();
-  void recordCheck(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
-  void recordCapture(VkCommandBuffer cmd, const FrameRecords& r, const WorkLayout& layout);
+  void recordCheck(VkCommandBuffer cmd, const TileFrameRecords& r, const TileWorkLayout& layout);
+  void recordCapture(VkCommandBuffer cmd, const TileFrameRecords& r, const TileWorkLayout& layout);
   void readTimes();
   void checkCounters();
 };
 
-FrameRecords TileFrame::Impl::records() const {
-  FrameRecords r;
-  for (const Target& t : targets)
-    r.targets.push_back({TileAddress::of(t.pixels), t.width, t.height});
-  for (const TileVertices& job : vertexJobs) {
-    r.windowFirst.push_back(r.windowVertices);
-    r.windowVertices += job.vertexCount;
-    r.transforms.insert(r.transforms.end(), job.transform.begin(), job.transform.end());
-  }
-  for (std::uint32_t t = 0; t < targets.size(); ++t) {
-    const std::vector<Pending>& list = commands[t];
-    if (list.empty())
-      continue;
-    std::vector<EpochCommand> shapes;
-    shapes.reserve(list.size());
-    for (const Pending& p : list)
-      shapes.push_back(epochCommandOf(p.command, p.rect));
-    std::vector<std::uint32_t> shared;  // this target's epochs that meet another
-    for (const EpochSpan& span :
-         withinFinalBudget(cutIntoEpochs(shapes), r.finals, budgets.resolveLater)) {
-      TileEpoch e = epochRecord(span, t);
-      const auto epochIndex = static_cast<std::uint32_t>(r.epochs.size());
-      e.firstJob = r.jobs;
-      e.firstFinal = r.finals;
-      e.firstCommand = static_cast<std::uint32_t>(r.commands.size());
-      const std::uint32_t firstTriangle = r.triangles;
-      if (!span.alone) {
-        r.finals += e.gridWidth * e.gridHeight;
-        shared.push_back(epochIndex);
-      }
-      for (std::size_t c = span.begin; c < span.end; ++c) {
-        const Pending& p = list[c];
-        TileCommand record = p.command;
-        if (record.kind == TileCommandKind::Draw) {
-          if (capture && capture->target == t && capture->command == c)
-            r.captured = std::make_pair(static_cast<std::uint32_t>(r.draws.size()), epochIndex);
-          record.first = r.triangles;
-          TileDrawSource d;
-          d.vertices = TileAddress::of(p.vertices);  // a vertex job's: set once work is laid out
-          r.drawVertexJob.push_back(p.vertexJob);
-          d.indices = TileAddress::of(p.indices);
-          d.firstTriangle = r.triangles;
-          d.triangleCount = record.count;
-          d.command = static_cast<std::uint32_t>(r.commands.size());
-          d.epoch = epochIndex;
-          r.draws.push_back(d);
-          r.triangles += record.count;
-          r.listCapacity += 4 * std::uint64_t{record.count} +
-                            2 * std::uint64_t{e.gridWidth} * e.gridHeight + 4096;
-        } else if (record.kind == TileCommandKind::Read) {
-          record.arenaWord = r.arenaWords;
-          const std::uint32_t words = readWords(record.readForm, p.rect.area());
-          r.readCopies.push_back({p.destination, p.destinationOffset, r.arenaWords, words});
-          r.arenaWords += words;
-        }
-        r.commands.push_back(record);
-      }
-      e.commandEnd = static_cast<std::uint32_t>(r.commands.size());
-      // A job of the epoch lists at most every triangle of its draws.
-      const std::uint64_t epochTriangles = r.triangles - firstTriangle;
-      r.rasterRounds =
-          std::max(r.rasterRounds,
-                   tileRasterRounds(span.end - span.begin, epochTriangles, budgets.rasterWork));
-      r.sortRounds = std::max(r.sortRounds, tileSortRounds(epochTriangles, budgets.sortWork));
-      if (epochTriangles > 0)
-        r.largestGrid = std::max<std::uint64_t>(r.largestGrid, BlockGrid(span.footprint).blocks());
-      r.jobs += e.gridWidth * e.gridHeight;
-      r.epochs.push_back(e);
-    }
-    addResolveRanges(r, shared, t);
-  }
-  for (const BoxBatch& batch : boxBatches) {
-    for (const BoxRequest& b : batch.blocks) {
-      TileBoxJob job;
-      job.local = TileAddress::of(b.local);
-      job.vertexCount = b.vertexCount;
-      job.pose = static_cast<std::uint32_t>(r.boxJobs.size());
-      r.poses.insert(r.poses.end(), b.pose.begin(), b.pose.end());
-      r.boxJobs.push_back(job);
-    }
-  }
-  return r;
-}
-
 // Runs everything recorded since the last submission: see tile_frame.hpp for the stages.
 void TileFrame::Impl::run(VkCommandBuffer cmd) {
   timed = false;
-  if (empty())
+  if (recorded.empty())
     return;
-  FrameRecords r = records();
+  TileFrameRecords r = tileFrameRecords(recorded, budgets);
   if (r.jobs > budgets.scanJobs) {
     clearRecorded();
     throw std::runtime_error("vulkan-compute: a frame of " + std::to_string(r.jobs) +
@@ -449,47 +163,32 @@ void TileFrame::Impl::run(VkCommandBuffer cmd) {
                              " the scan stage takes within this driver's loop limit of " +
                              std::to_string(context.loopLimit()) + " iterations an invocation");
   }
-  const WorkLayout layout(r);
+  const TileWorkLayout layout(r);
   reserveWork(layout.bytes);
-  const VkBuffer w = work.buffer;
-  const VkDeviceAddress workAddress = context.address(w);
-  // The posed draws' window vertices, made by the vertex stage into the work buffer.
-  for (std::size_t j = 0; j < vertexJobs.size(); ++j) {
-    TileVertexJob job;
-    job.local = TileAddress::of(vertexJobs[j].local);
-    job.windows = TileAddress::of(workAddress + layout.windowsAt +
-                                  VkDeviceSize{r.windowFirst[j]} * kTileWindowVertexBytes);
-    job.firstVertex = r.windowFirst[j];
-    job.vertexCount = vertexJobs[j].vertexCount;
-    job.transform = static_cast<std::uint32_t>(j);
-    r.vertexJobs.push_back(job);
-  }
-  for (std::size_t d = 0; d < r.draws.size(); ++d)
-    if (r.drawVertexJob[d] >= 0)
-      r.draws[d].vertices = r.vertexJobs[static_cast<std::size_t>(r.drawVertexJob[d])].windows;
+  placeVertexJobs(r, recorded.vertexJobs, layout, context.address(work.buffer));
   recordStages(cmd, r, layout);
   recordCopies(cmd, r, layout);
   recordCheck(cmd, r, layout);
   if (r.captured)
     recordCapture(cmd, r, layout);
   computeBarrier(cmd);
-  timestamp(cmd, kTimestamps - 1);
+  timestamp(cmd, TileTimer::End);
   clearRecorded();
 }
 
 void TileFrame::Impl::clearRecorded() {
-  for (std::vector<Pending>& list : commands)
+  for (std::vector<TileRecorded::Pending>& list : recorded.commands)
     list.clear();
-  vertexJobs.clear();
+  recorded.vertexJobs.clear();
   vertexJobOfKey.clear();
-  boxBatches.clear();
-  capture.reset();
+  recorded.boxBatches.clear();
+  recorded.captured.reset();
+  captureSink = nullptr;
 }
 
-// The stages, each one dispatch (none when it has nothing to do), with a compute barrier
-// between dependent ones and a timestamp after each group of kStageNames.
-void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
-                                   const WorkLayout& layout) {
+// The push constants every stage of the frame starts from.
+TileFrameConstants TileFrame::Impl::constantsOf(const TileFrameRecords& r,
+                                                const TileWorkLayout& layout) const {
   TileFrameConstants k;
   k.vertexCount = r.windowVertices;
   k.vertexJobs = static_cast<std::uint32_t>(r.vertexJobs.size());
@@ -497,7 +196,7 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   k.drawCount = static_cast<std::uint32_t>(r.draws.size());
   k.jobCount = r.jobs;
   k.epochCount = static_cast<std::uint32_t>(r.epochs.size());
-  k.pairCapacity = layout.pairCapacity;
+  k.entryCapacity = layout.entryCapacity;
   k.resolvePixels = r.resolvePixels;
   k.resolveRanges = static_cast<std::uint32_t>(r.resolveRanges.size());
   k.boxJobs = static_cast<std::uint32_t>(r.boxJobs.size());
@@ -505,150 +204,162 @@ void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const FrameRecords& r,
   k.sortBudget = r.sortRounds > 1 ? budgets.sortWork : kTileUnbounded;
   k.scatterChunks = tileScatterChunks(r.largestGrid, budgets.scatterBlocks);
   k.scatterBlocks = k.scatterChunks > 1 ? budgets.scatterBlocks : kTileUnbounded;
-  const TileBuffer targetsIn = uploaded(TileBinding::Targets, r.targets);
-  const TileBuffer epochsIn = uploaded(TileBinding::Epochs, r.epochs);
-  const TileBuffer commandsIn = uploaded(TileBinding::Commands, r.commands);
-  const TileBuffer drawsIn = uploaded(TileBinding::Draws, r.draws);
-  const TileBuffer vertexJobsIn = uploaded(TileBinding::VertexJobs, r.vertexJobs);
-  const TileBuffer transformsIn = uploaded(TileBinding::Transforms, r.transforms);
-  const TileBuffer posesIn = uploaded(TileBinding::Transforms, r.poses);
-  const TileBuffer resolveIn = uploaded(TileBinding::ResolveRanges, r.resolveRanges);
-  const TileBuffer laterIn = uploaded(TileBinding::LaterEpochs, r.laterEpochs);
-  const TileBuffer boxJobsIn = uploaded(TileBinding::BoxJobs, r.boxJobs);
-  const VkBuffer w = work.buffer;
-  const TileBuffer triangles{TileBinding::Triangles, w, 0, layout.triangleBytes};
-  const TileBuffer counts{TileBinding::BinCounts, w, layout.countsAt, layout.jobBytes};
-  const TileBuffer offsets{TileBinding::BinOffsets, w, layout.offsetsAt, layout.jobBytes};
-  const TileBuffer cursors{TileBinding::BinCursors, w, layout.cursorsAt, layout.jobBytes};
-  const TileBuffer pairs{TileBinding::Pairs, w, layout.pairsAt, layout.finalsAt - layout.pairsAt};
-  const TileBuffer finals{TileBinding::JobFinal, w, layout.finalsAt,
-                          layout.windowsAt - layout.finalsAt};
-  const TileBuffer arena{TileBinding::ReadArena, w, layout.arenaAt,
-                         layout.boxesAt - layout.arenaAt};
-  const TileBuffer boxes{TileBinding::Boxes, w, layout.boxesAt, layout.progressAt - layout.boxesAt};
-  const TileBuffer progress{TileBinding::Progress, w, layout.progressAt,
-                            layout.sortProgressAt - layout.progressAt};
-  const TileBuffer sortProgress{TileBinding::Progress, w, layout.sortProgressAt,
-                                layout.countersAt - layout.sortProgressAt};
-  const TileBuffer counters{TileBinding::Counters, w, layout.countersAt,
-                            layout.rasterArgsAt - layout.countersAt};
-  const TileBuffer rasterArgs{TileBinding::RoundArgs, w, layout.rasterArgsAt,
-                              layout.sortArgsAt - layout.rasterArgsAt};
-  const TileBuffer sortArgs{TileBinding::RoundArgs, w, layout.sortArgsAt,
-                            layout.carryAt - layout.sortArgsAt};
-  const TileBuffer carry{TileBinding::Carry, w, layout.carryAt, layout.bytes - layout.carryAt};
+  return k;
+}
 
-  timed = queries != VK_NULL_HANDLE;
-  if (timed)
-    vkCmdResetQueryPool(cmd, queries, 0, kTimestamps);
-  long long dispatches = 0;
-  const auto dispatchLinear = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
-                                  std::uint64_t count) {
-    if (count == 0)
-      return;
-    pipelines.dispatchLinear(cmd, p, buffers, k, count);
-    ++dispatches;
+// Every buffer the stages bind, one a binding: the records uploaded, and the work buffer's
+// regions (each from its start to the next region's).
+std::vector<TileBuffer> TileFrame::Impl::buffersOf(const TileFrameRecords& r,
+                                                   const TileWorkLayout& layout) {
+  const VkBuffer w = work.buffer;
+  const auto region = [w](TileBinding binding, VkDeviceSize at, VkDeviceSize end) {
+    return TileBuffer{binding, w, at, end - at};
   };
-  const auto indirect = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
-                            VkDeviceSize args) {
-    pipelines.dispatchIndirect(cmd, p, buffers, k, w, args);
-    ++dispatches;
+  return {
+      uploaded(TileBinding::Targets, r.targets),
+      uploaded(TileBinding::Epochs, r.epochs),
+      uploaded(TileBinding::Commands, r.commands),
+      uploaded(TileBinding::Draws, r.draws),
+      uploaded(TileBinding::VertexJobs, r.vertexJobs),
+      uploaded(TileBinding::Transforms, r.transforms),
+      uploaded(TileBinding::ResolveRanges, r.resolveRanges),
+      uploaded(TileBinding::LaterEpochs, r.laterEpochs),
+      uploaded(TileBinding::BoxJobs, r.boxJobs),
+      uploaded(TileBinding::Poses, r.poses),
+      region(TileBinding::Triangles, 0, layout.triangleBytes),
+      region(TileBinding::BinEntries, layout.binEntriesAt, layout.binEntriesAt + layout.jobBytes),
+      region(TileBinding::BinOffsets, layout.offsetsAt, layout.offsetsAt + layout.jobBytes),
+      region(TileBinding::BinCursors, layout.cursorsAt, layout.cursorsAt + layout.jobBytes),
+      region(TileBinding::Lists, layout.listsAt, layout.finalsAt),
+      region(TileBinding::JobFinal, layout.finalsAt, layout.windowsAt),
+      region(TileBinding::ReadArena, layout.arenaAt, layout.boxesAt),
+      region(TileBinding::Boxes, layout.boxesAt, layout.progressAt),
+      region(TileBinding::RasterProgress, layout.progressAt, layout.sortProgressAt),
+      region(TileBinding::SortProgress, layout.sortProgressAt, layout.countersAt),
+      region(TileBinding::Counters, layout.countersAt, layout.rasterArgsAt),
+      region(TileBinding::RasterRoundArgs, layout.rasterArgsAt, layout.sortArgsAt),
+      region(TileBinding::SortRoundArgs, layout.sortArgsAt, layout.carryAt),
+      region(TileBinding::Carry, layout.carryAt, layout.bytes),
   };
-  // A stage in rounds: the first for every job (`groups` workgroups, x and y), each later one an
-  // indirect dispatch whose size the round before writes at `argsAt` (zero unless some job
-  // stopped at its budget), a barrier after each.
-  const auto inRounds = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
-                            std::pair<std::uint32_t, std::uint32_t> groups, std::uint32_t rounds,
-                            VkDeviceSize argsAt) {
-    if (r.jobs == 0)
-      return;
-    std::tie(k.roundGroupsX, k.roundGroupsY) = groups;
-    for (k.round = 0; k.round < rounds; ++k.round) {
-      if (k.round == 0) {
-        pipelines.dispatch(cmd, p, buffers, k, groups.first, groups.second);
-        ++dispatches;
-      } else {
-        indirect(p, buffers, argsAt + VkDeviceSize{k.round} * kTileRoundArgsBytes);
-      }
-      computeBarrier(cmd);
-    }
-    k.round = 0;
-  };
-  const auto dispatchGroups = [&](VkPipeline p, std::initializer_list<TileBuffer> buffers,
-                                  std::uint64_t groups) {
+}
+
+namespace {
+
+// The frame's stages as they are recorded: each a call that binds its pipeline, pushes the
+// constants as they are then and dispatches (nothing when the stage has nothing to do), on top of
+// the buffers pushed once for the frame; it counts the dispatches.
+class StageRecorder {
+ public:
+  StageRecorder(VkCommandBuffer cmd, const TilePipelines& pipelines, TileFrameConstants& constants,
+                VkBuffer work)
+      : cmd_(cmd), pipelines_(pipelines), k_(constants), work_(work) {}
+
+  // `count` invocations of a 64-wide stage that reads linearInvocation().
+  void linear(VkPipeline pipeline, std::uint64_t count) { groups(pipeline, (count + 63) / 64); }
+
+  // `groups` workgroups of a stage that reads linearWorkgroup().
+  void groups(VkPipeline pipeline, std::uint64_t groups) {
     if (groups == 0)
       return;
     const auto [perRow, rows] = TilePipelines::groupGrid(groups);
-    pipelines.dispatch(cmd, p, buffers, k, perRow, rows);
-    ++dispatches;
-  };
+    pipelines_.dispatch(cmd_, pipeline, k_, perRow, rows);
+    ++dispatches_;
+  }
+
+  // A stage in `rounds`: the first of `groups` workgroups, each later one an indirect dispatch
+  // whose size the round before writes at `argsAt` in the work buffer (zero unless some job
+  // stopped at its budget), a barrier after each.
+  void inRounds(VkPipeline pipeline, std::uint64_t groups, std::uint32_t rounds,
+                VkDeviceSize argsAt) {
+    if (groups == 0)
+      return;
+    std::tie(k_.roundGroupsX, k_.roundGroupsY) = TilePipelines::groupGrid(groups);
+    for (k_.round = 0; k_.round < rounds; ++k_.round) {
+      if (k_.round == 0)
+        pipelines_.dispatch(cmd_, pipeline, k_, k_.roundGroupsX, k_.roundGroupsY);
+      else
+        pipelines_.dispatchIndirect(cmd_, pipeline, k_, work_,
+                                    argsAt + VkDeviceSize{k_.round} * kTileRoundArgsBytes);
+      ++dispatches_;
+      computeBarrier(cmd_);
+    }
+    k_.round = 0;
+  }
+
+  [[nodiscard]] long long dispatches() const { return dispatches_; }
+
+ private:
+  VkCommandBuffer cmd_;
+  const TilePipelines& pipelines_;
+  TileFrameConstants& k_;
+  VkBuffer work_;
+  long long dispatches_ = 0;
+};
+
+}  // namespace
+
+// The stages in order, with a compute barrier between dependent ones and a timestamp before each
+// group of them (TileTimer).
+void TileFrame::Impl::recordStages(VkCommandBuffer cmd, const TileFrameRecords& r,
+                                   const TileWorkLayout& layout) {
+  TileFrameConstants k = constantsOf(r, layout);
+  const VkBuffer w = work.buffer;
+  timed = queries != VK_NULL_HANDLE;
+  if (timed)
+    vkCmdResetQueryPool(cmd, queries, 0, kTimestamps);
+  pipelines.pushBuffers(cmd, buffersOf(r, layout));
+  StageRecorder stage(cmd, pipelines, k, w);
   // What the devices recorded before (uploads, framebuffer fills) is visible to the stages.
   computeBarrier(cmd);
-  vkCmdFillBuffer(cmd, w, layout.countsAt, layout.jobBytes, 0);
+  vkCmdFillBuffer(cmd, w, layout.binEntriesAt, layout.jobBytes, 0);
   vkCmdFillBuffer(cmd, w, layout.arenaAt, layout.boxesAt - layout.arenaAt, 0);  // ORed into
   vkCmdFillBuffer(cmd, w, layout.progressAt, layout.carryAt - layout.progressAt, 0);
   computeBarrier(cmd);
-  timestamp(cmd, 0);
-  dispatchGroups(pipelines.box, {boxJobsIn, posesIn, boxes}, k.boxJobs);
-  dispatchLinear(pipelines.vertex,
-                 {targetsIn, epochsIn, commandsIn, drawsIn, vertexJobsIn, transformsIn},
-                 r.windowVertices);
+  timestamp(cmd, TileTimer::Vertex);
+  stage.groups(pipelines.box, r.boxJobs.size());  // a workgroup a block
+  stage.linear(pipelines.vertex, r.windowVertices);
   computeBarrier(cmd);
-  timestamp(cmd, 1);
-  dispatchLinear(pipelines.setup, {targetsIn, epochsIn, commandsIn, drawsIn, triangles},
-                 r.triangles);
+  timestamp(cmd, TileTimer::SetUp);
+  stage.linear(pipelines.setup, r.triangles);
   computeBarrier(cmd);
-  timestamp(cmd, 2);
+  timestamp(cmd, TileTimer::Binning);
   if (r.triangles > 0) {
-    // The scatter counts (binPass 0), the scan places the lists, the scatter fills them.
+    // The scatter counts (binPass 0), the scan places the lists, the scatter fills them, the
+    // sort puts each in order.
     const std::uint64_t scatterInvocations = std::uint64_t{r.triangles} * k.scatterChunks;
-    dispatchLinear(
-        pipelines.scatter,
-        {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs, counters},
-        scatterInvocations);
+    stage.linear(pipelines.scatter, scatterInvocations);
     computeBarrier(cmd);
     const bool serial = context.cpuDriver() && r.jobs <= kMostSerialScanJobs;
-    pipelines.dispatch(cmd, serial ? pipelines.scanSerial : pipelines.scan,
-                       {counts, offsets, cursors}, k, 1, 1);
-    ++dispatches;
+    stage.groups(serial ? pipelines.scanSerial : pipelines.scan, 1);
     computeBarrier(cmd);
     k.binPass = 1;
-    dispatchLinear(
-        pipelines.scatter,
-        {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, cursors, pairs, counters},
-        scatterInvocations);
+    stage.linear(pipelines.scatter, scatterInvocations);
     computeBarrier(cmd);
-    // The sort in rounds.
-    inRounds(pipelines.sort, {counts, offsets, pairs, sortProgress, counters, sortArgs},
-             TilePipelines::linearGroups(r.jobs), r.sortRounds, layout.sortArgsAt);
+    stage.inRounds(pipelines.sort, (std::uint64_t{r.jobs} + 63) / 64, r.sortRounds,
+                   layout.sortArgsAt);  // a job an invocation
   }
-  timestamp(cmd, 3);
-  // The raster stage in rounds: eight jobs a workgroup.
-  inRounds(pipelines.raster,
-           {targetsIn, epochsIn, commandsIn, drawsIn, triangles, counts, offsets, pairs, finals,
-            arena, progress, carry, counters, rasterArgs},
-           TilePipelines::groupGrid((r.jobs + kRasterJobsPerGroup - 1) / kRasterJobsPerGroup),
-           r.rasterRounds, layout.rasterArgsAt);
-  timestamp(cmd, 4);
-  dispatchLinear(pipelines.resolve,
-                 {targetsIn, epochsIn, commandsIn, drawsIn, finals, resolveIn, laterIn, counters},
-                 r.resolvePixels);
+  timestamp(cmd, TileTimer::Raster);
+  stage.inRounds(pipelines.raster,
+                 (std::uint64_t{r.jobs} + kRasterJobsPerGroup - 1) / kRasterJobsPerGroup,
+                 r.rasterRounds, layout.rasterArgsAt);
+  timestamp(cmd, TileTimer::Reads);
+  stage.linear(pipelines.resolve, r.resolvePixels);
   raster::TransferCounters counted;
-  counted.dispatches = dispatches;
+  counted.dispatches = stage.dispatches();
   recorder.count(counted);
 }
 
 // The reads and boxes to their destinations (the summaries' dispatch comes after, with its own
 // barrier), one copy command a destination buffer.
-void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const FrameRecords& r,
-                                   const WorkLayout& layout) {
+void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const TileFrameRecords& r,
+                                   const TileWorkLayout& layout) {
   std::map<VkBuffer, std::vector<VkBufferCopy>> copies;
-  for (const FrameRecords::ReadCopy& read : r.readCopies)
+  for (const TileFrameRecords::ReadCopy& read : r.readCopies)
     if (read.words > 0)
       copies[read.destination].push_back({layout.arenaAt + VkDeviceSize{read.firstWord} * 4,
                                           read.offset, VkDeviceSize{read.words} * 4});
   VkDeviceSize box = 0;
-  for (const BoxBatch& batch : boxBatches) {
+  for (const TileRecorded::BoxBatch& batch : recorded.boxBatches) {
     if (!batch.blocks.empty())
       copies[batch.destination].push_back({layout.boxesAt + box * kTileBoxBytes, batch.offset,
                                            batch.blocks.size() * kTileBoxBytes});
@@ -663,8 +374,8 @@ void TileFrame::Impl::recordCopies(VkCommandBuffer cmd, const FrameRecords& r,
 // checkCounters, before any read-back is delivered) with what the frame asked of them: a stage
 // that did less than all of its work (a loop a driver ended early, a round too few) is an error
 // that names it, never a smaller answer.
-void TileFrame::Impl::recordCheck(VkCommandBuffer cmd, const FrameRecords& r,
-                                  const WorkLayout& layout) {
+void TileFrame::Impl::recordCheck(VkCommandBuffer cmd, const TileFrameRecords& r,
+                                  const TileWorkLayout& layout) {
   computeBarrier(cmd);  // the resolve stage counts too
   expected = Expected{std::uint64_t{r.jobs} * kTileJobLanes, r.triangles > 0 ? r.jobs : 0};
   const VkBufferCopy back{layout.countersAt, 0, kTileCounters * 4};
@@ -683,8 +394,8 @@ void TileFrame::Impl::checkCounters() {
 
 // The captured draw's set-up triangles, its epoch's job lists and its window vertices, copied
 // back and handed to the capture's sink.
-void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
-                                    const WorkLayout& layout) {
+void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const TileFrameRecords& r,
+                                    const TileWorkLayout& layout) {
   const auto [drawIndex, epochIndex] = *r.captured;
   const TileDrawSource d = r.draws[drawIndex];
   const TileEpoch e = r.epochs[epochIndex];
@@ -695,8 +406,8 @@ void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
                      kTileWindowVertexBytes
                : 0;
   const CommandRecorder::Staged out = recorder.results(
-      bytes + windowBytes, [d, e, bytes, layout, windowBytes,
-                            sink = std::move(capture->sink)](const std::uint8_t* data) {
+      bytes + windowBytes,
+      [d, e, bytes, layout, windowBytes, sink = std::move(captureSink)](const std::uint8_t* data) {
         const auto word = [&](VkDeviceSize at) {
           std::uint32_t v = 0;
           std::memcpy(&v, data + at, 4);
@@ -704,21 +415,22 @@ void TileFrame::Impl::recordCapture(VkCommandBuffer cmd, const FrameRecords& r,
         };
         TileDrawCapture c;
         c.firstTriangle = d.firstTriangle;
-        for (std::uint32_t i = 0; i < d.triangleCount * kTileWordsPerTriangle; ++i)
-          c.triangleWords.push_back(
-              word((VkDeviceSize{d.firstTriangle} * kTileWordsPerTriangle + i) * 4));
+        c.triangles.resize(d.triangleCount);
+        std::memcpy(c.triangles.data(),
+                    data + VkDeviceSize{d.firstTriangle} * sizeof(TileSetUpTriangle),
+                    c.triangles.size() * sizeof(TileSetUpTriangle));
         c.gridOrigin[0] = e.gridOrigin[0];
         c.gridOrigin[1] = e.gridOrigin[1];
         c.gridWidth = e.gridWidth;
         c.gridHeight = e.gridHeight;
         for (std::uint32_t b = 0; b < e.gridWidth * e.gridHeight; ++b) {
           const VkDeviceSize at = VkDeviceSize{e.firstJob + b} * 4;
-          const std::uint32_t n = word(layout.countsAt + at);
+          const std::uint32_t n = word(layout.binEntriesAt + at);
           const std::uint32_t first = word(layout.offsetsAt + at);
-          const bool overflowed = VkDeviceSize{first} + n > layout.pairCapacity;
+          const bool overflowed = VkDeviceSize{first} + n > layout.entryCapacity;
           std::vector<std::uint32_t> list;
           for (std::uint32_t i = 0; i < n && !overflowed; ++i)
-            list.push_back(word(layout.pairsAt + (VkDeviceSize{first} + i) * 4));
+            list.push_back(word(layout.listsAt + (VkDeviceSize{first} + i) * 4));
           c.overflowed.push_back(overflowed);
           c.jobLists.push_back(std::move(list));
         }
@@ -768,22 +480,24 @@ TileFrame::~TileFrame() = default;
 
 std::uint32_t TileFrame::addTarget(VkBuffer framebuffer, int width, int height) {
   Impl& f = *impl_;
-  Impl::Target target{true, f.context.address(framebuffer), static_cast<std::uint32_t>(width),
-                      static_cast<std::uint32_t>(height)};
-  for (std::uint32_t t = 0; t < f.targets.size(); ++t) {
-    if (!f.targets[t].live && f.commands[t].empty()) {
-      f.targets[t] = target;
+  TileRecorded::Target target{true, f.context.address(framebuffer),
+                              static_cast<std::uint32_t>(width),
+                              static_cast<std::uint32_t>(height)};
+  TileRecorded& r = f.recorded;
+  for (std::uint32_t t = 0; t < r.targets.size(); ++t) {
+    if (!r.targets[t].live && r.commands[t].empty()) {
+      r.targets[t] = target;
       return t;
     }
   }
-  f.targets.push_back(target);
-  f.commands.emplace_back();
-  return static_cast<std::uint32_t>(f.targets.size() - 1);
+  r.targets.push_back(target);
+  r.commands.emplace_back();
+  return static_cast<std::uint32_t>(r.targets.size() - 1);
 }
 
 void TileFrame::removeTarget(std::uint32_t target) {
-  impl_->targets.at(target).live = false;
-  impl_->commands.at(target).clear();
+  impl_->recorded.targets.at(target).live = false;
+  impl_->recorded.commands.at(target).clear();
 }
 
 void TileFrame::clearDepth(std::uint32_t target, const PixelRect& scissor, std::uint32_t q) {
@@ -792,7 +506,7 @@ void TileFrame::clearDepth(std::uint32_t target, const PixelRect& scissor, std::
 
 void TileFrame::clearStencil(std::uint32_t target, const PixelRect& scissor, std::uint8_t value,
                              std::uint8_t writeMask) {
-  Impl::Pending& p = impl_->add(target, TileCommandKind::ClearStencil, scissor);
+  TileRecorded::Pending& p = impl_->add(target, TileCommandKind::ClearStencil, scissor);
   p.command.value = value;
   p.command.clearMask = writeMask;
 }
@@ -801,7 +515,7 @@ void TileFrame::draw(std::uint32_t target, const raster::RenderState& state,
                      const TileVertices& vertices, VkDeviceAddress indices,
                      std::uint32_t triangles) {
   Impl& f = *impl_;
-  Impl::Pending& p = f.add(target, TileCommandKind::Draw, state.scissor);
+  TileRecorded::Pending& p = f.add(target, TileCommandKind::Draw, state.scissor);
   putState(state, p.command);
   p.command.count = triangles;
   p.indices = indices;
@@ -816,15 +530,15 @@ void TileFrame::draw(std::uint32_t target, const raster::RenderState& state,
       return;
     }
   }
-  p.vertexJob = static_cast<int>(f.vertexJobs.size());
-  f.vertexJobs.push_back(vertices);
+  p.vertexJob = static_cast<int>(f.recorded.vertexJobs.size());
+  f.recorded.vertexJobs.push_back(vertices);
   if (vertices.contentKey != 0)
     f.vertexJobOfKey[vertices.contentKey] = p.vertexJob;
 }
 
 void TileFrame::read(std::uint32_t target, const PixelRect& rect, TileReadForm form,
                      VkBuffer destination, VkDeviceSize offset) {
-  Impl::Pending& p = impl_->add(target, TileCommandKind::Read, rect);
+  TileRecorded::Pending& p = impl_->add(target, TileCommandKind::Read, rect);
   p.command.readForm = form;
   p.destination = destination;
   p.destinationOffset = offset;
@@ -840,15 +554,16 @@ void TileFrame::boxes(const std::vector<BoxRequest>& blocks, VkBuffer destinatio
           " the box stage takes within this driver's loop limit of " +
           std::to_string(impl_->context.loopLimit()) + " iterations an invocation");
   impl_->recorder.open();
-  impl_->boxBatches.push_back({blocks, destination, offset});
+  impl_->recorded.boxBatches.push_back({blocks, destination, offset});
 }
 
 void TileFrame::captureLastDraw(std::uint32_t target, std::function<void(TileDrawCapture)> sink) {
   Impl& f = *impl_;
-  const std::vector<Impl::Pending>& list = f.commands.at(target);
+  const std::vector<TileRecorded::Pending>& list = f.recorded.commands.at(target);
   for (std::size_t c = list.size(); c > 0; --c) {
     if (list[c - 1].command.kind == TileCommandKind::Draw) {
-      f.capture = Impl::Capture{target, c - 1, std::move(sink)};
+      f.recorded.captured = std::make_pair(target, c - 1);
+      f.captureSink = std::move(sink);
       return;
     }
   }

@@ -37,6 +37,7 @@
 
 #include "recode/raster/render_state_device.hpp"
 #include "tile_frame_layout.hpp"
+#include "tile_frame_records.hpp"
 #include "vulkan_context.hpp"
 
 namespace recode::backends::detail {
@@ -44,21 +45,10 @@ namespace recode::backends::detail {
 class CommandRecorder;
 class TilePipelines;
 
-// Where a draw's window vertices come from: a buffer of them (by address), or a posed mesh whose
-// object-space vertices the vertex stage takes to the window with `transform` (23 doubles:
-// tile_vertex.comp). Draws of one content key (not 0) in one frame share one vertex job.
-struct TileVertices {
-  VkDeviceAddress window = 0;  // three floats a vertex; 0 for a posed mesh
-  VkDeviceAddress local = 0;   // three doubles a vertex
-  std::uint32_t vertexCount = 0;
-  std::array<double, kTileTransformDoubles> transform{};
-  std::uint64_t contentKey = 0;
-};
-
 // What the stages made of one draw, copied back for tests (VulkanComputeDevice::DrawStages):
-// the words of its set-up triangles, its epoch's grid and each job's list, in frame numbering.
+// its set-up triangles, its epoch's grid and each job's list, in frame numbering.
 struct TileDrawCapture {
-  std::vector<std::uint32_t> triangleWords;  // kTileWordsPerTriangle a triangle of the draw
+  std::vector<TileSetUpTriangle> triangles;
   std::int32_t gridOrigin[2] = {0, 0};
   std::uint32_t gridWidth = 0;
   std::uint32_t gridHeight = 0;
@@ -93,11 +83,7 @@ class TileFrame {
             VkBuffer destination, VkDeviceSize offset);
   // Posed blocks' world boxes (eight doubles each: min, max, the order-matters flag, 0) copied to
   // `destination` from `offset` after the box stage.
-  struct BoxRequest {
-    VkDeviceAddress local = 0;
-    std::uint32_t vertexCount = 0;
-    std::array<double, kTilePoseDoubles> pose{};
-  };
+  using BoxRequest = TileBoxRequest;
   void boxes(const std::vector<BoxRequest>& blocks, VkBuffer destination, VkDeviceSize offset);
   // The last draw recorded on `target` is copied back after the frame and handed to `sink`.
   void captureLastDraw(std::uint32_t target, std::function<void(TileDrawCapture)> sink);

@@ -1,7 +1,8 @@
 #pragma once
 // The frame's records as the host writes them: the mirror of tile_common.glsl's structs (std430,
 // every field a 32-bit word, addresses as two words, low first). Field names and order are the
-// shader's; the sizes are checked here, the order by the stages' tests.
+// shader's; the sizes are checked here, and every field's offset against the stages' SPIR-V by
+// tests/backends/vulkan/tile_frame_layout_test.cpp.
 
 #include <cstddef>
 #include <cstdint>
@@ -10,9 +11,7 @@
 
 namespace recode::backends::detail {
 
-// Words of a set-up triangle, doubles of a vertex job's transform (tile_vertex.comp) and of a
-// box job's pose (tile_box.comp).
-inline constexpr std::uint32_t kTileWordsPerTriangle = 16;
+// Doubles of a vertex job's transform (tile_vertex.comp) and of a box job's pose (tile_box.comp).
 inline constexpr std::uint32_t kTileTransformDoubles = 23;
 inline constexpr std::uint32_t kTilePoseDoubles = 12;
 
@@ -61,14 +60,28 @@ inline constexpr std::uint32_t kTileCounters = 4;
 inline constexpr std::uint32_t kTileEpochLoads = 1;
 inline constexpr std::uint32_t kTileEpochStores = 2;
 
-// A set-up triangle's words (tile_common.glsl's kTriangle...; kTileWordsPerTriangle in all).
-enum TileTriangleWord : std::size_t {
-  kTriangleX0 = 0,          // 0-5: snapped X0, Y0, X1, Y1, X2, Y2 as int bits
-  kTriangleFront = 6,       // 1 front-facing, 0 back-facing
-  kTriangleCandidates = 7,  // 7-10: candidate pixels x0, y0, x1, y1 (empty: draws nothing)
-  kTriangleZ0 = 11,         // z0's float bits
-  kTriangleSlopes = 12,     // 12-13: dzdx's double bits, low word first; 14-15: dzdy's
+// A set-up triangle (tile_common.glsl's SetUpTriangle, which the set-up stage writes and the
+// binning and raster stages read; the host reads it back for tests). The offsets asserted below
+// are std430's for the shader's fields.
+struct TileSetUpTriangle {
+  std::int32_t x0 = 0;  // the snapped vertices (24.8 fixed point)
+  std::int32_t y0 = 0;
+  std::int32_t x1 = 0;
+  std::int32_t y1 = 0;
+  std::int32_t x2 = 0;
+  std::int32_t y2 = 0;
+  std::uint32_t front = 0;                    // 1 front-facing, 0 back-facing
+  std::int32_t candidates[4] = {0, 0, 0, 0};  // x0, y0, x1, y1, half-open (empty: draws nothing)
+  std::uint32_t z0 = 0;                       // z0's float bits
+  std::uint32_t dzdx[2] = {0, 0};             // the slopes' double bits, low word first
+  std::uint32_t dzdy[2] = {0, 0};
 };
+static_assert(sizeof(TileSetUpTriangle) == 64);
+static_assert(offsetof(TileSetUpTriangle, front) == 24);
+static_assert(offsetof(TileSetUpTriangle, candidates) == 28);
+static_assert(offsetof(TileSetUpTriangle, z0) == 44);
+static_assert(offsetof(TileSetUpTriangle, dzdx) == 48);  // a uvec2: 8-aligned in std430
+static_assert(offsetof(TileSetUpTriangle, dzdy) == 56);
 
 struct TileAddress {
   std::uint32_t low = 0;

@@ -128,23 +128,19 @@ struct VulkanComputeDevice::Impl {
     s.gridY0 = c.gridOrigin[1];
     s.gridWidth = static_cast<int>(c.gridWidth);
     s.gridHeight = static_cast<int>(c.gridHeight);
-    const std::size_t count = c.triangleWords.size() / detail::kTileWordsPerTriangle;
-    for (std::size_t t = 0; t < count; ++t) {
-      const std::uint32_t* w = c.triangleWords.data() + t * detail::kTileWordsPerTriangle;
+    for (const detail::TileSetUpTriangle& w : c.triangles) {
       SetUpTriangle tri;
-      for (std::size_t k = 0; k < 6; ++k)
-        tri.fixed[k] = static_cast<std::int32_t>(w[detail::kTriangleX0 + k]);
-      tri.frontFacing = w[detail::kTriangleFront] != 0;
-      const std::uint32_t* box = w + detail::kTriangleCandidates;
-      tri.candidates = {static_cast<int>(box[0]), static_cast<int>(box[1]),
-                        static_cast<int>(box[2]), static_cast<int>(box[3])};
-      std::memcpy(&tri.z0, w + detail::kTriangleZ0, 4);
-      std::memcpy(&tri.dzdx, w + detail::kTriangleSlopes, 8);
-      std::memcpy(&tri.dzdy, w + detail::kTriangleSlopes + 2, 8);
+      const std::int32_t fixed[6] = {w.x0, w.y0, w.x1, w.y1, w.x2, w.y2};
+      std::memcpy(tri.fixed, fixed, sizeof fixed);
+      tri.frontFacing = w.front != 0;
+      tri.candidates = {w.candidates[0], w.candidates[1], w.candidates[2], w.candidates[3]};
+      std::memcpy(&tri.z0, &w.z0, 4);
+      std::memcpy(&tri.dzdx, w.dzdx, 8);
+      std::memcpy(&tri.dzdy, w.dzdy, 8);
       s.triangles.push_back(tri);
     }
     // The job lists hold every draw of the epoch: this draw's entries, in its own numbering.
-    const std::uint32_t end = c.firstTriangle + static_cast<std::uint32_t>(count);
+    const std::uint32_t end = c.firstTriangle + static_cast<std::uint32_t>(c.triangles.size());
     for (std::size_t b = 0; b < c.jobLists.size(); ++b) {
       std::vector<std::uint32_t> list;
       for (const std::uint32_t t : c.jobLists[b])

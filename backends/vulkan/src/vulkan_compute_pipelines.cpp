@@ -56,39 +56,45 @@ TilePipelines::TilePipelines(const VulkanContext& context) {
   resolve = createStage(k_tile_resolve_comp, "tile_resolve");
 }
 
-void TilePipelines::bind(VkCommandBuffer cmd, VkPipeline pipeline,
-                         std::initializer_list<TileBuffer> buffers,
-                         const TileFrameConstants& constants) const {
+void TilePipelines::pushBuffers(VkCommandBuffer cmd, std::span<const TileBuffer> buffers) const {
   std::array<VkDescriptorBufferInfo, kTileBindings> infos{};
   std::array<VkWriteDescriptorSet, kTileBindings> writes{};
-  std::uint32_t n = 0;
+  std::array<bool, kTileBindings> given{};
   for (const TileBuffer& b : buffers) {
+    const auto n = static_cast<std::uint32_t>(b.binding);
+    if (n >= kTileBindings || given[n])
+      throw std::logic_error("TilePipelines: binding " + std::to_string(n) + " given twice");
+    given[n] = true;
     infos[n] = {b.buffer, b.offset, b.range};
     writes[n].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    writes[n].dstBinding = static_cast<std::uint32_t>(b.binding);
+    writes[n].dstBinding = n;
     writes[n].descriptorCount = 1;
     writes[n].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     writes[n].pBufferInfo = &infos[n];
-    ++n;
   }
+  for (std::uint32_t n = 0; n < kTileBindings; ++n)
+    if (!given[n])
+      throw std::logic_error("TilePipelines: no buffer for binding " + std::to_string(n));
+  push_(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, kTileBindings, writes.data());
+}
+
+void TilePipelines::bind(VkCommandBuffer cmd, VkPipeline pipeline,
+                         const TileFrameConstants& constants) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-  push_(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, n, writes.data());
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants, &constants);
 }
 
 void TilePipelines::dispatch(VkCommandBuffer cmd, VkPipeline pipeline,
-                             std::initializer_list<TileBuffer> buffers,
                              const TileFrameConstants& constants, std::uint32_t groupsX,
                              std::uint32_t groupsY) const {
-  bind(cmd, pipeline, buffers, constants);
+  bind(cmd, pipeline, constants);
   vkCmdDispatch(cmd, groupsX, groupsY, 1);
 }
 
 void TilePipelines::dispatchIndirect(VkCommandBuffer cmd, VkPipeline pipeline,
-                                     std::initializer_list<TileBuffer> buffers,
                                      const TileFrameConstants& constants, VkBuffer args,
                                      VkDeviceSize offset) const {
-  bind(cmd, pipeline, buffers, constants);
+  bind(cmd, pipeline, constants);
   vkCmdDispatchIndirect(cmd, args, offset);
 }
 
@@ -100,15 +106,6 @@ std::pair<std::uint32_t, std::uint32_t> TilePipelines::groupGrid(std::uint64_t g
 
 std::pair<std::uint32_t, std::uint32_t> TilePipelines::linearGroups(std::uint64_t count) {
   return groupGrid((count + 63) / 64);
-}
-
-void TilePipelines::dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
-                                   std::initializer_list<TileBuffer> buffers,
-                                   const TileFrameConstants& constants, std::uint64_t count) const {
-  if (count == 0)
-    return;
-  const auto [perRow, rows] = linearGroups(count);
-  dispatch(cmd, pipeline, buffers, constants, perRow, rows);
 }
 
 const TilePipelines& tilePipelines() {

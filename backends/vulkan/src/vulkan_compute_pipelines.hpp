@@ -1,14 +1,15 @@
 #pragma once
 // The compute device's pipelines (shaders/compute/, docs/backends.md "The compute device"): the
 // stages of a frame (tile_frame.hpp): boxes, vertex, set-up, scan, scatter, sort, raster,
-// resolve. All share one pipeline layout: twenty-one storage buffers bound by push descriptors
-// (VK_KHR_push_descriptor), so a dispatch names its buffers as it is recorded and no descriptor set
-// outlives it, and the `Frame` push constants of tile_common.glsl.
+// resolve. All share one pipeline layout: twenty-four storage buffers bound by push descriptors
+// (VK_KHR_push_descriptor), each at a binding of its own, pushed once a frame for every stage
+// (binding another pipeline of the same layout keeps them), and the `Frame` push constants of
+// tile_common.glsl.
 
 #include <vulkan/vulkan_core.h>
 
 #include <cstdint>
-#include <initializer_list>
+#include <span>
 #include <utility>
 
 #include "tile_frame_layout.hpp"
@@ -20,29 +21,34 @@ class VulkanContext;
 // The bindings of the shared layout (tile_frame_inputs.glsl and the stages declare the same
 // numbers; tile_frame_layout.hpp has the records).
 enum class TileBinding : std::uint32_t {
-  Targets = 0,     // TileTarget a device's framebuffer
-  Epochs = 1,      // TileEpoch
-  Commands = 2,    // TileCommand
-  Draws = 3,       // TileDrawSource
-  VertexJobs = 4,  // TileVertexJob
-  Transforms = 5,  // doubles: 23 a vertex job's transform, or 12 a box job's pose
-  Triangles = 6,   // set-up triangles, kTileWordsPerTriangle words each
-  BinCounts = 7,   // triangles a job's list holds
-  BinOffsets = 8,
-  BinCursors = 9,
-  Pairs = 10,          // the jobs' lists, one after the other
-  JobFinal = 11,       // 64 words a job: its pixels at the end of its epoch
-  ReadArena = 12,      // the reads' words, before they are copied to their destinations
-  ResolveRanges = 13,  // TileResolveRange
-  BoxJobs = 14,        // TileBoxJob
-  Boxes = 15,          // eight doubles a box job
-  LaterEpochs = 16,    // the resolve ranges' later epochs
-  Progress = 17,       // where a job suspended at its budget goes on (raster, sort)
-  Carry = 18,          // 64 words a job: a suspended raster job's pixels
-  Counters = 19,       // what the stages did (tile_common.glsl's kCounter...), checked by the host
-  RoundArgs = 20,      // three words a round: the indirect dispatch of a stage's next round
+  Targets = 0,          // TileTarget a device's framebuffer
+  Epochs = 1,           // TileEpoch
+  Commands = 2,         // TileCommand
+  Draws = 3,            // TileDrawSource
+  VertexJobs = 4,       // TileVertexJob
+  Transforms = 5,       // kTileTransformDoubles doubles a vertex job
+  Triangles = 6,        // TileSetUpTriangle
+  BinEntries = 7,       // entries of a job's list: triangles that may cover a centre of its block
+  BinOffsets = 8,       // a job's first entry in Lists
+  BinCursors = 9,       // the scatter's next free entry of a job's list
+  Lists = 10,           // the jobs' lists, one after another: frame triangle indices
+  JobFinal = 11,        // 64 words a job: its pixels at the end of its epoch
+  ReadArena = 12,       // the reads' words, before they are copied to their destinations
+  ResolveRanges = 13,   // TileResolveRange
+  BoxJobs = 14,         // TileBoxJob
+  Boxes = 15,           // eight doubles a box job
+  LaterEpochs = 16,     // the resolve ranges' later epochs
+  RasterProgress = 17,  // where a raster job suspended at its budget goes on
+  Carry = 18,           // 64 words a job: a suspended raster job's pixels
+  Counters = 19,        // what the stages did (tile_common.glsl's kCounter...), checked by the host
+  RasterRoundArgs = 20,  // three words a round: the indirect dispatch of the raster's next round
+  Poses = 21,            // kTilePoseDoubles doubles a box job
+  SortProgress = 22,     // where a sort job suspended at its budget goes on
+  SortRoundArgs = 23,    // three words a round: the indirect dispatch of the sort's next round
 };
-inline constexpr std::uint32_t kTileBindings = 21;
+inline constexpr std::uint32_t kTileBindings = 24;
+// Every binding is pushed at once: within the smallest maxPushDescriptors a driver may have.
+static_assert(kTileBindings <= 32);
 
 // The push constants, in the layout of tile_common.glsl's `Frame`: one set for every stage of
 // a frame.
@@ -53,7 +59,7 @@ struct TileFrameConstants {
   std::uint32_t drawCount = 0;
   std::uint32_t jobCount = 0;
   std::uint32_t epochCount = 0;
-  std::uint32_t pairCapacity = 0;
+  std::uint32_t entryCapacity = 0;
   std::uint32_t resolvePixels = 0;
   std::uint32_t resolveRanges = 0;
   std::uint32_t boxJobs = 0;
@@ -94,30 +100,25 @@ class TilePipelines {
   VkPipeline raster = VK_NULL_HANDLE;
   VkPipeline resolve = VK_NULL_HANDLE;
 
-  // Binds `pipeline`, pushes `buffers` and `constants`, and dispatches `groups` workgroups.
-  void dispatch(VkCommandBuffer cmd, VkPipeline pipeline, std::initializer_list<TileBuffer> buffers,
-                const TileFrameConstants& constants, std::uint32_t groupsX,
-                std::uint32_t groupsY) const;
-  // The same for `count` invocations of a 64-wide stage that reads linearInvocation(): rows of
-  // at most 65535 workgroups. Nothing when count is 0.
-  void dispatchLinear(VkCommandBuffer cmd, VkPipeline pipeline,
-                      std::initializer_list<TileBuffer> buffers,
-                      const TileFrameConstants& constants, std::uint64_t count) const;
-  // `groups` workgroups (at least one) as rows of at most 65535 (x) and the rows (y), which
-  // linearWorkgroup() numbers back; and the workgroups dispatchLinear makes for `count`
-  // invocations of a 64-wide stage.
-  [[nodiscard]] static std::pair<std::uint32_t, std::uint32_t> groupGrid(std::uint64_t groups);
-  [[nodiscard]] static std::pair<std::uint32_t, std::uint32_t> linearGroups(std::uint64_t count);
-  // The same as dispatch, with the workgroup counts read from `args` at `offset` (three words)
-  // when the dispatch runs.
+  // Pushes `buffers`, one at each binding, for every stage recorded after it on `cmd`. Throws
+  // std::logic_error when a binding is missing or given twice.
+  void pushBuffers(VkCommandBuffer cmd, std::span<const TileBuffer> buffers) const;
+  // Binds `pipeline`, pushes `constants`, and dispatches `groups` workgroups.
+  void dispatch(VkCommandBuffer cmd, VkPipeline pipeline, const TileFrameConstants& constants,
+                std::uint32_t groupsX, std::uint32_t groupsY) const;
+  // The same, with the workgroup counts read from `args` at `offset` (three words) when the
+  // dispatch runs.
   void dispatchIndirect(VkCommandBuffer cmd, VkPipeline pipeline,
-                        std::initializer_list<TileBuffer> buffers,
                         const TileFrameConstants& constants, VkBuffer args,
                         VkDeviceSize offset) const;
+  // `groups` workgroups (at least one) as rows of at most 65535 (x) and the rows (y), which
+  // linearWorkgroup() numbers back; and the workgroups `count` invocations of a 64-wide stage
+  // that reads linearInvocation() take.
+  [[nodiscard]] static std::pair<std::uint32_t, std::uint32_t> groupGrid(std::uint64_t groups);
+  [[nodiscard]] static std::pair<std::uint32_t, std::uint32_t> linearGroups(std::uint64_t count);
 
  private:
-  void bind(VkCommandBuffer cmd, VkPipeline pipeline, std::initializer_list<TileBuffer> buffers,
-            const TileFrameConstants& constants) const;
+  void bind(VkCommandBuffer cmd, VkPipeline pipeline, const TileFrameConstants& constants) const;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   PFN_vkCmdPushDescriptorSetKHR push_ = nullptr;

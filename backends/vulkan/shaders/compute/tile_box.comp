@@ -4,12 +4,11 @@
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_buffer_reference_uvec2 : require
 // The frame's box stage: posed blocks' world boxes (raster/posed_boxes.hpp), one workgroup a
-// block (BoxJob): every vertex to
-// world by the pose as the vertex stage does (docs/rasterization.md section 2.1: each operation
-// `precise`, in the contract's order), then per axis the smallest and largest coordinate, a
-// stride of the vertices an invocation and a tree over the workgroup. A minimum or maximum of
-// doubles that are neither NaN nor zero is the same bits in any order; a box whose extreme is a
-// zero, or that met a NaN, is flagged for the host to make again in its own order.
+// block (BoxJob): every vertex to world by the pose as the vertex stage does (tile_common.glsl's
+// poseVertex), then per axis the smallest and largest coordinate, a stride of the vertices an
+// invocation and a tree over the workgroup. A minimum or maximum of doubles that are neither NaN
+// nor zero is the same bits in any order; a box whose extreme is a zero, or that met a NaN, is
+// flagged for the host to make again in its own order.
 
 layout(local_size_x = 64) in;
 
@@ -17,7 +16,7 @@ layout(local_size_x = 64) in;
 
 layout(std430, set = 0, binding = 14) readonly buffer BoxJobs { BoxJob boxJobs[]; };
 // Twelve doubles a block: its pose's linear part row by row, then its translation.
-layout(std430, set = 0, binding = 5) readonly buffer Poses { double poses[]; };
+layout(std430, set = 0, binding = 21) readonly buffer Poses { double poses[]; };
 layout(std430, set = 0, binding = 15) writeonly buffer Boxes { double boxes[]; };
 
 shared double lows[3][64];
@@ -33,20 +32,18 @@ void main() {
   const uint vertices = job.vertexCount;
   const uint lane = gl_LocalInvocationID.x;
   const uint p = 12u * job.pose;
+  const dvec3 x = dvec3(poses[p], poses[p + 1u], poses[p + 2u]);
+  const dvec3 y = dvec3(poses[p + 3u], poses[p + 4u], poses[p + 5u]);
+  const dvec3 z = dvec3(poses[p + 6u], poses[p + 7u], poses[p + 8u]);
+  const dvec3 t = dvec3(poses[p + 9u], poses[p + 10u], poses[p + 11u]);
   const double infinity = int64BitsToDouble(0x7FF0000000000000l);
   dvec3 low = dvec3(infinity);
   dvec3 high = dvec3(-infinity);
   bool nan = false;
   for (uint v = lane; v < vertices; v += 64u) {
-    const double p0 = localData.values[3u * v];
-    const double p1 = localData.values[3u * v + 1u];
-    const double p2 = localData.values[3u * v + 2u];
-    precise double wx = ((poses[p] * p0 + poses[p + 1u] * p1) + poses[p + 2u] * p2) + poses[p + 9u];
-    precise double wy =
-        ((poses[p + 3u] * p0 + poses[p + 4u] * p1) + poses[p + 5u] * p2) + poses[p + 10u];
-    precise double wz =
-        (poses[p + 6u] * p0 + (poses[p + 7u] * p1 + poses[p + 8u] * p2)) + poses[p + 11u];
-    const dvec3 w = dvec3(wx, wy, wz);
+    const dvec3 w = poseVertex(x, y, z, t,
+                               dvec3(localData.values[3u * v], localData.values[3u * v + 1u],
+                                     localData.values[3u * v + 2u]));
     for (int k = 0; k < 3; ++k) {
       if (isnan(w[k])) {
         nan = true;

@@ -22,7 +22,7 @@ layout(push_constant) uniform Frame {
   uint drawCount;
   uint jobCount;       // (epoch, 8x8 block) jobs
   uint epochCount;
-  uint pairCapacity;   // entries the bins' list holds
+  uint entryCapacity;  // entries the jobs' lists hold in all (Lists)
   uint resolvePixels;  // pixels the resolve stage visits, over every range
   uint resolveRanges;
   uint boxJobs;        // posed blocks whose world boxes the box stage makes
@@ -53,10 +53,16 @@ const uint kCounterSortedJobs = 1u;     // jobs whose lists the sort stage left 
 const uint kCounterScatterShort = 2u;   // scatter invocations whose loop ended early
 const uint kCounterResolveShort = 3u;   // resolve invocations whose loop ended early
 
+// Memory the records point at by address: a framebuffer, a draw's window vertices and indices, a
+// posed mesh's object-space vertices.
 layout(buffer_reference, std430, buffer_reference_align = 4) buffer PixelWords { uint pixels[]; };
-layout(buffer_reference, std430, buffer_reference_align = 4) buffer FloatWords { float values[]; };
+layout(buffer_reference, std430, buffer_reference_align = 4) buffer FloatWords {
+  float values[];
+};
 layout(buffer_reference, std430, buffer_reference_align = 4) buffer IndexWords { uint indices[]; };
-layout(buffer_reference, std430, buffer_reference_align = 8) buffer DoubleWords { double values[]; };
+layout(buffer_reference, std430, buffer_reference_align = 8) buffer DoubleWords {
+  double values[];
+};
 
 // A device's framebuffer.
 struct Target {
@@ -79,7 +85,7 @@ const uint kReadStencilBytes = 1u;
 const uint kReadDepthFloats = 2u;
 
 struct Command {
-  ivec4 rect;   // x0, y0, x1, y1: a draw's or clear's scissor, a read's rectangle (inside the target)
+  ivec4 rect;   // x0, y0, x1, y1 inside the target: a draw's or clear's scissor, a read's rectangle
   uint kind;
   uint target;
   uint tests;   // a draw's depth and stencil funcs, depth write, cull: see the decoders below
@@ -183,18 +189,19 @@ struct BoxJob {
   uint pose;
 };
 
-const uint kWordsPerTriangle = 16u;
-// A set-up triangle's words (Triangles[]):
-//  0-5   snapped X0, Y0, X1, Y1, X2, Y2 (24.8 fixed point, |value| <= 2^23) as int bits
-//  6     1 front-facing, 0 back-facing
-//  7-10  candidate pixels inside the scissor, half-open x0, y0, x1, y1 (empty: draws nothing)
-//  11    z0's float bits
-//  12-13 dzdx's double bits, low word first; 14-15 dzdy's
-const uint kTriangleX0 = 0u;
-const uint kTriangleFront = 6u;
-const uint kTriangleCandidates = 7u;
-const uint kTriangleZ0 = 11u;
-const uint kTriangleSlopes = 12u;
+// A set-up triangle (Triangles[]): what the set-up stage makes of a triangle for the binning and
+// raster stages. Scalars and two-word vectors only, so that std430 lays it out as 16 words with
+// no padding, as the host's TileSetUpTriangle (whose layout a test reads from these shaders'
+// SPIR-V).
+struct SetUpTriangle {
+  int x0, y0, x1, y1, x2, y2;  // the snapped vertices (24.8 fixed point, |value| <= 2^23)
+  uint front;                  // 1 front-facing, 0 back-facing
+  int candidates[4];  // candidate pixels inside the scissor, half-open x0, y0, x1, y1 (empty:
+                      // draws nothing; the only words a culled triangle's record is given)
+  uint z0;            // z0's float bits
+  uvec2 dzdx;         // the depth plane's slopes as double bits, low word first
+  uvec2 dzdy;
+};
 
 // Sets `result` to the last index k below `count` whose array[k].field <= key, for records sorted
 // by `field` with array[0].field <= key: the binary search that finds a frame index's record (a
@@ -224,6 +231,17 @@ uint depthOf(uint word) {
 
 uint stencilOf(uint word) {
   return word & 0xFFu;
+}
+
+// A vertex posed to world (raster/vertex_stage.hpp's poseVertex, docs/rasterization.md section
+// 2.1): rows x and y ((l0 p0 + l1 p1) + l2 p2) + t, row z (l0 p0 + (l1 p1 + l2 p2)) + t, each
+// operation `precise`, for a pose's linear part row by row (`x`, `y`, `z`) and its translation
+// `t`. The vertex and box stages both pose by it, so a box holds the vertices the draws use.
+dvec3 poseVertex(dvec3 x, dvec3 y, dvec3 z, dvec3 t, dvec3 p) {
+  precise double wx = ((x[0] * p[0] + x[1] * p[1]) + x[2] * p[2]) + t[0];
+  precise double wy = ((y[0] * p[0] + y[1] * p[1]) + y[2] * p[2]) + t[1];
+  precise double wz = (z[0] * p[0] + (z[1] * p[1] + z[2] * p[2])) + t[2];
+  return dvec3(wx, wy, wz);
 }
 
 // Pixel (row, column) of a job's 8x8 block in an array of 64 words a job (JobFinal, Carry).

@@ -9,10 +9,10 @@
 // that may cover a centre of the block, in index order). Eight invocations take a job, one a
 // column of its pixels; a workgroup of 64 takes eight jobs side by side (one a SIMD bundle of 8
 // lanes on a CPU driver, two of 16, so a bundle's loop count is at most two jobs' own). Jobs of
-// different epochs never share a pixel's state, so every
-// job of the frame runs at once. Per triangle, an invocation works out its column's part once
-// and steps down the rows the triangle's candidates reach, with the same operations in the same
-// order as section 5 and 7 of docs/rasterization.md:
+// different epochs never share a pixel's state, so every job of the frame runs at once. Per
+// triangle (its SetUpTriangle), an invocation works out its column's part once and steps down
+// the rows the triangle's candidates reach, with the same operations in the same order as
+// sections 5 and 7 of docs/rasterization.md:
 //   coverage: each edge function E = dx (Yc - Ya) - dy (Xc - Xa) at the first row, then plus
 //   256 dx a row (exact 64-bit integers), covered when E > 0 or E = 0 on an inclusive edge (4);
 //   depth: z = (z0 + tx) + ty with tx = dzdx (Xc - X0) for the column and ty = dzdy (Yc - Y0)
@@ -23,10 +23,10 @@
 //
 // Rounds: a job is charged kWorkUnit for each command and each triangle it draws; one that would
 // pass Frame.rasterBudget (a CPU driver's loop limit, tile_frame_budgets.hpp) stops between two
-// of them, keeps its pixels in Carry and its place in Progress, and asks for the next round (its
-// indirect dispatch in RoundArgs), which carries on from there: the same operations in the same
-// order, cut into pieces a driver runs in full. Every column that reaches its job's end with each
-// loop left at its own test counts itself in Counters, which the host checks.
+// of them, keeps its pixels in Carry and its place in RasterProgress, and asks for the next round
+// (its indirect dispatch in RasterRoundArgs), which carries on from there: the same operations in
+// the same order, cut into pieces a driver runs in full. Every column that reaches its job's end
+// with each loop left at its own test counts itself in Counters, which the host checks.
 
 layout(local_size_x = 64) in;
 
@@ -34,22 +34,29 @@ layout(local_size_x = 64) in;
 #include "tile_common.glsl"
 #include "tile_frame_inputs.glsl"
 #include "tile_block_test.glsl"
-#include "tile_rounds.glsl"
 
-// The set-up triangles (tile_common.glsl's layout) read four words at a time.
-layout(std430, set = 0, binding = 6) readonly buffer Triangles { uvec4 triangles[]; };
-layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint binCounts[]; };
+// Read field by field. Against four uvec4 loads a record (the words named only in comments),
+// on lavapipe with comb-translate-offset (12 alternating pairs of runs of 6 to 12 frames on a
+// shared 2-core machine), the field reads' raster stage took 0.60 to 3.05 times as long, median
+// 1.18: within the noise of one binary's own runs (up to 3x), so the named fields stay. On a
+// GPU the wide loads are untimed (scripts/gpu-check.sh prints stage_ms_raster).
+layout(std430, set = 0, binding = 6) readonly buffer Triangles { SetUpTriangle triangles[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BinEntries { uint binEntries[]; };
 layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint binOffsets[]; };
-layout(std430, set = 0, binding = 10) readonly buffer Pairs { uint pairs[]; };
+layout(std430, set = 0, binding = 10) readonly buffer Lists { uint lists[]; };
 layout(std430, set = 0, binding = 11) writeonly buffer JobFinal { uint jobFinal[]; };
 layout(std430, set = 0, binding = 12) buffer ReadArena { uint readArena[]; };
 // Where a suspended job goes on: the round that goes on with it, the command it stopped at, its
 // list cursor and, on a draw from every triangle, its next triangle. Two sets of jobCount
 // records: round r reads set r % 2 (written in round r - 1) and writes the other, so no column
 // reads its job's record while another column of it writes that record.
-layout(std430, set = 0, binding = 17) buffer Progress { uvec4 progress[]; };
+layout(std430, set = 0, binding = 17) buffer RasterProgress { uvec4 progress[]; };
 layout(std430, set = 0, binding = 18) buffer Carry { uint carry[]; };  // 64 words a job
 layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
+// The rounds' indirect dispatches, three words a round (tile_rounds.glsl).
+layout(std430, set = 0, binding = 20) buffer RasterRoundArgs { uint roundArgs[]; };
+
+#include "tile_rounds.glsl"
 
 // The state comes from each draw's command, so the compiler cannot take it as uniform: both
 // functions are selects, not switches, which a CPU driver's SIMD code would run case by case.
@@ -126,18 +133,16 @@ int64_t biasedEdge(i64vec2 a, i64vec2 b, int64_t xc, int64_t yc) {
 
 // Frame triangle t's fragments in this column.
 void shade(uint t) {
-  const uvec4 rectWords = triangles[4u * t + 1u];  // X2, Y2, front, x0
-  const uvec4 moreWords = triangles[4u * t + 2u];  // y0, x1, y1, z0
   // Its candidate rows in this block (the candidates lie inside the scissor).
-  const int rowStart = max(int(moreWords.x), firstRow);
-  const int rowEnd = min(int(moreWords.z), firstRow + 8);
-  if (rowStart >= rowEnd || column < int(rectWords.w) || column >= int(moreWords.y))
+  const int rowStart = max(triangles[t].candidates[1], firstRow);
+  const int rowEnd = min(triangles[t].candidates[3], firstRow + 8);
+  if (rowStart >= rowEnd || column < triangles[t].candidates[0] ||
+      column >= triangles[t].candidates[2])
     return;
-  const uvec4 vertexWords = triangles[4u * t];  // X0, Y0, X1, Y1
-  const i64vec2 v0 = i64vec2(ivec2(vertexWords.xy));
-  const i64vec2 v1 = i64vec2(ivec2(vertexWords.zw));
-  const i64vec2 v2 = i64vec2(ivec2(rectWords.xy));
-  const bool front = rectWords.z != 0u;
+  const i64vec2 v0 = i64vec2(triangles[t].x0, triangles[t].y0);
+  const i64vec2 v1 = i64vec2(triangles[t].x1, triangles[t].y1);
+  const i64vec2 v2 = i64vec2(triangles[t].x2, triangles[t].y2);
+  const bool front = triangles[t].front != 0u;
   // Counter-clockwise: (v0, v1, v2) when front-facing, (v0, v2, v1) when back-facing.
   const i64vec2 p1 = front ? v1 : v2;
   const i64vec2 p2 = front ? v2 : v1;
@@ -149,10 +154,9 @@ void shade(uint t) {
   const int64_t step0 = (p1.x - v0.x) * 256l;
   const int64_t step1 = (p2.x - p1.x) * 256l;
   const int64_t step2 = (v0.x - p2.x) * 256l;
-  const double z0 = double(uintBitsToFloat(moreWords.w));
-  const uvec4 slopeWords = triangles[4u * t + 3u];
-  const double dzdx = packDouble2x32(slopeWords.xy);
-  const double dzdy = packDouble2x32(slopeWords.zw);
+  const double z0 = double(uintBitsToFloat(triangles[t].z0));
+  const double dzdx = packDouble2x32(triangles[t].dzdx);
+  const double dzdy = packDouble2x32(triangles[t].dzdy);
   precise double tx = dzdx * double(xc - v0.x);
   precise double zx = z0 + tx;  // the plane's column part, as CpuDevice keeps it per block
   const uint ops = front ? frontOps : backOps;
@@ -244,8 +248,8 @@ void loadPixels(uint j, Epoch epoch, Target target, PixelWords framebuffer, bool
 }
 
 // Stops job j where it is (command ci, list cursor, next triangle t of a draw from every
-// triangle) for the next round: this column's pixels to Carry, the place to Progress (the same
-// in every column), and the next round's dispatch asked for.
+// triangle) for the next round: this column's pixels to Carry, the place to RasterProgress (the
+// same in every column), and the next round's dispatch asked for.
 void suspend(uint j, uint ci, uint cursor, uint t) {
   const uint lane = gl_LocalInvocationID.x & 7u;
   int k = 0;
@@ -280,7 +284,7 @@ void storePixels(uint j, Epoch epoch, Target target, PixelWords framebuffer) {
 // Runs job j, this invocation's column of it, from where an earlier round left it, until its
 // end or its budget.
 void runJob(uint j) {
-  // Progress is read only from the second round on: in the first (the only one where the
+  // RasterProgress is read only from the second round on: in the first (the only one where the
   // budget is unbounded) its buffer may hold no record a job.
   const bool resumed = frame.round > 0u;
   uvec4 place = uvec4(0u);
@@ -298,8 +302,8 @@ void runJob(uint j) {
   firstRow = epoch.gridOrigin.y + int((block / epoch.gridWidth) * 8u);
   loadPixels(j, epoch, target, framebuffer, resumed);
   uint cursor = resumed ? place.z : binOffsets[j];
-  const uint listEnd = binOffsets[j] + binCounts[j];
-  const bool overflowed = listEnd > frame.pairCapacity;
+  const uint listEnd = binOffsets[j] + binEntries[j];
+  const bool overflowed = listEnd > frame.entryCapacity;
   uint ci = resumed ? place.y : epoch.firstCommand;
   bool midCommand = resumed;  // the first command was begun (and charged) in an earlier round
   for (; ci < epoch.commandEnd; ++ci) {
@@ -325,14 +329,14 @@ void runJob(uint j) {
         cut = cut || t < drawEnd;
       } else {
         // The list is in frame order, which is command order: this draw's entries are next.
-        for (; cursor < listEnd && pairs[cursor] < drawEnd; ++cursor) {
+        for (; cursor < listEnd && lists[cursor] < drawEnd; ++cursor) {
           if (!affords()) {
             suspend(j, ci, cursor, 0u);
             return;
           }
-          shade(pairs[cursor]);
+          shade(lists[cursor]);
         }
-        cut = cut || (cursor < listEnd && pairs[cursor] < drawEnd);
+        cut = cut || (cursor < listEnd && lists[cursor] < drawEnd);
       }
     } else if (c.kind == kRead) {
       read(c);

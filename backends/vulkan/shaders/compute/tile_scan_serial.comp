@@ -13,16 +13,16 @@ layout(local_size_x = 1) in;
 
 #include "tile_common.glsl"
 
-layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint blockCounts[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer BinOffsets { uint blockOffsets[]; };
-layout(std430, set = 0, binding = 9) writeonly buffer BinCursors { uint blockCursors[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BinEntries { uint binEntries[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer BinOffsets { uint binOffsets[]; };
+layout(std430, set = 0, binding = 9) writeonly buffer BinCursors { uint binCursors[]; };
 
 void main() {
-  const uint blocks = frame.jobCount;
+  const uint jobs = frame.jobCount;
   uint offset = 0u;
-  for (uint b = 0u; b < blocks; ++b) {
-    blockOffsets[b] = offset;
-    blockCursors[b] = offset;
-    offset += blockCounts[b];
+  for (uint j = 0u; j < jobs; ++j) {
+    binOffsets[j] = offset;
+    binCursors[j] = offset;
+    offset += binEntries[j];
   }
 }

@@ -22,10 +22,10 @@ layout(local_size_x = 64) in;
 #include "tile_frame_inputs.glsl"
 #include "tile_block_test.glsl"
 
-layout(std430, set = 0, binding = 6) readonly buffer Triangles { uint triangles[]; };
-layout(std430, set = 0, binding = 7) buffer BinCounts { uint binCounts[]; };
+layout(std430, set = 0, binding = 6) readonly buffer Triangles { SetUpTriangle triangles[]; };
+layout(std430, set = 0, binding = 7) buffer BinEntries { uint binEntries[]; };
 layout(std430, set = 0, binding = 9) buffer BinCursors { uint binCursors[]; };
-layout(std430, set = 0, binding = 10) writeonly buffer Pairs { uint pairs[]; };
+layout(std430, set = 0, binding = 10) writeonly buffer Lists { uint lists[]; };
 layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
 
 void main() {
@@ -34,18 +34,17 @@ void main() {
   const uint chunk = invocation % frame.scatterChunks;
   if (t >= frame.triangleCount)
     return;
-  const uint base = t * kWordsPerTriangle;
-  const int x0 = int(triangles[base + kTriangleCandidates + 0u]);
-  const int y0 = int(triangles[base + kTriangleCandidates + 1u]);
-  const int x1 = int(triangles[base + kTriangleCandidates + 2u]);
-  const int y1 = int(triangles[base + kTriangleCandidates + 3u]);
+  const int x0 = triangles[t].candidates[0];
+  const int y0 = triangles[t].candidates[1];
+  const int x1 = triangles[t].candidates[2];
+  const int y1 = triangles[t].candidates[3];
   if (x0 >= x1 || y0 >= y1)
     return;
   const Epoch epoch = epochs[draws[drawOfTriangle(t)].epoch];
-  const i64vec2 v0 = i64vec2(int(triangles[base + 0u]), int(triangles[base + 1u]));
-  const i64vec2 v1 = i64vec2(int(triangles[base + 2u]), int(triangles[base + 3u]));
-  const i64vec2 v2 = i64vec2(int(triangles[base + 4u]), int(triangles[base + 5u]));
-  const bool front = triangles[base + kTriangleFront] != 0u;
+  const i64vec2 v0 = i64vec2(triangles[t].x0, triangles[t].y0);
+  const i64vec2 v1 = i64vec2(triangles[t].x1, triangles[t].y1);
+  const i64vec2 v2 = i64vec2(triangles[t].x2, triangles[t].y2);
+  const bool front = triangles[t].front != 0u;
   const i64vec2 p1 = front ? v1 : v2;
   const i64vec2 p2 = front ? v2 : v1;
   const uvec2 first = blockOf(epoch, x0, y0);
@@ -62,11 +61,11 @@ void main() {
       continue;
     const uint job = epoch.firstJob + b.y * epoch.gridWidth + b.x;
     if (frame.binPass == 0u) {
-      atomicAdd(binCounts[job], 1u);
+      atomicAdd(binEntries[job], 1u);
     } else {
       const uint slot = atomicAdd(binCursors[job], 1u);
-      if (slot < frame.pairCapacity)
-        pairs[slot] = t;
+      if (slot < frame.entryCapacity)
+        lists[slot] = t;
     }
   }
   if (k < end)

@@ -16,7 +16,7 @@ layout(local_size_x = 64) in;
 #include "tile_common.glsl"
 #include "tile_frame_inputs.glsl"
 
-layout(std430, set = 0, binding = 6) writeonly buffer Triangles { uint triangles[]; };
+layout(std430, set = 0, binding = 6) writeonly buffer Triangles { SetUpTriangle triangles[]; };
 
 FloatWords vertexData;
 
@@ -27,9 +27,10 @@ i64vec2 snapped(uint v) {
   return i64vec2(roundToNearestEven(x), roundToNearestEven(y));
 }
 
-void writeEmpty(uint base) {
+// Triangle t draws nothing: its candidates empty, its other words never read.
+void writeEmpty(uint t) {
   for (uint k = 0u; k < 4u; ++k)
-    triangles[base + kTriangleCandidates + k] = 0u;
+    triangles[t].candidates[k] = 0;
 }
 
 void main() {
@@ -41,7 +42,6 @@ void main() {
   vertexData = FloatWords(source.vertices);
   IndexWords indexData = IndexWords(source.indices);
   const uint local = t - source.firstTriangle;
-  const uint base = t * kWordsPerTriangle;
   const uint i0 = indexData.indices[3u * local];
   const uint i1 = indexData.indices[3u * local + 1u];
   const uint i2 = indexData.indices[3u * local + 2u];
@@ -52,7 +52,7 @@ void main() {
   const bool front = area > 0l;
   const uint cull = cullModeOf(command);
   if (area == 0l || (cull == 1u && front) || (cull == 2u && !front)) {
-    writeEmpty(base);
+    writeEmpty(t);
     return;
   }
   // Pixels whose centres (256 i + 128) lie in the snapped bounding box, then the scissor.
@@ -66,28 +66,24 @@ void main() {
   const int y0 = max(int((minY + 127l) >> 8), scissor.y);
   const int y1 = min(int(((maxY - 128l) >> 8) + 1l), scissor.w);
   if (x0 >= x1 || y0 >= y1) {
-    writeEmpty(base);
+    writeEmpty(t);
     return;
   }
-  triangles[base + kTriangleX0 + 0u] = uint(int(v0.x));
-  triangles[base + kTriangleX0 + 1u] = uint(int(v0.y));
-  triangles[base + kTriangleX0 + 2u] = uint(int(v1.x));
-  triangles[base + kTriangleX0 + 3u] = uint(int(v1.y));
-  triangles[base + kTriangleX0 + 4u] = uint(int(v2.x));
-  triangles[base + kTriangleX0 + 5u] = uint(int(v2.y));
-  triangles[base + kTriangleFront] = front ? 1u : 0u;
-  triangles[base + kTriangleCandidates + 0u] = uint(x0);
-  triangles[base + kTriangleCandidates + 1u] = uint(y0);
-  triangles[base + kTriangleCandidates + 2u] = uint(x1);
-  triangles[base + kTriangleCandidates + 3u] = uint(y1);
+  triangles[t].x0 = int(v0.x);
+  triangles[t].y0 = int(v0.y);
+  triangles[t].x1 = int(v1.x);
+  triangles[t].y1 = int(v1.y);
+  triangles[t].x2 = int(v2.x);
+  triangles[t].y2 = int(v2.y);
+  triangles[t].front = front ? 1u : 0u;
+  triangles[t].candidates[0] = x0;
+  triangles[t].candidates[1] = y0;
+  triangles[t].candidates[2] = x1;
+  triangles[t].candidates[3] = y1;
   const vec3 z = vec3(vertexData.values[3u * i0 + 2u], vertexData.values[3u * i1 + 2u],
                       vertexData.values[3u * i2 + 2u]);
   const dvec2 slopes = depthSlopes(v0, v1, v2, z);
-  triangles[base + kTriangleZ0] = floatBitsToUint(z.x);
-  const uvec2 dzdx = unpackDouble2x32(slopes.x);
-  const uvec2 dzdy = unpackDouble2x32(slopes.y);
-  triangles[base + kTriangleSlopes + 0u] = dzdx.x;
-  triangles[base + kTriangleSlopes + 1u] = dzdx.y;
-  triangles[base + kTriangleSlopes + 2u] = dzdy.x;
-  triangles[base + kTriangleSlopes + 3u] = dzdy.y;
+  triangles[t].z0 = floatBitsToUint(z.x);
+  triangles[t].dzdx = unpackDouble2x32(slopes.x);
+  triangles[t].dzdy = unpackDouble2x32(slopes.y);
 }

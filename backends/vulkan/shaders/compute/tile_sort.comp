@@ -17,21 +17,24 @@
 layout(local_size_x = 64) in;
 
 #include "tile_common.glsl"
-#include "tile_rounds.glsl"
 
-layout(std430, set = 0, binding = 7) readonly buffer BinCounts { uint blockCounts[]; };
-layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint blockOffsets[]; };
-layout(std430, set = 0, binding = 10) buffer Pairs { uint pairs[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BinEntries { uint binEntries[]; };
+layout(std430, set = 0, binding = 8) readonly buffer BinOffsets { uint binOffsets[]; };
+layout(std430, set = 0, binding = 10) buffer Lists { uint lists[]; };
 // A suspended job's round to go on in and its next step (written and read by its one lane).
-layout(std430, set = 0, binding = 17) buffer SortProgress { uvec2 sortProgress[]; };
+layout(std430, set = 0, binding = 22) buffer SortProgress { uvec2 sortProgress[]; };
 layout(std430, set = 0, binding = 19) buffer Counters { uint counters[]; };
+// The rounds' indirect dispatches, three words a round (tile_rounds.glsl).
+layout(std430, set = 0, binding = 23) buffer SortRoundArgs { uint roundArgs[]; };
+
+#include "tile_rounds.glsl"
 
 // Whether a loop of this invocation ended other than at its own test (a driver's loop limit).
 bool cut = false;
 
-// Moves the entry at `root` down the max-heap pairs[offset, offset + n) until it is in place.
+// Moves the entry at `root` down the max-heap lists[offset, offset + n) until it is in place.
 void siftDown(uint offset, uint root, uint n) {
-  const uint value = pairs[offset + root];
+  const uint value = lists[offset + root];
   uint at = root;
   bool settled = false;
   for (;;) {
@@ -40,16 +43,16 @@ void siftDown(uint offset, uint root, uint n) {
       settled = true;
       break;
     }
-    if (child + 1u < n && pairs[offset + child + 1u] > pairs[offset + child])
+    if (child + 1u < n && lists[offset + child + 1u] > lists[offset + child])
       child += 1u;
-    if (pairs[offset + child] <= value) {
+    if (lists[offset + child] <= value) {
       settled = true;
       break;
     }
-    pairs[offset + at] = pairs[offset + child];
+    lists[offset + at] = lists[offset + child];
     at = child;
   }
-  pairs[offset + at] = value;
+  lists[offset + at] = value;
   cut = cut || !settled;
 }
 
@@ -62,33 +65,33 @@ void sortStep(uint offset, uint n, uint s) {
     return;
   }
   const uint end = n - 1u - (s - builds);
-  const uint largest = pairs[offset];
-  pairs[offset] = pairs[offset + end];
-  pairs[offset + end] = largest;
+  const uint largest = lists[offset];
+  lists[offset] = lists[offset + end];
+  lists[offset + end] = largest;
   siftDown(offset, 0u, end);
 }
 
 void main() {
-  const uint block = linearInvocation();
-  if (block >= frame.jobCount)
+  const uint job = linearInvocation();
+  if (job >= frame.jobCount)
     return;
   uint step = 0u;
   if (frame.round > 0u) {
-    const uvec2 place = sortProgress[block];
+    const uvec2 place = sortProgress[job];
     if (place.x != frame.round)
       return;  // sorted in an earlier round
     step = place.y;
   }
-  const uint n = blockCounts[block];
-  const uint offset = blockOffsets[block];
-  if (n >= 2u && offset + n <= frame.pairCapacity) {
+  const uint n = binEntries[job];
+  const uint offset = binOffsets[job];
+  if (n >= 2u && offset + n <= frame.entryCapacity) {
     const uint steps = n / 2u + n - 1u;
     // A sift walks at most findMSB(n) + 1 levels; the step's own loop test is one more.
     const uint stepCost = uint(findMSB(n)) + 2u;
     uint spent = 0u;
     for (; step < steps; ++step) {
       if (spent + stepCost > frame.sortBudget) {
-        sortProgress[block] = uvec2(frame.round + 1u, step);
+        sortProgress[job] = uvec2(frame.round + 1u, step);
         askNextRound();
         return;
       }

@@ -4,12 +4,13 @@
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_buffer_reference_uvec2 : require
 // The frame's vertex stage (docs/rasterization.md section 2.1, raster/vertex_stage.hpp), one
-// invocation a vertex of every posed mesh the frame draws (VertexJob): the block's object-space vertex to world by the pose, to window by the
-// view's mapping, x and y snapped to the 1/256-pixel grid and z rounded to float. Every double
-// operation is `precise` and in the contract's order; the divisions are correctly rounded
-// (exact_contract.glsl) and the rounding to float is done on the bits, so no driver's
-// accuracy or denormal handling enters. The source promised that every vertex maps inside
-// the window's range (TriangleSource::posedMesh), so nothing here checks.
+// invocation a vertex of every posed mesh the frame draws (VertexJob): the block's object-space
+// vertex to world by the pose (tile_common.glsl's poseVertex), to window by the view's mapping,
+// x and y snapped to the 1/256-pixel grid and z rounded to float. Every double operation is
+// `precise` and in the contract's order; the divisions are correctly rounded
+// (exact_contract.glsl) and the rounding to float is done on the bits, so no driver's accuracy
+// or denormal handling enters. The source promised that every vertex maps inside the window's
+// range (TriangleSource::posedMesh), so nothing here checks.
 
 layout(local_size_x = 64) in;
 
@@ -74,7 +75,8 @@ float nearestFloat(double v) {
   const uint64_t kept = significand >> uint(shift);
   const uint64_t rest = significand & ((1ul << uint(shift)) - 1ul);
   const uint64_t halfway = 1ul << uint(shift - 1);
-  uint64_t rounded = kept + ((rest > halfway || (rest == halfway && (kept & 1ul) != 0ul)) ? 1ul : 0ul);
+  const bool up = rest > halfway || (rest == halfway && (kept & 1ul) != 0ul);
+  uint64_t rounded = kept + (up ? 1ul : 0ul);
   // Normal: the exponent above the 23 stored bits (a carry out of them raises it by one).
   // Denormal: the kept bits are the whole encoding (a carry makes the smallest normal).
   if (floatExponent >= 1)
@@ -91,14 +93,10 @@ void main() {
   transformAt = 23u * job.transform;
   DoubleWords localData = DoubleWords(job.local);
   FloatWords vertexData = FloatWords(job.windows);
-  const double p0 = localData.values[3u * i];
-  const double p1 = localData.values[3u * i + 1u];
-  const double p2 = localData.values[3u * i + 2u];
-  // poseVertex: rows x and y ((l0 p0 + l1 p1) + l2 p2) + t, row z (l0 p0 + (l1 p1 + l2 p2)) + t.
-  precise double wx = ((T(0) * p0 + T(1) * p1) + T(2) * p2) + T(9);
-  precise double wy = ((T(3) * p0 + T(4) * p1) + T(5) * p2) + T(10);
-  precise double wz = (T(6) * p0 + (T(7) * p1 + T(8) * p2)) + T(11);
-  const dvec3 world = dvec3(wx, wy, wz);
+  const dvec3 local = dvec3(localData.values[3u * i], localData.values[3u * i + 1u],
+                            localData.values[3u * i + 2u]);
+  const dvec3 world = poseVertex(dvec3(T(0), T(1), T(2)), dvec3(T(3), T(4), T(5)),
+                                 dvec3(T(6), T(7), T(8)), dvec3(T(9), T(10), T(11)), local);
   const double u = world[int(T(20))];
   const double v = world[int(T(21))];
   const double d = world[int(T(22))];
