@@ -15,8 +15,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
-#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -25,60 +25,31 @@
 #include <vector>
 
 #include "arrays.hpp"
-#include "bind_batch.hpp"
 #include "bindings.hpp"
 #include "devices.hpp"
 #include "recode/api/collision.hpp"
 
 namespace recode::python {
 
-std::mutex& poolMutex(const DevicePool& pool) {
-  static std::mutex guard;
-  static auto& locks = *new std::map<const DevicePool*, std::mutex>();
-  const std::lock_guard<std::mutex> lock(guard);
-  return locks[&pool];
-}
-
 namespace {
 
 constexpr double kQuaternionTolerance = 1e-6;
 
-std::string shapeText(const py::array& a) {
-  std::ostringstream s;
-  s << '(';
-  for (py::ssize_t i = 0; i < a.ndim(); ++i)
-    s << (i ? ", " : "") << a.shape(i);
-  s << (a.ndim() == 1 ? ",)" : ")");
-  return s.str();
-}
-
-std::string shapeText(const std::vector<py::ssize_t>& shape) {
-  std::ostringstream s;
-  s << '(';
-  for (std::size_t i = 0; i < shape.size(); ++i)
-    s << (i ? ", " : "") << shape[i];
-  s << (shape.size() == 1 ? ",)" : ")");
-  return s.str();
-}
-
-py::array arrayOf(const py::handle& object, const std::string& what) {
-  py::array a = py::array::ensure(object);
-  if (!a)
-    throw py::type_error(what + ": expected an array (a NumPy array or nested lists), got " +
-                         py::str(py::type::of(object)).cast<std::string>());
-  return a;
-}
-
-std::string indexText(const std::vector<py::ssize_t>& shape, std::size_t flat) {
-  std::vector<py::ssize_t> index(shape.size());
-  for (std::size_t d = shape.size(); d-- > 0;) {
-    index[d] = static_cast<py::ssize_t>(flat % static_cast<std::size_t>(shape[d]));
-    flat /= static_cast<std::size_t>(shape[d]);
+// The pose of a row x, y, z, qx, qy, qz, qw (a unit quaternion within kQuaternionTolerance).
+Eigen::Isometry3d poseFromRow(const double* p, const NameOf& what) {
+  const Eigen::Quaterniond q(p[6], p[3], p[4], p[5]);  // Eigen's order: w, x, y, z
+  const double norm = q.norm();
+  if (std::abs(norm - 1.0) > kQuaternionTolerance) {
+    std::ostringstream s;
+    s << what() << ": the quaternion (qx, qy, qz, qw) = (" << p[3] << ", " << p[4] << ", " << p[5]
+      << ", " << p[6] << ") has norm " << norm << "; it must be a unit quaternion (within "
+      << kQuaternionTolerance << ")";
+    throw py::value_error(s.str());
   }
-  std::string s;
-  for (std::size_t d = 0; d < index.size(); ++d)
-    s += (d ? ", " : "") + std::to_string(index[d]);
-  return s;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = q.normalized().toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
+  return pose;
 }
 
 // Poses from an array of 4 x 4 matrices (..., 4, 4) or of rows (..., 7): translation x, y, z,
@@ -89,12 +60,7 @@ struct Poses {
 };
 
 Poses posesFrom(const py::handle& object, const std::string& what) {
-  py::array raw = arrayOf(object, what);
-  const char kind = raw.dtype().kind();
-  if (kind != 'f' && kind != 'i' && kind != 'u')
-    throw py::type_error(what + ": expected real numbers, got dtype " +
-                         py::str(raw.dtype()).cast<std::string>());
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(raw);
+  const RealArray a = realArray(object, what);
   const py::ssize_t n = a.ndim();
   const bool matrices = n >= 3 && a.shape(n - 1) == 4 && a.shape(n - 2) == 4;
   const bool rows = n >= 2 && a.shape(n - 1) == 7;
@@ -110,53 +76,16 @@ Poses posesFrom(const py::handle& object, const std::string& what) {
   for (const py::ssize_t s : out.shape)
     count *= static_cast<std::size_t>(s);
   out.poses.resize(count);
-  const double* data = a.data();
   const std::size_t stride = matrices ? 16 : 7;
   for (std::size_t i = 0; i < count; ++i) {
-    const double* p = data + i * stride;
-    const std::string at = what + "[" + indexText(out.shape, i) + "]";
+    const double* p = a.data() + i * stride;
+    // Named only for an error: a batch may have millions of poses.
+    const auto at = [&] { return what + "[" + indexText(out.shape, i) + "]"; };
     for (std::size_t k = 0; k < stride; ++k)
       if (!std::isfinite(p[k]))
-        throw py::value_error(at + " has " + py::str(py::float_(p[k])).cast<std::string>() +
+        throw py::value_error(at() + " has " + py::str(py::float_(p[k])).cast<std::string>() +
                               ": pose entries must be finite");
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    if (matrices) {
-      if (p[12] != 0.0 || p[13] != 0.0 || p[14] != 0.0 || p[15] != 1.0) {
-        std::ostringstream s;
-        s << at << ": the last row is [" << p[12] << ", " << p[13] << ", " << p[14] << ", " << p[15]
-          << "], it must be [0, 0, 0, 1] (a rigid motion)";
-        throw py::value_error(s.str());
-      }
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c)
-          pose.matrix()(r, c) = p[4 * r + c];
-      const Eigen::Matrix3d rot = pose.linear();
-      const double off =
-          (rot.transpose() * rot - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-      if (off > kRotationTolerance) {
-        std::ostringstream s;
-        s << at << ": the upper-left 3 x 3 block is not a rotation: R^T R differs from the "
-          << "identity by " << off << " (at most " << kRotationTolerance
-          << " allowed; poses are rigid motions)";
-        throw py::value_error(s.str());
-      }
-      if (rot.determinant() < 0.0)
-        throw py::value_error(at + ": the upper-left 3 x 3 block is a reflection (determinant " +
-                              std::to_string(rot.determinant()) + "), not a rotation");
-    } else {
-      const Eigen::Quaterniond q(p[6], p[3], p[4], p[5]);  // Eigen's order: w, x, y, z
-      const double norm = q.norm();
-      if (std::abs(norm - 1.0) > kQuaternionTolerance) {
-        std::ostringstream s;
-        s << at << ": the quaternion (qx, qy, qz, qw) = (" << p[3] << ", " << p[4] << ", " << p[5]
-          << ", " << p[6] << ") has norm " << norm << "; it must be a unit quaternion (within "
-          << kQuaternionTolerance << ")";
-        throw py::value_error(s.str());
-      }
-      pose.linear() = q.normalized().toRotationMatrix();
-      pose.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
-    }
-    out.poses[i] = pose;
+    out.poses[i] = matrices ? rigidMotionFrom(p, at) : poseFromRow(p, at);
   }
   return out;
 }
@@ -177,35 +106,12 @@ std::vector<CollisionObject> objectsFrom(const py::sequence& objects, const std:
 
 std::vector<std::array<std::size_t, 2>> pairsFrom(const py::handle& object,
                                                   std::size_t objectCount) {
-  py::array raw = arrayOf(object, "pairs");
-  const char kind = raw.dtype().kind();
-  if (kind != 'i' && kind != 'u')
-    throw py::type_error("pairs: expected integer indices into objects, got dtype " +
-                         py::str(raw.dtype()).cast<std::string>());
-  if (raw.ndim() != 2 || raw.shape(1) != 2)
-    throw py::value_error("pairs: expected a (K, 2) array of indices into objects, got shape " +
-                          shapeText(raw));
-  const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(raw);
-  const auto u = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(raw);
-  std::vector<std::array<std::size_t, 2>> out(static_cast<std::size_t>(a.shape(0)));
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    for (std::size_t s = 0; s < 2; ++s) {
-      const std::int64_t index = a.data()[2 * k + s];
-      const std::string at = "pairs[" + std::to_string(k) + ", " + std::to_string(s) + "] is ";
-      if (kind == 'i' && index < 0)
-        throw py::value_error(at + std::to_string(index) +
-                              ": indices into objects count from 0 (negative indices are not "
-                              "allowed)");
-      const bool tooLarge = kind == 'u' ? u.data()[2 * k + s] >= objectCount
-                                        : static_cast<std::uint64_t>(index) >= objectCount;
-      if (tooLarge)
-        throw py::value_error(
-            at + (kind == 'u' ? std::to_string(u.data()[2 * k + s]) : std::to_string(index)) +
-            ": there are " + std::to_string(objectCount) + " objects, so indices run from 0 to " +
-            std::to_string(static_cast<long long>(objectCount) - 1));
-      out[k][s] = static_cast<std::size_t>(index);
-    }
-  }
+  const std::vector<std::size_t> indices =
+      indexRows(object, "pairs", 2, "a (K, 2) array of indices into objects",
+                {"indices into objects", "objects", objectCount});
+  std::vector<std::array<std::size_t, 2>> out(indices.size() / 2);
+  for (std::size_t k = 0; k < out.size(); ++k)
+    out[k] = {indices[2 * k], indices[2 * k + 1]};
   return out;
 }
 
@@ -282,18 +188,17 @@ Answer runQuery(std::vector<CollisionObject>& objects, const std::vector<Collisi
   place(a, q.poseA ? q.poseA : &rest[q.a].transform());
   place(b, q.poseB ? q.poseB : &rest[q.b].transform());
   CollisionResult result;
+  const auto run = [&](const CollisionObject& other) {
+    if (pool)
+      collide(a, other, request, result, *pool);
+    else
+      collide(a, other, request, result);
+  };
   try {
-    if (q.a == q.b) {
-      const CollisionObject other = b;  // the same object: a second copy
-      if (pool)
-        collide(a, other, request, result, *pool);
-      else
-        collide(a, other, request, result);
-    } else if (pool) {
-      collide(a, b, request, result, *pool);
-    } else {
-      collide(a, b, request, result);
-    }
+    if (q.a == q.b)
+      run(CollisionObject(b));  // the same object: a second copy
+    else
+      run(b);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("query " + std::to_string(index) + " (objects " +
                                 std::to_string(q.a) + " and " + std::to_string(q.b) +
@@ -308,16 +213,17 @@ std::vector<Answer> runQueries(const std::vector<CollisionObject>& objects,
                                const std::vector<Query>& queries, CollisionRequest request,
                                const std::string& device) {
   std::vector<Answer> answers(queries.size());
-  DevicePool* pool = device == "cpu" ? nullptr : &devicePool(device);
+  SharedPool* shared = device == "cpu" ? nullptr : &devicePool(device);
   const int threads = request.threads;
   py::gil_scoped_release release;
-  if (pool || threads == 1 || queries.size() < 2) {
+  if (shared || threads == 1 || queries.size() < 2) {
     std::unique_lock<std::mutex> lock;
-    if (pool)
-      lock = std::unique_lock<std::mutex>(poolMutex(*pool));
+    if (shared)
+      lock = std::unique_lock<std::mutex>(shared->mutex);
     std::vector<CollisionObject> mine = objects;
     for (std::size_t i = 0; i < queries.size(); ++i)
-      answers[i] = runQuery(mine, objects, queries[i], i, request, pool);
+      answers[i] =
+          runQuery(mine, objects, queries[i], i, request, shared ? &shared->pool : nullptr);
     return answers;
   }
   // The queries are what runs in parallel; each query's block pairs on its own thread.
@@ -432,16 +338,18 @@ BatchResult collidePoses(const CollisionObject& a, const CollisionObject& b,
   const bool hasB = posesB && !posesB->is_none();
   if (!hasA && !hasB)
     throw py::value_error("collide_poses: give poses_a, poses_b or both");
-  Poses pa, pb;
-  if (hasA)
-    pa = posesFrom(*posesA, "poses_a");
-  if (hasB)
-    pb = posesFrom(*posesB, "poses_b");
-  for (const auto* p : {&pa, &pb})
-    if ((p == &pa ? hasA : hasB) && p->shape.size() != 1)
-      throw py::value_error(std::string(p == &pa ? "poses_a" : "poses_b") +
-                            ": expected N poses, (N, 4, 4) or (N, 7); got " + shapeText(p->shape) +
-                            " poses");
+  // N poses of one object, (N, 4, 4) or (N, 7); none when not given.
+  const auto posesOf = [](const std::optional<py::object>& given, bool has, const char* what) {
+    Poses p;
+    if (has)
+      p = posesFrom(*given, what);
+    if (has && p.shape.size() != 1)
+      throw py::value_error(std::string(what) + ": expected N poses, (N, 4, 4) or (N, 7); got " +
+                            shapeText(p.shape) + " poses");
+    return p;
+  };
+  const Poses pa = posesOf(posesA, hasA, "poses_a");
+  const Poses pb = posesOf(posesB, hasB, "poses_b");
   if (hasA && hasB && pa.shape[0] != pb.shape[0])
     throw py::value_error("poses_a and poses_b: expected the same number of poses, got " +
                           std::to_string(pa.shape[0]) + " and " + std::to_string(pb.shape[0]));
