@@ -5,6 +5,7 @@
 // the objects, so every answer is that of recode.collide on the same pair at the same poses. With
 // request.threads other than 1 the queries are spread over oneTBB threads (the pool the C++ API
 // decides block pairs on), each with copies of its own.
+#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -18,6 +19,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -27,6 +29,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "devices.hpp"
+#include "query_watch.hpp"
 #include "recode/api/collision.hpp"
 
 namespace recode::python {
@@ -207,36 +210,66 @@ Answer runQuery(std::vector<CollisionObject>& objects, const std::vector<Collisi
   return answerOf(result);
 }
 
-// Every query without the GIL: in turn on the caller's thread (threads 1, or a device other
-// than cpu, which draws from one thread), else on oneTBB threads with copies of their own.
-std::vector<Answer> runQueries(const std::vector<CollisionObject>& objects,
-                               const std::vector<Query>& queries, CollisionRequest request,
-                               const std::string& device) {
-  std::vector<Answer> answers(queries.size());
-  SharedPool* shared = device == "cpu" ? nullptr : &devicePool(device);
-  const int threads = request.threads;
-  py::gil_scoped_release release;
-  if (shared || threads == 1 || queries.size() < 2) {
-    std::unique_lock<std::mutex> lock;
-    if (shared)
-      lock = std::unique_lock<std::mutex>(shared->mutex);
-    std::vector<CollisionObject> mine = objects;
-    for (std::size_t i = 0; i < queries.size(); ++i)
-      answers[i] =
-          runQuery(mine, objects, queries[i], i, request, shared ? &shared->pool : nullptr);
-    return answers;
+// Every query in turn on the caller's thread (threads 1, or a device other than cpu, which
+// draws from one thread), each taking the device's lock for itself; between queries the watch
+// may take the GIL back (query_watch.hpp), so the lock is not held then.
+void runInTurn(const std::vector<CollisionObject>& objects, const std::vector<Query>& queries,
+               const CollisionRequest& request, SharedPool* shared, QueryWatch& watch,
+               std::vector<Answer>& answers) {
+  std::vector<CollisionObject> mine = objects;
+  for (std::size_t i = 0; i < queries.size() && !watch.stopped(); ++i) {
+    if (shared) {
+      const std::lock_guard<std::mutex> lock(shared->mutex);
+      answers[i] = runQuery(mine, objects, queries[i], i, request, &shared->pool);
+    } else {
+      answers[i] = runQuery(mine, objects, queries[i], i, request, nullptr);
+    }
+    watch.queryDone();
+    watch.poll();
   }
-  // The queries are what runs in parallel; each query's block pairs on its own thread.
+}
+
+// The queries spread over oneTBB threads, each with copies of the objects of its own; each
+// query's block pairs on its thread. The caller's thread runs queries too, and polls the watch
+// between its own; once it is stopped no thread starts another query.
+void runSpread(const std::vector<CollisionObject>& objects, const std::vector<Query>& queries,
+               CollisionRequest request, QueryWatch& watch, std::vector<Answer>& answers) {
+  const int threads = request.threads;
   request.threads = 1;
   const int concurrency = threads > 0 ? std::min(threads, tbb::info::default_concurrency())
                                       : tbb::info::default_concurrency();
   tbb::enumerable_thread_specific<std::vector<CollisionObject>> copies(objects);
   tbb::task_arena arena(concurrency);
   arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, queries.size(), [&](std::size_t i) {
-      answers[i] = runQuery(copies.local(), objects, queries[i], i, request, nullptr);
-    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, queries.size()),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          if (watch.stopped())
+                            return;
+                          answers[i] =
+                              runQuery(copies.local(), objects, queries[i], i, request, nullptr);
+                          watch.queryDone();
+                          watch.poll();
+                        }
+                      });
   });
+}
+
+// Every query without the GIL, Ctrl-C and `progress` heard between queries (query_watch.hpp).
+std::vector<Answer> runQueries(const std::vector<CollisionObject>& objects,
+                               const std::vector<Query>& queries, const CollisionRequest& request,
+                               const std::string& device, const py::object& progress) {
+  std::vector<Answer> answers(queries.size());
+  SharedPool* shared = device == "cpu" ? nullptr : &devicePool(device);
+  QueryWatch watch(progress);
+  {
+    const py::gil_scoped_release release;
+    if (shared || request.threads == 1 || queries.size() < 2)
+      runInTurn(objects, queries, request, shared, watch, answers);
+    else
+      runSpread(objects, queries, request, watch, answers);
+  }
+  watch.finish();
   return answers;
 }
 
@@ -292,8 +325,8 @@ BatchResult resultOf(const std::vector<Answer>& v, const std::vector<py::ssize_t
 
 BatchResult collideBatch(const py::sequence& objectList, const py::handle& pairArray,
                          const std::optional<py::object>& poseArray,
-                         const std::optional<CollisionRequest>& request,
-                         const std::string& device) {
+                         const std::optional<CollisionRequest>& request, const std::string& device,
+                         const py::object& progress) {
   const std::vector<CollisionObject> objects = objectsFrom(objectList, "objects");
   const auto pairs = pairsFrom(pairArray, objects.size());
   Poses poses;
@@ -325,15 +358,15 @@ BatchResult collideBatch(const py::sequence& objectList, const py::handle& pairA
       }
       queries.push_back(q);
     }
-  return resultOf(runQueries(objects, queries, request.value_or(CollisionRequest{}), device),
-                  shape);
+  return resultOf(
+      runQueries(objects, queries, request.value_or(CollisionRequest{}), device, progress), shape);
 }
 
 BatchResult collidePoses(const CollisionObject& a, const CollisionObject& b,
                          const std::optional<py::object>& posesA,
                          const std::optional<py::object>& posesB,
-                         const std::optional<CollisionRequest>& request,
-                         const std::string& device) {
+                         const std::optional<CollisionRequest>& request, const std::string& device,
+                         const py::object& progress) {
   const bool hasA = posesA && !posesA->is_none();
   const bool hasB = posesB && !posesB->is_none();
   if (!hasA && !hasB)
@@ -358,8 +391,9 @@ BatchResult collidePoses(const CollisionObject& a, const CollisionObject& b,
   std::vector<Query> queries(n);
   for (std::size_t i = 0; i < n; ++i)
     queries[i] = {0, 1, hasA ? &pa.poses[i] : nullptr, hasB ? &pb.poses[i] : nullptr};
-  return resultOf(runQueries(objects, queries, request.value_or(CollisionRequest{}), device),
-                  {static_cast<py::ssize_t>(n)});
+  return resultOf(
+      runQueries(objects, queries, request.value_or(CollisionRequest{}), device, progress),
+      {static_cast<py::ssize_t>(n)});
 }
 
 }  // namespace
@@ -405,18 +439,21 @@ void bindBatch(py::module_& m) {
 
   m.def("collide_batch", &collideBatch, py::arg("objects"), py::arg("pairs"),
         py::arg("poses") = py::none(), py::kw_only(), py::arg("request") = py::none(),
-        py::arg("device") = "cpu",
+        py::arg("device") = "cpu", py::arg("progress") = py::none(),
         "Collides objects[pairs[k, 0]] with objects[pairs[k, 1]] for every row k of pairs "
         "(K, 2): at the objects' own poses; at `poses`, one per object, (M, 4, 4) or (M, 7) "
         "rows x, y, z, qx, qy, qz, qw (results (K,)); or at frames of them, (F, M, 4, 4) or "
         "(F, M, 7) (results (F, K)). Runs without the GIL; request.threads other than 1 "
-        "spreads the queries over that many threads (0: all). Returns a BatchResult.");
+        "spreads the queries over that many threads (0: all). Ctrl-C stops it (KeyboardInterrupt "
+        "within a fraction of a second); `progress(n)`, e.g. a tqdm bar's update, is called on "
+        "this thread at most five times a second with the queries done since its last call. "
+        "Returns a BatchResult.");
   m.def("collide_poses", &collidePoses, py::arg("a"), py::arg("b"), py::arg("poses_a") = py::none(),
         py::arg("poses_b") = py::none(), py::kw_only(), py::arg("request") = py::none(),
-        py::arg("device") = "cpu",
+        py::arg("device") = "cpu", py::arg("progress") = py::none(),
         "Collides a with b at N poses: poses_a and/or poses_b (N, 4, 4) or (N, 7) rows x, y, z, "
-        "qx, qy, qz, qw; an object without poses stays at its own. Returns a BatchResult of "
-        "N queries.");
+        "qx, qy, qz, qw; an object without poses stays at its own. Ctrl-C and `progress` as in "
+        "collide_batch. Returns a BatchResult of N queries.");
 }
 
 }  // namespace recode::python
