@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -29,6 +30,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "devices.hpp"
+#include "pickle_state.hpp"
 #include "query_watch.hpp"
 #include "recode/api/collision.hpp"
 
@@ -280,6 +282,43 @@ struct BatchResult {
   std::vector<py::ssize_t> shape;
 };
 
+// The arrays in the order a pickled state holds them.
+constexpr std::array kColumns = {&BatchResult::collide,          &BatchResult::interferingPixels,
+                                 &BatchResult::contactPixels,    &BatchResult::caseCounts,
+                                 &BatchResult::contactBox,       &BatchResult::contactArea,
+                                 &BatchResult::maxDepth,         &BatchResult::normal,
+                                 &BatchResult::penetrationDepth, &BatchResult::blockPairsDrawn,
+                                 &BatchResult::collisionUs};
+constexpr const char* kBatchType = "recode.BatchResult";
+
+// (format, shape, the arrays of kColumns).
+py::tuple batchState(const BatchResult& r) {
+  py::tuple state(kColumns.size() + 2);
+  state[0] = kPickleFormat;
+  state[1] = py::cast(r.shape);
+  for (std::size_t i = 0; i < kColumns.size(); ++i)
+    state[i + 2] = r.*kColumns[i];
+  return state;
+}
+BatchResult batchFromState(const py::tuple& state) {
+  checkState(state, kBatchType, kColumns.size() + 1);
+  BatchResult r;
+  r.shape = stateItem<std::vector<py::ssize_t>>(state[1], kBatchType, "shape");
+  for (std::size_t i = 0; i < kColumns.size(); ++i) {
+    const py::array column = py::array::ensure(state[i + 2]);
+    const auto leading = static_cast<py::ssize_t>(r.shape.size());
+    bool fits = column && column.ndim() >= leading;
+    for (py::ssize_t d = 0; fits && d < leading; ++d)
+      fits = column.shape(d) == r.shape[static_cast<std::size_t>(d)];
+    if (!fits)
+      throw py::value_error(std::string(kBatchType) + ": the pickled state's array " +
+                            std::to_string(i) + " does not have the leading shape " +
+                            shapeText(r.shape));
+    r.*kColumns[i] = column;
+  }
+  return r;
+}
+
 template <class T, class F>
 py::array_t<T> column(const std::vector<Answer>& answers, std::vector<py::ssize_t> shape,
                       std::initializer_list<py::ssize_t> tail, F&& fill) {
@@ -403,6 +442,7 @@ void bindBatch(py::module_& m) {
       m, "BatchResult",
       "The answers of collide_batch or collide_poses as arrays, one entry per query (leading "
       "shape `shape`): what recode.collide returns for the same pair at the same poses.")
+      .def(py::pickle(&batchState, &batchFromState))
       .def_readonly("collide", &BatchResult::collide, "bool: the verdicts.")
       .def_readonly("interfering_pixels", &BatchResult::interferingPixels, "int64.")
       .def_readonly("contact_pixels", &BatchResult::contactPixels, "int64: result.contact.pixels.")

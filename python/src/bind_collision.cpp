@@ -14,8 +14,10 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "devices.hpp"
+#include "pickle_state.hpp"
 #include "recode/api/collision.hpp"
 #include "recode/refine/pair_mode.hpp"
+#include "result_state.hpp"
 
 namespace recode::python {
 
@@ -205,6 +207,39 @@ CollisionResult collideObjects(const CollisionObject& a, const CollisionObject& 
   return result;
 }
 
+constexpr const char* kObjectType = "recode.CollisionObject";
+constexpr const char* kRequestType = "recode.CollisionRequest";
+
+// (format, geometry, pose 4 x 4): the geometry pickles itself (shared shapes stay shared within
+// one pickle).
+py::tuple objectState(const CollisionObject& o) {
+  return makeState(std::const_pointer_cast<CollisionGeometry>(o.geometryPtr()),
+                   matrixOf(o.transform()));
+}
+std::shared_ptr<CollisionObject> objectFromState(const py::tuple& state) {
+  checkState(state, kObjectType, 2);
+  auto geometry = stateItem<std::shared_ptr<CollisionGeometry>>(state[1], kObjectType, "geometry");
+  return std::make_shared<CollisionObject>(std::move(geometry), poseFrom(state[2]));
+}
+
+// (format, pixel size or None, resolution, mor, axis, contact, normal, mode, threads): the
+// constructor's arguments, checked by it again.
+py::tuple requestState(const CollisionRequest& r) {
+  return makeState(r.pixelSize, r.resolution, morName(r.mor), axisName(r.axis), r.contact, r.normal,
+                   std::string(core::toString(r.mode)), r.threads);
+}
+CollisionRequest requestFromState(const py::tuple& state) {
+  checkState(state, kRequestType, 8);
+  return requestFrom(stateItem<std::optional<double>>(state[1], kRequestType, "pixel size"),
+                     stateItem<int>(state[2], kRequestType, "resolution"),
+                     stateItem<std::string>(state[3], kRequestType, "mor"),
+                     stateItem<std::string>(state[4], kRequestType, "axis"),
+                     stateItem<bool>(state[5], kRequestType, "contact"),
+                     stateItem<bool>(state[6], kRequestType, "normal"),
+                     stateItem<std::string>(state[7], kRequestType, "mode"),
+                     stateItem<int>(state[8], kRequestType, "threads"));
+}
+
 void bindObject(py::module_& m) {
   py::class_<CollisionObject, ObjectHolder>(
       m, "CollisionObject",
@@ -224,7 +259,8 @@ void bindObject(py::module_& m) {
                              })
       .def_property_readonly(
           "world_box", [](const CollisionObject& o) { return boxOf(o.worldBox()); },
-          "[[min x, y, z], [max x, y, z]] of the object at its pose.");
+          "[[min x, y, z], [max x, y, z]] of the object at its pose.")
+      .def(py::pickle(&objectState, &objectFromState));
 }
 
 void bindRequest(py::module_& m) {
@@ -265,6 +301,7 @@ void bindRequest(py::module_& m) {
           [](CollisionRequest& r, int n) { r.threads = threadsFrom(n); },
           "Threads a call's block pairs may be decided on, on the CPU device: 1 (default) the "
           "caller's, 0 every hardware thread, N at most N; the results are the same.")
+      .def(py::pickle(&requestState, &requestFromState))
       .def("__repr__", &repr);
 }
 
@@ -357,6 +394,7 @@ void bindBlockContact(py::module_& m) {
 
 void bindResult(py::module_& m) {
   py::class_<CollisionResult>(m, "CollisionResult")
+      .def(py::pickle(&resultState, &resultFromState))
       .def_readonly("collide", &CollisionResult::collide)
       .def("__bool__", [](const CollisionResult& r) { return r.collide; })
       .def_readonly("interfering_pixels", &CollisionResult::interferingPixels)

@@ -15,6 +15,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "errors.hpp"
+#include "pickle_state.hpp"
 #include "recode/api/geometry.hpp"
 #include "recode/geometry/generators.hpp"
 
@@ -113,6 +114,61 @@ GeometryHolder geometryFromObjGroups(const std::filesystem::path& path, bool hul
   return held(CollisionGeometry::fromObjGroups(path, hull));
 }
 
+constexpr const char* kBlockType = "recode.ConvexBlock";
+constexpr const char* kGeometryType = "recode.CollisionGeometry";
+
+// (format, name, vertices (n, 3), faces (m, 3)); made again through fromArrays, so validated.
+py::tuple blockState(const ConvexBlock& block) {
+  return makeState(block.name(), pointsState(block.mesh().vertices), facesOf(block));
+}
+BlockHolder blockFromState(const py::tuple& state) {
+  checkState(state, kBlockType, 3);
+  const std::vector<Eigen::Vector3d> v = pointsFromState(state[2], kBlockType, "vertices");
+  const std::vector<core::Triangle> f = facesFrom(state[3], v.size(), "faces");
+  return held(ConvexBlock::fromArrays(v, f, stateItem<std::string>(state[1], kBlockType, "name")));
+}
+
+// (format, name, single, [blocks], poses (n, 4, 4)): single() and compound() build different
+// trees (a leaf alone, or a root over the leaves), so which one made it is kept.
+py::tuple geometryState(const CollisionGeometry& g) {
+  py::list blocks;
+  py::array_t<double> poses(
+      {static_cast<py::ssize_t>(g.blockCount()), py::ssize_t{4}, py::ssize_t{4}});
+  double* p = poses.mutable_data();
+  for (std::size_t i = 0; i < g.blockCount(); ++i) {
+    blocks.append(held(g.part(i).block));
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        *p++ = g.part(i).pose.matrix()(r, c);
+  }
+  const bool single = g.tree().nodes().size() == 1;
+  return makeState(g.tree().name(), single, blocks, poses);
+}
+GeometryHolder geometryFromState(const py::tuple& state) {
+  checkState(state, kGeometryType, 4);
+  auto name = stateItem<std::string>(state[1], kGeometryType, "name");
+  const bool single = stateItem<bool>(state[2], kGeometryType, "kind");
+  const auto blocks = stateItem<std::vector<BlockHolder>>(state[3], kGeometryType, "blocks");
+  const RealArray poses = realArray(state[4], "poses");
+  if (poses.ndim() != 3 || poses.shape(0) != static_cast<py::ssize_t>(blocks.size()) ||
+      poses.shape(1) != 4 || poses.shape(2) != 4 || (single && blocks.size() != 1))
+    throw py::value_error(std::string(kGeometryType) +
+                          ": the pickled state's poses are not one 4 x 4 matrix per block");
+  std::vector<BlockPart> parts;
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    parts.push_back({blocks[i], rigidMotionFrom(poses.data() + 16 * i, [i] {
+                       return "poses[" + std::to_string(i) + "]";
+                     })});
+  if (single)
+    return held(CollisionGeometry::single(parts.front().block));
+  return held(CollisionGeometry::compound(std::move(parts), std::move(name)));
+}
+
+// Shapes are immutable: a copy, deep or not, is the shape itself.
+py::object itself(const py::object& self, const py::args&) {
+  return self;
+}
+
 void bindConvexBlock(py::module_& m) {
   py::class_<ConvexBlock, BlockHolder>(
       m, "ConvexBlock",
@@ -138,6 +194,9 @@ void bindConvexBlock(py::module_& m) {
           },
           "(n, 3) float64, read-only")
       .def_property_readonly("faces", &facesOf, "(m, 3) uint32 vertex indices (a copy)")
+      .def(py::pickle(&blockState, &blockFromState))
+      .def("__copy__", &itself)
+      .def("__deepcopy__", &itself)
       .def("__repr__", [](const ConvexBlock& b) {
         return "<recode.ConvexBlock '" + b.name() + "': " + std::to_string(b.mesh().vertexCount()) +
                " vertices, " + std::to_string(b.mesh().triangleCount()) + " triangles>";
@@ -199,7 +258,10 @@ void bindCollisionGeometry(py::module_& m) {
       .def(
           "block_pose",
           [](const CollisionGeometry& g, std::size_t i) { return matrixOf(partAt(g, i).pose); },
-          py::arg("index"), "Block `index`'s pose in the object, 4 x 4.");
+          py::arg("index"), "Block `index`'s pose in the object, 4 x 4.")
+      .def(py::pickle(&geometryState, &geometryFromState))
+      .def("__copy__", &itself)
+      .def("__deepcopy__", &itself);
 }
 }
 
