@@ -263,7 +263,6 @@ void bindCollisionGeometry(py::module_& m) {
       .def("__copy__", &itself)
       .def("__deepcopy__", &itself);
 }
-}
 
 }  // namespace
 

@@ -53,7 +53,7 @@ def scene():
     lifted[2, 3] = 1.5
     compound = recode.CollisionGeometry.compound([cube, (cube, lifted)], name="tower")
     lower, upper = cones_tip_to_tip()
-    tower = recode.CollisionObject(compound, translation=[-0.5, -0.5, 0.5])
+    tower = recode.CollisionObject(compound, translation=[-0.5, -0.5, 1.3])
     request = recode.CollisionRequest(pixel_size=0.03, normal=True, mor="full", axis="x")
     return lower, upper, tower, request
 
@@ -97,9 +97,11 @@ def test_objects_geometries_and_blocks_answer_as_the_originals():
     # and shares the shape, as in C++.
     assert copy.deepcopy(hull) is hull and copy.deepcopy(tower.geometry) is tower.geometry
     # Objects sharing a geometry share it again when pickled together.
-    lower2, upper2 = round_trip([lower, upper])
-    geometry = lower2.geometry
-    assert upper2.geometry is geometry and geometry is not lower.geometry
+    shape = recode.CollisionGeometry.single(recode.cone(1.0, 2.0, 16))
+    first, second = recode.CollisionObject(shape), recode.CollisionObject(shape, pose=np.eye(4))
+    first2, second2 = round_trip([first, second])
+    geometry = first2.geometry
+    assert second2.geometry is geometry and geometry is not shape
     moved = copy.deepcopy(lower)
     moved.set_transform(translation=[5, 0, 0])
     assert lower.transform[0, 3] == 0 and moved.geometry is lower.geometry
