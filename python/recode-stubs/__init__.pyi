@@ -17,9 +17,8 @@ _Path = Union[str, os.PathLike[str]]
 # A pose: a 4 x 4 rigid motion [[R, t], [0, 0, 0, 1]] (any array-like of real numbers).
 _Pose = npt.ArrayLike
 _FloatArray = npt.NDArray[np.float64]
-# The pickled state of ConvexBlock, CollisionGeometry, CollisionObject, CollisionRequest,
-# CollisionResult and BatchResult: (format version, arrays, numbers, ...) (docs/api.md#pickling).
-_State = Tuple[object, ...]
+# ConvexBlock, CollisionGeometry, CollisionObject, CollisionRequest, CollisionResult and
+# BatchResult pickle and deep-copy (object's __getstate__/__setstate__; docs/api.md#pickling).
 
 class MeshError(ValueError):
     """A block that is not a valid closed convex block, or a malformed mesh file."""
@@ -39,9 +38,6 @@ def devices() -> List[_DeviceEntry]:
 
 class ConvexBlock:
     """A closed convex block, validated when made (recode.MeshError names the problem)."""
-
-    def __getstate__(self) -> _State: ...
-    def __setstate__(self, state: _State) -> None: ...
 
     @staticmethod
     def from_arrays(vertices: npt.ArrayLike, faces: npt.ArrayLike, name: str = "block") -> ConvexBlock:
@@ -79,9 +75,6 @@ def sphere(radius: float, segments: int = 32, rings: int = 16, name: str = "sphe
 class CollisionGeometry:
     """An object's shape: one or several convex blocks fixed together; shared by objects."""
 
-    def __getstate__(self) -> _State: ...
-    def __setstate__(self, state: _State) -> None: ...
-
     @staticmethod
     def single(block: ConvexBlock) -> CollisionGeometry: ...
     @staticmethod
@@ -101,9 +94,6 @@ class CollisionGeometry:
 class CollisionObject:
     """A shape at a pose (object -> world): a 4 x 4 matrix, or rotation and translation."""
 
-    def __getstate__(self) -> _State: ...
-    def __setstate__(self, state: _State) -> None: ...
-
     def __init__(self, shape: Union[ConvexBlock, CollisionGeometry], pose: Optional[_Pose] = None, *,
                  rotation: Optional[npt.ArrayLike] = None,
                  translation: Optional[npt.ArrayLike] = None) -> None: ...
@@ -121,9 +111,6 @@ class CollisionObject:
 
 class CollisionRequest:
     """What collide() measures and how finely (docs/api.md)."""
-
-    def __getstate__(self) -> _State: ...
-    def __setstate__(self, state: _State) -> None: ...
 
     def __init__(self, *, pixel_size: Optional[float] = None, resolution: int = 256, mor: str = "min",
                  axis: str = "auto", contact: bool = True, normal: bool = False,
@@ -204,8 +191,6 @@ class BlockContact:
     def timing_us(self) -> float: ...
 
 class CollisionResult:
-    def __getstate__(self) -> _State: ...
-    def __setstate__(self, state: _State) -> None: ...
     @property
     def collide(self) -> bool: ...
     def __bool__(self) -> bool: ...
@@ -241,9 +226,6 @@ def collide(a: CollisionObject, b: CollisionObject, request: Optional[CollisionR
 class BatchResult:
     """The answers of collide_batch or collide_poses as arrays, one entry per query (leading
     shape `shape`): what collide() returns for the same pair at the same poses."""
-
-    def __getstate__(self) -> _State: ...
-    def __setstate__(self, state: _State) -> None: ...
 
     @property
     def collide(self) -> npt.NDArray[np.bool_]: ...
