@@ -4,7 +4,8 @@
 // the GIL held; the queries then run without it, each one recode::collide on private copies of
 // the objects, so every answer is that of recode.collide on the same pair at the same poses. With
 // request.threads other than 1 the queries are spread over oneTBB threads (the pool the C++ API
-// decides block pairs on), each with copies of its own.
+// decides block pairs on), each with copies of its own. Between queries the calling thread hears
+// Ctrl-C and reports progress (query_watch.hpp). BatchResult pickles (pickle_state.hpp).
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/info.h>
