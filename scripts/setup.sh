@@ -26,7 +26,7 @@ packages=(
   clang-14 libfuzzer-14-dev
   libfcl-dev libbullet-dev gnuplot-nox
   chromium python3-websocket emscripten
-  pybind11-dev python3-dev python3-numpy python3-pytest doxygen
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed doxygen
   python3-venv python3-pip python3-setuptools python3-wheel mypy
   git bc
 )

@@ -17,6 +17,8 @@ _Path = Union[str, os.PathLike[str]]
 # A pose: a 4 x 4 rigid motion [[R, t], [0, 0, 0, 1]] (any array-like of real numbers).
 _Pose = npt.ArrayLike
 _FloatArray = npt.NDArray[np.float64]
+# ConvexBlock, CollisionGeometry, CollisionObject, CollisionRequest, CollisionResult and
+# BatchResult pickle and deep-copy (object's __getstate__/__setstate__; docs/api.md#pickling).
 
 class MeshError(ValueError):
     """A block that is not a valid closed convex block, or a malformed mesh file."""
@@ -256,15 +258,17 @@ class BatchResult:
 
 def collide_batch(objects: Sequence[CollisionObject], pairs: npt.ArrayLike,
                   poses: Optional[npt.ArrayLike] = None, *, request: Optional[CollisionRequest] = None,
-                  device: str = "cpu") -> BatchResult:
+                  device: str = "cpu", progress: Optional[Callable[[int], object]] = None) -> BatchResult:
     """objects[pairs[k, 0]] with objects[pairs[k, 1]] for each row of pairs (K, 2): at the
     objects' poses, at `poses` (M, 4, 4) or (M, 7), or at frames of them (F, M, 4, 4) or
-    (F, M, 7). Runs without the GIL."""
+    (F, M, 7). Runs without the GIL; Ctrl-C raises KeyboardInterrupt. progress(n), e.g. a tqdm
+    bar's update: the queries done since its last call, at most five times a second."""
 
 def collide_poses(a: CollisionObject, b: CollisionObject, poses_a: Optional[npt.ArrayLike] = None,
                   poses_b: Optional[npt.ArrayLike] = None, *, request: Optional[CollisionRequest] = None,
-                  device: str = "cpu") -> BatchResult:
-    """a with b at N poses: poses_a and/or poses_b (N, 4, 4) or (N, 7) x, y, z, qx, qy, qz, qw."""
+                  device: str = "cpu", progress: Optional[Callable[[int], object]] = None) -> BatchResult:
+    """a with b at N poses: poses_a and/or poses_b (N, 4, 4) or (N, 7) x, y, z, qx, qy, qz, qw.
+    Ctrl-C and progress as in collide_batch."""
 
 class ObjectContact:
     """One pair of objects in contact, a < b."""

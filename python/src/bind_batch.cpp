@@ -4,7 +4,9 @@
 // the GIL held; the queries then run without it, each one recode::collide on private copies of
 // the objects, so every answer is that of recode.collide on the same pair at the same poses. With
 // request.threads other than 1 the queries are spread over oneTBB threads (the pool the C++ API
-// decides block pairs on), each with copies of its own.
+// decides block pairs on), each with copies of its own. Between queries the calling thread hears
+// Ctrl-C and reports progress (query_watch.hpp). BatchResult pickles (pickle_state.hpp).
+#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -12,12 +14,14 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
-#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -25,60 +29,33 @@
 #include <vector>
 
 #include "arrays.hpp"
-#include "bind_batch.hpp"
 #include "bindings.hpp"
 #include "devices.hpp"
+#include "pickle_state.hpp"
+#include "query_watch.hpp"
 #include "recode/api/collision.hpp"
 
 namespace recode::python {
-
-std::mutex& poolMutex(const DevicePool& pool) {
-  static std::mutex guard;
-  static auto& locks = *new std::map<const DevicePool*, std::mutex>();
-  const std::lock_guard<std::mutex> lock(guard);
-  return locks[&pool];
-}
 
 namespace {
 
 constexpr double kQuaternionTolerance = 1e-6;
 
-std::string shapeText(const py::array& a) {
-  std::ostringstream s;
-  s << '(';
-  for (py::ssize_t i = 0; i < a.ndim(); ++i)
-    s << (i ? ", " : "") << a.shape(i);
-  s << (a.ndim() == 1 ? ",)" : ")");
-  return s.str();
-}
-
-std::string shapeText(const std::vector<py::ssize_t>& shape) {
-  std::ostringstream s;
-  s << '(';
-  for (std::size_t i = 0; i < shape.size(); ++i)
-    s << (i ? ", " : "") << shape[i];
-  s << (shape.size() == 1 ? ",)" : ")");
-  return s.str();
-}
-
-py::array arrayOf(const py::handle& object, const std::string& what) {
-  py::array a = py::array::ensure(object);
-  if (!a)
-    throw py::type_error(what + ": expected an array (a NumPy array or nested lists), got " +
-                         py::str(py::type::of(object)).cast<std::string>());
-  return a;
-}
-
-std::string indexText(const std::vector<py::ssize_t>& shape, std::size_t flat) {
-  std::vector<py::ssize_t> index(shape.size());
-  for (std::size_t d = shape.size(); d-- > 0;) {
-    index[d] = static_cast<py::ssize_t>(flat % static_cast<std::size_t>(shape[d]));
-    flat /= static_cast<std::size_t>(shape[d]);
+// The pose of a row x, y, z, qx, qy, qz, qw (a unit quaternion within kQuaternionTolerance).
+Eigen::Isometry3d poseFromRow(const double* p, const NameOf& what) {
+  const Eigen::Quaterniond q(p[6], p[3], p[4], p[5]);  // Eigen's order: w, x, y, z
+  const double norm = q.norm();
+  if (std::abs(norm - 1.0) > kQuaternionTolerance) {
+    std::ostringstream s;
+    s << what() << ": the quaternion (qx, qy, qz, qw) = (" << p[3] << ", " << p[4] << ", " << p[5]
+      << ", " << p[6] << ") has norm " << norm << "; it must be a unit quaternion (within "
+      << kQuaternionTolerance << ")";
+    throw py::value_error(s.str());
   }
-  std::string s;
-  for (std::size_t d = 0; d < index.size(); ++d)
-    s += (d ? ", " : "") + std::to_string(index[d]);
-  return s;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = q.normalized().toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
+  return pose;
 }
 
 // Poses from an array of 4 x 4 matrices (..., 4, 4) or of rows (..., 7): translation x, y, z,
@@ -89,12 +66,7 @@ struct Poses {
 };
 
 Poses posesFrom(const py::handle& object, const std::string& what) {
-  py::array raw = arrayOf(object, what);
-  const char kind = raw.dtype().kind();
-  if (kind != 'f' && kind != 'i' && kind != 'u')
-    throw py::type_error(what + ": expected real numbers, got dtype " +
-                         py::str(raw.dtype()).cast<std::string>());
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(raw);
+  const RealArray a = realArray(object, what);
   const py::ssize_t n = a.ndim();
   const bool matrices = n >= 3 && a.shape(n - 1) == 4 && a.shape(n - 2) == 4;
   const bool rows = n >= 2 && a.shape(n - 1) == 7;
@@ -110,53 +82,16 @@ Poses posesFrom(const py::handle& object, const std::string& what) {
   for (const py::ssize_t s : out.shape)
     count *= static_cast<std::size_t>(s);
   out.poses.resize(count);
-  const double* data = a.data();
   const std::size_t stride = matrices ? 16 : 7;
   for (std::size_t i = 0; i < count; ++i) {
-    const double* p = data + i * stride;
-    const std::string at = what + "[" + indexText(out.shape, i) + "]";
+    const double* p = a.data() + i * stride;
+    // Named only for an error: a batch may have millions of poses.
+    const auto at = [&] { return what + "[" + indexText(out.shape, i) + "]"; };
     for (std::size_t k = 0; k < stride; ++k)
       if (!std::isfinite(p[k]))
-        throw py::value_error(at + " has " + py::str(py::float_(p[k])).cast<std::string>() +
+        throw py::value_error(at() + " has " + py::str(py::float_(p[k])).cast<std::string>() +
                               ": pose entries must be finite");
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    if (matrices) {
-      if (p[12] != 0.0 || p[13] != 0.0 || p[14] != 0.0 || p[15] != 1.0) {
-        std::ostringstream s;
-        s << at << ": the last row is [" << p[12] << ", " << p[13] << ", " << p[14] << ", " << p[15]
-          << "], it must be [0, 0, 0, 1] (a rigid motion)";
-        throw py::value_error(s.str());
-      }
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c)
-          pose.matrix()(r, c) = p[4 * r + c];
-      const Eigen::Matrix3d rot = pose.linear();
-      const double off =
-          (rot.transpose() * rot - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-      if (off > kRotationTolerance) {
-        std::ostringstream s;
-        s << at << ": the upper-left 3 x 3 block is not a rotation: R^T R differs from the "
-          << "identity by " << off << " (at most " << kRotationTolerance
-          << " allowed; poses are rigid motions)";
-        throw py::value_error(s.str());
-      }
-      if (rot.determinant() < 0.0)
-        throw py::value_error(at + ": the upper-left 3 x 3 block is a reflection (determinant " +
-                              std::to_string(rot.determinant()) + "), not a rotation");
-    } else {
-      const Eigen::Quaterniond q(p[6], p[3], p[4], p[5]);  // Eigen's order: w, x, y, z
-      const double norm = q.norm();
-      if (std::abs(norm - 1.0) > kQuaternionTolerance) {
-        std::ostringstream s;
-        s << at << ": the quaternion (qx, qy, qz, qw) = (" << p[3] << ", " << p[4] << ", " << p[5]
-          << ", " << p[6] << ") has norm " << norm << "; it must be a unit quaternion (within "
-          << kQuaternionTolerance << ")";
-        throw py::value_error(s.str());
-      }
-      pose.linear() = q.normalized().toRotationMatrix();
-      pose.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
-    }
-    out.poses[i] = pose;
+    out.poses[i] = matrices ? rigidMotionFrom(p, at) : poseFromRow(p, at);
   }
   return out;
 }
@@ -177,35 +112,12 @@ std::vector<CollisionObject> objectsFrom(const py::sequence& objects, const std:
 
 std::vector<std::array<std::size_t, 2>> pairsFrom(const py::handle& object,
                                                   std::size_t objectCount) {
-  py::array raw = arrayOf(object, "pairs");
-  const char kind = raw.dtype().kind();
-  if (kind != 'i' && kind != 'u')
-    throw py::type_error("pairs: expected integer indices into objects, got dtype " +
-                         py::str(raw.dtype()).cast<std::string>());
-  if (raw.ndim() != 2 || raw.shape(1) != 2)
-    throw py::value_error("pairs: expected a (K, 2) array of indices into objects, got shape " +
-                          shapeText(raw));
-  const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(raw);
-  const auto u = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(raw);
-  std::vector<std::array<std::size_t, 2>> out(static_cast<std::size_t>(a.shape(0)));
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    for (std::size_t s = 0; s < 2; ++s) {
-      const std::int64_t index = a.data()[2 * k + s];
-      const std::string at = "pairs[" + std::to_string(k) + ", " + std::to_string(s) + "] is ";
-      if (kind == 'i' && index < 0)
-        throw py::value_error(at + std::to_string(index) +
-                              ": indices into objects count from 0 (negative indices are not "
-                              "allowed)");
-      const bool tooLarge = kind == 'u' ? u.data()[2 * k + s] >= objectCount
-                                        : static_cast<std::uint64_t>(index) >= objectCount;
-      if (tooLarge)
-        throw py::value_error(
-            at + (kind == 'u' ? std::to_string(u.data()[2 * k + s]) : std::to_string(index)) +
-            ": there are " + std::to_string(objectCount) + " objects, so indices run from 0 to " +
-            std::to_string(static_cast<long long>(objectCount) - 1));
-      out[k][s] = static_cast<std::size_t>(index);
-    }
-  }
+  const std::vector<std::size_t> indices =
+      indexRows(object, "pairs", 2, "a (K, 2) array of indices into objects",
+                {"indices into objects", "objects", objectCount});
+  std::vector<std::array<std::size_t, 2>> out(indices.size() / 2);
+  for (std::size_t k = 0; k < out.size(); ++k)
+    out[k] = {indices[2 * k], indices[2 * k + 1]};
   return out;
 }
 
@@ -282,18 +194,17 @@ Answer runQuery(std::vector<CollisionObject>& objects, const std::vector<Collisi
   place(a, q.poseA ? q.poseA : &rest[q.a].transform());
   place(b, q.poseB ? q.poseB : &rest[q.b].transform());
   CollisionResult result;
+  const auto run = [&](const CollisionObject& other) {
+    if (pool)
+      collide(a, other, request, result, *pool);
+    else
+      collide(a, other, request, result);
+  };
   try {
-    if (q.a == q.b) {
-      const CollisionObject other = b;  // the same object: a second copy
-      if (pool)
-        collide(a, other, request, result, *pool);
-      else
-        collide(a, other, request, result);
-    } else if (pool) {
-      collide(a, b, request, result, *pool);
-    } else {
-      collide(a, b, request, result);
-    }
+    if (q.a == q.b)
+      run(CollisionObject(b));  // the same object: a second copy
+    else
+      run(b);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("query " + std::to_string(index) + " (objects " +
                                 std::to_string(q.a) + " and " + std::to_string(q.b) +
@@ -302,35 +213,66 @@ Answer runQuery(std::vector<CollisionObject>& objects, const std::vector<Collisi
   return answerOf(result);
 }
 
-// Every query without the GIL: in turn on the caller's thread (threads 1, or a device other
-// than cpu, which draws from one thread), else on oneTBB threads with copies of their own.
-std::vector<Answer> runQueries(const std::vector<CollisionObject>& objects,
-                               const std::vector<Query>& queries, CollisionRequest request,
-                               const std::string& device) {
-  std::vector<Answer> answers(queries.size());
-  DevicePool* pool = device == "cpu" ? nullptr : &devicePool(device);
-  const int threads = request.threads;
-  py::gil_scoped_release release;
-  if (pool || threads == 1 || queries.size() < 2) {
-    std::unique_lock<std::mutex> lock;
-    if (pool)
-      lock = std::unique_lock<std::mutex>(poolMutex(*pool));
-    std::vector<CollisionObject> mine = objects;
-    for (std::size_t i = 0; i < queries.size(); ++i)
-      answers[i] = runQuery(mine, objects, queries[i], i, request, pool);
-    return answers;
+// Every query in turn on the caller's thread (threads 1, or a device other than cpu, which
+// draws from one thread), each taking the device's lock for itself; between queries the watch
+// may take the GIL back (query_watch.hpp), so the lock is not held then.
+void runInTurn(const std::vector<CollisionObject>& objects, const std::vector<Query>& queries,
+               const CollisionRequest& request, SharedPool* shared, QueryWatch& watch,
+               std::vector<Answer>& answers) {
+  std::vector<CollisionObject> mine = objects;
+  for (std::size_t i = 0; i < queries.size() && !watch.stopped(); ++i) {
+    if (shared) {
+      const std::lock_guard<std::mutex> lock(shared->mutex);
+      answers[i] = runQuery(mine, objects, queries[i], i, request, &shared->pool);
+    } else {
+      answers[i] = runQuery(mine, objects, queries[i], i, request, nullptr);
+    }
+    watch.queryDone();
+    watch.poll();
   }
-  // The queries are what runs in parallel; each query's block pairs on its own thread.
+}
+
+// The queries spread over oneTBB threads, each with copies of the objects of its own; each
+// query's block pairs on its thread. The caller's thread runs queries too, and polls the watch
+// between its own; once it is stopped no thread starts another query.
+void runSpread(const std::vector<CollisionObject>& objects, const std::vector<Query>& queries,
+               CollisionRequest request, QueryWatch& watch, std::vector<Answer>& answers) {
+  const int threads = request.threads;
   request.threads = 1;
   const int concurrency = threads > 0 ? std::min(threads, tbb::info::default_concurrency())
                                       : tbb::info::default_concurrency();
   tbb::enumerable_thread_specific<std::vector<CollisionObject>> copies(objects);
   tbb::task_arena arena(concurrency);
   arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, queries.size(), [&](std::size_t i) {
-      answers[i] = runQuery(copies.local(), objects, queries[i], i, request, nullptr);
-    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, queries.size()),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          if (watch.stopped())
+                            return;
+                          answers[i] =
+                              runQuery(copies.local(), objects, queries[i], i, request, nullptr);
+                          watch.queryDone();
+                          watch.poll();
+                        }
+                      });
   });
+}
+
+// Every query without the GIL, Ctrl-C and `progress` heard between queries (query_watch.hpp).
+std::vector<Answer> runQueries(const std::vector<CollisionObject>& objects,
+                               const std::vector<Query>& queries, const CollisionRequest& request,
+                               const std::string& device, const py::object& progress) {
+  std::vector<Answer> answers(queries.size());
+  SharedPool* shared = device == "cpu" ? nullptr : &devicePool(device);
+  QueryWatch watch(progress);
+  {
+    const py::gil_scoped_release release;
+    if (shared || request.threads == 1 || queries.size() < 2)
+      runInTurn(objects, queries, request, shared, watch, answers);
+    else
+      runSpread(objects, queries, request, watch, answers);
+  }
+  watch.finish();
   return answers;
 }
 
@@ -340,6 +282,43 @@ struct BatchResult {
       maxDepth, normal, penetrationDepth, blockPairsDrawn, collisionUs;
   std::vector<py::ssize_t> shape;
 };
+
+// The arrays in the order a pickled state holds them.
+constexpr std::array kColumns = {&BatchResult::collide,          &BatchResult::interferingPixels,
+                                 &BatchResult::contactPixels,    &BatchResult::caseCounts,
+                                 &BatchResult::contactBox,       &BatchResult::contactArea,
+                                 &BatchResult::maxDepth,         &BatchResult::normal,
+                                 &BatchResult::penetrationDepth, &BatchResult::blockPairsDrawn,
+                                 &BatchResult::collisionUs};
+constexpr const char* kBatchType = "recode.BatchResult";
+
+// (format, shape, the arrays of kColumns).
+py::tuple batchState(const BatchResult& r) {
+  py::tuple state(kColumns.size() + 2);
+  state[0] = kPickleFormat;
+  state[1] = py::cast(r.shape);
+  for (std::size_t i = 0; i < kColumns.size(); ++i)
+    state[i + 2] = r.*kColumns[i];
+  return state;
+}
+BatchResult batchFromState(const py::tuple& state) {
+  checkState(state, kBatchType, kColumns.size() + 1);
+  BatchResult r;
+  r.shape = stateItem<std::vector<py::ssize_t>>(state[1], kBatchType, "shape");
+  for (std::size_t i = 0; i < kColumns.size(); ++i) {
+    const py::array column = py::array::ensure(state[i + 2]);
+    const auto leading = static_cast<py::ssize_t>(r.shape.size());
+    bool fits = column && column.ndim() >= leading;
+    for (py::ssize_t d = 0; fits && d < leading; ++d)
+      fits = column.shape(d) == r.shape[static_cast<std::size_t>(d)];
+    if (!fits)
+      throw py::value_error(std::string(kBatchType) + ": the pickled state's array " +
+                            std::to_string(i) + " does not have the leading shape " +
+                            shapeText(r.shape));
+    r.*kColumns[i] = column;
+  }
+  return r;
+}
 
 template <class T, class F>
 py::array_t<T> column(const std::vector<Answer>& answers, std::vector<py::ssize_t> shape,
@@ -386,8 +365,8 @@ BatchResult resultOf(const std::vector<Answer>& v, const std::vector<py::ssize_t
 
 BatchResult collideBatch(const py::sequence& objectList, const py::handle& pairArray,
                          const std::optional<py::object>& poseArray,
-                         const std::optional<CollisionRequest>& request,
-                         const std::string& device) {
+                         const std::optional<CollisionRequest>& request, const std::string& device,
+                         const py::object& progress) {
   const std::vector<CollisionObject> objects = objectsFrom(objectList, "objects");
   const auto pairs = pairsFrom(pairArray, objects.size());
   Poses poses;
@@ -419,29 +398,31 @@ BatchResult collideBatch(const py::sequence& objectList, const py::handle& pairA
       }
       queries.push_back(q);
     }
-  return resultOf(runQueries(objects, queries, request.value_or(CollisionRequest{}), device),
-                  shape);
+  return resultOf(
+      runQueries(objects, queries, request.value_or(CollisionRequest{}), device, progress), shape);
 }
 
 BatchResult collidePoses(const CollisionObject& a, const CollisionObject& b,
                          const std::optional<py::object>& posesA,
                          const std::optional<py::object>& posesB,
-                         const std::optional<CollisionRequest>& request,
-                         const std::string& device) {
+                         const std::optional<CollisionRequest>& request, const std::string& device,
+                         const py::object& progress) {
   const bool hasA = posesA && !posesA->is_none();
   const bool hasB = posesB && !posesB->is_none();
   if (!hasA && !hasB)
     throw py::value_error("collide_poses: give poses_a, poses_b or both");
-  Poses pa, pb;
-  if (hasA)
-    pa = posesFrom(*posesA, "poses_a");
-  if (hasB)
-    pb = posesFrom(*posesB, "poses_b");
-  for (const auto* p : {&pa, &pb})
-    if ((p == &pa ? hasA : hasB) && p->shape.size() != 1)
-      throw py::value_error(std::string(p == &pa ? "poses_a" : "poses_b") +
-                            ": expected N poses, (N, 4, 4) or (N, 7); got " + shapeText(p->shape) +
-                            " poses");
+  // N poses of one object, (N, 4, 4) or (N, 7); none when not given.
+  const auto posesOf = [](const std::optional<py::object>& given, bool has, const char* what) {
+    Poses p;
+    if (has)
+      p = posesFrom(*given, what);
+    if (has && p.shape.size() != 1)
+      throw py::value_error(std::string(what) + ": expected N poses, (N, 4, 4) or (N, 7); got " +
+                            shapeText(p.shape) + " poses");
+    return p;
+  };
+  const Poses pa = posesOf(posesA, hasA, "poses_a");
+  const Poses pb = posesOf(posesB, hasB, "poses_b");
   if (hasA && hasB && pa.shape[0] != pb.shape[0])
     throw py::value_error("poses_a and poses_b: expected the same number of poses, got " +
                           std::to_string(pa.shape[0]) + " and " + std::to_string(pb.shape[0]));
@@ -450,8 +431,9 @@ BatchResult collidePoses(const CollisionObject& a, const CollisionObject& b,
   std::vector<Query> queries(n);
   for (std::size_t i = 0; i < n; ++i)
     queries[i] = {0, 1, hasA ? &pa.poses[i] : nullptr, hasB ? &pb.poses[i] : nullptr};
-  return resultOf(runQueries(objects, queries, request.value_or(CollisionRequest{}), device),
-                  {static_cast<py::ssize_t>(n)});
+  return resultOf(
+      runQueries(objects, queries, request.value_or(CollisionRequest{}), device, progress),
+      {static_cast<py::ssize_t>(n)});
 }
 
 }  // namespace
@@ -461,6 +443,7 @@ void bindBatch(py::module_& m) {
       m, "BatchResult",
       "The answers of collide_batch or collide_poses as arrays, one entry per query (leading "
       "shape `shape`): what recode.collide returns for the same pair at the same poses.")
+      .def(py::pickle(&batchState, &batchFromState))
       .def_readonly("collide", &BatchResult::collide, "bool: the verdicts.")
       .def_readonly("interfering_pixels", &BatchResult::interferingPixels, "int64.")
       .def_readonly("contact_pixels", &BatchResult::contactPixels, "int64: result.contact.pixels.")
@@ -497,18 +480,21 @@ void bindBatch(py::module_& m) {
 
   m.def("collide_batch", &collideBatch, py::arg("objects"), py::arg("pairs"),
         py::arg("poses") = py::none(), py::kw_only(), py::arg("request") = py::none(),
-        py::arg("device") = "cpu",
+        py::arg("device") = "cpu", py::arg("progress") = py::none(),
         "Collides objects[pairs[k, 0]] with objects[pairs[k, 1]] for every row k of pairs "
         "(K, 2): at the objects' own poses; at `poses`, one per object, (M, 4, 4) or (M, 7) "
         "rows x, y, z, qx, qy, qz, qw (results (K,)); or at frames of them, (F, M, 4, 4) or "
         "(F, M, 7) (results (F, K)). Runs without the GIL; request.threads other than 1 "
-        "spreads the queries over that many threads (0: all). Returns a BatchResult.");
+        "spreads the queries over that many threads (0: all). Ctrl-C stops it (KeyboardInterrupt "
+        "within a fraction of a second); `progress(n)`, e.g. a tqdm bar's update, is called on "
+        "this thread at most five times a second with the queries done since its last call. "
+        "Returns a BatchResult.");
   m.def("collide_poses", &collidePoses, py::arg("a"), py::arg("b"), py::arg("poses_a") = py::none(),
         py::arg("poses_b") = py::none(), py::kw_only(), py::arg("request") = py::none(),
-        py::arg("device") = "cpu",
+        py::arg("device") = "cpu", py::arg("progress") = py::none(),
         "Collides a with b at N poses: poses_a and/or poses_b (N, 4, 4) or (N, 7) rows x, y, z, "
-        "qx, qy, qz, qw; an object without poses stays at its own. Returns a BatchResult of "
-        "N queries.");
+        "qx, qy, qz, qw; an object without poses stays at its own. Ctrl-C and `progress` as in "
+        "collide_batch. Returns a BatchResult of N queries.");
 }
 
 }  // namespace recode::python

@@ -12,11 +12,12 @@
 #include <string>
 
 #include "arrays.hpp"
-#include "bind_batch.hpp"
 #include "bindings.hpp"
 #include "devices.hpp"
+#include "pickle_state.hpp"
 #include "recode/api/collision.hpp"
 #include "recode/refine/pair_mode.hpp"
+#include "result_state.hpp"
 
 namespace recode::python {
 
@@ -141,28 +142,114 @@ py::object singleCaseMap(const py::object& self) {
   return first.attr("case_map");
 }
 
-}  // namespace
+std::shared_ptr<CollisionObject> objectFrom(const py::handle& shape,
+                                            const std::optional<py::object>& pose,
+                                            const std::optional<py::object>& rotation,
+                                            const std::optional<py::object>& translation) {
+  return std::make_shared<CollisionObject>(shapeFrom(shape),
+                                           poseFromArguments(pose, rotation, translation));
+}
 
-void bindCollision(py::module_& m) {
+void setTransform(CollisionObject& o, const std::optional<py::object>& pose,
+                  const std::optional<py::object>& rotation,
+                  const std::optional<py::object>& translation) {
+  o.setTransform(poseFromArguments(pose, rotation, translation));
+}
+
+CollisionRequest requestFrom(std::optional<double> pixelSize, int resolution,
+                             const std::string& mor, const std::string& axis, bool contact,
+                             bool normal, const std::string& mode, int threads) {
+  CollisionRequest r;
+  r.pixelSize = pixelSizeFrom(pixelSize);
+  r.resolution = resolutionFrom(resolution);
+  r.mor = morFrom(mor);
+  r.axis = axisFrom(axis);
+  r.contact = contact;
+  r.normal = normal;
+  r.mode = modeFrom(mode);
+  r.threads = threadsFrom(threads);
+  return r;
+}
+
+// The result's block contacts, each a view kept alive by the result.
+py::list contactsOf(const py::object& self) {
+  py::list list;
+  for (const BlockContact& c : self.cast<const CollisionResult&>().contacts)
+    list.append(py::cast(&c, py::return_value_policy::reference_internal, self));
+  return list;
+}
+
+py::array_t<long long> caseCountsOf(const CollisionResult& r) {
+  std::array<long long, core::kCaseCount> sum{};
+  for (const BlockContact& c : r.contacts)
+    for (std::size_t k = 0; k < sum.size(); ++k)
+      sum[k] += c.pair.caseCounts[k];
+  return countsOf(sum);
+}
+
+// recode.collide: copies of the two objects and the request, made with the GIL held; the query
+// then runs without it, and another thread may move a or b meanwhile (docs/api.md#threads).
+CollisionResult collideObjects(const CollisionObject& a, const CollisionObject& b,
+                               const std::optional<CollisionRequest>& request,
+                               const std::string& device) {
+  const CollisionObject copyA = a;
+  const CollisionObject copyB = b;
+  const CollisionRequest r = request.value_or(CollisionRequest{});
+  SharedPool* shared = device == "cpu" ? nullptr : &devicePool(device);
+  CollisionResult result;
+  py::gil_scoped_release release;
+  if (!shared) {
+    collide(copyA, copyB, r, result);
+  } else {
+    const std::lock_guard<std::mutex> lock(shared->mutex);
+    collide(copyA, copyB, r, result, shared->pool);
+  }
+  return result;
+}
+
+constexpr const char* kObjectType = "recode.CollisionObject";
+constexpr const char* kRequestType = "recode.CollisionRequest";
+
+// (format, geometry, pose 4 x 4): the geometry pickles itself (shared shapes stay shared within
+// one pickle).
+py::tuple objectState(const CollisionObject& o) {
+  return makeState(std::const_pointer_cast<CollisionGeometry>(o.geometryPtr()),
+                   matrixOf(o.transform()));
+}
+std::shared_ptr<CollisionObject> objectFromState(const py::tuple& state) {
+  checkState(state, kObjectType, 2);
+  auto geometry = stateItem<std::shared_ptr<CollisionGeometry>>(state[1], kObjectType, "geometry");
+  return std::make_shared<CollisionObject>(std::move(geometry), poseFrom(state[2]));
+}
+
+// (format, pixel size or None, resolution, mor, axis, contact, normal, mode, threads): the
+// constructor's arguments, checked by it again.
+py::tuple requestState(const CollisionRequest& r) {
+  return makeState(r.pixelSize, r.resolution, morName(r.mor), axisName(r.axis), r.contact, r.normal,
+                   std::string(core::toString(r.mode)), r.threads);
+}
+CollisionRequest requestFromState(const py::tuple& state) {
+  checkState(state, kRequestType, 8);
+  return requestFrom(stateItem<std::optional<double>>(state[1], kRequestType, "pixel size"),
+                     stateItem<int>(state[2], kRequestType, "resolution"),
+                     stateItem<std::string>(state[3], kRequestType, "mor"),
+                     stateItem<std::string>(state[4], kRequestType, "axis"),
+                     stateItem<bool>(state[5], kRequestType, "contact"),
+                     stateItem<bool>(state[6], kRequestType, "normal"),
+                     stateItem<std::string>(state[7], kRequestType, "mode"),
+                     stateItem<int>(state[8], kRequestType, "threads"));
+}
+
+void bindObject(py::module_& m) {
   py::class_<CollisionObject, ObjectHolder>(
       m, "CollisionObject",
       "A shape at a pose (object -> world). Poses are 4 x 4 matrices [[R, t], [0, 0, 0, 1]] or "
       "rotation (3 x 3) and translation (3,) keywords.")
-      .def(py::init([](const py::handle& shape, std::optional<py::object> pose,
-                       std::optional<py::object> rotation, std::optional<py::object> translation) {
-             return std::make_shared<CollisionObject>(
-                 shapeFrom(shape), poseFromArguments(pose, rotation, translation));
-           }),
-           py::arg("shape"), py::arg("pose") = py::none(), py::kw_only(),
+      .def(py::init(&objectFrom), py::arg("shape"), py::arg("pose") = py::none(), py::kw_only(),
            py::arg("rotation") = py::none(), py::arg("translation") = py::none())
-      .def(
-          "set_transform",
-          [](CollisionObject& o, std::optional<py::object> pose, std::optional<py::object> rotation,
-             std::optional<py::object> translation) {
-            o.setTransform(poseFromArguments(pose, rotation, translation));
-          },
-          py::arg("pose") = py::none(), py::kw_only(), py::arg("rotation") = py::none(),
-          py::arg("translation") = py::none(), "Moves the object (its world boxes follow).")
+      .def("set_transform", &setTransform, py::arg("pose") = py::none(), py::kw_only(),
+           py::arg("rotation") = py::none(), py::arg("translation") = py::none(),
+           "Moves the object (its world boxes follow).")
       .def_property_readonly(
           "transform", [](const CollisionObject& o) { return matrixOf(o.transform()); },
           "The pose, 4 x 4 (a copy).")
@@ -172,27 +259,17 @@ void bindCollision(py::module_& m) {
                              })
       .def_property_readonly(
           "world_box", [](const CollisionObject& o) { return boxOf(o.worldBox()); },
-          "[[min x, y, z], [max x, y, z]] of the object at its pose.");
+          "[[min x, y, z], [max x, y, z]] of the object at its pose.")
+      .def(py::pickle(&objectState, &objectFromState));
+}
 
+void bindRequest(py::module_& m) {
   py::class_<CollisionRequest>(m, "CollisionRequest",
                                "What collide() measures and how finely (docs/api.md).")
-      .def(py::init([](std::optional<double> pixelSize, int resolution, const std::string& mor,
-                       const std::string& axis, bool contact, bool normal, const std::string& mode,
-                       int threads) {
-             CollisionRequest r;
-             r.pixelSize = pixelSizeFrom(pixelSize);
-             r.resolution = resolutionFrom(resolution);
-             r.mor = morFrom(mor);
-             r.axis = axisFrom(axis);
-             r.contact = contact;
-             r.normal = normal;
-             r.mode = modeFrom(mode);
-             r.threads = threadsFrom(threads);
-             return r;
-           }),
-           py::kw_only(), py::arg("pixel_size") = py::none(), py::arg("resolution") = 256,
-           py::arg("mor") = "min", py::arg("axis") = "auto", py::arg("contact") = true,
-           py::arg("normal") = false, py::arg("mode") = "reference", py::arg("threads") = 1)
+      .def(py::init(&requestFrom), py::kw_only(), py::arg("pixel_size") = py::none(),
+           py::arg("resolution") = 256, py::arg("mor") = "min", py::arg("axis") = "auto",
+           py::arg("contact") = true, py::arg("normal") = false, py::arg("mode") = "reference",
+           py::arg("threads") = 1)
       .def_property(
           "pixel_size", [](const CollisionRequest& r) { return r.pixelSize; },
           [](CollisionRequest& r, std::optional<double> s) { r.pixelSize = pixelSizeFrom(s); },
@@ -224,8 +301,11 @@ void bindCollision(py::module_& m) {
           [](CollisionRequest& r, int n) { r.threads = threadsFrom(n); },
           "Threads a call's block pairs may be decided on, on the CPU device: 1 (default) the "
           "caller's, 0 every hardware thread, N at most N; the results are the same.")
+      .def(py::pickle(&requestState, &requestFromState))
       .def("__repr__", &repr);
+}
 
+void bindFrame(py::module_& m) {
   py::class_<core::FrameSpec>(m, "Frame", "The frame a block pair was drawn in.")
       .def_property_readonly(
           "axis", [](const core::FrameSpec& f) { return std::string(core::toString(f.axis)); })
@@ -240,7 +320,9 @@ void bindCollision(py::module_& m) {
       .def_property_readonly("pixel_size", [](const core::FrameSpec& f) {
         return (f.window.umax - f.window.umin) / f.width;
       });
+}
 
+void bindContactRegion(py::module_& m) {
   py::class_<core::ContactRegion>(m, "ContactRegion")
       .def_property_readonly(
           "points",
@@ -275,7 +357,9 @@ void bindCollision(py::module_& m) {
             return c.normal->depth;
           },
           "The overlap's width along normal, world units; None with normal.");
+}
 
+void bindBlockContact(py::module_& m) {
   py::class_<BlockContact>(m, "BlockContact", "One pair of blocks whose pixels interfere.")
       .def_readonly("block_a", &BlockContact::blockA)
       .def_readonly("block_b", &BlockContact::blockB)
@@ -306,32 +390,20 @@ void bindCollision(py::module_& m) {
       .def_property_readonly(
           "timing_us", [](const BlockContact& c) { return c.pair.timing.totalUs; },
           "Wall time of the pair algorithm, microseconds.");
+}
 
+void bindResult(py::module_& m) {
   py::class_<CollisionResult>(m, "CollisionResult")
+      .def(py::pickle(&resultState, &resultFromState))
       .def_readonly("collide", &CollisionResult::collide)
       .def("__bool__", [](const CollisionResult& r) { return r.collide; })
       .def_readonly("interfering_pixels", &CollisionResult::interferingPixels)
       .def_readonly("contact", &CollisionResult::contact,
                     "The union over the block pairs in contact.")
-      .def_property_readonly(
-          "contacts",
-          [](const py::object& self) {
-            py::list list;
-            for (const BlockContact& c : self.cast<const CollisionResult&>().contacts)
-              list.append(py::cast(&c, py::return_value_policy::reference_internal, self));
-            return list;
-          },
-          "The block pairs in contact, by (block_a, block_b).")
-      .def_property_readonly(
-          "case_counts",
-          [](const CollisionResult& r) {
-            std::array<long long, core::kCaseCount> sum{};
-            for (const BlockContact& c : r.contacts)
-              for (int k = 0; k < core::kCaseCount; ++k)
-                sum[static_cast<std::size_t>(k)] += c.pair.caseCounts[static_cast<std::size_t>(k)];
-            return countsOf(sum);
-          },
-          "Cases 0-8 summed over the block pairs in contact, int64 (9,).")
+      .def_property_readonly("contacts", &contactsOf,
+                             "The block pairs in contact, by (block_a, block_b).")
+      .def_property_readonly("case_counts", &caseCountsOf,
+                             "Cases 0-8 summed over the block pairs in contact, int64 (9,).")
       .def_property_readonly("case_map", &singleCaseMap,
                              "The case map of the one block pair in contact (None without "
                              "contact; ValueError with several: see contacts).")
@@ -350,34 +422,22 @@ void bindCollision(py::module_& m) {
                " interfering_pixels=" + std::to_string(r.interferingPixels) +
                " block_pairs=" + std::to_string(r.contacts.size()) + ">";
       });
+}
 
-  m.def(
-      "collide",
-      [](const CollisionObject& a, const CollisionObject& b,
-         const std::optional<CollisionRequest>& request, const std::string& device) {
-        // Copies of the two objects and the request, made with the GIL held: the query then
-        // runs without it, and another thread may move a or b meanwhile (docs/api.md#threads).
-        const CollisionObject copyA = a;
-        const CollisionObject copyB = b;
-        const CollisionRequest r = request.value_or(CollisionRequest{});
-        DevicePool* pool = device == "cpu" ? nullptr : &devicePool(device);
-        CollisionResult result;
-        {
-          py::gil_scoped_release release;
-          if (!pool) {
-            collide(copyA, copyB, r, result);
-          } else {
-            const std::lock_guard<std::mutex> lock(poolMutex(*pool));
-            collide(copyA, copyB, r, result, *pool);
-          }
-        }
-        return result;
-      },
-      py::arg("a"), py::arg("b"), py::arg("request") = py::none(), py::kw_only(),
-      py::arg("device") = "cpu",
-      "Collides two objects at their current poses; returns a CollisionResult (true when they "
-      "collide). device: a name of recode.devices() (an exact one gives the cpu device's "
-      "result, timing aside). Runs without the GIL, on copies of a and b.");
+}  // namespace
+
+void bindCollision(py::module_& m) {
+  bindObject(m);
+  bindRequest(m);
+  bindFrame(m);
+  bindContactRegion(m);
+  bindBlockContact(m);
+  bindResult(m);
+  m.def("collide", &collideObjects, py::arg("a"), py::arg("b"), py::arg("request") = py::none(),
+        py::kw_only(), py::arg("device") = "cpu",
+        "Collides two objects at their current poses; returns a CollisionResult (true when they "
+        "collide). device: a name of recode.devices() (an exact one gives the cpu device's "
+        "result, timing aside). Runs without the GIL, on copies of a and b.");
 }
 
 }  // namespace recode::python

@@ -20,6 +20,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "errors.hpp"
 #include "recode/conformance/api_verdict.hpp"
 #include "recode/conformance/backend.hpp"
 #include "recode/conformance/diagnosis.hpp"
@@ -64,12 +65,9 @@ fs::path defaultGoldenDir() {
   std::string searched;
   for (const char* dir : kGoldenDirs)
     searched += *dir != '\0' ? std::string(searched.empty() ? "" : ", ") + dir : "";
-  PyErr_SetString(PyExc_FileNotFoundError,
-                  ("no golden vectors found (searched " + searched +
-                   "): pass the directory (the source tree's data/golden, or share/recode/golden "
-                   "under the prefix RECODE was installed to) or set RECODE_GOLDEN_DIR")
-                      .c_str());
-  throw py::error_already_set();
+  fileNotFound("no golden vectors found (searched " + searched +
+               "): pass the directory (the source tree's data/golden, or share/recode/golden "
+               "under the prefix RECODE was installed to) or set RECODE_GOLDEN_DIR");
 }
 
 fs::path goldenDirOf(const std::optional<py::object>& directory) {
@@ -83,8 +81,7 @@ std::vector<conf::SuiteVector> readVectors(const fs::path& dir) {
     try {
       (void)conf::goldenVectors(dir);
     } catch (const std::runtime_error& e) {
-      PyErr_SetString(PyExc_FileNotFoundError, e.what());
-      throw py::error_already_set();
+      fileNotFound(e.what());
     }
   }
   return conf::goldenVectors(dir);
@@ -99,41 +96,23 @@ py::object commandsOf(const raster::CommandStream& stream) {
 template <class T>
 std::vector<T> bufferFrom(const py::handle& object, const std::string& what, int width, int height,
                           std::uint32_t max) {
-  const py::array raw = py::array::ensure(object);
-  if (!raw)
-    throw py::type_error(what + ": expected an array of integers, got " +
-                         py::str(py::type::of(object)).cast<std::string>());
-  const char kind = raw.dtype().kind();
-  if (kind != 'i' && kind != 'u')
-    throw py::type_error(what + ": expected integers, got dtype " +
-                         py::str(raw.dtype()).cast<std::string>());
+  const py::array raw = integerArray(object, what, "integers");
   const auto pixels = static_cast<py::ssize_t>(width) * height;
+  const std::vector<py::ssize_t> grid{height, width};
   const bool flat = raw.ndim() == 1 && raw.shape(0) == pixels;
-  if (!flat && !(raw.ndim() == 2 && raw.shape(0) == height && raw.shape(1) == width)) {
-    std::ostringstream shape;
-    for (py::ssize_t i = 0; i < raw.ndim(); ++i)
-      shape << (i ? ", " : "") << raw.shape(i);
-    throw py::value_error(what + ": expected shape (" + std::to_string(height) + ", " +
-                          std::to_string(width) + ") (height, width; row 0 the bottom row) or (" +
-                          std::to_string(pixels) + ",), got (" + shape.str() +
-                          (raw.ndim() == 1 ? ",)" : ")"));
-  }
-  // Unsigned values above 2^63 would wrap in int64: read those unsigned.
-  const auto s = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(raw);
-  const auto u = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(raw);
-  std::vector<T> out(static_cast<std::size_t>(pixels));
-  for (py::ssize_t i = 0; i < pixels; ++i) {
-    const bool negative = kind == 'i' && s.data()[i] < 0;
-    if (negative || u.data()[i] > max) {
-      const std::string at =
-          flat ? "[" + std::to_string(i) + "]"
-               : "[" + std::to_string(i / width) + ", " + std::to_string(i % width) + "]";
-      throw py::value_error(what + at + ": expected an integer in 0.." + std::to_string(max) +
-                            ", got " +
-                            (negative ? std::to_string(s.data()[i]) : std::to_string(u.data()[i])));
-    }
-    out[static_cast<std::size_t>(i)] = static_cast<T>(u.data()[i]);
-  }
+  if (!flat && !(raw.ndim() == 2 && raw.shape(0) == height && raw.shape(1) == width))
+    throw py::value_error(what + ": expected shape " + shapeText(grid) +
+                          " (height, width; row 0 the bottom row) or " +
+                          shapeText(std::vector<py::ssize_t>{pixels}) + ", got " + shapeText(raw));
+  const std::vector<py::ssize_t> shape = flat ? std::vector<py::ssize_t>{pixels} : grid;
+  const std::vector<std::uint64_t> values = integersBelow(
+      raw, std::uint64_t{max} + 1, [&](std::size_t i, const std::string& value, bool) {
+        throw py::value_error(what + "[" + indexText(shape, i) + "]: expected an integer in 0.." +
+                              std::to_string(max) + ", got " + value);
+      });
+  std::vector<T> out(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+    out[i] = static_cast<T>(values[i]);
   return out;
 }
 
@@ -221,6 +200,11 @@ std::vector<std::string> freedomNames(conf::FreedomSet set) {
     if ((set & static_cast<conf::FreedomSet>(f)) != 0)
       out.emplace_back(conf::toString(f));
   return out;
+}
+
+// None for "" (the report's way of saying "none"), else the text.
+std::optional<std::string> noneIfEmpty(const std::string& s) {
+  return s.empty() ? std::nullopt : std::optional<std::string>(s);
 }
 
 std::optional<std::string> stageName(const std::optional<conf::Stage>& s) {
@@ -313,10 +297,8 @@ conf::Baseline baselineFrom(const py::object& baseline) {
     return out;
   }
   const std::string file = pathText(baseline);
-  if (!fs::exists(file)) {
-    PyErr_SetString(PyExc_FileNotFoundError, (file + ": cannot be read").c_str());
-    throw py::error_already_set();
-  }
+  if (!fs::exists(file))
+    fileNotFound(file + ": cannot be read");
   return conf::readBaseline(file);
 }
 
@@ -330,33 +312,23 @@ conf::SuiteOptions optionsOf(std::size_t explain, int repeat, const py::object& 
   return o;
 }
 
-// A structured array of the bad pixels, one record each (x, y, expected_depth, got_depth,
-// expected_stencil, got_stencil).
-py::array badPixelArray(const std::vector<conf::BadPixel>& bad) {
-  const py::module_ np = py::module_::import("numpy");
-  py::list dtype;
-  for (const auto& [field, type] : {std::pair{"x", "<i4"},
-                                    {"y", "<i4"},
-                                    {"expected_depth", "<u4"},
-                                    {"got_depth", "<u4"},
-                                    {"expected_stencil", "u1"},
-                                    {"got_stencil", "u1"}})
-    dtype.append(py::make_tuple(field, type));
-  py::array out = np.attr("zeros")(bad.size(), dtype);
-  for (const char* field :
-       {"x", "y", "expected_depth", "got_depth", "expected_stencil", "got_stencil"}) {
-    std::vector<std::int64_t> column;
-    column.reserve(bad.size());
-    for (const conf::BadPixel& p : bad) {
-      const std::string_view f = field;
-      column.push_back(f == "x"                  ? p.x
-                       : f == "y"                ? p.y
-                       : f == "expected_depth"   ? p.expectedDepth
-                       : f == "got_depth"        ? p.gotDepth
-                       : f == "expected_stencil" ? p.expectedStencil
-                                                 : p.gotStencil);
-    }
-    out[field] = py::array_t<std::int64_t>(static_cast<py::ssize_t>(column.size()), column.data());
+// A record of VectorResult.bad_pixels: conf::BadPixel's fields under their Python names,
+// packed (18 bytes), the array's dtype since the module first had it.
+#pragma pack(push, 1)
+struct BadPixelRecord {
+  std::int32_t x, y;
+  std::uint32_t expected_depth, got_depth;
+  std::uint8_t expected_stencil, got_stencil;
+};
+#pragma pack(pop)
+static_assert(sizeof(BadPixelRecord) == 18, "bad_pixels records are packed");
+
+py::array_t<BadPixelRecord> badPixelArray(const std::vector<conf::BadPixel>& bad) {
+  py::array_t<BadPixelRecord> out(static_cast<py::ssize_t>(bad.size()));
+  BadPixelRecord* records = out.mutable_data();
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    const conf::BadPixel& p = bad[i];
+    records[i] = {p.x, p.y, p.expectedDepth, p.gotDepth, p.expectedStencil, p.gotStencil};
   }
   return out;
 }
@@ -373,36 +345,172 @@ std::string repr(const VectorResult& r) {
   return s + ">";
 }
 
-}  // namespace
+conf::SuiteVector vectorFromFile(const py::object& path) {
+  const fs::path file = pathText(path);
+  if (!fs::exists(file))
+    fileNotFound(file.string() + ": no such file");
+  return conf::SuiteVector{file.filename().string(), raster::readGolden(file)};
+}
 
-void bindConformance(py::module_& parent) {
-  py::module_ m = parent.def_submodule(
-      "conformance",
-      "The conformance suite for a depth/stencil back end written in Python "
-      "(docs/conformance.md, docs/api.md#the-conformance-kit-in-python): the golden vectors, "
-      "check() of one answer and run() of a whole back end, with the reports of `recode "
-      "conform`.");
-  py::register_exception<raster::FormatError>(m, "FormatError", PyExc_ValueError);
-  refusedType = py::register_exception<RefusedTag>(m, "Refused", PyExc_Exception);
-  refusedType.attr("__doc__") =
-      "Raise it from a back end to refuse a stream (rasterization.md section 2), with the "
-      "reason as its message: the vector fails at the stage 'validation'.";
+// Per buffer, whether the graphics APIs fix every pixel of the vector or only the contract.
+py::object requirementOf(const VectorResult& r) {
+  if (!r.report().requirement)
+    return py::none();
+  const auto by = [](const conf::BufferRequirement& b) {
+    return b.byGraphicsApis ? "graphics APIs" : "contract only";
+  };
+  py::dict d;
+  d["depth"] = by(r.report().requirement->depth);
+  d["stencil"] = by(r.report().requirement->stencil);
+  return d;
+}
 
+// A failing vector's bad pixels against the graphics APIs, as the JSON's "api".
+py::object apiOf(const VectorResult& r) {
+  if (!r.report().api)
+    return py::none();
+  py::dict d;
+  d["forbidden_pixels"] = r.report().api->forbidden;
+  d["freedom_pixels"] = r.report().api->withinFreedom;
+  d["freedoms"] = freedomNames(r.report().api->freedoms);
+  return d;
+}
+
+std::vector<Explanation> explanationsOf(const VectorResult& r) {
+  const conf::VectorReport& report = r.report();
+  std::vector<Explanation> out;
+  for (std::size_t i = 0; i < report.explained.size(); ++i) {
+    out.push_back({report.explained[i], i < report.apiVerdicts.size()
+                                            ? std::optional<conf::ApiVerdict>(report.apiVerdicts[i])
+                                            : std::nullopt});
+  }
+  return out;
+}
+
+std::vector<VectorResult> failuresOf(const Report& r) {
+  std::vector<VectorResult> out;
+  for (VectorResult& v : resultsOf(r.run)) {
+    if (conf::failsRun(v.report().status))
+      out.push_back(std::move(v));
+  }
+  return out;
+}
+
+py::dict countsOf(const Report& r) {
+  py::dict d;
+  d["passed"] = r.report().count(conf::Status::Passed);
+  d["failed"] = r.report().count(conf::Status::Failed);
+  d["expected_failures"] = r.report().count(conf::Status::ExpectedFailure);
+  d["unexpected_passes"] = r.report().count(conf::Status::UnexpectedPass);
+  d["nondeterministic"] = r.report().count(conf::Status::Nondeterministic);
+  return d;
+}
+
+std::string summaryOf(const Report& r) {
+  std::ostringstream out;
+  conf::printSummary(out, r.report());
+  return out.str();
+}
+
+std::string reportJson(const Report& r, const py::kwargs& fields) {
+  std::vector<std::pair<std::string, std::string>> extra;
+  for (const auto& [key, value] : fields)
+    extra.emplace_back(py::str(key).cast<std::string>(), py::str(value).cast<std::string>());
+  return conf::toJson(r.report(), extra);
+}
+
+std::string reportRepr(const Report& r) {
+  return "<recode.conformance.Report " + r.report().backend + ": " +
+         std::to_string(r.report().vectors.size()) + " vectors, " +
+         std::to_string(r.report().count(conf::Status::Passed)) + " passed, " +
+         std::to_string(r.report().count(conf::Status::Failed)) + " failed" +
+         (r.report().error.empty() ? "" : ", error") + ">";
+}
+
+// check(): one answer to `vector` (two buffers, or a refusal), run as a suite of that vector.
+VectorResult checkAnswer(const conf::SuiteVector& vector, const py::object& depth,
+                         const py::object& stencil, const std::optional<std::string>& refused,
+                         std::size_t explain, const py::object& baselineStage) {
+  conf::Answer answer;
+  if (refused) {
+    if (refused->empty())
+      throw py::value_error("refused: expected the reason, got ''");
+    answer.refused = *refused;
+  } else {
+    if (depth.is_none() || stencil.is_none())
+      throw py::type_error("check: expected depth and stencil, or refused=REASON");
+    answer =
+        answerFrom(depth, stencil, vector.golden.stream.width, vector.golden.stream.height, "");
+  }
+  conf::SuiteOptions options;
+  options.explainLimit = explain;
+  if (!baselineStage.is_none())
+    options.baseline.emplace(
+        vector.name, stageFrom(py::str(baselineStage).cast<std::string>(), "baseline_stage"));
+  FixedBackend backend(std::move(answer));
+  const std::vector<conf::SuiteVector> one = {vector};
+  conf::SuiteReport report;
+  {
+    const py::gil_scoped_release release;
+    report = conf::runSuite(backend, one, options);
+  }
+  return VectorResult{std::make_shared<const conf::SuiteReport>(std::move(report)), 0};
+}
+
+// run()'s vectors: a directory (None: golden_dir()) or a list of Vector, and the words for the
+// report's first line.
+std::pair<std::vector<conf::SuiteVector>, std::string> vectorsToRun(const py::object& vectors) {
+  std::vector<conf::SuiteVector> list;
+  if (vectors.is_none() || py::isinstance<py::str>(vectors) || py::hasattr(vectors, "__fspath__")) {
+    const fs::path dir =
+        goldenDirOf(vectors.is_none() ? std::nullopt : std::optional<py::object>(vectors));
+    list = readVectors(dir);
+    std::string source = std::to_string(list.size()) + " golden vectors under " + dir.string();
+    return {std::move(list), std::move(source)};
+  }
+  for (const py::handle v : vectors)
+    list.push_back(v.cast<conf::SuiteVector>());
+  std::string source = std::to_string(list.size()) + " golden vectors";
+  return {std::move(list), std::move(source)};
+}
+
+// The back end's name in the reports: `name`, else the callable's __name__, else its type's.
+std::string backendNameOf(const py::object& backend, const std::optional<std::string>& name) {
+  if (name)
+    return *name;
+  if (py::hasattr(backend, "__name__"))
+    return py::str(backend.attr("__name__")).cast<std::string>();
+  return py::str(py::type::of(backend).attr("__name__")).cast<std::string>();
+}
+
+// run(): the suite on a Python callable, in this process.
+Report runBackend(const py::object& backend, const py::object& vectors,
+                  const std::optional<std::string>& name, std::size_t explain, int repeat,
+                  const py::object& baseline) {
+  if (!PyCallable_Check(backend.ptr()))
+    throw py::type_error(
+        "backend: expected a callable backend(width, height, commands) -> (depth, stencil), "
+        "got " +
+        py::str(py::type::of(backend)).cast<std::string>());
+  auto [list, source] = vectorsToRun(vectors);
+  const conf::SuiteOptions options = optionsOf(explain, repeat, baseline);
+  PythonBackend python(backend, backendNameOf(backend, name));
+  Report report;
+  report.source = std::move(source);
+  {
+    const py::gil_scoped_release release;
+    report.run = std::make_shared<const conf::SuiteReport>(conf::runSuite(python, list, options));
+  }
+  return report;
+}
+
+void bindVector(py::module_& m) {
   py::class_<conf::SuiteVector>(
       m, "Vector",
       "A golden vector: a command stream for a fresh width x height framebuffer and the depth "
       "and stencil buffers the contract gives.")
-      .def_static(
-          "from_file",
-          [](const py::object& path) {
-            const fs::path file = pathText(path);
-            if (!fs::exists(file)) {
-              PyErr_SetString(PyExc_FileNotFoundError, (file.string() + ": no such file").c_str());
-              throw py::error_already_set();
-            }
-            return conf::SuiteVector{file.filename().string(), raster::readGolden(file)};
-          },
-          py::arg("path"), "Reads one golden file (recode-golden-1); its name is the file name.")
+      .def_static("from_file", &vectorFromFile, py::arg("path"),
+                  "Reads one golden file (recode-golden-1); its name is the file name.")
       .def_readonly("name", &conf::SuiteVector::name,
                     "The file relative to the directory it was read from, e.g. "
                     "'kit/slivers_3.json' (the name the reports use).")
@@ -443,22 +551,9 @@ void bindConformance(py::module_& parent) {
                std::to_string(v.golden.stream.height) + ", " +
                std::to_string(v.golden.stream.commands.size()) + " commands>";
       });
+}
 
-  m.def(
-      "golden_dir", []() { return defaultGoldenDir().string(); },
-      "The directory vectors() reads when given none: $RECODE_GOLDEN_DIR, else the source "
-      "tree's data/golden this module was built from, else share/recode/golden under the "
-      "install prefix; FileNotFoundError when none exists.");
-  m.def(
-      "vectors",
-      [](const std::optional<py::object>& directory) {
-        const fs::path dir = goldenDirOf(directory);
-        return readVectors(dir);
-      },
-      py::arg("directory") = py::none(),
-      "The golden vectors under `directory` (every *.json, recursively, sorted by path), or "
-      "under golden_dir() when it is None: a list of Vector.");
-
+void bindExplanation(py::module_& m) {
   py::class_<Explanation>(m, "Explanation",
                           "A bad pixel explained: where the back end's answer departs from the "
                           "contract there, why, the pixel's history and the APIs' verdict.")
@@ -526,7 +621,11 @@ void bindConformance(py::module_& parent) {
         return "<recode.conformance.Explanation pixel (" + std::to_string(x.e.pixel.x) + ", " +
                std::to_string(x.e.pixel.y) + "): " + std::string(conf::toString(x.e.stage)) + ">";
       });
+}
 
+void bindVectorResult(py::module_& m) {
+  PYBIND11_NUMPY_DTYPE(BadPixelRecord, x, y, expected_depth, got_depth, expected_stencil,
+                       got_stencil);
   py::class_<VectorResult>(
       m, "VectorResult",
       "One vector's result, with the facts `recode conform` gives for it; str() is its report.")
@@ -542,11 +641,7 @@ void bindConformance(py::module_& parent) {
       .def_property_readonly(
           "passed", [](const VectorResult& r) { return r.report().status == conf::Status::Passed; })
       .def_property_readonly("refused",
-                             [](const VectorResult& r) {
-                               return r.report().refused.empty()
-                                          ? std::nullopt
-                                          : std::optional<std::string>(r.report().refused);
-                             })
+                             [](const VectorResult& r) { return noneIfEmpty(r.report().refused); })
       .def_property_readonly("bad_pixel_count",
                              [](const VectorResult& r) { return r.report().badPixelCount; })
       .def_property_readonly("depth_pixel_count",
@@ -556,7 +651,8 @@ void bindConformance(py::module_& parent) {
       .def_property_readonly(
           "bad_pixels", [](const VectorResult& r) { return badPixelArray(r.report().badPixels); },
           "Every bad pixel in scan order (bottom row first): a structured NumPy array with "
-          "fields x, y, expected_depth, got_depth, expected_stencil, got_stencil.")
+          "fields x, y (int32), expected_depth, got_depth (uint32), expected_stencil, "
+          "got_stencil (uint8).")
       .def_property_readonly(
           "stage", [](const VectorResult& r) { return stageName(r.report().stage); },
           "Where a failing answer first departs ('coverage', 'depth value', ...), else None.")
@@ -568,46 +664,15 @@ void bindConformance(py::module_& parent) {
                        : std::nullopt;
           })
       .def_property_readonly(
-          "required_by",
-          [](const VectorResult& r) -> py::object {
-            if (!r.report().requirement)
-              return py::none();
-            const auto by = [](const conf::BufferRequirement& b) {
-              return b.byGraphicsApis ? "graphics APIs" : "contract only";
-            };
-            py::dict d;
-            d["depth"] = by(r.report().requirement->depth);
-            d["stencil"] = by(r.report().requirement->stencil);
-            return d;
-          },
+          "required_by", &requirementOf,
           "Per buffer, whether the graphics APIs fix every pixel of the vector ('graphics "
           "APIs') or only this contract does ('contract only').")
       .def_property_readonly(
-          "api",
-          [](const VectorResult& r) -> py::object {
-            if (!r.report().api)
-              return py::none();
-            py::dict d;
-            d["forbidden_pixels"] = r.report().api->forbidden;
-            d["freedom_pixels"] = r.report().api->withinFreedom;
-            d["freedoms"] = freedomNames(r.report().api->freedoms);
-            return d;
-          },
+          "api", &apiOf,
           "A failing vector's bad pixels against the graphics APIs, as the JSON's 'api': "
           "forbidden_pixels, freedom_pixels, freedoms; None for a passing one.")
-      .def_property_readonly(
-          "explained",
-          [](const VectorResult& r) {
-            std::vector<Explanation> out;
-            for (std::size_t i = 0; i < r.report().explained.size(); ++i) {
-              out.push_back({r.report().explained[i],
-                             i < r.report().apiVerdicts.size()
-                                 ? std::optional<conf::ApiVerdict>(r.report().apiVerdicts[i])
-                                 : std::nullopt});
-            }
-            return out;
-          },
-          "The first `explain` bad pixels explained, as Explanation objects.")
+      .def_property_readonly("explained", &explanationsOf,
+                             "The first `explain` bad pixels explained, as Explanation objects.")
       .def_property_readonly(
           "behaves_like", [](const VectorResult& r) { return readingNames(r.run->behavesLike); },
           "The kit's wrong readings the run names (whose answers equal the back end's on every "
@@ -622,7 +687,9 @@ void bindConformance(py::module_& parent) {
            "The vector's entry of `recode conform --json`'s results, as Python data.")
       .def("__str__", [](const VectorResult& r) { return r.text(4); })
       .def("__repr__", &repr);
+}
 
+void bindReport(py::module_& m) {
   py::class_<Report>(m, "Report",
                      "A whole run: what `recode conform` reports, as text (str()), JSON, JUnit, "
                      "HTML and a baseline.")
@@ -631,30 +698,12 @@ void bindConformance(py::module_& parent) {
           "vectors", [](const Report& r) { return resultsOf(r.run); },
           "Every vector's VectorResult, in the order run.")
       .def_property_readonly(
-          "failures",
-          [](const Report& r) {
-            std::vector<VectorResult> out;
-            for (VectorResult& v : resultsOf(r.run)) {
-              if (conf::failsRun(v.report().status))
-                out.push_back(std::move(v));
-            }
-            return out;
-          },
+          "failures", &failuresOf,
           "The vectors that fail the run (failed, unexpectedly passed, nondeterministic).")
       .def_property_readonly(
           "passed", [](const Report& r) { return r.report().passed(); },
           "No error and no vector that fails the run (`recode conform`'s exit status 0).")
-      .def_property_readonly(
-          "counts",
-          [](const Report& r) {
-            py::dict d;
-            d["passed"] = r.report().count(conf::Status::Passed);
-            d["failed"] = r.report().count(conf::Status::Failed);
-            d["expected_failures"] = r.report().count(conf::Status::ExpectedFailure);
-            d["unexpected_passes"] = r.report().count(conf::Status::UnexpectedPass);
-            d["nondeterministic"] = r.report().count(conf::Status::Nondeterministic);
-            return d;
-          })
+      .def_property_readonly("counts", &countsOf)
       .def_property_readonly(
           "behaves_like", [](const Report& r) { return readingNames(r.report().behavesLike); },
           "The kit's wrong readings whose answers equal the back end's on every vector.")
@@ -664,12 +713,7 @@ void bindConformance(py::module_& parent) {
       .def_property_readonly(
           "fingerprint", [](const Report& r) { return conf::describe(r.report().fingerprint); },
           "Which of the APIs' freedoms the back end takes, as the report's lines.")
-      .def_property_readonly("error",
-                             [](const Report& r) {
-                               return r.report().error.empty()
-                                          ? std::nullopt
-                                          : std::optional<std::string>(r.report().error);
-                             })
+      .def_property_readonly("error", [](const Report& r) { return noneIfEmpty(r.report().error); })
       .def_property_readonly(
           "error_kind",
           [](const Report& r) {
@@ -678,32 +722,14 @@ void bindConformance(py::module_& parent) {
                        : std::nullopt;
           })
       .def_property_readonly("error_vector",
-                             [](const Report& r) {
-                               return r.report().errorVector.empty()
-                                          ? std::nullopt
-                                          : std::optional<std::string>(r.report().errorVector);
-                             })
+                             [](const Report& r) { return noneIfEmpty(r.report().errorVector); })
       .def("text", &Report::text, py::arg("explain") = 4,
            "What `recode conform --explain N` prints.")
-      .def(
-          "summary",
-          [](const Report& r) {
-            std::ostringstream out;
-            conf::printSummary(out, r.report());
-            return out.str();
-          },
-          "The closing lines: counts, the named reading or the stages, the fingerprint.")
-      .def(
-          "to_json",
-          [](const Report& r, const py::kwargs& fields) {
-            std::vector<std::pair<std::string, std::string>> extra;
-            for (const auto& [key, value] : fields)
-              extra.emplace_back(py::str(key).cast<std::string>(),
-                                 py::str(value).cast<std::string>());
-            return conf::toJson(r.report(), extra);
-          },
-          "What `recode conform --json` prints; keyword arguments add top-level strings (the "
-          "program adds exec=COMMAND).")
+      .def("summary", &summaryOf,
+           "The closing lines: counts, the named reading or the stages, the fingerprint.")
+      .def("to_json", &reportJson,
+           "What `recode conform --json` prints; keyword arguments add top-level strings (the "
+           "program adds exec=COMMAND).")
       .def(
           "to_junit", [](const Report& r) { return conf::toJunit(r.report()); },
           "What `recode conform --junit FILE` writes.")
@@ -714,106 +740,62 @@ void bindConformance(py::module_& parent) {
           "to_baseline", [](const Report& r) { return conf::toBaseline(r.report()); },
           "What `recode conform --write-baseline FILE` writes.")
       .def("__str__", [](const Report& r) { return r.text(4); })
-      .def("__repr__", [](const Report& r) {
-        return "<recode.conformance.Report " + r.report().backend + ": " +
-               std::to_string(r.report().vectors.size()) + " vectors, " +
-               std::to_string(r.report().count(conf::Status::Passed)) + " passed, " +
-               std::to_string(r.report().count(conf::Status::Failed)) + " failed" +
-               (r.report().error.empty() ? "" : ", error") + ">";
-      });
+      .def("__repr__", &reportRepr);
+}
 
-  m.def(
-      "check",
-      [](const conf::SuiteVector& vector, const py::object& depth, const py::object& stencil,
-         const std::optional<std::string>& refused, std::size_t explain,
-         const py::object& baseline_stage) {
-        conf::Answer answer;
-        if (refused) {
-          if (refused->empty())
-            throw py::value_error("refused: expected the reason, got ''");
-          answer.refused = *refused;
-        } else {
-          if (depth.is_none() || stencil.is_none())
-            throw py::type_error("check: expected depth and stencil, or refused=REASON");
-          answer = answerFrom(depth, stencil, vector.golden.stream.width,
-                              vector.golden.stream.height, "");
-        }
-        conf::SuiteOptions options;
-        options.explainLimit = explain;
-        if (!baseline_stage.is_none())
-          options.baseline.emplace(
-              vector.name,
-              stageFrom(py::str(baseline_stage).cast<std::string>(), "baseline_stage"));
-        FixedBackend backend(std::move(answer));
-        const std::vector<conf::SuiteVector> one = {vector};
-        conf::SuiteReport report;
-        {
-          const py::gil_scoped_release release;
-          report = conf::runSuite(backend, one, options);
-        }
-        return VectorResult{std::make_shared<const conf::SuiteReport>(std::move(report)), 0};
-      },
-      py::arg("vector"), py::arg("depth") = py::none(), py::arg("stencil") = py::none(),
-      py::kw_only(), py::arg("refused") = py::none(), py::arg("explain") = 4096,
-      py::arg("baseline_stage") = py::none(),
-      "Checks one answer to `vector`: depth and stencil as (height, width) arrays (row 0 the "
-      "bottom row) or flat, bottom row first, of integers (depth 0..16777215, stencil 0..255); "
-      "or refused='why'. Returns a VectorResult with what `recode conform` says of that vector "
-      "run alone: the bad pixels, the stage, the contract's section, the APIs' verdicts, the "
-      "first `explain` bad pixels explained, the readings named. `baseline_stage`: the stage a "
-      "baseline expects it to fail at.");
+}  // namespace
 
+void bindConformance(py::module_& parent) {
+  py::module_ m = parent.def_submodule(
+      "conformance",
+      "The conformance suite for a depth/stencil back end written in Python "
+      "(docs/conformance.md, docs/api.md#the-conformance-kit-in-python): the golden vectors, "
+      "check() of one answer and run() of a whole back end, with the reports of `recode "
+      "conform`.");
+  py::register_exception<raster::FormatError>(m, "FormatError", PyExc_ValueError);
+  refusedType = py::register_exception<RefusedTag>(m, "Refused", PyExc_Exception);
+  refusedType.attr("__doc__") =
+      "Raise it from a back end to refuse a stream (rasterization.md section 2), with the "
+      "reason as its message: the vector fails at the stage 'validation'.";
+
+  bindVector(m);
   m.def(
-      "run",
-      [](const py::object& backend, const py::object& vectors,
-         const std::optional<std::string>& name, std::size_t explain, int repeat,
-         const py::object& baseline) {
-        if (!PyCallable_Check(backend.ptr()))
-          throw py::type_error(
-              "backend: expected a callable backend(width, height, commands) -> "
-              "(depth, stencil), got " +
-              py::str(py::type::of(backend)).cast<std::string>());
-        std::vector<conf::SuiteVector> list;
-        std::string source;
-        if (vectors.is_none() || py::isinstance<py::str>(vectors) ||
-            py::hasattr(vectors, "__fspath__")) {
-          const fs::path dir =
-              goldenDirOf(vectors.is_none() ? std::nullopt : std::optional<py::object>(vectors));
-          list = readVectors(dir);
-          source = std::to_string(list.size()) + " golden vectors under " + dir.string();
-        } else {
-          for (const py::handle v : vectors)
-            list.push_back(v.cast<conf::SuiteVector>());
-          source = std::to_string(list.size()) + " golden vectors";
-        }
-        std::string backendName;
-        if (name)
-          backendName = *name;
-        else if (py::hasattr(backend, "__name__"))
-          backendName = py::str(backend.attr("__name__")).cast<std::string>();
-        else
-          backendName = py::str(py::type::of(backend).attr("__name__")).cast<std::string>();
-        const conf::SuiteOptions options = optionsOf(explain, repeat, baseline);
-        PythonBackend python(backend, backendName);
-        Report report;
-        report.source = std::move(source);
-        {
-          const py::gil_scoped_release release;
-          report.run =
-              std::make_shared<const conf::SuiteReport>(conf::runSuite(python, list, options));
-        }
-        return report;
+      "golden_dir", []() { return defaultGoldenDir().string(); },
+      "The directory vectors() reads when given none: $RECODE_GOLDEN_DIR, else the source "
+      "tree's data/golden this module was built from, else share/recode/golden under the "
+      "install prefix; FileNotFoundError when none exists.");
+  m.def(
+      "vectors",
+      [](const std::optional<py::object>& directory) {
+        return readVectors(goldenDirOf(directory));
       },
-      py::arg("backend"), py::arg("vectors") = py::none(), py::kw_only(),
-      py::arg("name") = py::none(), py::arg("explain") = 4096, py::arg("repeat") = 1,
-      py::arg("baseline") = py::none(),
-      "Runs the suite on a back end in this process: `backend(width, height, commands)` (commands "
-      "as Vector.commands) returns (depth, stencil) as check() takes them, or raises Refused. "
-      "`vectors`: a directory, a list of Vector, or None for golden_dir(). `name`: the back end's "
-      "name in the reports (default: the callable's __name__). `baseline`: a file of expected "
-      "failures (NAME,STAGE lines) or a dict {name: stage}. Returns a Report. An answer of the "
-      "wrong shape or range ends the run with the report's error (kind 'malformed'), as in "
-      "`recode conform`; any other exception from the back end propagates.");
+      py::arg("directory") = py::none(),
+      "The golden vectors under `directory` (every *.json, recursively, sorted by path), or "
+      "under golden_dir() when it is None: a list of Vector.");
+  bindExplanation(m);
+  bindVectorResult(m);
+  bindReport(m);
+
+  m.def("check", &checkAnswer, py::arg("vector"), py::arg("depth") = py::none(),
+        py::arg("stencil") = py::none(), py::kw_only(), py::arg("refused") = py::none(),
+        py::arg("explain") = 4096, py::arg("baseline_stage") = py::none(),
+        "Checks one answer to `vector`: depth and stencil as (height, width) arrays (row 0 the "
+        "bottom row) or flat, bottom row first, of integers (depth 0..16777215, stencil 0..255); "
+        "or refused='why'. Returns a VectorResult with what `recode conform` says of that vector "
+        "run alone: the bad pixels, the stage, the contract's section, the APIs' verdicts, the "
+        "first `explain` bad pixels explained, the readings named. `baseline_stage`: the stage a "
+        "baseline expects it to fail at.");
+  m.def("run", &runBackend, py::arg("backend"), py::arg("vectors") = py::none(), py::kw_only(),
+        py::arg("name") = py::none(), py::arg("explain") = 4096, py::arg("repeat") = 1,
+        py::arg("baseline") = py::none(),
+        "Runs the suite on a back end in this process: `backend(width, height, commands)` "
+        "(commands as Vector.commands) returns (depth, stencil) as check() takes them, or raises "
+        "Refused. `vectors`: a directory, a list of Vector, or None for golden_dir(). `name`: the "
+        "back end's name in the reports (default: the callable's __name__). `baseline`: a file "
+        "of expected failures (NAME,STAGE lines) or a dict {name: stage}. Returns a Report. An "
+        "answer of the wrong shape or range ends the run with the report's error (kind "
+        "'malformed'), as in `recode conform`; any other exception from the back end "
+        "propagates.");
 }
 
 }  // namespace recode::python

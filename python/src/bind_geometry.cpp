@@ -5,7 +5,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <cerrno>
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -14,6 +14,8 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "errors.hpp"
+#include "pickle_state.hpp"
 #include "recode/api/geometry.hpp"
 #include "recode/geometry/generators.hpp"
 
@@ -37,13 +39,8 @@ BlockHolder heldBlock(const py::handle& block) {
 // A missing mesh file is FileNotFoundError, as open() raises it; anything wrong inside a file
 // is the reader's MeshError.
 void requireFile(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) {
-    const py::object error =
-        py::module_::import("builtins")
-            .attr("FileNotFoundError")(ENOENT, "no such mesh file", path.string());
-    PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
-    throw py::error_already_set();
-  }
+  if (!std::filesystem::exists(path))
+    fileNotFound("no such mesh file", path.string());
 }
 
 BlockHolder blockFromFile(const std::filesystem::path& path) {
@@ -90,9 +87,89 @@ const BlockPart& partAt(const CollisionGeometry& g, std::size_t i) {
   return g.part(i);
 }
 
-}  // namespace
+BlockHolder blockFromFileHull(const std::filesystem::path& path) {
+  requireFile(path);
+  return held(ConvexBlock::fromFileHull(path));
+}
 
-void bindGeometry(py::module_& m) {
+// The block's triangles as an (m, 3) uint32 array (a copy: Triangle is std::array).
+py::array_t<core::VertexIndex> facesOf(const ConvexBlock& block) {
+  const auto& triangles = block.mesh().triangles;
+  py::array_t<core::VertexIndex> out({static_cast<long>(triangles.size()), 3L});
+  core::VertexIndex* flat = out.mutable_data();
+  for (const core::Triangle& t : triangles)
+    flat = std::copy(t.begin(), t.end(), flat);
+  return out;
+}
+
+GeometryHolder compoundFrom(const py::sequence& parts, std::string name) {
+  std::vector<BlockPart> list;
+  for (std::size_t i = 0; i < py::len(parts); ++i)
+    list.push_back(partFrom(parts[i], i));
+  return held(CollisionGeometry::compound(std::move(list), std::move(name)));
+}
+
+GeometryHolder geometryFromObjGroups(const std::filesystem::path& path, bool hull) {
+  requireFile(path);
+  return held(CollisionGeometry::fromObjGroups(path, hull));
+}
+
+constexpr const char* kBlockType = "recode.ConvexBlock";
+constexpr const char* kGeometryType = "recode.CollisionGeometry";
+
+// (format, name, vertices (n, 3), faces (m, 3)); made again through fromArrays, so validated.
+py::tuple blockState(const ConvexBlock& block) {
+  return makeState(block.name(), pointsState(block.mesh().vertices), facesOf(block));
+}
+BlockHolder blockFromState(const py::tuple& state) {
+  checkState(state, kBlockType, 3);
+  const std::vector<Eigen::Vector3d> v = pointsFromState(state[2], kBlockType, "vertices");
+  const std::vector<core::Triangle> f = facesFrom(state[3], v.size(), "faces");
+  return held(ConvexBlock::fromArrays(v, f, stateItem<std::string>(state[1], kBlockType, "name")));
+}
+
+// (format, name, single, [blocks], poses (n, 4, 4)): single() and compound() build different
+// trees (a leaf alone, or a root over the leaves), so which one made it is kept.
+py::tuple geometryState(const CollisionGeometry& g) {
+  py::list blocks;
+  py::array_t<double> poses(
+      {static_cast<py::ssize_t>(g.blockCount()), py::ssize_t{4}, py::ssize_t{4}});
+  double* p = poses.mutable_data();
+  for (std::size_t i = 0; i < g.blockCount(); ++i) {
+    blocks.append(held(g.part(i).block));
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        *p++ = g.part(i).pose.matrix()(r, c);
+  }
+  const bool single = g.tree().nodes().size() == 1;
+  return makeState(g.tree().name(), single, blocks, poses);
+}
+GeometryHolder geometryFromState(const py::tuple& state) {
+  checkState(state, kGeometryType, 4);
+  auto name = stateItem<std::string>(state[1], kGeometryType, "name");
+  const bool single = stateItem<bool>(state[2], kGeometryType, "kind");
+  const auto blocks = stateItem<std::vector<BlockHolder>>(state[3], kGeometryType, "blocks");
+  const RealArray poses = realArray(state[4], "poses");
+  if (poses.ndim() != 3 || poses.shape(0) != static_cast<py::ssize_t>(blocks.size()) ||
+      poses.shape(1) != 4 || poses.shape(2) != 4 || (single && blocks.size() != 1))
+    throw py::value_error(std::string(kGeometryType) +
+                          ": the pickled state's poses are not one 4 x 4 matrix per block");
+  std::vector<BlockPart> parts;
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    parts.push_back({blocks[i], rigidMotionFrom(poses.data() + 16 * i, [i] {
+                       return "poses[" + std::to_string(i) + "]";
+                     })});
+  if (single)
+    return held(CollisionGeometry::single(parts.front().block));
+  return held(CollisionGeometry::compound(std::move(parts), std::move(name)));
+}
+
+// Shapes are immutable: a copy, deep or not, is the shape itself.
+py::object itself(const py::object& self, const py::args&) {
+  return self;
+}
+
+void bindConvexBlock(py::module_& m) {
   py::class_<ConvexBlock, BlockHolder>(
       m, "ConvexBlock",
       "A closed convex block, validated when made (recode.MeshError names the problem).")
@@ -106,12 +183,7 @@ void bindGeometry(py::module_& m) {
                   "The convex hull of an (n, 3) array of points (exact; extreme points only). "
                   "Fewer than 4 points, or all on one line or plane, raise recode.MeshError.")
       .def_static(
-          "from_file_hull",
-          [](const std::filesystem::path& path) {
-            requireFile(path);
-            return held(ConvexBlock::fromFileHull(path));
-          },
-          py::arg("path"),
+          "from_file_hull", &blockFromFileHull, py::arg("path"),
           "The convex hull of all vertices of an OBJ or OFF file, for collision meshes that "
           "are convex in shape but not a clean closed surface.")
       .def_property_readonly("name", &ConvexBlock::name)
@@ -121,25 +193,18 @@ void bindGeometry(py::module_& m) {
             return pointsView(self.cast<const ConvexBlock&>().mesh().vertices, self);
           },
           "(n, 3) float64, read-only")
-      .def_property_readonly(
-          "faces",
-          [](const py::object& self) {
-            const auto& triangles = self.cast<const ConvexBlock&>().mesh().triangles;
-            static_assert(sizeof(core::Triangle) == 3 * sizeof(core::VertexIndex));
-            std::vector<core::VertexIndex> flat;  // a copy: Triangle is std::array
-            flat.reserve(3 * triangles.size());
-            for (const core::Triangle& t : triangles)
-              flat.insert(flat.end(), t.begin(), t.end());
-            py::array_t<core::VertexIndex> out({static_cast<long>(triangles.size()), 3L});
-            std::copy(flat.begin(), flat.end(), out.mutable_data());
-            return out;
-          },
-          "(m, 3) uint32 vertex indices (a copy)")
+      .def_property_readonly("faces", &facesOf, "(m, 3) uint32 vertex indices (a copy)")
+      .def(py::pickle(&blockState, &blockFromState))
+      .def("__copy__", &itself)
+      .def("__deepcopy__", &itself)
       .def("__repr__", [](const ConvexBlock& b) {
         return "<recode.ConvexBlock '" + b.name() + "': " + std::to_string(b.mesh().vertexCount()) +
                " vertices, " + std::to_string(b.mesh().triangleCount()) + " triangles>";
       });
+}
 
+// The primitive solids of recode/geometry/generators.hpp as ready-made blocks.
+void bindSolids(py::module_& m) {
   m.def(
       "cone",
       [](double radius, double height, int segments, std::string name) {
@@ -168,33 +233,22 @@ void bindGeometry(py::module_& m) {
       },
       py::arg("radius"), py::arg("segments") = 32, py::arg("rings") = 16,
       py::arg("name") = "sphere", "A tessellated sphere centred at the origin.");
+}
 
+void bindCollisionGeometry(py::module_& m) {
   py::class_<CollisionGeometry, GeometryHolder>(
       m, "CollisionGeometry",
       "An object's shape: one or several convex blocks fixed together; shared by objects.")
       .def_static(
           "single", [](const BlockHolder& block) { return held(CollisionGeometry::single(block)); },
           py::arg("block"))
-      .def_static(
-          "compound",
-          [](const py::sequence& parts, std::string name) {
-            std::vector<BlockPart> list;
-            for (std::size_t i = 0; i < py::len(parts); ++i)
-              list.push_back(partFrom(parts[i], i));
-            return held(CollisionGeometry::compound(std::move(list), std::move(name)));
-          },
-          py::arg("parts"), py::arg("name") = "compound",
-          "Blocks, each a ConvexBlock or a (ConvexBlock, 4 x 4 pose in the object) tuple; "
-          "results name blocks by their index here.")
-      .def_static(
-          "from_obj_groups",
-          [](const std::filesystem::path& path, bool hull) {
-            requireFile(path);
-            return held(CollisionGeometry::fromObjGroups(path, hull));
-          },
-          py::arg("path"), py::arg("hull") = false,
-          "One block per object or group of an OBJ file (`o convex_0`, ... as convex "
-          "decompositions write them), each validated or, with hull=True, hulled.")
+      .def_static("compound", &compoundFrom, py::arg("parts"), py::arg("name") = "compound",
+                  "Blocks, each a ConvexBlock or a (ConvexBlock, 4 x 4 pose in the object) tuple; "
+                  "results name blocks by their index here.")
+      .def_static("from_obj_groups", &geometryFromObjGroups, py::arg("path"),
+                  py::arg("hull") = false,
+                  "One block per object or group of an OBJ file (`o convex_0`, ... as convex "
+                  "decompositions write them), each validated or, with hull=True, hulled.")
       .def_property_readonly("block_count", &CollisionGeometry::blockCount)
       .def("__len__", &CollisionGeometry::blockCount)
       .def(
@@ -204,7 +258,18 @@ void bindGeometry(py::module_& m) {
       .def(
           "block_pose",
           [](const CollisionGeometry& g, std::size_t i) { return matrixOf(partAt(g, i).pose); },
-          py::arg("index"), "Block `index`'s pose in the object, 4 x 4.");
+          py::arg("index"), "Block `index`'s pose in the object, 4 x 4.")
+      .def(py::pickle(&geometryState, &geometryFromState))
+      .def("__copy__", &itself)
+      .def("__deepcopy__", &itself);
+}
+
+}  // namespace
+
+void bindGeometry(py::module_& m) {
+  bindConvexBlock(m);
+  bindSolids(m);
+  bindCollisionGeometry(m);
 }
 
 }  // namespace recode::python

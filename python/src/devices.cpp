@@ -35,13 +35,13 @@ core::DeviceFactory deviceFactory(const std::string& name) {
   }
 }
 
-DevicePool& devicePool(const std::string& name) {
+SharedPool& devicePool(const std::string& name) {
   // Leaked on purpose: GPU-API devices share process-wide contexts that must outlive them, and
-  // Python gives no order of destruction at exit.
-  static auto& pools = *new std::map<std::string, DevicePool>();
+  // Python gives no order of destruction at exit. A std::map: its entries never move.
+  static auto& pools = *new std::map<std::string, SharedPool>();
   auto it = pools.find(name);
   if (it == pools.end())
-    it = pools.emplace(name, DevicePool(deviceFactory(name))).first;
+    it = pools.try_emplace(name, DevicePool(deviceFactory(name))).first;
   return it->second;
 }
 

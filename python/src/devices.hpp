@@ -6,7 +6,9 @@
 
 #include <pybind11/pybind11.h>
 
+#include <mutex>
 #include <string>
+#include <utility>
 
 #include "recode/api/device_pool.hpp"
 
@@ -14,10 +16,21 @@ namespace recode::python {
 
 namespace py = pybind11;
 
+// A device's pool, shared by every Python thread that names the device, and the lock a query
+// holds while it draws on it (a device draws for one thread at a time). Take the lock only
+// without the GIL (after py::gil_scoped_release), so that no thread waits for it while holding
+// the GIL; taking the GIL back while holding it is allowed.
+struct SharedPool {
+  explicit SharedPool(DevicePool p) : pool(std::move(p)) {}
+  DevicePool pool;
+  std::mutex mutex;
+};
+
 // The pool of the named device, made on first use and kept for the module's life (devices of
 // GPU APIs are warmed up once, on first use of a frame size). Throws std::invalid_argument (a
 // ValueError) for a name the registry does not know or a device this module lacks, saying why.
-DevicePool& devicePool(const std::string& name);
+// Call it with the GIL held (the GIL guards the table of pools).
+SharedPool& devicePool(const std::string& name);
 
 // A factory for CollisionManager: empty for "cpu"; throws as devicePool.
 core::DeviceFactory deviceFactory(const std::string& name);

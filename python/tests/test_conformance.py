@@ -209,6 +209,20 @@ def test_check_gives_one_vectors_facts(top_left, by_name):
     assert passed.passed and passed.stage is None and str(passed) == "  pass  kit/slivers_3.json\n"
 
 
+def test_bad_pixels_are_packed_records_of_the_documented_fields(top_left, by_name):
+    vector = by_name["kit/slivers_3.json"]
+    depth, stencil = as_backend(top_left["module"])(vector.width, vector.height, vector.commands)
+    bad = conformance.check(vector, depth, stencil).bad_pixels
+    assert bad.dtype == np.dtype([("x", "<i4"), ("y", "<i4"), ("expected_depth", "<u4"),
+                                  ("got_depth", "<u4"), ("expected_stencil", "u1"),
+                                  ("got_stencil", "u1")])
+    assert bad.dtype.itemsize == 18 and len(bad) > 0
+    assert (bad["expected_depth"] == vector.depth[bad["y"], bad["x"]]).all()
+    assert (bad["got_stencil"] == stencil[bad["y"], bad["x"]]).all()
+    none = conformance.check(vector, vector.depth, vector.stencil).bad_pixels
+    assert none.dtype == bad.dtype and none.shape == (0,)
+
+
 def test_a_refusal(by_name):
     result = conformance.check(by_name["fill_square.json"], refused="no draws today")
     assert (result.passed, result.stage, result.refused) == (False, "validation", "no draws today")
