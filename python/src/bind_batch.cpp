@@ -6,7 +6,6 @@
 // request.threads other than 1 the queries are spread over oneTBB threads (the pool the C++ API
 // decides block pairs on), each with copies of its own. Between queries the calling thread hears
 // Ctrl-C and reports progress (query_watch.hpp). BatchResult pickles (pickle_state.hpp).
-#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/enumerable_thread_specific.h>
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -15,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -233,29 +233,36 @@ void runInTurn(const std::vector<CollisionObject>& objects, const std::vector<Qu
 }
 
 // The queries spread over oneTBB threads, each with copies of the objects of its own; each
-// query's block pairs on its thread. The caller's thread runs queries too, and polls the watch
-// between its own; once it is stopped no thread starts another query.
+// query's block pairs on its thread. They run in chunks, and the caller's thread polls the watch
+// between chunks (inside one, it may wait on the other threads rather than run queries itself);
+// a chunk grows while it takes under kChunkTime, so Ctrl-C waits for at most about that long
+// past the watch's interval.
 void runSpread(const std::vector<CollisionObject>& objects, const std::vector<Query>& queries,
                CollisionRequest request, QueryWatch& watch, std::vector<Answer>& answers) {
+  constexpr auto kChunkTime = std::chrono::milliseconds(50);
   const int threads = request.threads;
   request.threads = 1;
   const int concurrency = threads > 0 ? std::min(threads, tbb::info::default_concurrency())
                                       : tbb::info::default_concurrency();
   tbb::enumerable_thread_specific<std::vector<CollisionObject>> copies(objects);
   tbb::task_arena arena(concurrency);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, queries.size()),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                          if (watch.stopped())
-                            return;
-                          answers[i] =
-                              runQuery(copies.local(), objects, queries[i], i, request, nullptr);
-                          watch.queryDone();
-                          watch.poll();
-                        }
-                      });
-  });
+  std::size_t chunk = static_cast<std::size_t>(concurrency);
+  for (std::size_t begin = 0; begin < queries.size() && !watch.stopped();) {
+    const std::size_t end = std::min(queries.size(), begin + chunk);
+    const auto start = std::chrono::steady_clock::now();
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t{begin}, end, [&](std::size_t i) {
+        answers[i] = runQuery(copies.local(), objects, queries[i], i, request, nullptr);
+        watch.queryDone();
+      });
+    });
+    begin = end;
+    if (std::chrono::steady_clock::now() - start < kChunkTime)
+      chunk *= 2;
+    else if (chunk > static_cast<std::size_t>(concurrency))
+      chunk /= 2;
+    watch.poll();
+  }
 }
 
 // Every query without the GIL, Ctrl-C and `progress` heard between queries (query_watch.hpp).
