@@ -5,7 +5,7 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
+#include <cstring>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -21,6 +21,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The bits of a value (std::bit_cast, which the WebAssembly build's libc++ lacks).
+template <class To, class From>
+To bitsOf(const From& from) {
+  static_assert(sizeof(To) == sizeof(From));
+  To to;
+  std::memcpy(&to, &from, sizeof to);
+  return to;
+}
+
 constexpr std::size_t kBinaryHeaderBytes = 80;
 constexpr std::size_t kBinaryPreambleBytes = kBinaryHeaderBytes + 4;  // header, triangle count
 constexpr std::size_t kBinaryTriangleBytes = 50;  // normal, 3 corners (12 floats), attribute
@@ -31,9 +40,8 @@ class Welder {
  public:
   VertexIndex add(const Eigen::Vector3d& p) {
     // +0.0 turns -0 into +0, so that equal coordinates have equal bits.
-    const Key key{std::bit_cast<std::uint64_t>(p.x() + 0.0),
-                  std::bit_cast<std::uint64_t>(p.y() + 0.0),
-                  std::bit_cast<std::uint64_t>(p.z() + 0.0)};
+    const Key key{bitsOf<std::uint64_t>(p.x() + 0.0), bitsOf<std::uint64_t>(p.y() + 0.0),
+                  bitsOf<std::uint64_t>(p.z() + 0.0)};
     const auto [it, inserted] =
         index_.try_emplace(key, static_cast<VertexIndex>(mesh_.vertices.size()));
     if (inserted) {
@@ -93,7 +101,7 @@ TriangleMesh parseBinary(const fs::path& path, std::string_view data, std::uint3
     for (int c = 0; c < 3; ++c) {
       for (int axis = 0; axis < 3; ++axis) {
         const std::uint32_t bits = readLittleEndian32(record + 12 + 12 * c + 4 * axis);
-        corners[c][axis] = static_cast<double>(std::bit_cast<float>(bits));
+        corners[c][axis] = static_cast<double>(bitsOf<float>(bits));
       }
       if (!corners[c].allFinite()) {
         fail(path, "triangle " + std::to_string(t) + " corner " + std::to_string(c) +
