@@ -9,6 +9,13 @@
 
 namespace recode::explain {
 
+// Parts of the object, shared with the layered pair's (layered_report.hpp): a pixel rectangle
+// [x0, y0, x1, y1]; the `contact` object; the `frame` object.
+[[nodiscard]] nlohmann::ordered_json pixelRectJson(const raster::PixelRect& rect);
+[[nodiscard]] nlohmann::ordered_json contactRegionJson(const core::ContactRegion& contact);
+[[nodiscard]] nlohmann::ordered_json frameJson(const core::FrameSpec& frame, double depthMin,
+                                               double depthMax);
+
 // The object printed by `recode pair --json` (keys documented in docs/cli.md).
 [[nodiscard]] nlohmann::ordered_json pairResultToJson(const PairSetup& setup,
                                                       const core::PairRequest& request,

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <string>
 
+#include "pair/pair_report.hpp"
 #include "recode/io/printable.hpp"
 
 namespace recode::explain {
@@ -11,14 +12,6 @@ namespace recode::explain {
 namespace {
 
 using nlohmann::ordered_json;
-
-ordered_json vec(const Eigen::Vector3d& v) {
-  return ordered_json::array({v.x(), v.y(), v.z()});
-}
-
-ordered_json rect(const raster::PixelRect& r) {
-  return ordered_json::array({r.x0, r.y0, r.x1, r.y1});
-}
 
 const char* kindOf(bool closed) {
   return closed ? "closed mesh" : "convex block";
@@ -56,29 +49,13 @@ ordered_json layeredResultToJson(const PairSetup& setup, const core::PairRequest
   ordered_json j;
   j["method"] = "layered";
   j["collide"] = r.collide;
-  j["mor"] = rect(r.mor);
+  j["mor"] = pixelRectJson(r.mor);
   j["interfering_pixels"] = r.interferingPixels;
   j["overlap_volume"] = r.overlapVolume;
   j["containment"] = core::toString(r.containment);
   j["layers"] = ordered_json::array({r.layersA, r.layersB});
   j["passes"] = r.passes;
-  ordered_json contact;
-  ordered_json points = ordered_json::array();
-  for (const Eigen::Vector3d& p : r.contact.points)
-    points.push_back(vec(p));
-  contact["points"] = points;
-  contact["box"] = r.contact.box.isEmpty()
-                       ? ordered_json(nullptr)
-                       : ordered_json::array({vec(r.contact.box.min), vec(r.contact.box.max)});
-  contact["area"] = r.contact.area;
-  contact["max_depth"] = r.contact.maxDepth;
-  contact["pixels"] = r.contact.pixels;
-  contact["collapsed_pixels"] = r.contact.collapsedPixels;
-  if (r.contact.normal) {
-    contact["normal"] = vec(r.contact.normal->normal);
-    contact["penetration_depth"] = r.contact.normal->depth;
-  }
-  j["contact"] = contact;
+  j["contact"] = contactRegionJson(r.contact);
   j["timing_us"] = r.timing.totalUs;
   ordered_json steps;
   for (int s = 0; s < core::kLayerStepCount; ++s)
@@ -89,14 +66,8 @@ ordered_json layeredResultToJson(const PairSetup& setup, const core::PairRequest
   j["boxes_overlap"] = r.boxesOverlap;
   j["stencil_pixels_read"] = r.stencilPixelsRead;
   j["depth_pixels_read"] = r.depthPixelsRead;
-  j["contact_rect"] = rect(r.contactRect);
-  ordered_json frame;
-  frame["axis"] = core::toString(setup.frame.axis);
-  const core::ViewWindow& w = setup.frame.window;
-  frame["window"] = ordered_json::array({w.umin, w.vmin, w.umax, w.vmax});
-  frame["resolution"] = ordered_json::array({setup.frame.width, setup.frame.height});
-  frame["depth_range"] = ordered_json::array({r.depthMin, r.depthMax});
-  j["frame"] = frame;
+  j["contact_rect"] = pixelRectJson(r.contactRect);
+  j["frame"] = frameJson(setup.frame, r.depthMin, r.depthMax);
   j["objects"] = ordered_json::array({setup.nameA, setup.nameB});
   j["closed"] = ordered_json::array({setup.closedA, setup.closedB});
   j["source"] = setup.source;

@@ -15,10 +15,6 @@ ordered_json vec(const Eigen::Vector3d& v) {
   return ordered_json::array({v.x(), v.y(), v.z()});
 }
 
-ordered_json rect(const raster::PixelRect& r) {
-  return ordered_json::array({r.x0, r.y0, r.x1, r.y1});
-}
-
 // One character per case for the text picture: the case's digit 0-8, so that every case can
 // be told apart (1 A only, 2 B behind A, 7 B in front of A, 8 B only).
 char caseGlyph(int c) {
@@ -101,33 +97,50 @@ void printCasePicture(std::ostream& out, const core::PairResult& r) {
 
 }  // namespace
 
+ordered_json pixelRectJson(const raster::PixelRect& r) {
+  return ordered_json::array({r.x0, r.y0, r.x1, r.y1});
+}
+
+ordered_json contactRegionJson(const core::ContactRegion& c) {
+  ordered_json contact;
+  ordered_json points = ordered_json::array();
+  for (const Eigen::Vector3d& p : c.points)
+    points.push_back(vec(p));
+  contact["points"] = points;
+  contact["box"] = c.box.isEmpty() ? ordered_json(nullptr)
+                                   : ordered_json::array({vec(c.box.min), vec(c.box.max)});
+  contact["area"] = c.area;
+  contact["max_depth"] = c.maxDepth;
+  contact["pixels"] = c.pixels;
+  contact["collapsed_pixels"] = c.collapsedPixels;
+  if (c.normal) {  // only with --normal, so the default report keeps its bytes
+    contact["normal"] = vec(c.normal->normal);
+    contact["penetration_depth"] = c.normal->depth;
+  }
+  return contact;
+}
+
+ordered_json frameJson(const core::FrameSpec& f, double depthMin, double depthMax) {
+  ordered_json frame;
+  frame["axis"] = core::toString(f.axis);
+  const core::ViewWindow& w = f.window;
+  frame["window"] = ordered_json::array({w.umin, w.vmin, w.umax, w.vmax});
+  frame["resolution"] = ordered_json::array({f.width, f.height});
+  frame["depth_range"] = ordered_json::array({depthMin, depthMax});
+  return frame;
+}
+
 ordered_json pairResultToJson(const PairSetup& setup, const core::PairRequest& request,
                               const core::PairResult& r) {
   ordered_json j;
   j["collide"] = r.collide;
-  j["mor"] = rect(r.mor);
+  j["mor"] = pixelRectJson(r.mor);
   ordered_json counts = ordered_json::object();
   for (int c = 0; c < core::kCaseCount; ++c)
     counts[std::to_string(c)] = r.caseCounts[static_cast<std::size_t>(c)];
   j["case_counts"] = counts;
   j["interfering_pixels"] = r.interferingPixels;
-  ordered_json contact;
-  ordered_json points = ordered_json::array();
-  for (const Eigen::Vector3d& p : r.contact.points)
-    points.push_back(vec(p));
-  contact["points"] = points;
-  contact["box"] = r.contact.box.isEmpty()
-                       ? ordered_json(nullptr)
-                       : ordered_json::array({vec(r.contact.box.min), vec(r.contact.box.max)});
-  contact["area"] = r.contact.area;
-  contact["max_depth"] = r.contact.maxDepth;
-  contact["pixels"] = r.contact.pixels;
-  contact["collapsed_pixels"] = r.contact.collapsedPixels;
-  if (r.contact.normal) {  // only with --normal, so the default report keeps its bytes
-    contact["normal"] = vec(r.contact.normal->normal);
-    contact["penetration_depth"] = r.contact.normal->depth;
-  }
-  j["contact"] = contact;
+  j["contact"] = contactRegionJson(r.contact);
   j["timing_us"] = r.timing.totalUs;
   ordered_json steps;
   for (int s = 0; s < core::kPairStepCount; ++s)
@@ -139,14 +152,8 @@ ordered_json pairResultToJson(const PairSetup& setup, const core::PairRequest& r
   j["boxes_overlap"] = r.boxesOverlap;
   j["stencil_pixels_read"] = r.stencilPixelsRead;
   j["depth_pixels_read"] = r.depthPixelsRead;
-  j["contact_rect"] = rect(r.contactRect);
-  ordered_json frame;
-  frame["axis"] = core::toString(setup.frame.axis);
-  const core::ViewWindow& w = setup.frame.window;
-  frame["window"] = ordered_json::array({w.umin, w.vmin, w.umax, w.vmax});
-  frame["resolution"] = ordered_json::array({setup.frame.width, setup.frame.height});
-  frame["depth_range"] = ordered_json::array({r.depthMin, r.depthMax});
-  j["frame"] = frame;
+  j["contact_rect"] = pixelRectJson(r.contactRect);
+  j["frame"] = frameJson(setup.frame, r.depthMin, r.depthMax);
   j["objects"] = ordered_json::array({setup.nameA, setup.nameB});
   j["source"] = setup.source;
   return j;

@@ -6,6 +6,7 @@
 
 #include "recode/geometry/generators.hpp"
 #include "recode/geometry/mesh.hpp"
+#include "recode/pair/frame.hpp"
 
 namespace recode::test {
 
@@ -38,6 +39,18 @@ inline core::TriangleMesh shifted(const core::TriangleMesh& m, const Eigen::Vect
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translation() = offset;
   return core::transformed(m, t);
+}
+
+// A square frame of `width` pixels around both meshes along `axis` (the default window).
+inline core::FrameSpec frameAround(core::ViewAxis axis, const core::TriangleMesh& a,
+                                   const core::TriangleMesh& b, int width) {
+  core::Aabb bounds = core::boundingBox(a);
+  bounds.extend(core::boundingBox(b));
+  core::FrameSpec f;
+  f.axis = axis;
+  f.width = f.height = width;
+  f.window = core::defaultWindow(axis, bounds, std::array<int, 2>{width, width});
+  return f;
 }
 
 }  // namespace recode::test

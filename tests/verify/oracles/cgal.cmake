@@ -45,6 +45,8 @@ catch_discover_tests(recode_verify_layer_tests)
 add_executable(recode_verify_layer_real_tests oracles/layer_real_meshes_test.cpp)
 target_link_libraries(recode_verify_layer_real_tests PRIVATE recode_verify recode_warnings
                                                              Catch2::Catch2WithMain)
+target_include_directories(recode_verify_layer_real_tests PRIVATE
+                           ${PROJECT_SOURCE_DIR}/tests/core/pair)
 target_compile_definitions(recode_verify_layer_real_tests PRIVATE
   RECODE_CGAL_DEMO_MESHES="${PROJECT_BINARY_DIR}/tests/core/cgal_demo/data/meshes")
 catch_discover_tests(recode_verify_layer_real_tests

@@ -18,18 +18,9 @@
 using namespace recode;
 using Eigen::Vector3d;
 
-namespace {
+using recode::test::frameAround;
 
-core::FrameSpec frameAround(core::ViewAxis axis, const core::TriangleMesh& a,
-                            const core::TriangleMesh& b, int width) {
-  core::Aabb bounds = core::boundingBox(a);
-  bounds.extend(core::boundingBox(b));
-  core::FrameSpec f;
-  f.axis = axis;
-  f.width = f.height = width;
-  f.window = core::defaultWindow(axis, bounds, std::array<int, 2>{width, width});
-  return f;
-}
+namespace {
 
 core::LayeredPairResult runLayered(const core::TriangleMesh& a, const core::TriangleMesh& b,
                                    const core::FrameSpec& frame) {

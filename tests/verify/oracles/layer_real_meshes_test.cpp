@@ -17,8 +17,12 @@
 #include "recode/raster/cpu_device.hpp"
 #include "recode/verify/layer_oracle.hpp"
 
+#include "closed_mesh_support.hpp"
+
 using namespace recode;
 using Eigen::Vector3d;
+
+using recode::test::frameAround;
 
 namespace {
 
@@ -29,17 +33,6 @@ core::TriangleMesh normalised(core::TriangleMesh m) {
   for (Vector3d& v : m.vertices)
     v = (v - box.center()) * scale;
   return m;
-}
-
-core::FrameSpec frameAround(core::ViewAxis axis, const core::TriangleMesh& a,
-                            const core::TriangleMesh& b, int width) {
-  core::Aabb bounds = core::boundingBox(a);
-  bounds.extend(core::boundingBox(b));
-  core::FrameSpec f;
-  f.axis = axis;
-  f.width = f.height = width;
-  f.window = core::defaultWindow(axis, bounds, std::array<int, 2>{width, width});
-  return f;
 }
 
 }  // namespace
