@@ -5,7 +5,6 @@
 
 #include "recode/geometry/closed_mesh.hpp"
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
 

@@ -4,7 +4,6 @@
 
 #include "recode/geometry/self_intersection.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 

@@ -33,8 +33,8 @@ class ConvexBlock {
   [[nodiscard]] static ConvexBlockPtr fromArrays(std::span<const Eigen::Vector3d> vertices,
                                                  std::span<const core::Triangle> triangles,
                                                  std::string name);
-  // An OBJ or OFF file (core::readMesh); its errors are MeshErrors too, named by the path. A
-  // file that reads but is not a valid convex block says so and points to fromFileHull.
+  // An OBJ, OFF, STL or PLY file (core::readMesh); its errors are MeshErrors too, named by the
+  // path. A file that reads but is not a valid convex block says so and points to fromFileHull.
   [[nodiscard]] static ConvexBlockPtr fromFile(const std::filesystem::path& path);
   // The convex hull of the points (core::convexHullBlock: exact, extreme points only, corners
   // closer than the validation tolerance merged). Bullet's btConvexHullShape and FCL's Convex
@@ -42,9 +42,9 @@ class ConvexBlock {
   // line or plane, throw core::MeshError("<name>: convex hull: ...") naming the rule.
   [[nodiscard]] static ConvexBlockPtr fromHull(std::span<const Eigen::Vector3d> points,
                                                std::string name);
-  // The convex hull of all the vertices of an OBJ or OFF file (its faces are read and checked
-  // for syntax, not used): for collision meshes that are convex in shape but not a clean closed
-  // surface (an edge used by three triangles, stray faces, holes). Named by the path.
+  // The convex hull of all the vertices of an OBJ, OFF, STL or PLY file (its faces are read and
+  // checked for syntax, not used): for collision meshes that are convex in shape but not a clean
+  // closed surface (an edge used by three triangles, stray faces, holes). Named by the path.
   [[nodiscard]] static ConvexBlockPtr fromFileHull(const std::filesystem::path& path);
 
   // The validated mesh, in the block's own coordinates.
