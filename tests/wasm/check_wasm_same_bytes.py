@@ -112,12 +112,19 @@ def main():
         fail("expected %d suite scenes and some golden vectors, found %d and %d"
              % (suite_count, len(suite_scenes), len(goldens)))
 
-    cases, refused = [], []
+    cases, refused, layered = [], [], []
     for i, case in enumerate(pair_cases):
         # Each run also writes its case map (--dump-cases), compared byte for byte too.
         native_cases = os.path.join(work, "case-%04d.native.pgm" % i)
         native = subprocess.run([recode, "pair"] + cli_args(case) + ["--dump-cases", native_cases],
                                 capture_output=True, text=True)
+        dump_cases = True
+        if native.returncode != 0:
+            # A pair with a closed mesh has no case map (it is decided by layers) and refuses
+            # --dump-cases: its JSON answer is compared without one.
+            plain = subprocess.run([recode, "pair"] + cli_args(case), capture_output=True, text=True)
+            if plain.returncode == 0:
+                native, dump_cases = plain, False
         expected = os.path.join(work, "case-%04d.native.json" % i)
         with open(expected, "w") as f:
             if native.returncode == 0:
@@ -131,10 +138,14 @@ def main():
                 refused.append(case)
         request = dict(case)
         request["timing"] = False
-        request["dump_cases"] = os.path.join(work, "case-%04d.wasm.pgm" % i)
+        wasm_cases = os.path.join(work, "case-%04d.wasm.pgm" % i)
+        if dump_cases:
+            request["dump_cases"] = wasm_cases
+        else:
+            layered.append(case)
         cases.append({"kind": "pair", "request": request, "expected": expected,
                       "out": os.path.join(work, "case-%04d.wasm.json" % i),
-                      "cases": (native_cases, request["dump_cases"]),
+                      "cases": (native_cases, wasm_cases),
                       "what": "recode pair " + " ".join(cli_args(case))})
     for i, path in enumerate(goldens):
         cases.append({"kind": "golden", "path": path, "what": os.path.relpath(path, DATA),
@@ -181,9 +192,10 @@ def main():
         - len(suite_scenes[::8])
     print("wasm same bytes OK: %d pair outputs and %d case maps identical (%d built-in pair, %d scene files, "
           "%d block pairs of the built-in scenes, %d suite pairs, %d in the adaptive mode; %d "
-          "of them the same refusal); %d golden vectors pass"
+          "of them the same refusal, %d pairs with a closed mesh without a case map); "
+          "%d golden vectors pass"
           % (len(pair_cases), case_maps, len(BUILTIN_CASES), scene_files, len(block_pairs),
-             len(suite_scenes), len(suite_scenes[::8]), len(refused), len(goldens)))
+             len(suite_scenes), len(suite_scenes[::8]), len(refused), len(layered), len(goldens)))
     return 0
 
 
