@@ -14,9 +14,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
+# The compiler cache, when installed (scripts/setup.sh installs it): a rebuild after a branch
+# switch recompiles only what changed, and the tests that build the libraries again as a user
+# would (tests/package, tests/link) find most of their objects there, since the main build's
+# command lines are theirs.
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
 case "${1:-}" in
   "")
-    cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DRECODE_WERROR=ON >/dev/null
+    cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DRECODE_WERROR=ON "${launcher[@]}" \
+      >/dev/null
     cmake --build build -j "$jobs"
     ;;
   --demo)
@@ -31,7 +40,7 @@ case "${1:-}" in
       -DRECODE_BUILD_TESTS=OFF -DRECODE_BUILD_BENCHMARKS=OFF -DRECODE_BUILD_EXAMPLES=OFF \
       -DRECODE_BUILD_PYTHON=OFF -DRECODE_WITH_WASM=OFF -DRECODE_WITH_EMBREE=OFF \
       -DRECODE_WITH_CGAL=OFF -DRECODE_WITH_PEERS=OFF -DRECODE_WITH_OSMESA=OFF \
-      -DRECODE_WITH_EGL=OFF -DRECODE_WITH_VULKAN=OFF >/dev/null
+      -DRECODE_WITH_EGL=OFF -DRECODE_WITH_VULKAN=OFF "${launcher[@]}" >/dev/null
     cmake --build build-demo -j "$jobs" --target recode
     ;;
   *) echo "usage: scripts/build.sh [--demo]" >&2; exit 2 ;;

@@ -16,9 +16,9 @@ demo_packages=(
 )
 # The rest: the tests (with CGAL's demo meshes), the PLY reader (assimp), the oracles, the GPU
 # devices, the peers, the WebAssembly module and browser checks, the Python module, the sanitizer
-# and fuzzing builds, the docs.
+# and fuzzing builds, the docs; the compiler cache (scripts/build.sh).
 packages=(
-  "${demo_packages[@]}" clang-format
+  "${demo_packages[@]}" clang-format ccache
   catch2 libbenchmark-dev
   libassimp-dev libcgal-demo
   libembree-dev libcgal-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri

@@ -1,6 +1,8 @@
 # Configures and builds tests/link (raster + geometry + pair alone) in BINARY_DIR, then checks
 # the probe's link command names no library of the other layers' packages and runs the probe.
 # Arguments: -DRECODE_SOURCE_DIR=... -DBINARY_DIR=... -DGENERATOR=... [-DLAUNCHER=...]
+# [-DWERROR=ON|OFF] (the main build's RECODE_WERROR: the same command lines, so the compiler
+# cache's objects)
 foreach(var RECODE_SOURCE_DIR BINARY_DIR GENERATOR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "check_backend_link.cmake: ${var} is not set")
@@ -12,6 +14,9 @@ set(configure_args -S "${RECODE_SOURCE_DIR}/tests/link" -B "${BINARY_DIR}" -G "$
                    -DCMAKE_BUILD_TYPE=Release -DRECODE_SOURCE_DIR=${RECODE_SOURCE_DIR})
 if(LAUNCHER)
   list(APPEND configure_args -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER})
+endif()
+if(DEFINED WERROR)
+  list(APPEND configure_args -DRECODE_WERROR=${WERROR})
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} ${configure_args} RESULT_VARIABLE rc
                 OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -9,7 +9,8 @@
 # deliberately broken one (the tests tagged [broken]) must fail with a report naming the stage
 # and the wrong reading.
 # Arguments: -DMODE=installed|subdirectory -DRECODE_SOURCE_DIR=... -DWORK_DIR=... -DGENERATOR=...
-# [-DLAUNCHER=...]
+# [-DLAUNCHER=...] [-DWERROR=ON|OFF] (the main build's RECODE_WERROR, given to the libraries' build:
+# the main build's command lines, so the compiler cache's objects)
 foreach(var MODE RECODE_SOURCE_DIR WORK_DIR GENERATOR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "check_consumer.cmake: ${var} is not set")
@@ -28,6 +29,11 @@ function(run_step what)
   message(STATUS "${what}: ok")
 endfunction()
 
+set(werror "")
+if(DEFINED WERROR)
+  set(werror -DRECODE_WERROR=${WERROR})
+endif()
+
 set(library_build "${WORK_DIR}/subdirectory")
 set(prefix "${WORK_DIR}/prefix")
 if(MODE STREQUAL "subdirectory")
@@ -35,7 +41,8 @@ if(MODE STREQUAL "subdirectory")
   set(consumer_build "${library_build}")
   run_step("configure the consumer and the libraries" ${CMAKE_COMMAND}
            -S "${RECODE_SOURCE_DIR}/tests/package/subdirectory" -B "${consumer_build}" ${common}
-           "-DRECODE_SOURCE_DIR=${RECODE_SOURCE_DIR}" "-DCMAKE_INSTALL_PREFIX=${prefix}")
+           "-DRECODE_SOURCE_DIR=${RECODE_SOURCE_DIR}" "-DCMAKE_INSTALL_PREFIX=${prefix}"
+           ${werror})
 elseif(MODE STREQUAL "installed")
   if(NOT EXISTS "${library_build}/CMakeCache.txt")
     message(FATAL_ERROR "no library build in ${library_build}: run package/consumer-subdirectory "
