@@ -97,7 +97,8 @@ void requireEverything(const std::vector<Experiment>& experiments) {
   std::vector<std::string> missing;
   for (const Experiment& e : experiments) {
     for (const AlgorithmSpec& a : e.algorithms) {
-      peers = peers || a.kind != AlgorithmSpec::Kind::Recode;
+      peers = peers || (a.kind != AlgorithmSpec::Kind::Recode &&
+                        a.kind != AlgorithmSpec::Kind::RecodeLayered);
       glDevice = glDevice ||
                  (a.kind == AlgorithmSpec::Kind::Recode && a.device == backends::DeviceKind::Gl);
       const backends::DeviceInfo& device = backends::deviceInfo(a.device);
@@ -258,8 +259,9 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
       "bench",
       "Run the paper's experiments with RECODE (CPU and GL devices), FCL and Bullet on the same "
       "motion paths, judged by CGAL: CSV, a Markdown summary and plots");
-  cmd->add_option("experiment", o->experiments,
-                  "experiments to run: table1, table2, figure8, comb, random-cones (default: all)");
+  cmd->add_option(
+      "experiment", o->experiments,
+      "experiments to run: table1, table2, figure8, comb, random-cones, closed (default: all)");
   cmd->add_flag("--quick", o->quick,
                 "the smallest tessellation level of each scene only (about a minute)");
   cmd->add_option("--out", o->out, "directory for bench.csv, summary.md and the plots")

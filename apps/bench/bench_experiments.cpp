@@ -1,8 +1,11 @@
 // The experiment list of `recode bench`: scenes, tessellation levels, algorithms.
 #include "bench/bench_experiments.hpp"
 
+#include "bench/bench_closed.hpp"
+
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace recode::app {
@@ -77,6 +80,26 @@ std::vector<AlgorithmSpec> mors() {
   return list;
 }
 
+// Closed, non-convex meshes: the layered pair at three resolutions against the peers' mesh
+// tests, from about 500 to about 500,000 triangles a mesh.
+Experiment closedMeshes() {
+  Experiment e{"closed",
+               "Closed meshes: the layered pair against the peers' mesh tests",
+               closedBenchScenes(),
+               {500, 5000, 50000, 500000},
+               {500},
+               {}};
+  for (int width : {128, 256, 512}) {
+    AlgorithmSpec layered{"recode-layered-" + std::to_string(width), Kind::RecodeLayered};
+    layered.resolution = width;
+    e.algorithms.push_back(layered);
+  }
+  e.algorithms.push_back({"fcl-obbrss", Kind::FclObbrss});
+  e.algorithms.push_back({"bullet-gimpact", Kind::BulletGImpact});
+  e.closedMeshes = true;
+  return e;
+}
+
 std::vector<Experiment> makeExperiments() {
   std::vector<Experiment> list;
   list.push_back({"table1",
@@ -113,6 +136,7 @@ std::vector<Experiment> makeExperiments() {
                   {16, 64, 256, 1152},
                   {16},
                   recodeAndPeers()});
+  list.push_back(closedMeshes());
   return list;
 }
 

@@ -15,7 +15,9 @@
 namespace recode::app {
 
 struct AlgorithmSpec {
-  enum class Kind { Recode, FclGjk, FclObbrss, Bullet };
+  // RecodeLayered, FclObbrss and BulletGImpact on pairs of closed meshes (bench_closed.hpp);
+  // the rest on scenes of convex blocks.
+  enum class Kind { Recode, RecodeLayered, FclGjk, FclObbrss, Bullet, BulletGImpact };
   std::string name;  // the CSV's `algorithm` column
   Kind kind = Kind::Recode;
   backends::DeviceKind device = backends::DeviceKind::Cpu;  // Recode only
@@ -34,6 +36,8 @@ struct AlgorithmSpec {
   int batchDevicesPerSize = 1;
   // Recode only: core::RunOptions::deviceSummaries (on for recode-vulkan-summaries and -waves)
   bool deviceSummaries = false;
+  // RecodeLayered only: pixels across the square frame around both meshes
+  int resolution = 0;
 };
 
 struct Experiment {
@@ -43,6 +47,9 @@ struct Experiment {
   std::vector<int> trianglesPerBlock;  // tessellation levels of a full run
   std::vector<int> quickTrianglesPerBlock;  // of `--quick`
   std::vector<AlgorithmSpec> algorithms;    // CGAL judges them all and is not listed here
+  // Pairs of closed meshes along paths (bench_closed.hpp) instead of built-in scenes: `scenes`
+  // names the paths and `trianglesPerBlock` is the triangles of each mesh.
+  bool closedMeshes = false;
 };
 
 // All experiments, in the order they run.

@@ -125,6 +125,37 @@ void writeTimeTable(std::ostream& out, const std::vector<const BenchRow*>& rows)
   }
 }
 
+// The layered algorithms' passes per pose and layers (the closed-mesh experiment).
+void writeLayersTable(std::ostream& out, const std::vector<const BenchRow*>& rows) {
+  std::vector<std::string> algorithms;
+  for (const std::string& a : algorithmsOf(rows))
+    for (const BenchRow* r : rows)
+      if (r->algorithm == a && r->layered) {
+        algorithms.push_back(a);
+        break;
+      }
+  out << "| triangles |";
+  for (const std::string& a : algorithms)
+    out << ' ' << a << " |";
+  out << "\n|---|";
+  for (std::size_t i = 0; i < algorithms.size(); ++i)
+    out << "---|";
+  out << '\n';
+  for (int level : levelsOf(rows)) {
+    const BenchRow* any = find(rows, level, algorithms.empty() ? "" : algorithms.front());
+    out << "| " << grouped(any ? any->triangles : 0) << " |";
+    for (const std::string& a : algorithms) {
+      const BenchRow* r = find(rows, level, a);
+      out << ' ';
+      if (r && r->layered && r->frames > 0)
+        out << fixed(static_cast<double>(r->layered->passes) / r->frames, 1) << " passes, layers "
+            << r->layered->layersA << " / " << r->layered->layersB;
+      out << " |";
+    }
+    out << '\n';
+  }
+}
+
 void writeAccuracyTable(std::ostream& out, const std::vector<const BenchRow*>& rows) {
   std::vector<std::string> algorithms = algorithmsOf(rows);
   algorithms.erase(algorithms.begin());  // the judge agrees with itself
@@ -173,7 +204,7 @@ void writeBenchCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
          "readback_bytes_per_frame,device_wait_ms_per_frame,host_ms_per_frame,dispatches_per_frame";
   for (const char* name : raster::TransferCounters::kStageNames)
     out << ",stage_ms_" << name;
-  out << '\n';
+  out << ",passes_per_frame,layers_a,layers_b\n";
   for (const BenchRow& r : rows) {
     out << r.experiment << ',' << r.scene << ',' << r.trianglesPerBlock << ',' << r.triangles << ','
         << r.algorithm << ',' << r.frames << ',' << r.judgedFrames << ',' << fixed(r.totalMs, 4)
@@ -203,6 +234,12 @@ void writeBenchCsv(std::ostream& out, const std::vector<BenchRow>& rows) {
       for (std::size_t k = 0; k < raster::TransferCounters::kStages; ++k)
         out << ',';
     }
+    out << ',';
+    if (r.layered && r.frames > 0)
+      out << fixed(static_cast<double>(r.layered->passes) / r.frames, 2) << ','
+          << r.layered->layersA << ',' << r.layered->layersB;
+    else
+      out << ",,";
     out << '\n';
   }
 }
@@ -237,6 +274,10 @@ void writeBenchSummary(std::ostream& out, const std::vector<const Experiment*>& 
       out << "\nColliding pairs found on the judged frames (missed / extra against CGAL; for "
              "recode-adaptive also the pairs recode-cpu missed that it saw at finer pixels):\n\n";
       writeAccuracyTable(out, sceneRows);
+      if (e->closedMeshes) {
+        out << "\nThe layered pair's passes per pose and most layers of each mesh at a pixel:\n\n";
+        writeLayersTable(out, sceneRows);
+      }
     }
   }
 }

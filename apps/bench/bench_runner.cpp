@@ -1,6 +1,8 @@
 // Running one bench case: the judge, then each algorithm over the same motion.
 #include "bench/bench_runner.hpp"
 
+#include "bench/bench_closed.hpp"
+
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
@@ -39,20 +41,16 @@ std::unique_ptr<verify::SceneDetector> makeDetector(const AlgorithmSpec& spec,
       return verify::makeFclObbrssDetector(trees);
     case AlgorithmSpec::Kind::Bullet:
       return verify::makeBulletDetector(trees);
+    case AlgorithmSpec::Kind::RecodeLayered:
+    case AlgorithmSpec::Kind::BulletGImpact:
+      break;  // pairs of closed meshes only (bench_closed.cpp)
   }
-  throw std::logic_error("unknown algorithm kind");
+  throw std::invalid_argument("a scene of convex blocks cannot run " + spec.name);
 }
 
 void pose(std::vector<core::ObjectTree>& trees, int frame) {
   for (core::ObjectTree& t : trees)
     t.setFrame(frame);
-}
-
-void setTimes(BenchRow& row, const std::vector<double>& us) {
-  const core::Moments m = core::moments(us);
-  row.totalMs = m.total / 1000.0;
-  row.meanMs = m.mean / 1000.0;
-  row.sdMs = m.sd / 1000.0;
 }
 
 void addCounters(RecodeCounters& sum, const core::FrameReport& r) {
@@ -144,7 +142,7 @@ BenchRow runJudge(LoadedCase& c, const std::vector<int>& judged, GroundTruth& tr
   }
   row.frames = static_cast<int>(judged.size());
   row.judgedFrames = row.frames;
-  setTimes(row, us);
+  setRowTimes(row, us);
   return row;
 }
 
@@ -200,11 +198,18 @@ BenchRow runAlgorithm(LoadedCase& c, const AlgorithmSpec& spec, int threads,
     step();
   }
   row.frames = c.frames;
-  setTimes(row, us);
+  setRowTimes(row, us);
   return row;
 }
 
 }  // namespace
+
+void setRowTimes(BenchRow& row, const std::vector<double>& us) {
+  const core::Moments m = core::moments(us);
+  row.totalMs = m.total / 1000.0;
+  row.meanMs = m.mean / 1000.0;
+  row.sdMs = m.sd / 1000.0;
+}
 
 std::vector<int> judgedFrames(long long triangles, int frames) {
   std::vector<int> judged;
@@ -217,6 +222,8 @@ std::vector<int> judgedFrames(long long triangles, int frames) {
 std::vector<BenchRow> runBenchCase(const Experiment& experiment, const std::string& sceneName,
                                    int trianglesPerBlock, int threads,
                                    const CaseProgress& progress) {
+  if (experiment.closedMeshes)
+    return runClosedBenchCase(experiment, sceneName, trianglesPerBlock, progress);
   LoadedCase c(experiment, sceneName, trianglesPerBlock);
   const std::vector<int> judged = judgedFrames(c.triangles, c.frames);
   const double work =

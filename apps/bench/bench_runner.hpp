@@ -28,6 +28,13 @@ struct RecodeCounters {
   std::array<double, raster::TransferCounters::kStages> stageUs{};  // FrameReport::stageUs
 };
 
+// The layered pair's passes and layers (the closed-mesh experiment), over the timed frames.
+struct LayeredCounters {
+  long long passes = 0;  // depth/stencil passes drawn, summed
+  int layersA = 0;       // the most entries of mesh A at one pixel, over the frames
+  int layersB = 0;
+};
+
 struct BenchRow {
   std::string experiment;
   std::string scene;
@@ -43,6 +50,7 @@ struct BenchRow {
   long long contacts = 0;        // colliding pairs reported, summed over all timed frames
   verify::DetectionScore score;  // on the judged frames only
   std::optional<RecodeCounters> recode;
+  std::optional<LayeredCounters> layered;  // recode-layered-* only
   // recode-adaptive only: pairs recode-cpu missed on the judged frames that this algorithm
   // found (it saw them at finer pixels); nullopt elsewhere or without a recode-cpu row.
   std::optional<long long> seenFiner;
@@ -59,6 +67,9 @@ using CaseProgress = std::function<void(double)>;
 [[nodiscard]] std::vector<BenchRow> runBenchCase(const Experiment& experiment,
                                                  const std::string& scene, int trianglesPerBlock,
                                                  int threads, const CaseProgress& progress);
+
+// Sets the row's total, mean and standard deviation from its times per frame (microseconds).
+void setRowTimes(BenchRow& row, const std::vector<double>& us);
 
 // The frames CGAL judges in a scene of `triangles` triangles run for `frames` frames.
 [[nodiscard]] std::vector<int> judgedFrames(long long triangles, int frames);

@@ -13,7 +13,9 @@
 //   of a leaf pair changes);
 // - recode-vulkan batches a frame's pair tests into at most 2 submissions, reading back what
 //   recode-vulkan-per-pair reads; the CPU device counts no submission;
-// - summary.md has the FULL/MIN ratio and every plot is a PNG.
+// - summary.md has the FULL/MIN ratio and every plot is a PNG;
+// - the closed-mesh experiment: its rows, the truth its shapes give, the containments the
+//   surface-only peers miss and the layered pair finds (checkClosedExperiment).
 //
 // Usage: recode_check_bench DIR
 
@@ -47,7 +49,8 @@ const char* const kHeader =
     "mean_ms,sd_ms,contacts,truth,found_judged,missed,extra,box_tests,pair_tests,"
     "stencil_pixels_read,depth_pixels_read,seen_finer,submissions_per_frame,"
     "readback_bytes_per_frame,device_wait_ms_per_frame,host_ms_per_frame,dispatches_per_frame,"
-    "stage_ms_vertex,stage_ms_setup,stage_ms_binning,stage_ms_raster,stage_ms_reads";
+    "stage_ms_vertex,stage_ms_setup,stage_ms_binning,stage_ms_raster,stage_ms_reads,"
+    "passes_per_frame,layers_a,layers_b";
 
 // The compute device's stage columns (a RECODE row's, empty for a peer).
 const char* const kStageColumns[] = {"stage_ms_vertex", "stage_ms_setup", "stage_ms_binning",
@@ -175,6 +178,55 @@ void checkRow(const Row& r) {
     fail(id + ": more contacts than pair tests");
   if (r.text("algorithm") == "cgal" && (missed != 0 || extra != 0 || found != truth))
     fail(id + ": the judge disagrees with itself");
+}
+
+// The closed-mesh experiment (docs/benchmarks.md, "Closed meshes against the peers"), its
+// --quick level of 500 triangles a mesh: rows for both paths and every algorithm, 41 poses each.
+// On ball-through-torus the truth follows from the shapes: the ball (radius 0.25) centred at
+// x = -2 + 0.1 k on the axis of a torus of radius 1 and tube 0.4 meets the solid torus when
+// ||x| - 1| <= 0.65, that is 0.4 <= |x| <= 1.6 on these poses (26 of 41; the nearest poses
+// clear the tessellated surfaces by more than 0.03), and lies wholly inside the tube when
+// ||x| - 1| <= 0.15 (6 poses): those the surface-only peers cannot see, and the layered pair at
+// 512 pixels must. Returns the number of rows expected.
+std::size_t checkClosedExperiment(const std::map<std::string, Row>& rows, const fs::path& dir) {
+  const std::vector<std::string> algorithms = {
+      "cgal",       "recode-layered-128", "recode-layered-256", "recode-layered-512",
+      "fcl-obbrss", "bullet-gimpact"};
+  std::size_t expected = 0;
+  const std::vector<std::string> scenes = {"ball-through-torus", "linked-rings"};
+  for (const std::string& scene : scenes) {
+    const std::string prefix = "closed/" + scene + "/500/";
+    for (const std::string& algorithm : algorithms) {
+      ++expected;
+      const auto it = rows.find(prefix + algorithm);
+      if (it == rows.end()) {
+        fail("bench.csv: no row for " + prefix + algorithm);
+        continue;
+      }
+      const Row& r = it->second;
+      checkRow(r);
+      if (r.count("frames") != 41)
+        fail(r.id() + ": " + r.text("frames") + " poses, the path has 41");
+      const bool layered = algorithm.rfind("recode-layered-", 0) == 0;
+      if (r.text("passes_per_frame").empty() == layered)
+        fail(r.id() + ": passes_per_frame " + (layered ? "missing" : "given"));
+      if (layered && !(r.number("passes_per_frame") >= 4.0 && r.count("layers_a") >= 1 &&
+                       r.count("layers_b") >= 1))
+        fail(r.id() + ": fewer than 4 passes or 1 layer a mesh");
+      if (scene != "ball-through-torus")
+        continue;
+      if (r.count("truth") != 26)
+        fail(r.id() + ": truth " + r.text("truth") + ", the shapes meet on 26 poses");
+      if ((algorithm == "fcl-obbrss" || algorithm == "bullet-gimpact") && r.count("missed") < 6)
+        fail(r.id() + ": missed " + r.text("missed") +
+             ", fewer than the 6 poses with the ball wholly inside the tube");
+      if (algorithm == "recode-layered-512" && (r.count("missed") != 0 || r.count("extra") != 0))
+        fail(r.id() + ": missed " + r.text("missed") + ", extra " + r.text("extra"));
+    }
+    if (!isPng(dir / ("closed-" + scene + ".png")))
+      fail((dir / ("closed-" + scene + ".png")).string() + " is missing or not a PNG");
+  }
+  return expected;
 }
 
 }  // namespace
@@ -369,6 +421,7 @@ int main(int argc, char** argv) {
       }
     }
   }
+  expectedRows += checkClosedExperiment(rows, dir);
   if (rows.size() != expectedRows)
     fail("bench.csv has " + std::to_string(rows.size()) + " rows, expected " +
          std::to_string(expectedRows));

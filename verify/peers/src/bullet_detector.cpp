@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "bullet_pose.hpp"
 #include "recode/verify/peer_detectors.hpp"
 #include "scene_leaves.hpp"
 
@@ -40,15 +41,6 @@ class SameObjectFilter final : public btOverlapFilterCallback {
     return groups && objectOf(a) != objectOf(b);
   }
 };
-
-btTransform toBullet(const Eigen::Isometry3d& pose) {
-  const Eigen::Matrix3d r = pose.linear();
-  const Eigen::Vector3d t = pose.translation();
-  const auto f = [](double x) { return static_cast<btScalar>(x); };
-  return btTransform(btMatrix3x3(f(r(0, 0)), f(r(0, 1)), f(r(0, 2)), f(r(1, 0)), f(r(1, 1)),
-                                 f(r(1, 2)), f(r(2, 0)), f(r(2, 1)), f(r(2, 2))),
-                     btVector3(f(t.x()), f(t.y()), f(t.z())));
-}
 
 std::unique_ptr<btConvexHullShape> makeHull(const core::TriangleMesh& mesh) {
   auto hull = std::make_unique<btConvexHullShape>();

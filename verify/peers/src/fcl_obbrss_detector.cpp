@@ -13,11 +13,8 @@
 
 namespace recode::verify {
 
-namespace {
-
-using ObbrssMesh = fcl::BVHModel<fcl::OBBRSSd>;
-
 std::shared_ptr<fcl::CollisionGeometryd> makeObbrssMesh(const core::TriangleMesh& mesh) {
+  using ObbrssMesh = fcl::BVHModel<fcl::OBBRSSd>;
   const std::vector<fcl::Vector3d> vertices(mesh.vertices.begin(), mesh.vertices.end());
   std::vector<fcl::Triangle> triangles;
   triangles.reserve(mesh.triangles.size());
@@ -29,6 +26,8 @@ std::shared_ptr<fcl::CollisionGeometryd> makeObbrssMesh(const core::TriangleMesh
   model->endModel();
   return model;
 }
+
+namespace {
 
 fcl::CollisionRequestd allContacts() {
   fcl::CollisionRequestd request;

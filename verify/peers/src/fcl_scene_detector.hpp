@@ -17,6 +17,11 @@
 
 namespace recode::verify {
 
+// A mesh as an OBBRSS bounding volume hierarchy of its triangles (fcl-obbrss, on blocks and on
+// closed meshes).
+[[nodiscard]] std::shared_ptr<fcl::CollisionGeometryd> makeObbrssMesh(
+    const core::TriangleMesh& mesh);
+
 class FclSceneDetector final : public SceneDetector {
  public:
   // The geometry of one block, in the leaf's own coordinates (HierarchyNode::localMesh).

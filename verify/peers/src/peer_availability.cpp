@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "recode/verify/closed_peers.hpp"
 #include "recode/verify/peer_detectors.hpp"
 
 namespace recode::verify {
@@ -35,6 +36,14 @@ std::unique_ptr<SceneDetector> makeFclObbrssDetector(const std::vector<core::Obj
   noPeers();
 }
 std::unique_ptr<SceneDetector> makeBulletDetector(const std::vector<core::ObjectTree>&) {
+  noPeers();
+}
+std::unique_ptr<ClosedPairPeer> makeFclObbrssClosedPeer(const core::TriangleMesh&,
+                                                        const core::TriangleMesh&) {
+  noPeers();
+}
+std::unique_ptr<ClosedPairPeer> makeBulletGImpactClosedPeer(const core::TriangleMesh&,
+                                                            const core::TriangleMesh&) {
   noPeers();
 }
 #endif
