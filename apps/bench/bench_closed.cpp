@@ -185,7 +185,8 @@ std::unique_ptr<ClosedAlgorithm> makeAlgorithm(const AlgorithmSpec& spec, const 
     case AlgorithmSpec::Kind::RecodeLayered:
       return std::make_unique<LayeredAlgorithm>(c, spec.resolution);
     case AlgorithmSpec::Kind::FclObbrss:
-      return std::make_unique<PeerAlgorithm>(c, verify::makeFclObbrssClosedPeer(c.a, c.b));
+      return std::make_unique<PeerAlgorithm>(
+          c, verify::makeFclObbrssClosedPeer(c.a, c.b, spec.allContacts));
     case AlgorithmSpec::Kind::BulletGImpact:
       return std::make_unique<PeerAlgorithm>(c, verify::makeBulletGImpactClosedPeer(c.a, c.b));
     case AlgorithmSpec::Kind::Recode:
@@ -232,7 +233,7 @@ std::vector<BenchRow> runClosedBenchCase(const Experiment& experiment, const std
     BenchRow r;
     r.experiment = experiment.name;
     r.scene = scene;
-    r.trianglesPerBlock = static_cast<int>(c.a.triangles.size());
+    r.trianglesPerBlock = trianglesPerMesh;  // the level asked for; `triangles` is the count
     r.triangles = triangles;
     r.algorithm = algorithm;
     return r;

@@ -95,6 +95,9 @@ Experiment closedMeshes() {
     e.algorithms.push_back(layered);
   }
   e.algorithms.push_back({"fcl-obbrss", Kind::FclObbrss});
+  AlgorithmSpec all{"fcl-obbrss-all", Kind::FclObbrss};
+  all.allContacts = true;
+  e.algorithms.push_back(all);
   e.algorithms.push_back({"bullet-gimpact", Kind::BulletGImpact});
   e.closedMeshes = true;
   return e;

@@ -38,6 +38,8 @@ struct AlgorithmSpec {
   bool deviceSummaries = false;
   // RecodeLayered only: pixels across the square frame around both meshes
   int resolution = 0;
+  // FclObbrss on closed meshes only: every contact (fcl-obbrss-all) instead of the first
+  bool allContacts = false;
 };
 
 struct Experiment {

@@ -6,7 +6,9 @@ cmake_minimum_required(VERSION 3.25)
 # - view-axis: one recode-view-axis row's `pair_tests` raised by one (not recode-cpu's);
 # - skip-apart: one recode-skip-apart row's `contacts` raised by one (not recode-cpu's);
 # - batch: one recode-vulkan row's `submissions_per_frame` set to 3 (more than a batch takes);
-# - device-wait: one recode-cpu row's `device_wait_ms_per_frame` set to 0.5 (it submits nothing).
+# - device-wait: one recode-cpu row's `device_wait_ms_per_frame` set to 0.5 (it submits nothing);
+# - layered-passes: one recode-layered-512 row's `passes_per_frame` set to 3 (the layered pair
+#   draws at least 4 passes where the boxes meet).
 # Expects IN, OUT and KIND.
 file(REMOVE_RECURSE ${OUT})
 file(COPY ${IN}/ DESTINATION ${OUT})
@@ -28,9 +30,13 @@ elseif(KIND STREQUAL "device-wait")
   set(target "^comb,comb-rotate-aligned,.*,recode-cpu,")
   set(column 22)  # device_wait_ms_per_frame
   set(replacement 0.5000)
+elseif(KIND STREQUAL "layered-passes")
+  set(target "^closed,ball-through-torus,.*,recode-layered-512,")
+  set(column 30)  # passes_per_frame
+  set(replacement 3.00)
 elseif(NOT KIND STREQUAL "no-gl")
-  message(FATAL_ERROR
-          "KIND must be miscounted, no-gl, view-axis, skip-apart, batch or device-wait, not '${KIND}'")
+  message(FATAL_ERROR "KIND must be miscounted, no-gl, view-axis, skip-apart, batch, device-wait "
+                      "or layered-passes, not '${KIND}'")
 endif()
 set(out "")
 set(done OFF)

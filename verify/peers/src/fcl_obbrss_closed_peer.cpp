@@ -1,7 +1,7 @@
-// fcl-obbrss on a pair of closed meshes (closed_peers.hpp): the two OBBRSS hierarchies built
-// once, fcl::collide with the default request, which stops at the first pair of triangles that
-// meet: the yes/no query a user of FCL makes. Surfaces only: a mesh wholly inside the other is
-// apart (the bench counts it as a miss).
+// fcl-obbrss and fcl-obbrss-all on a pair of closed meshes (closed_peers.hpp): the two OBBRSS
+// hierarchies built once, fcl::collide with the default request, which stops at the first pair
+// of triangles that meet (the yes/no query), or with every contact asked for. Surfaces only: a mesh
+// wholly inside the other is apart (the bench counts it as a miss).
 #include <memory>
 #include <string>
 
@@ -14,10 +14,13 @@ namespace {
 
 class FclObbrssClosedPeer final : public ClosedPairPeer {
  public:
-  FclObbrssClosedPeer(const core::TriangleMesh& a, const core::TriangleMesh& b)
-      : a_(makeObbrssMesh(a)), b_(makeObbrssMesh(b)) {}
+  FclObbrssClosedPeer(const core::TriangleMesh& a, const core::TriangleMesh& b, bool allContacts)
+      : a_(makeObbrssMesh(a)),
+        b_(makeObbrssMesh(b)),
+        request_(allContacts ? allContactsRequest() : fcl::CollisionRequestd{}),
+        name_(allContacts ? "fcl-obbrss-all" : "fcl-obbrss") {}
 
-  [[nodiscard]] std::string name() const override { return "fcl-obbrss"; }
+  [[nodiscard]] std::string name() const override { return name_; }
 
   [[nodiscard]] bool collide(const Eigen::Isometry3d& poseA,
                              const Eigen::Isometry3d& poseB) override {
@@ -26,20 +29,23 @@ class FclObbrssClosedPeer final : public ClosedPairPeer {
     a_.computeAABB();
     b_.computeAABB();
     fcl::CollisionResultd result;
-    fcl::collide(&a_, &b_, fcl::CollisionRequestd{}, result);
+    fcl::collide(&a_, &b_, request_, result);
     return result.isCollision();
   }
 
  private:
   fcl::CollisionObjectd a_;
   fcl::CollisionObjectd b_;
+  fcl::CollisionRequestd request_;
+  std::string name_;
 };
 
 }  // namespace
 
 std::unique_ptr<ClosedPairPeer> makeFclObbrssClosedPeer(const core::TriangleMesh& a,
-                                                        const core::TriangleMesh& b) {
-  return std::make_unique<FclObbrssClosedPeer>(a, b);
+                                                        const core::TriangleMesh& b,
+                                                        bool allContacts) {
+  return std::make_unique<FclObbrssClosedPeer>(a, b, allContacts);
 }
 
 }  // namespace recode::verify

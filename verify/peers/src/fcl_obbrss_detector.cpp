@@ -27,19 +27,16 @@ std::shared_ptr<fcl::CollisionGeometryd> makeObbrssMesh(const core::TriangleMesh
   return model;
 }
 
-namespace {
-
-fcl::CollisionRequestd allContacts() {
+fcl::CollisionRequestd allContactsRequest() {
   fcl::CollisionRequestd request;
   request.enable_contact = true;
   request.num_max_contacts = std::numeric_limits<std::size_t>::max();
   return request;
 }
 
-}  // namespace
-
 std::unique_ptr<SceneDetector> makeFclObbrssDetector(const std::vector<core::ObjectTree>& objects) {
-  return std::make_unique<FclSceneDetector>("fcl-obbrss", objects, makeObbrssMesh, allContacts());
+  return std::make_unique<FclSceneDetector>("fcl-obbrss", objects, makeObbrssMesh,
+                                            allContactsRequest());
 }
 
 }  // namespace recode::verify

@@ -22,6 +22,10 @@ namespace recode::verify {
 [[nodiscard]] std::shared_ptr<fcl::CollisionGeometryd> makeObbrssMesh(
     const core::TriangleMesh& mesh);
 
+// A request for every contact, without a limit on their number (fcl-obbrss on blocks, and
+// fcl-obbrss-all on closed meshes).
+[[nodiscard]] fcl::CollisionRequestd allContactsRequest();
+
 class FclSceneDetector final : public SceneDetector {
  public:
   // The geometry of one block, in the leaf's own coordinates (HierarchyNode::localMesh).

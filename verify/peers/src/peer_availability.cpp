@@ -39,7 +39,7 @@ std::unique_ptr<SceneDetector> makeBulletDetector(const std::vector<core::Object
   noPeers();
 }
 std::unique_ptr<ClosedPairPeer> makeFclObbrssClosedPeer(const core::TriangleMesh&,
-                                                        const core::TriangleMesh&) {
+                                                        const core::TriangleMesh&, bool) {
   noPeers();
 }
 std::unique_ptr<ClosedPairPeer> makeBulletGImpactClosedPeer(const core::TriangleMesh&,

@@ -3,6 +3,9 @@
 // "Closed meshes against the peers"), each used the way its users would for a yes/no query:
 //   fcl-obbrss      FCL 0.7: each mesh an OBBRSS bounding volume hierarchy of its triangles,
 //                   fcl::collide with the default request (the first contact ends the search)
+//   fcl-obbrss-all  the same with every contact asked for (as the scene experiments' fcl-obbrss
+//                   and RAPID's "all contacts" mode): every pair of triangles that meet, the
+//                   peer's nearest answer to a contact region
 //   bullet-gimpact  Bullet 3.24: each mesh a btGImpactMeshShape (Bullet's shape for concave
 //                   triangle meshes, margin 0), the pair tested with btGImpactCollisionAlgorithm
 //                   through btCollisionWorld::contactPairTest
@@ -35,8 +38,10 @@ class ClosedPairPeer {
                                      const Eigen::Isometry3d& poseB) = 0;
 };
 
+// allContacts: fcl-obbrss-all instead of fcl-obbrss.
 [[nodiscard]] std::unique_ptr<ClosedPairPeer> makeFclObbrssClosedPeer(const core::TriangleMesh& a,
-                                                                      const core::TriangleMesh& b);
+                                                                      const core::TriangleMesh& b,
+                                                                      bool allContacts);
 [[nodiscard]] std::unique_ptr<ClosedPairPeer> makeBulletGImpactClosedPeer(
     const core::TriangleMesh& a, const core::TriangleMesh& b);
 
