@@ -97,7 +97,7 @@ TEST_CASE("the overlap volume approaches CGAL's corefinement as the pixels shrin
   const double exact = verify::closedMeshesOverlapVolume(ring, ball);
   REQUIRE(exact > 0.1);
   double previous = 1e300;
-  for (const int width : {64, 128, 256}) {
+  for (const int width : {64, 128, 256, 512, 1024}) {
     const core::FrameSpec frame = frameAround(core::ViewAxis::Z, ring, ball, width);
     const double error = std::abs(runLayered(ring, ball, frame).overlapVolume - exact) / exact;
     WARN("volume at " << width << " px: relative error " << error);
