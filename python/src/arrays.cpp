@@ -58,10 +58,12 @@ std::string indexText(const std::vector<py::ssize_t>& shape, std::size_t flat) {
     index[d] = flat % static_cast<std::size_t>(shape[d]);
     flat /= static_cast<std::size_t>(shape[d]);
   }
-  std::string s;
+  // A stream rather than string concatenation: GCC 12 at -O3 with LTO warns falsely
+  // (-Wstringop-overflow) on `"..." + std::to_string(...)` here.
+  std::ostringstream s;
   for (std::size_t d = 0; d < index.size(); ++d)
-    s += (d ? ", " : "") + std::to_string(index[d]);
-  return s;
+    s << (d ? ", " : "") << index[d];
+  return s.str();
 }
 
 std::string dtypeText(const py::array& a) {
