@@ -93,8 +93,9 @@ void addPairCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("!--no-box-test", o->boxTest,
                 "run the passes even when the blocks' boxes are apart (shows cases 1, 2, 7, 8)");
   cmd->add_option("--pixel", o->pixel,
-                  "with --json: add one pixel's case and its depth and stencil after every step "
-                  "(X,Y from the bottom-left, from 0)")
+                  "with --json: add one pixel's case and its depth and stencil after every step; "
+                  "for a pair with a closed mesh, the pixel's entries and exits of each mesh in "
+                  "depth order and the sweep's intervals (X,Y from the bottom-left, from 0)")
       ->needs(json);
   cmd->add_flag("!--no-picture", o->picture, "leave the character picture out of the report");
   cmd->add_option(

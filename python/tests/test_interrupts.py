@@ -33,9 +33,9 @@ done = 0
 
 def progress(k):
     global done
-    if done == 0:
+    done += k  # before the print: the parent's SIGINT may land as soon as the line is out
+    if done == k:
         print("running", flush=True)  # the queries have begun
-    done += k
 
 print("calling", flush=True)
 try:

@@ -7,14 +7,11 @@
 #include <span>
 #include <vector>
 
+#include "recode/pair/pair_cases.hpp"
+
 namespace recode::core::detail {
 
-// A closed depth interval [lo, hi] in depth steps.
-struct DepthInterval {
-  std::uint32_t lo = 0;
-  std::uint32_t hi = 0;
-  friend bool operator==(const DepthInterval&, const DepthInterval&) = default;
-};
+using core::DepthInterval;  // pair_cases.hpp: [min, max]
 
 // The depth intervals inside a closed mesh at a pixel, appended to `out` (which is cleared
 // first): `entries` (its front-facing fragments' depths) and `exits` (its back-facing ones),
@@ -29,7 +26,7 @@ int insideIntervals(std::span<const std::uint32_t> entries, std::span<const std:
 
 // The intersection of two sorted, disjoint interval lists (insideIntervals' outputs), appended
 // to `out` (cleared first): the depths inside both meshes at the pixel. An interval of one
-// depth (lo == hi) is two meshes touching there.
+// depth (min == max) is two meshes touching there.
 void intersectIntervals(std::span<const DepthInterval> a, std::span<const DepthInterval> b,
                         std::vector<DepthInterval>& out);
 

@@ -133,6 +133,22 @@ bool wholeInFrame(std::span<const raster::WindowVertex> extremes, const FrameSpe
   return true;
 }
 
+// The sweep's view of one pixel, recomputed from the captured layers as Sweep::pixel computes it.
+LayeredPixel probePixel(const MeshLayers& a, const MeshLayers& b, int x, int y) {
+  LayeredPixel p;
+  p.x = x;
+  p.y = y;
+  p.inMor = true;
+  depthsAt(a.entries, x, y, p.entriesA);
+  depthsAt(a.exits, x, y, p.exitsA);
+  depthsAt(b.entries, x, y, p.entriesB);
+  depthsAt(b.exits, x, y, p.exitsB);
+  (void)detail::insideIntervals(p.entriesA, p.exitsA, p.insideA);
+  (void)detail::insideIntervals(p.entriesB, p.exitsB, p.insideB);
+  detail::intersectIntervals(p.insideA, p.insideB, p.insideBoth);
+  return p;
+}
+
 bool rectWithin(const PixelRect& inner, const PixelRect& outer) {
   return !inner.empty() && outer.x0 <= inner.x0 && outer.y0 <= inner.y0 && inner.x1 <= outer.x1 &&
          inner.y1 <= outer.y1;
@@ -209,12 +225,12 @@ class Sweep {
     const double depthScale = 1.0 / static_cast<double>(raster::kDepthMax);
     const double u = view_.planeU(x + 0.5), v = view_.planeV(y + 0.5);
     for (const DepthInterval& d : both_) {
-      const Eigen::Vector3d pn = view_.fromPlane({u, v, view_.planeD(d.lo * depthScale)});
-      const Eigen::Vector3d pf = view_.fromPlane({u, v, view_.planeD(d.hi * depthScale)});
+      const Eigen::Vector3d pn = view_.fromPlane({u, v, view_.planeD(d.min * depthScale)});
+      const Eigen::Vector3d pf = view_.fromPlane({u, v, view_.planeD(d.max * depthScale)});
       r_.contact.box.extend(pn);
       r_.contact.box.extend(pf);
       r_.contact.points.push_back(0.5 * (pn + pf));
-      r_.contact.maxDepth = std::max(r_.contact.maxDepth, (d.hi - d.lo) * worldPerStep_);
+      r_.contact.maxDepth = std::max(r_.contact.maxDepth, (d.max - d.min) * worldPerStep_);
       if (request_.normal) {
         ends.push_back(pn);
         ends.push_back(pf);
@@ -265,8 +281,31 @@ LayeredPairResult collideLayered(raster::DepthStencilDevice& device, const Trian
   return collideLayered(device, PairBlock(a), PairBlock(b), request);
 }
 
+namespace {
+
+// collideLayered, with result.pixel for `probe` when it is not null.
+LayeredPairResult collideLayeredProbing(raster::DepthStencilDevice& device, const PairBlock& a,
+                                        const PairBlock& b, const PairRequest& request,
+                                        const std::array<int, 2>* probe);
+
+}  // namespace
+
 LayeredPairResult collideLayered(raster::DepthStencilDevice& device, const PairBlock& a,
                                  const PairBlock& b, const PairRequest& request) {
+  return collideLayeredProbing(device, a, b, request, nullptr);
+}
+
+LayeredPairResult collideLayered(raster::DepthStencilDevice& device, const PairBlock& a,
+                                 const PairBlock& b, const PairRequest& request,
+                                 std::array<int, 2> probe) {
+  return collideLayeredProbing(device, a, b, request, &probe);
+}
+
+namespace {
+
+LayeredPairResult collideLayeredProbing(raster::DepthStencilDevice& device, const PairBlock& a,
+                                        const PairBlock& b, const PairRequest& request,
+                                        const std::array<int, 2>* probe) {
   using namespace detail;
   const Clock::time_point start = Clock::now();
   const FrameSpec& frame = request.frame;
@@ -274,6 +313,11 @@ LayeredPairResult collideLayered(raster::DepthStencilDevice& device, const PairB
   // The frame, the view, the box test and the MOR are collidePair's.
   PairResult region = startPair(a, b, frame);
   LayeredPairResult r;
+  if (probe) {
+    r.pixel.emplace();
+    r.pixel->x = (*probe)[0];
+    r.pixel->y = (*probe)[1];
+  }
   r.depthMin = region.depthMin;
   r.depthMax = region.depthMax;
   const auto finish = [&r, start]() -> LayeredPairResult {
@@ -317,6 +361,9 @@ LayeredPairResult collideLayered(raster::DepthStencilDevice& device, const PairB
     for (int y = r.mor.y0; y < r.mor.y1; ++y)
       for (int x = r.mor.x0; x < r.mor.x1; ++x)
         sweep.pixel(layersA, layersB, x, y);
+    if (probe && r.mor.x0 <= (*probe)[0] && (*probe)[0] < r.mor.x1 && r.mor.y0 <= (*probe)[1] &&
+        (*probe)[1] < r.mor.y1)
+      r.pixel = probePixel(layersA, layersB, (*probe)[0], (*probe)[1]);
     // A mesh lies inside the other only if the passes saw all of it: its footprint inside the
     // other's (so inside the MOR) and inside the frame.
     const PixelRect footA = pixelFootprint(sourceA.extremes(), frame.width, frame.height);
@@ -329,5 +376,7 @@ LayeredPairResult collideLayered(raster::DepthStencilDevice& device, const PairB
   });
   return finish();
 }
+
+}  // namespace
 
 }  // namespace recode::core

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <string>
+#include <vector>
 
 #include "pair/pair_report.hpp"
 #include "recode/io/printable.hpp"
@@ -42,6 +43,31 @@ void printOverlapPicture(std::ostream& out, const core::LayeredPairResult& r) {
   }
 }
 
+ordered_json intervalsJson(const std::vector<core::DepthInterval>& intervals) {
+  ordered_json list = ordered_json::array();
+  for (const core::DepthInterval& d : intervals)
+    list.push_back(ordered_json::array({d.min, d.max}));
+  return list;
+}
+
+// The probed pixel (`--pixel`): each mesh's entries and exits in depth order, the intervals the
+// sweep pairs them into, and the depths inside both.
+ordered_json layeredPixelJson(const core::LayeredPixel& p) {
+  ordered_json j;
+  j["x"] = p.x;
+  j["y"] = p.y;
+  j["in_mor"] = p.inMor;
+  j["entries_a"] = p.entriesA;
+  j["exits_a"] = p.exitsA;
+  j["entries_b"] = p.entriesB;
+  j["exits_b"] = p.exitsB;
+  j["inside_a"] = intervalsJson(p.insideA);
+  j["inside_b"] = intervalsJson(p.insideB);
+  j["inside_both"] = intervalsJson(p.insideBoth);
+  j["interferes"] = !p.insideBoth.empty();
+  return j;
+}
+
 }  // namespace
 
 ordered_json layeredResultToJson(const PairSetup& setup, const core::PairRequest& request,
@@ -71,6 +97,8 @@ ordered_json layeredResultToJson(const PairSetup& setup, const core::PairRequest
   j["objects"] = ordered_json::array({setup.nameA, setup.nameB});
   j["closed"] = ordered_json::array({setup.closedA, setup.closedB});
   j["source"] = setup.source;
+  if (r.pixel)
+    j["pixel"] = layeredPixelJson(*r.pixel);
   return j;
 }
 

@@ -1,6 +1,7 @@
 #include "pair/pair_run.hpp"
 
 #include <array>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -113,8 +114,6 @@ void requireReferenceOnlyOptions(const PairRunOptions& o) {
                                 " applies to a pair of convex blocks: this pair has a closed mesh, "
                                 "decided by the layered pair (docs/algorithm.md section 13)");
   };
-  if (!o.pixel.empty())
-    refuse("--pixel");
   if (o.mode != core::PairMode::Reference)
     refuse("--mode " + std::string(core::toString(o.mode)));
   if (o.axisRule != core::ViewAxisRule::Scene)
@@ -146,9 +145,12 @@ PairRun runPair(const PairRunOptions& o, const PairDeviceMaker& makeDevice,
   request.normal = o.normal;
   const std::unique_ptr<raster::DepthStencilDevice> device =
       makeDevice(setup.frame.width, setup.frame.height);
+  std::optional<std::array<int, 2>> pixel;
   if (!o.pixel.empty()) {
     const auto [x, y] = parsePixel(o.pixel, setup.frame);
-    run.probe.emplace(x, y);
+    pixel = std::array<int, 2>{x, y};
+    if (!setup.layered())
+      run.probe.emplace(x, y);
   }
   TwoObservers observers(run.probe ? &*run.probe : nullptr, observer);
   // Each block with its triangle hierarchy, as a run's leaves have theirs: the pair's time
@@ -156,7 +158,8 @@ PairRun runPair(const PairRunOptions& o, const PairDeviceMaker& makeDevice,
   const core::PairBlock a = core::PairBlock::withHierarchy(setup.a);
   const core::PairBlock b = core::PairBlock::withHierarchy(setup.b);
   if (setup.layered()) {
-    run.layered = core::collideLayered(*device, a, b, request);
+    run.layered = pixel ? core::collideLayered(*device, a, b, request, *pixel)
+                        : core::collideLayered(*device, a, b, request);
     return run;
   }
   run.result =

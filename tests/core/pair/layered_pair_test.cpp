@@ -3,6 +3,8 @@
 // refusal of a mesh that is not closed, and agreement with RECODE's passes on convex pairs.
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
@@ -197,4 +199,57 @@ TEST_CASE("convex pairs: the layered pair interferes where RECODE's passes do") 
     }
   }
   CHECK(colliding > 40);  // the poses exercise interference, not only pairs apart
+}
+
+TEST_CASE("a probed pixel shows the sweep that decided it, and changes nothing else") {
+  // A ball half inside a torus's tube, seen along x: the line through the ring's axis plane
+  // crosses the tube twice (two entries and two exits of the torus) and the ball once.
+  const core::TriangleMesh torus = core::makeTorus(2.0, 0.6, 48, 20);
+  const core::TriangleMesh ball = test::shifted(core::makeSphere(0.5, 24, 12), {2.3, 0.0, 0.0});
+  const core::FrameSpec frame = frameAround(ViewAxis::X, torus, ball, 64);
+  raster::CpuDevice device(frame.width, frame.height);
+  core::PairRequest request;
+  request.frame = frame;
+  const core::PairBlock a(torus), b(ball);
+  const core::LayeredPairResult plain = core::collideLayered(device, a, b, request);
+  REQUIRE(plain.collide);
+  int probed = 0, crossedTwice = 0;
+  for (int y = plain.mor.y0; y < plain.mor.y1; ++y)
+    for (int x = plain.mor.x0; x < plain.mor.x1; ++x) {
+      INFO("pixel " << x << ", " << y);
+      const core::LayeredPairResult r =
+          core::collideLayered(device, a, b, request, std::array<int, 2>{x, y});
+      REQUIRE(r.pixel);
+      const core::LayeredPixel& p = *r.pixel;
+      CHECK(p.inMor);
+      CHECK(r.interferingPixels == plain.interferingPixels);
+      CHECK(r.overlapVolume == plain.overlapVolume);
+      // Each mesh as many entries as exits, nearest first; the lengths are the pixel's overlap.
+      for (const auto* list : {&p.entriesA, &p.exitsA, &p.entriesB, &p.exitsB})
+        CHECK(std::is_sorted(list->begin(), list->end()));
+      CHECK(p.entriesA.size() == p.exitsA.size());
+      CHECK(p.entriesB.size() == p.exitsB.size());
+      std::uint64_t steps = 0;
+      for (const core::DepthInterval& d : p.insideBoth)
+        steps += d.max - d.min;
+      CHECK(steps == plain.overlapSteps.at(x, y));
+      CHECK((p.insideBoth.empty() ? 0 : 1) == plain.interferes.at(x, y));
+      if (p.entriesA.size() == 2) {  // through both sides of the tube: entry, exit, entry, exit
+        ++crossedTwice;
+        CHECK(p.entriesA[0] < p.exitsA[0]);
+        CHECK(p.exitsA[0] < p.entriesA[1]);
+        CHECK(p.entriesA[1] < p.exitsA[1]);
+        CHECK(p.insideA.size() == 2);
+      }
+      ++probed;
+    }
+  CHECK(probed > 50);
+  CHECK(crossedTwice > 10);
+  // Outside the MOR: every list empty.
+  const core::LayeredPairResult outside =
+      core::collideLayered(device, a, b, request, std::array<int, 2>{0, 0});
+  REQUIRE(outside.pixel);
+  CHECK_FALSE(outside.pixel->inMor);
+  CHECK(outside.pixel->entriesA.empty());
+  CHECK(outside.pixel->insideBoth.empty());
 }

@@ -14,11 +14,13 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "recode/pair/pair.hpp"
 #include "recode/pair/pair_block.hpp"
+#include "recode/pair/pair_cases.hpp"
 #include "recode/raster/device.hpp"
 #include "recode/raster/pixel_buffer.hpp"
 
@@ -42,6 +44,20 @@ inline constexpr int kLayerStepCount = 3;
 struct LayeredTiming {
   std::array<double, kLayerStepCount> stepUs{};  // indexed by LayerStep
   double totalUs = 0.0;
+};
+
+// One pixel as the sweep saw it (`recode pair --pixel` on a closed-mesh pair; teaching): each
+// mesh's entries (front-facing fragments) and exits (back-facing ones) in depth order, the
+// intervals inside each mesh that the sweep pairs them into (DepthInterval: pair_cases.hpp),
+// and those inside both. Empty
+// lists where the mesh has no fragment at the pixel; all empty when the pixel lies outside the
+// MOR or nothing was drawn (inMor false).
+struct LayeredPixel {
+  int x = 0;
+  int y = 0;
+  bool inMor = false;
+  std::vector<std::uint32_t> entriesA, exitsA, entriesB, exitsB;
+  std::vector<DepthInterval> insideA, insideB, insideBoth;
 };
 
 // Which mesh, if either, lies wholly inside the other (section "Containment" of the doc).
@@ -77,6 +93,7 @@ struct LayeredPairResult {
   double depthMin = 0.0;  // the world range along the view axis mapped onto depth [1, 0]
   double depthMax = 0.0;
   LayeredTiming timing;
+  std::optional<LayeredPixel> pixel;  // the probed pixel, when one was asked for
 };
 
 // The layered pair test of two closed meshes (world coordinates) on `device`, whose size must be
@@ -91,5 +108,11 @@ struct LayeredPairResult {
 [[nodiscard]] LayeredPairResult collideLayered(raster::DepthStencilDevice& device,
                                                const TriangleMesh& a, const TriangleMesh& b,
                                                const PairRequest& request);
+// The same, also keeping the sweep's view of pixel (x, y) of the frame in result.pixel; the rest
+// of the result is the same bytes.
+[[nodiscard]] LayeredPairResult collideLayered(raster::DepthStencilDevice& device,
+                                               const PairBlock& a, const PairBlock& b,
+                                               const PairRequest& request,
+                                               std::array<int, 2> probePixel);
 
 }  // namespace recode::core

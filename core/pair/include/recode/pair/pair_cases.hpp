@@ -17,6 +17,7 @@ inline constexpr int kCaseCount = 9;
 struct DepthInterval {
   std::uint32_t min = 0;  // nearest boundary (entry)
   std::uint32_t max = 0;  // farthest boundary (exit)
+  friend bool operator==(const DepthInterval&, const DepthInterval&) = default;
 };
 
 // The case table from the intervals themselves, the definition the stencil encoding is
