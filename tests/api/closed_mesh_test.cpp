@@ -254,6 +254,10 @@ TEST_CASE("on two convex blocks the layered pair interferes where RECODE's passe
   CHECK_FALSE(passes.layered);
   REQUIRE(layers.layered);
   CHECK(layers.collide);
+  // Convex blocks have one layer each at every pixel: 4 count passes and 2 capture passes each.
+  CHECK(layers.layered->result.layersA == 1);
+  CHECK(layers.layered->result.layersB == 1);
+  CHECK(layers.layered->result.passes == 8);
   CHECK(layers.interferingPixels == passes.interferingPixels);
   CHECK(layers.contacts[0].frame.width == passes.contacts[0].frame.width);
 }
@@ -283,6 +287,7 @@ TEST_CASE("the manager decides pairs with a closed mesh by layers") {
   CHECK(contacts[0].a == ring);
   CHECK(contacts[0].b == tube);
   REQUIRE(contacts[0].result.layered);
+  CHECK(contacts[0].result.layered->result.overlapVolume > 0.0);
   CHECK(contacts[0].result.layered->result.overlapVolume ==
         collided(CollisionObject(torus()), peg(0.2, kTorusRadius)).layered->result.overlapVolume);
 }
