@@ -12,6 +12,7 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include "layered_pairs.hpp"
 #include "recode/pair/pair_batch.hpp"
 #include "recode/refine/adaptive.hpp"
 #include "recode/refine/proven_apart.hpp"
@@ -35,6 +36,11 @@ BlockPairAnswer decideOne(raster::DepthStencilDevice& device, const PlannedBlock
                           core::PairMode mode) {
   BlockPairAnswer out;
   out.frame = p.request.frame;
+  if (p.layered) {
+    out.layered = core::collideLayered(device, p.blockA.block, p.blockB.block, p.request);
+    out.pair = pairResultOf(*out.layered);
+    return out;
+  }
   if (mode == core::PairMode::Reference || mode == core::PairMode::SkipApart) {
     out.pair = core::collidePair(device, p.blockA.block, p.blockB.block, p.request);
     return out;
@@ -80,6 +86,11 @@ std::size_t BlockPairPlan::add(const CollisionObject& a, const CollisionObject& 
     throw std::invalid_argument("CollisionRequest::threads is " + std::to_string(request.threads) +
                                 ": give 1 (the caller's thread), 0 (every hardware thread) or "
                                 "a count");
+  const bool layered = isLayeredPair(a, b);
+  if (layered) {
+    requireLayeredRequest(a, b, request);
+    result.layered.emplace();
+  }
   firstOfObjectPair_.push_back(pairs_.size());
   std::vector<core::LeafPair> leafPairs;
   result.boxTests = core::descendPair(a.tree(), b.tree(), leafPairs);
@@ -100,7 +111,7 @@ std::size_t BlockPairPlan::add(const CollisionObject& a, const CollisionObject& 
       ++result.blockPairsSkipped;
       continue;
     }
-    pairs_.emplace_back(a, b, lp.leafA, lp.leafB, std::move(pair));
+    pairs_.emplace_back(a, b, lp.leafA, lp.leafB, std::move(pair)).layered = layered;
   }
   return firstOfObjectPair_.size() - 1;
 }
@@ -129,14 +140,23 @@ std::vector<BlockPairAnswer> BlockPairPlan::decide(core::PairMode mode, DevicePo
     }
     return answers;
   }
-  // Batches of at most kSizesPerBatch frame sizes, in plan order.
+  // Layered pairs on their own (collidePairs batches RECODE's passes), then batches of at most
+  // kSizesPerBatch frame sizes of the others, in plan order.
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const core::FrameSpec& f = pairs_[i].request.frame;
+    if (pairs_[i].layered)
+      answers[i] = decideOne(devices.device(f.width, f.height), pairs_[i], mode);
+  }
   for (std::size_t first = 0; first < pairs_.size();) {
     std::map<std::pair<int, int>, raster::DepthStencilDevice*> sizes;
     std::vector<core::PairJob> jobs;
     std::vector<raster::DepthStencilDevice*> batchDevices;
+    std::vector<std::size_t> slots;  // the plan index of each job
     std::size_t end = first;
     for (; end < pairs_.size(); ++end) {
       const PlannedBlockPair& p = pairs_[end];
+      if (p.layered)
+        continue;
       const std::pair<int, int> size{p.request.frame.width, p.request.frame.height};
       auto found = sizes.find(size);
       if (found == sizes.end()) {
@@ -146,11 +166,12 @@ std::vector<BlockPairAnswer> BlockPairPlan::decide(core::PairMode mode, DevicePo
       }
       jobs.push_back({&p.blockA.block, &p.blockB.block, p.request});
       batchDevices.push_back(found->second);
+      slots.push_back(end);
     }
     std::vector<core::PairResult> results = core::collidePairs(batchDevices, jobs);
     for (std::size_t k = 0; k < results.size(); ++k) {
-      answers[first + k].pair = std::move(results[k]);
-      answers[first + k].frame = pairs_[first + k].request.frame;
+      answers[slots[k]].pair = std::move(results[k]);
+      answers[slots[k]].frame = pairs_[slots[k]].request.frame;
     }
     first = end;
   }
@@ -198,13 +219,15 @@ void BlockPairPlan::merge(std::size_t index, std::vector<BlockPairAnswer>& answe
     core::PairResult& r = answer.pair;
     ++result.blockPairsDrawn;
     result.apartAtLimit += answer.atLimit ? 1 : 0;
+    if (answer.layered)  // the one block pair of a layered object pair
+      result.layered = LayeredPair{answer.frame, std::move(*answer.layered)};
     if (!r.collide)
       continue;
     result.collide = true;
     result.interferingPixels += r.interferingPixels;
     mergeContact(result.contact, r.contact);
-    result.contacts.push_back(
-        {pairs_[i].objectBlockA, pairs_[i].objectBlockB, answer.frame, std::move(r), answer.level});
+    result.contacts.push_back({pairs_[i].objectBlockA, pairs_[i].objectBlockB, answer.frame,
+                               std::move(r), answer.level, pairs_[i].layered});
   }
 }
 

@@ -3,10 +3,12 @@
 // pairs as one batch: plan (the descent, the frames, the skip-apart test), decide (every planned
 // block pair, in the reference and skip-apart modes as core::collidePairs batches, which a
 // deferring GPU device runs in one submission round), then merge each object pair's answers into
-// its CollisionResult. The results are those of deciding the pairs one by one, in order.
+// its CollisionResult. The results are those of deciding the pairs one by one, in order. A pair
+// with a closed mesh is one layered pair (core::collideLayered), decided on its own.
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "recode/api/collision.hpp"
@@ -24,14 +26,16 @@ struct PlannedBlockPair {
   core::PairRequest request;
   std::size_t objectBlockA = 0;  // the block's index in its object's geometry
   std::size_t objectBlockB = 0;
+  bool layered = false;  // a closed mesh takes part: decided by core::collideLayered
 };
 
 // The answer for one block pair in the request's mode.
 struct BlockPairAnswer {
   core::PairResult pair;
-  core::FrameSpec frame;  // the frame the answer was found in
-  int level = 0;          // adaptive refinement level of that frame
-  bool atLimit = false;   // adaptive: apart at the refinement limit
+  core::FrameSpec frame;                           // the frame the answer was found in
+  int level = 0;                                   // adaptive refinement level of that frame
+  bool atLimit = false;                            // adaptive: apart at the refinement limit
+  std::optional<core::LayeredPairResult> layered;  // the layered pair's answer (pair: its fields)
 };
 
 // The block pairs of a call (or a manager's frame), grouped by object pair. Stable addresses:

@@ -1,16 +1,30 @@
-// Making blocks (validated once, when made) and object shapes (an ObjectTree built from a scene
-// object whose leaves are the blocks, already placed in object coordinates).
+// Making blocks and closed meshes (validated once, when made) and object shapes (an ObjectTree
+// built from a scene object whose leaves are the blocks, already placed in object coordinates).
 #include "recode/api/geometry.hpp"
 
 #include <stdexcept>
 #include <utility>
 
+#include "recode/geometry/closed_mesh.hpp"
 #include "recode/geometry/convex_hull.hpp"
 #include "recode/geometry/mesh_io.hpp"
 #include "recode/geometry/validate.hpp"
 #include "recode/scene/scene.hpp"
 
 namespace recode {
+
+namespace {
+
+// A mesh of the given vertices and triangles, for the fromArrays of blocks and closed meshes.
+core::TriangleMesh meshOf(std::span<const Eigen::Vector3d> vertices,
+                          std::span<const core::Triangle> triangles) {
+  core::TriangleMesh mesh;
+  mesh.vertices.assign(vertices.begin(), vertices.end());
+  mesh.triangles.assign(triangles.begin(), triangles.end());
+  return mesh;
+}
+
+}  // namespace
 
 ConvexBlockPtr ConvexBlock::fromMesh(core::TriangleMesh mesh, std::string name) {
   core::validateConvexBlock(mesh, name);
@@ -20,10 +34,7 @@ ConvexBlockPtr ConvexBlock::fromMesh(core::TriangleMesh mesh, std::string name) 
 ConvexBlockPtr ConvexBlock::fromArrays(std::span<const Eigen::Vector3d> vertices,
                                        std::span<const core::Triangle> triangles,
                                        std::string name) {
-  core::TriangleMesh mesh;
-  mesh.vertices.assign(vertices.begin(), vertices.end());
-  mesh.triangles.assign(triangles.begin(), triangles.end());
-  return fromMesh(std::move(mesh), std::move(name));
+  return fromMesh(meshOf(vertices, triangles), std::move(name));
 }
 
 ConvexBlockPtr ConvexBlock::fromFile(const std::filesystem::path& path) {
@@ -49,6 +60,20 @@ ConvexBlockPtr ConvexBlock::fromFileHull(const std::filesystem::path& path) {
   return fromHull(core::readMesh(path).vertices, path.string());
 }
 
+ClosedMeshPtr ClosedMesh::fromMesh(core::TriangleMesh mesh, std::string name) {
+  core::validateClosedMesh(mesh, name);
+  return ClosedMeshPtr(new ClosedMesh(std::move(mesh), std::move(name)));
+}
+
+ClosedMeshPtr ClosedMesh::fromArrays(std::span<const Eigen::Vector3d> vertices,
+                                     std::span<const core::Triangle> triangles, std::string name) {
+  return fromMesh(meshOf(vertices, triangles), std::move(name));
+}
+
+ClosedMeshPtr ClosedMesh::fromFile(const std::filesystem::path& path) {
+  return fromMesh(core::readMesh(path), path.string());
+}
+
 namespace {
 
 // The leaf of one part: its block moved into object coordinates, so the tree's placements
@@ -69,7 +94,18 @@ core::SceneObject leafOf(const BlockPart& part) {
 CollisionGeometryPtr CollisionGeometry::single(ConvexBlockPtr block) {
   std::vector<BlockPart> parts{{std::move(block), Eigen::Isometry3d::Identity()}};
   core::ObjectTree tree(leafOf(parts.front()));
-  return CollisionGeometryPtr(new CollisionGeometry(std::move(parts), std::move(tree)));
+  return CollisionGeometryPtr(new CollisionGeometry(std::move(parts), nullptr, std::move(tree)));
+}
+
+CollisionGeometryPtr CollisionGeometry::closed(ClosedMeshPtr mesh) {
+  if (!mesh)
+    throw std::invalid_argument("a collision geometry's closed mesh is null");
+  core::SceneObject leaf;
+  leaf.name = mesh->name();
+  leaf.localMesh = mesh->mesh();
+  leaf.closed = true;
+  core::ObjectTree tree(leaf);
+  return CollisionGeometryPtr(new CollisionGeometry({}, std::move(mesh), std::move(tree)));
 }
 
 CollisionGeometryPtr CollisionGeometry::compound(std::vector<BlockPart> parts, std::string name) {
@@ -80,7 +116,7 @@ CollisionGeometryPtr CollisionGeometry::compound(std::vector<BlockPart> parts, s
   for (const BlockPart& part : parts)
     root.children.push_back(leafOf(part));
   core::ObjectTree tree(root);
-  return CollisionGeometryPtr(new CollisionGeometry(std::move(parts), std::move(tree)));
+  return CollisionGeometryPtr(new CollisionGeometry(std::move(parts), nullptr, std::move(tree)));
 }
 
 CollisionGeometryPtr CollisionGeometry::fromObjGroups(const std::filesystem::path& path,
@@ -95,8 +131,9 @@ CollisionGeometryPtr CollisionGeometry::fromObjGroups(const std::filesystem::pat
   return compound(std::move(parts), path.string());
 }
 
-CollisionGeometry::CollisionGeometry(std::vector<BlockPart> parts, core::ObjectTree tree)
-    : parts_(std::move(parts)), tree_(std::move(tree)) {
+CollisionGeometry::CollisionGeometry(std::vector<BlockPart> parts, ClosedMeshPtr closed,
+                                     core::ObjectTree tree)
+    : parts_(std::move(parts)), closed_(std::move(closed)), tree_(std::move(tree)) {
   // ObjectTree numbers its leaves depth first, in the order the parts were given.
   blockOfNode_.assign(tree_.nodes().size(), -1);
   for (std::size_t i = 0; i < tree_.leaves().size(); ++i)
@@ -105,6 +142,13 @@ CollisionGeometry::CollisionGeometry(std::vector<BlockPart> parts, core::ObjectT
   // first collide() that draws the block; the objects made from this geometry share them.
   for (const int leaf : tree_.leaves())
     (void)tree_.triangleHierarchy(leaf);
+}
+
+const BlockPart& CollisionGeometry::part(std::size_t i) const {
+  if (closed_)
+    throw std::logic_error("the geometry '" + name() +
+                           "' is a closed mesh, not convex blocks: read closedMesh()");
+  return parts_.at(i);
 }
 
 int CollisionGeometry::blockOfNode(int node) const {

@@ -17,11 +17,12 @@ _Path = Union[str, os.PathLike[str]]
 # A pose: a 4 x 4 rigid motion [[R, t], [0, 0, 0, 1]] (any array-like of real numbers).
 _Pose = npt.ArrayLike
 _FloatArray = npt.NDArray[np.float64]
-# ConvexBlock, CollisionGeometry, CollisionObject, CollisionRequest, CollisionResult and
-# BatchResult pickle and deep-copy (object's __getstate__/__setstate__; docs/api.md#pickling).
+# ConvexBlock, ClosedMesh, CollisionGeometry, CollisionObject, CollisionRequest, CollisionResult
+# and BatchResult pickle and deep-copy (object's __getstate__/__setstate__; docs/api.md#pickling).
 
 class MeshError(ValueError):
-    """A block that is not a valid closed convex block, or a malformed mesh file."""
+    """A block that is not a valid closed convex block, a mesh that is not a valid closed mesh,
+    or a malformed mesh file."""
 
 class _DeviceEntry(TypedDict):
     """One entry of devices() (a dict at run time)."""
@@ -60,6 +61,29 @@ class ConvexBlock:
     def faces(self) -> npt.NDArray[np.uint32]:
         """(m, 3) uint32 vertex indices (a copy)."""
 
+class ClosedMesh:
+    """A closed mesh of any shape (a torus, a bowl, a hollow part), validated when made; its
+    pairs are decided by the layered pair (overlap volume, containment, layers)."""
+
+    @staticmethod
+    def from_arrays(vertices: npt.ArrayLike, faces: npt.ArrayLike, name: str = "mesh") -> ClosedMesh:
+        """(n, 3) vertices and (m, 3) vertex indices, counter-clockwise seen from outside the solid."""
+    @staticmethod
+    def from_file(path: _Path) -> ClosedMesh:
+        """A closed mesh from an OBJ, OFF, STL or PLY file, named by its path."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def vertices(self) -> _FloatArray:
+        """(n, 3) float64, read-only."""
+    @property
+    def faces(self) -> npt.NDArray[np.uint32]:
+        """(m, 3) uint32 vertex indices (a copy)."""
+
+def torus(radius: float, tube_radius: float, segments: int = 48, rings: int = 24,
+          name: str = "torus") -> ClosedMesh:
+    """A torus about the z axis: the tube's centre circle of `radius` in z = 0, tube `tube_radius`."""
+
 def cone(radius: float, height: float, segments: int = 32, name: str = "cone") -> ConvexBlock:
     """Base disc of `radius` in z = 0 centred at the origin, apex at (0, 0, height)."""
 
@@ -73,10 +97,16 @@ def sphere(radius: float, segments: int = 32, rings: int = 16, name: str = "sphe
     """A tessellated sphere centred at the origin."""
 
 class CollisionGeometry:
-    """An object's shape: one or several convex blocks fixed together; shared by objects."""
+    """An object's shape: one or several convex blocks fixed together, or one closed mesh."""
 
     @staticmethod
     def single(block: ConvexBlock) -> CollisionGeometry: ...
+    @staticmethod
+    def closed(mesh: ClosedMesh) -> CollisionGeometry:
+        """A closed mesh as an object's whole shape (block 0 in results)."""
+    @property
+    def closed_mesh(self) -> Optional[ClosedMesh]:
+        """The ClosedMesh of a geometry made by closed(); None for convex blocks."""
     @staticmethod
     def compound(parts: Sequence[Union[ConvexBlock, Tuple[ConvexBlock, _Pose]]],
                  name: str = "compound") -> CollisionGeometry:
@@ -94,7 +124,7 @@ class CollisionGeometry:
 class CollisionObject:
     """A shape at a pose (object -> world): a 4 x 4 matrix, or rotation and translation."""
 
-    def __init__(self, shape: Union[ConvexBlock, CollisionGeometry], pose: Optional[_Pose] = None, *,
+    def __init__(self, shape: Union[ConvexBlock, ClosedMesh, CollisionGeometry], pose: Optional[_Pose] = None, *,
                  rotation: Optional[npt.ArrayLike] = None,
                  translation: Optional[npt.ArrayLike] = None) -> None: ...
     def set_transform(self, pose: Optional[_Pose] = None, *, rotation: Optional[npt.ArrayLike] = None,
@@ -173,11 +203,14 @@ class BlockContact:
     @property
     def frame(self) -> Frame: ...
     @property
+    def layered(self) -> bool:
+        """Decided by the layered pair (a closed mesh took part): no cases, an empty case map."""
+    @property
     def case_counts(self) -> npt.NDArray[np.int64]:
-        """Pixels of each case 0-8 inside the MOR, int64 (9,)."""
+        """Pixels of each case 0-8 inside the MOR, int64 (9,); zeros for a layered contact."""
     @property
     def case_map(self) -> npt.NDArray[np.uint8]:
-        """uint8 (rows, columns) over the MOR, read-only, row 0 the bottom row."""
+        """uint8 (rows, columns) over the MOR, read-only, row 0 the bottom row; (0, 0) if layered."""
     @property
     def mor(self) -> Tuple[int, int, int, int]:
         """(x0, y0, x1, y1) in pixels, half-open, y from the bottom."""
@@ -187,6 +220,40 @@ class BlockContact:
     def contact(self) -> ContactRegion: ...
     @property
     def refine_level(self) -> int: ...
+    @property
+    def timing_us(self) -> float: ...
+
+class LayeredResult:
+    """What the layered pair found for two objects of which one or both are closed meshes."""
+
+    @property
+    def frame(self) -> Frame:
+        """The frame it was drawn in (width 0 when the boxes did not meet)."""
+    @property
+    def collide(self) -> bool: ...
+    @property
+    def interfering_pixels(self) -> int: ...
+    @property
+    def overlap_volume(self) -> float:
+        """Estimated volume of the intersection, world units cubed."""
+    @property
+    def containment(self) -> str:
+        """'none', 'a_inside_b', 'b_inside_a' or 'same'."""
+    @property
+    def layers(self) -> Tuple[int, int]:
+        """The most entries of A and of B at one pixel."""
+    @property
+    def passes(self) -> int: ...
+    @property
+    def mor(self) -> Tuple[int, int, int, int]: ...
+    @property
+    def overlap_steps(self) -> npt.NDArray[np.uint32]:
+        """(rows, columns) over the MOR: each pixel's overlap length in depth steps (read-only)."""
+    @property
+    def interferes(self) -> npt.NDArray[np.uint8]:
+        """(rows, columns) over the MOR: 1 where the pixel interferes (read-only)."""
+    @property
+    def contact(self) -> ContactRegion: ...
     @property
     def timing_us(self) -> float: ...
 
@@ -206,6 +273,9 @@ class CollisionResult:
     @property
     def case_map(self) -> Optional[npt.NDArray[np.uint8]]:
         """The one block pair's case map (None without contact; ValueError with several)."""
+    @property
+    def layered(self) -> Optional[LayeredResult]:
+        """The layered pair's result when a closed mesh took part; None for convex blocks."""
     @property
     def box_tests(self) -> int: ...
     @property
@@ -253,8 +323,25 @@ class BatchResult:
     @property
     def collision_us(self) -> _FloatArray: ...
     @property
+    def layered(self) -> npt.NDArray[np.bool_]:
+        """A closed mesh took part: the layered pair decided the query."""
+    @property
+    def overlap_volume(self) -> _FloatArray:
+        """The layered pair's intersection volume; NaN where no closed mesh took part."""
+    @property
+    def containment(self) -> npt.NDArray[np.int8]:
+        """Index into CONTAINMENT; -1 where no closed mesh took part."""
+    @property
+    def layers(self) -> npt.NDArray[np.int32]:
+        """(..., 2): the most entries of A and of B at one pixel; 0 where not layered."""
+    @property
+    def passes(self) -> npt.NDArray[np.int64]: ...
+    @property
     def shape(self) -> Tuple[int, ...]: ...
     def __len__(self) -> int: ...
+
+CONTAINMENT: Tuple[str, ...]
+"""BatchResult.containment's codes by index: ('none', 'a_inside_b', 'b_inside_a', 'same')."""
 
 def collide_batch(objects: Sequence[CollisionObject], pairs: npt.ArrayLike,
                   poses: Optional[npt.ArrayLike] = None, *, request: Optional[CollisionRequest] = None,

@@ -141,6 +141,13 @@ struct Answer {
   double penetrationDepth = 0.0;
   long long blockPairsDrawn = 0;
   double collisionUs = 0.0;
+  // The layered pair's, for a query with a closed mesh: the volume (NaN for other queries), the
+  // containment (-1 for other queries), the layers and the passes (0 for other queries).
+  bool layered = false;
+  double overlapVolume = 0.0;
+  std::int8_t containment = -1;
+  std::array<std::int32_t, 2> layers{};
+  long long passes = 0;
 };
 
 Answer answerOf(const CollisionResult& r) {
@@ -176,6 +183,13 @@ Answer answerOf(const CollisionResult& r) {
   }
   out.blockPairsDrawn = r.blockPairsDrawn;
   out.collisionUs = r.collisionUs;
+  out.layered = r.layered.has_value();
+  out.overlapVolume = r.layered ? r.layered->result.overlapVolume : nan;
+  if (r.layered) {
+    out.containment = static_cast<std::int8_t>(r.layered->result.containment);
+    out.layers = {r.layered->result.layersA, r.layered->result.layersB};
+    out.passes = r.layered->result.passes;
+  }
   return out;
 }
 
@@ -286,7 +300,8 @@ std::vector<Answer> runQueries(const std::vector<CollisionObject>& objects,
 // The answers as arrays, each with the leading shape `shape`.
 struct BatchResult {
   py::object collide, interferingPixels, contactPixels, caseCounts, contactBox, contactArea,
-      maxDepth, normal, penetrationDepth, blockPairsDrawn, collisionUs;
+      maxDepth, normal, penetrationDepth, blockPairsDrawn, collisionUs, layered, overlapVolume,
+      containment, layers, passes;
   std::vector<py::ssize_t> shape;
 };
 
@@ -296,7 +311,9 @@ constexpr std::array kColumns = {&BatchResult::collide,          &BatchResult::i
                                  &BatchResult::contactBox,       &BatchResult::contactArea,
                                  &BatchResult::maxDepth,         &BatchResult::normal,
                                  &BatchResult::penetrationDepth, &BatchResult::blockPairsDrawn,
-                                 &BatchResult::collisionUs};
+                                 &BatchResult::collisionUs,      &BatchResult::layered,
+                                 &BatchResult::overlapVolume,    &BatchResult::containment,
+                                 &BatchResult::layers,           &BatchResult::passes};
 constexpr const char* kBatchType = "recode.BatchResult";
 
 // (format, shape, the arrays of kColumns).
@@ -367,6 +384,16 @@ BatchResult resultOf(const std::vector<Answer>& v, const std::vector<py::ssize_t
       v, shape, {}, [](const Answer& a, std::int64_t* o) { *o = a.blockPairsDrawn; });
   r.collisionUs =
       column<double>(v, shape, {}, [](const Answer& a, double* o) { *o = a.collisionUs; });
+  r.layered = column<bool>(v, shape, {}, [](const Answer& a, bool* o) { *o = a.layered; });
+  r.overlapVolume =
+      column<double>(v, shape, {}, [](const Answer& a, double* o) { *o = a.overlapVolume; });
+  r.containment = column<std::int8_t>(v, shape, {},
+                                      [](const Answer& a, std::int8_t* o) { *o = a.containment; });
+  r.layers = column<std::int32_t>(v, shape, {2}, [](const Answer& a, std::int32_t* o) {
+    std::copy(a.layers.begin(), a.layers.end(), o);
+  });
+  r.passes =
+      column<std::int64_t>(v, shape, {}, [](const Answer& a, std::int64_t* o) { *o = a.passes; });
   return r;
 }
 
@@ -446,6 +473,11 @@ BatchResult collidePoses(const CollisionObject& a, const CollisionObject& b,
 }  // namespace
 
 void bindBatch(py::module_& m) {
+  // BatchResult.containment's codes, by index (core::Containment's order).
+  py::list containment;
+  for (int c = 0; c <= static_cast<int>(core::Containment::Same); ++c)
+    containment.append(std::string(core::toString(static_cast<core::Containment>(c))));
+  m.attr("CONTAINMENT") = py::tuple(containment);
   py::class_<BatchResult>(
       m, "BatchResult",
       "The answers of collide_batch or collide_poses as arrays, one entry per query (leading "
@@ -468,6 +500,20 @@ void bindBatch(py::module_& m) {
       .def_readonly("block_pairs_drawn", &BatchResult::blockPairsDrawn, "int64.")
       .def_readonly("collision_us", &BatchResult::collisionUs,
                     "float64: each query's own time inside the C++ API, microseconds.")
+      .def_readonly("layered", &BatchResult::layered,
+                    "bool: a closed mesh took part, so the layered pair decided the query.")
+      .def_readonly("overlap_volume", &BatchResult::overlapVolume,
+                    "float64: the layered pair's estimate of the intersection's volume; NaN "
+                    "where no closed mesh took part.")
+      .def_readonly("containment", &BatchResult::containment,
+                    "int8: the layered pair's containment as an index into recode.CONTAINMENT "
+                    "(0 none, 1 a_inside_b, 2 b_inside_a, 3 same); -1 where no closed mesh took "
+                    "part.")
+      .def_readonly("layers", &BatchResult::layers,
+                    "int32 (..., 2): the layered pair's most entries of A and of B at one pixel; "
+                    "0 where no closed mesh took part.")
+      .def_readonly("passes", &BatchResult::passes,
+                    "int64: the layered pair's passes; 0 where no closed mesh took part.")
       .def_property_readonly("shape",
                              [](const BatchResult& r) {
                                py::tuple t(r.shape.size());

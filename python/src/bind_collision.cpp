@@ -25,14 +25,18 @@ namespace {
 
 using ObjectHolder = std::shared_ptr<CollisionObject>;
 
-// A shape argument: a CollisionGeometry, or a ConvexBlock taken as a geometry of one block.
+// A shape argument: a CollisionGeometry, a ConvexBlock taken as a geometry of one block, or a
+// ClosedMesh taken as a closed mesh's geometry.
 CollisionGeometryPtr shapeFrom(const py::handle& shape) {
   if (py::isinstance<ConvexBlock>(shape))
     return CollisionGeometry::single(shape.cast<std::shared_ptr<ConvexBlock>>());
+  if (py::isinstance<ClosedMesh>(shape))
+    return CollisionGeometry::closed(shape.cast<std::shared_ptr<ClosedMesh>>());
   if (py::isinstance<CollisionGeometry>(shape))
     return shape.cast<std::shared_ptr<CollisionGeometry>>();
-  throw py::type_error("shape: expected a ConvexBlock or a CollisionGeometry, got " +
-                       py::str(py::type::of(shape)).cast<std::string>());
+  throw py::type_error(
+      "shape: expected a ConvexBlock or a CollisionGeometry (or a ClosedMesh), got " +
+      py::str(py::type::of(shape)).cast<std::string>());
 }
 
 py::object boxOf(const core::Aabb& box) {
@@ -364,9 +368,12 @@ void bindBlockContact(py::module_& m) {
       .def_readonly("block_a", &BlockContact::blockA)
       .def_readonly("block_b", &BlockContact::blockB)
       .def_readonly("frame", &BlockContact::frame)
+      .def_readonly("layered", &BlockContact::layered,
+                    "Decided by the layered pair (a closed mesh took part): no cases, an empty "
+                    "case map; see CollisionResult.layered.")
       .def_property_readonly(
           "case_counts", [](const BlockContact& c) { return countsOf(c.pair.caseCounts); },
-          "Pixels of each case 0-8 inside the MOR, int64 (9,).")
+          "Pixels of each case 0-8 inside the MOR, int64 (9,); zeros for a layered contact.")
       .def_property_readonly(
           "case_map",
           [](const py::object& self) {
@@ -374,7 +381,7 @@ void bindBlockContact(py::module_& m) {
             return gridView(map.data, map.rect.height(), map.rect.width(), self);
           },
           "uint8 (rows, columns) over the MOR, read-only: case_map[y - mor[1], x - mor[0]], "
-          "row 0 the bottom row.")
+          "row 0 the bottom row; empty, (0, 0), for a layered contact.")
       .def_property_readonly(
           "mor", [](const BlockContact& c) { return rectOf(c.pair.mor); },
           "(x0, y0, x1, y1) in pixels, half-open, y from the bottom.")
@@ -392,6 +399,64 @@ void bindBlockContact(py::module_& m) {
           "Wall time of the pair algorithm, microseconds.");
 }
 
+void bindLayered(py::module_& m) {
+  py::class_<LayeredPair>(m, "LayeredResult",
+                          "What the layered pair found for two objects of which one or both are "
+                          "closed meshes (docs/algorithm.md section 13).")
+      .def_readonly("frame", &LayeredPair::frame,
+                    "The frame it was drawn in (width 0 when the boxes did not meet).")
+      .def_property_readonly("collide", [](const LayeredPair& l) { return l.result.collide; })
+      .def_property_readonly("interfering_pixels",
+                             [](const LayeredPair& l) { return l.result.interferingPixels; })
+      .def_property_readonly(
+          "overlap_volume", [](const LayeredPair& l) { return l.result.overlapVolume; },
+          "Estimated volume of A and B's intersection, world units cubed.")
+      .def_property_readonly(
+          "containment",
+          [](const LayeredPair& l) { return std::string(core::toString(l.result.containment)); },
+          "'none', 'a_inside_b', 'b_inside_a' or 'same'.")
+      .def_property_readonly(
+          "layers",
+          [](const LayeredPair& l) { return py::make_tuple(l.result.layersA, l.result.layersB); },
+          "(A, B): the most entries of each mesh at one MOR pixel.")
+      .def_property_readonly(
+          "passes", [](const LayeredPair& l) { return l.result.passes; },
+          "Depth/stencil passes drawn: 4 + 2 (layers A + layers B), 0 when nothing was drawn.")
+      .def_property_readonly(
+          "mor", [](const LayeredPair& l) { return rectOf(l.result.mor); },
+          "(x0, y0, x1, y1) in pixels, half-open, y from the bottom.")
+      .def_property_readonly(
+          "overlap_steps",
+          [](const py::object& self) {
+            const auto& map = self.cast<const LayeredPair&>().result.overlapSteps;
+            return gridView(map.data, map.rect.height(), map.rect.width(), self);
+          },
+          "uint32 (rows, columns) over the MOR, read-only: each pixel's overlap length in depth "
+          "steps, [y - mor[1], x - mor[0]], row 0 the bottom row.")
+      .def_property_readonly(
+          "interferes",
+          [](const py::object& self) {
+            const auto& map = self.cast<const LayeredPair&>().result.interferes;
+            return gridView(map.data, map.rect.height(), map.rect.width(), self);
+          },
+          "uint8 (rows, columns) over the MOR, read-only: 1 where the pixel interferes.")
+      .def_property_readonly(
+          "contact",
+          [](const LayeredPair& l) -> const core::ContactRegion& { return l.result.contact; },
+          py::return_value_policy::reference_internal)
+      .def_property_readonly(
+          "timing_us", [](const LayeredPair& l) { return l.result.timing.totalUs; },
+          "Wall time of the layered pair, microseconds.")
+      .def("__repr__", [](const LayeredPair& l) {
+        const core::LayeredPairResult& r = l.result;
+        return "<recode.LayeredResult collide=" + std::string(r.collide ? "True" : "False") +
+               " overlap_volume=" + py::repr(py::float_(r.overlapVolume)).cast<std::string>() +
+               " containment='" + std::string(core::toString(r.containment)) + "' layers=(" +
+               std::to_string(r.layersA) + ", " + std::to_string(r.layersB) +
+               ") passes=" + std::to_string(r.passes) + ">";
+      });
+}
+
 void bindResult(py::module_& m) {
   py::class_<CollisionResult>(m, "CollisionResult")
       .def(py::pickle(&resultState, &resultFromState))
@@ -407,6 +472,16 @@ void bindResult(py::module_& m) {
       .def_property_readonly("case_map", &singleCaseMap,
                              "The case map of the one block pair in contact (None without "
                              "contact; ValueError with several: see contacts).")
+      .def_property_readonly(
+          "layered",
+          [](const py::object& self) -> py::object {
+            const auto& r = self.cast<const CollisionResult&>();
+            if (!r.layered)
+              return py::none();
+            return py::cast(&*r.layered, py::return_value_policy::reference_internal, self);
+          },
+          "A LayeredResult when a closed mesh took part (overlap volume, containment, layers, "
+          "passes, per-pixel overlap); None for convex blocks.")
       .def_readonly("box_tests", &CollisionResult::boxTests)
       .def_readonly("block_pairs_drawn", &CollisionResult::blockPairsDrawn)
       .def_readonly("block_pairs_skipped", &CollisionResult::blockPairsSkipped,
@@ -432,6 +507,7 @@ void bindCollision(py::module_& m) {
   bindFrame(m);
   bindContactRegion(m);
   bindBlockContact(m);
+  bindLayered(m);
   bindResult(m);
   m.def("collide", &collideObjects, py::arg("a"), py::arg("b"), py::arg("request") = py::none(),
         py::kw_only(), py::arg("device") = "cpu",

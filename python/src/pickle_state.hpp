@@ -21,7 +21,7 @@ namespace recode::python {
 namespace py = pybind11;
 
 // The layout of every state below; a change of any state's items changes it.
-inline constexpr int kPickleFormat = 1;
+inline constexpr int kPickleFormat = 2;
 
 // (kPickleFormat, items...).
 template <class... Items>

@@ -31,6 +31,8 @@ std::string quoted(const std::string& s) {
 
 // Up to four block names, then how many more.
 std::string blockNames(const CollisionGeometry& g) {
+  if (g.isClosed())
+    return quoted(g.closedMesh()->name());
   std::string out;
   const std::size_t shown = std::min<std::size_t>(g.blockCount(), 4);
   for (std::size_t i = 0; i < shown; ++i) {
@@ -48,6 +50,8 @@ std::string plural(std::size_t n, const std::string& one, const std::string& man
 }
 
 std::string geometryRepr(const CollisionGeometry& g) {
+  if (g.isClosed())
+    return "<recode.CollisionGeometry closed mesh " + blockNames(g) + ">";
   return "<recode.CollisionGeometry " + plural(g.blockCount(), "block", "blocks") + ": " +
          blockNames(g) + ">";
 }

@@ -32,3 +32,10 @@ report = rc.run(lambda w, h, cmds: (np.zeros((h, w)), np.zeros((h, w))))
 print(report.to_junit(), report.counts)
 g = recode.CollisionGeometry.compound([cone, (cone, np.eye(4))])
 print(len(g), g.block(0).name)
+ring = recode.torus(2.0, 0.5)
+shell = recode.CollisionGeometry.closed(recode.ClosedMesh.from_arrays(ring.vertices, ring.faces, "ring"))
+hit = recode.collide(recode.CollisionObject(ring), recode.CollisionObject(shell))
+if hit.layered is not None:
+    volume: float = hit.layered.overlap_volume
+    print(volume, hit.layered.containment, hit.layered.layers, hit.layered.overlap_steps.shape)
+print(batch.overlap_volume, recode.CONTAINMENT[int(batch.containment[0])], batch.layers)

@@ -128,7 +128,7 @@ def test_a_state_of_another_format_is_a_clear_error():
     make, args, state = request.__reduce_ex__(2)[:3]
     other = make(*args)
     with pytest.raises(ValueError, match=r"recode\.CollisionRequest: the pickled state is of "
-                                         r"format 99, this module reads format 1"):
+                                         r"format 99, this module reads format 2"):
         other.__setstate__((99,) + state[1:])
     with pytest.raises(ValueError, match=r"recode\.CollisionRequest: the pickled state has 2 items"):
         other.__setstate__(state[:3])

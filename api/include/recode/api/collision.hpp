@@ -10,7 +10,9 @@
 // collide() descends the two objects' block trees (AABBs, then OBBs) to the block pairs whose
 // boxes overlap and runs core::collidePair on each, in a frame it chooses from the two blocks'
 // world boxes (chooseFrame below): the same algorithm, passes and contact region as
-// `recode pair` and `recode run`, so the same frame gives the same result bit for bit.
+// `recode pair` and `recode run`, so the same frame gives the same result bit for bit. A pair
+// with a closed mesh (ClosedMesh) on either side is decided by core::collideLayered in the same
+// frame instead (CollisionResult::layered).
 
 #include <cstddef>
 #include <optional>
@@ -21,6 +23,7 @@
 #include "recode/api/device_pool.hpp"
 #include "recode/api/geometry.hpp"
 #include "recode/pair/frame.hpp"
+#include "recode/pair/layered_pair.hpp"
 #include "recode/pair/pair.hpp"
 #include "recode/refine/pair_mode.hpp"
 #include "recode/sim/hierarchy.hpp"
@@ -102,6 +105,16 @@ struct BlockContact {
   core::PairResult pair;   // collidePair's result (its case map kept)
   // Adaptive mode: the refinement level the contact was seen at (0: the chosen frame).
   int refineLevel = 0;
+  // Decided by the layered pair (a closed mesh took part): `pair` then holds its verdict,
+  // MOR, pixels, contact region and times, and no case counts or case map (those are RECODE's
+  // passes'); CollisionResult::layered has the rest.
+  bool layered = false;
+};
+
+// What the layered pair found for two objects of which one or both are closed meshes.
+struct LayeredPair {
+  core::FrameSpec frame;           // the frame it was drawn in (width 0: the boxes missed)
+  core::LayeredPairResult result;  // core::collideLayered's result (per-pixel overlap kept)
 };
 
 // What collide() found for two objects: the verdict, the contact region over all their block
@@ -122,6 +135,10 @@ struct CollisionResult {
   // Adaptive mode: block pairs left apart_at_limit (a contact could not be ruled out within the
   // refinement limits; they are not contacts).
   long long apartAtLimit = 0;
+  // Set whenever either object is a closed mesh: the layered pair's overlap volume,
+  // containment, layers, passes and per-pixel overlap (docs/algorithm.md section 13). When the
+  // objects' boxes do not meet, nothing is drawn and it holds an empty result (no frame).
+  std::optional<LayeredPair> layered;
 
   // Back to a default result (collide() clears the result it is given).
   void clear() { *this = CollisionResult{}; }
@@ -136,7 +153,9 @@ struct CollisionResult {
 
 // Collides two objects: fills `result` (cleared first) and returns result.collide. Draws on
 // raster::CpuDevices kept per thread. Throws std::invalid_argument as chooseFrame and
-// core::collidePair do.
+// core::collidePair do, and, for a pair with a closed mesh, as core::collideLayered does, for a
+// mode other than Reference (the other modes are RECODE's passes') and for a closed mesh
+// against a compound of several blocks (the layered pair takes one solid on each side).
 bool collide(const CollisionObject& a, const CollisionObject& b, const CollisionRequest& request,
              CollisionResult& result);
 // The same, drawing on the pool's devices (the seam for a device of your own).
