@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "contract_arithmetic.hpp"
+#include "reading_class.hpp"
 
 namespace recode::conformance {
 
@@ -26,10 +27,8 @@ using contract::roundHalfEven;
 using raster::CompareFunc;
 using raster::StencilOp;
 
-constexpr std::uint32_t kDepthOne = 16777215u;  // 2^24 - 1
+using contract::kDepthOne;
 constexpr double kDepthScale = 16777215.0;
-constexpr int kMaxSize = 16384;
-constexpr double kMaxCoordinate = 32768.0;
 // Clipping against the view volume makes new vertices with single-precision arithmetic: on
 // coordinates up to 2^15 pixels that is within 1/256 pixel, one more unit of the 24.8 grid.
 constexpr double kClipUnits = 1.0;
@@ -102,6 +101,12 @@ std::uint64_t floatBits(float f) {
 std::uint32_t toDepth(double q) {
   return static_cast<std::uint32_t>(std::clamp(q, 0.0, kDepthScale));
 }
+
+// No freedom taken: the contract's grid and arithmetic, z to 24 bits to nearest. `convert` with
+// these widths gives the values the contract's own rounding reaches, to tell whether a freedom
+// widened a depth.
+constexpr FreedomWidths kRoundToNearest{
+    .subPixelBits = 8, .tieRule = true, .depthPrecision = 0.0, .depthConversion = false};
 
 // The 24-bit values z in [zlo, zhi] may convert to.
 DepthRange convert(double zlo, double zhi, const FreedomWidths& w) {
@@ -376,7 +381,7 @@ DepthRange fragmentDepth(const Triangle& t, long long xc, long long yc, bool ins
       zhi = phi + own;
     }
     if (d > 0) {
-      const DepthRange core = convert(zlo, zhi, FreedomWidths{8, true, 0.0, false});
+      const DepthRange core = convert(zlo, zhi, kRoundToNearest);
       if (core.lo != core.hi)
         widened |= static_cast<FreedomSet>(Freedom::SubPixelPrecision);
     }
@@ -385,7 +390,7 @@ DepthRange fragmentDepth(const Triangle& t, long long xc, long long yc, bool ins
     zhi = 1.0;
     widened |= static_cast<FreedomSet>(Freedom::SubPixelPrecision);
   }
-  const DepthRange nearest = convert(zlo, zhi, FreedomWidths{8, true, 0.0, false});
+  const DepthRange nearest = convert(zlo, zhi, kRoundToNearest);
   if (w.depthPrecision > 0) {
     double reach = 0;
     if (t.facingFixed && arithmeticReach(t, xc, yc, w.depthPrecision, reach)) {
@@ -397,7 +402,7 @@ DepthRange fragmentDepth(const Triangle& t, long long xc, long long yc, bool ins
     }
   }
   DepthRange r = convert(zlo, zhi, w);
-  const DepthRange interpolated = convert(zlo, zhi, FreedomWidths{8, true, 0.0, false});
+  const DepthRange interpolated = convert(zlo, zhi, kRoundToNearest);
   if (interpolated.lo != nearest.lo || interpolated.hi != nearest.hi)
     widened |= static_cast<FreedomSet>(Freedom::DepthInterpolation);
   r.freedoms |= widened;
@@ -412,12 +417,13 @@ std::string depthText(const DepthRange& r) {
   return std::to_string(r.lo) + " .. " + std::to_string(r.hi);
 }
 
+// The freedom that names a choice several opened: the lowest rank of the table.
 Freedom mainFreedom(FreedomSet s) {
-  for (Freedom f : {Freedom::SubPixelPrecision, Freedom::DepthInterpolation,
-                    Freedom::DepthConversion, Freedom::TieRule})
-    if (has(s, f))
-      return f;
-  return Freedom::DepthInterpolation;
+  const FreedomInfo* best = nullptr;
+  for (const FreedomInfo& i : allFreedoms())
+    if (has(s, i.freedom) && (best == nullptr || i.rank < best->rank))
+      best = &i;
+  return best != nullptr ? best->freedom : Freedom::DepthInterpolation;
 }
 
 // Follows a stream over the pixels of one rectangle of the frame.
@@ -517,23 +523,6 @@ class Follower {
       }
   }
 
-  void validate(const raster::cmd::Draw& d, int command) const {
-    const std::string where = "allowedByApis: command " + std::to_string(command) + ": ";
-    if (d.indices.size() % 3 != 0)
-      throw std::invalid_argument(where + "index count is not a multiple of 3");
-    for (std::size_t k = 0; k < d.indices.size(); ++k) {
-      const std::uint32_t i = d.indices[k];
-      if (static_cast<std::size_t>(i) >= d.vertices.size())
-        throw std::invalid_argument(where + "index " + std::to_string(k) + " is out of range");
-      const raster::WindowVertex& v = d.vertices[i];
-      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) ||
-          std::fabs(static_cast<double>(v.x)) > kMaxCoordinate ||
-          std::fabs(static_cast<double>(v.y)) > kMaxCoordinate || !(v.z >= 0.0f && v.z <= 1.0f))
-        throw std::invalid_argument(where + "vertex " + std::to_string(i) +
-                                    " lies outside the contract's limits");
-    }
-  }
-
   Triangle setUp(const raster::cmd::Draw& d, std::size_t ti, int command, int draw) const {
     Triangle t;
     t.command = command;
@@ -543,8 +532,8 @@ class Follower {
     std::uint64_t h = 0x747269ull;
     for (std::size_t k = 0; k < 3; ++k) {
       const raster::WindowVertex& v = d.vertices[d.indices[3 * ti + k]];
-      t.X[k] = static_cast<long long>(roundHalfEven(static_cast<double>(v.x) * 256.0));
-      t.Y[k] = static_cast<long long>(roundHalfEven(static_cast<double>(v.y) * 256.0));
+      t.X[k] = contract::snap(v.x);
+      t.Y[k] = contract::snap(v.y);
       t.Z[k] = v.z;
       h = mix(mix(mix(h, static_cast<std::uint64_t>(t.X[k])), static_cast<std::uint64_t>(t.Y[k])),
               floatBits(v.z));
@@ -571,7 +560,7 @@ class Follower {
   }
 
   void drawTriangles(const raster::cmd::Draw& d, int command, int draw) {
-    validate(d, command);
+    contract::validateDraw("allowedByApis", d, command);
     for (std::size_t ti = 0; ti < d.indices.size() / 3; ++ti) {
       const Triangle t = setUp(d, ti, command, draw);
       if (t.a2 == 0 && t.areaReach == 0)
@@ -697,91 +686,56 @@ class Follower {
 };
 
 void checkFrame(const raster::CommandStream& stream) {
-  if (stream.width < 1 || stream.width > kMaxSize || stream.height < 1 || stream.height > kMaxSize)
-    throw std::invalid_argument("allowedByApis: frame size " + std::to_string(stream.width) +
-                                " x " + std::to_string(stream.height) + " outside 1..16384");
+  contract::checkFrameSize("allowedByApis", stream.width, stream.height);
 }
 
 }  // namespace
 
+namespace {
+
+constexpr FreedomInfo kFreedoms[] = {
+#define RECODE_FREEDOM_ROW(e, bit, name, clause, rank) {Freedom::e, name, clause, rank},
+    RECODE_CONFORMANCE_FREEDOMS(RECODE_FREEDOM_ROW)
+#undef RECODE_FREEDOM_ROW
+};
+
+const FreedomInfo& infoOf(Freedom f) {
+  for (const FreedomInfo& i : kFreedoms)
+    if (i.freedom == f)
+      return i;
+  return kFreedoms[0];  // unreached: every enumerator is a row
+}
+
+}  // namespace
+
+std::span<const FreedomInfo> allFreedoms() {
+  return kFreedoms;
+}
+
 std::string_view toString(Freedom f) {
-  switch (f) {
-    case Freedom::TieRule:
-      return "the tie rule";
-    case Freedom::SubPixelPrecision:
-      return "the sub-pixel precision";
-    case Freedom::DepthInterpolation:
-      return "the depth interpolation's precision";
-    case Freedom::DepthConversion:
-      return "the rounding of depth to 24 bits";
-  }
-  return "?";
+  return infoOf(f).name;
 }
 
 std::string_view apiClause(Freedom f) {
-  switch (f) {
-    case Freedom::TieRule:
-      return "a sample on an edge shared by two triangles belongs to exactly one of them, which "
-             "one is the implementation's (Vulkan, Polygon Rasterization; OpenGL 4.5 section "
-             "14.6.1; WebGPU, rasterization)";
-    case Freedom::SubPixelPrecision:
-      return "vertices are snapped to the implementation's sub-pixel grid, at least 4 bits "
-             "(Vulkan subPixelPrecisionBits; OpenGL SUBPIXEL_BITS; Direct3D fixes 8)";
-    case Freedom::DepthInterpolation:
-      return "z at a sample is interpolated from the vertices' depths at the implementation's "
-             "precision (OpenGL 4.5 section 2.3.4.1: about 1 part in 10^5; Vulkan and WebGPU "
-             "state no tighter bound)";
-    case Freedom::DepthConversion:
-      return "a float depth converts to 24-bit fixed point as either of the two nearest values "
-             "(Vulkan, Fixed-Point Data Conversions; OpenGL 4.5 section 2.3.5.2)";
-  }
-  return "?";
+  return infoOf(f).clause;
+}
+
+std::vector<std::string> namesOf(FreedomSet set) {
+  std::vector<std::string> out;
+  for (const FreedomInfo& i : kFreedoms)
+    if (has(set, i.freedom))
+      out.emplace_back(i.name);
+  return out;
 }
 
 std::optional<Freedom> freedomOf(kit::Variant v) {
-  using kit::Variant;
-  switch (v) {
-    case Variant::Contract:
-    case Variant::IncrWraps:
-    case Variant::DecrWraps:
-    case Variant::IgnoreValueMask:
-    case Variant::StencilClearIgnoresWriteMask:
-    case Variant::DepthClearIgnoresWriteMask:
-    case Variant::ClearIgnoresScissor:
-    case Variant::SwappedFacing:
-    case Variant::StrictLimits:
-      return std::nullopt;
-    case Variant::TopLeftFill:
-      return Freedom::TieRule;
-    case Variant::EdgeFloat:
-    case Variant::SubPixel4Nearest:
-    case Variant::SubPixel4Floor:
-    case Variant::SubPixel4Ceil:
-    case Variant::SubPixel4HalfUp:
-    case Variant::SubPixel6Nearest:
-      return Freedom::SubPixelPrecision;
-    case Variant::QuantiseHalfUp:
-    case Variant::QuantiseHalfAway:
-    case Variant::QuantiseHalfDown:
-    case Variant::QuantiseTruncate:
-    case Variant::QuantiseCeil:
-    case Variant::QuantiseFloat:
-    case Variant::QuantiseExactProduct:
-    case Variant::Quantise2To24:
-    case Variant::Quantise2To24Truncate:
-      return Freedom::DepthConversion;
-    default:
-      return Freedom::DepthInterpolation;  // the anchor, slopes, evaluation, fusion and float
-  }
+  return classOf(v).freedom;
 }
 
 std::string describe(FreedomSet set) {
   std::string out;
-  for (Freedom f : {Freedom::TieRule, Freedom::SubPixelPrecision, Freedom::DepthInterpolation,
-                    Freedom::DepthConversion}) {
-    if (has(set, f))
-      out += (out.empty() ? "" : ", ") + std::string(toString(f));
-  }
+  for (const std::string& name : namesOf(set))
+    out += (out.empty() ? "" : ", ") + name;
   return out;
 }
 

@@ -3,89 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reading_class.hpp"
+
 namespace recode::conformance {
 
 using kit::Variant;
 
-std::string_view toString(Stage s) {
-  switch (s) {
-    case Stage::Validation:
-      return "validation";
-    case Stage::Coverage:
-      return "coverage";
-    case Stage::Facing:
-      return "facing";
-    case Stage::DepthValue:
-      return "depth value";
-    case Stage::Quantisation:
-      return "quantisation";
-    case Stage::DepthTest:
-      return "depth test";
-    case Stage::Stencil:
-      return "stencil";
-    case Stage::Clear:
-      return "clear";
-  }
-  return "?";
-}
-
-std::string_view contractSection(Stage s) {
-  switch (s) {
-    case Stage::Validation:
-      return "rasterization.md section 2 (vertices and snapping: what a draw may hold)";
-    case Stage::Coverage:
-      return "rasterization.md section 4 (coverage and the fill rule)";
-    case Stage::Facing:
-      return "rasterization.md section 3 (triangle setup: area, facing, culling)";
-    case Stage::DepthValue:
-      return "rasterization.md section 5 (depth: the plane's arithmetic, in its order)";
-    case Stage::Quantisation:
-      return "rasterization.md section 5 (depth: quantisation to 24 bits, ties to even)";
-    case Stage::DepthTest:
-      return "rasterization.md section 6 (per-fragment operations: the depth test)";
-    case Stage::Stencil:
-      return "rasterization.md section 6 (per-fragment operations: stencil test, ops, masks)";
-    case Stage::Clear:
-      return "rasterization.md section 6 (clears: the scissor and the write masks)";
-  }
-  return "?";
-}
-
 Stage stageOf(Variant v) {
-  switch (v) {
-    case Variant::TopLeftFill:
-    case Variant::EdgeFloat:
-    case Variant::SubPixel4Nearest:
-    case Variant::SubPixel4Floor:
-    case Variant::SubPixel4Ceil:
-    case Variant::SubPixel4HalfUp:
-    case Variant::SubPixel6Nearest:
-      return Stage::Coverage;
-    case Variant::QuantiseHalfUp:
-    case Variant::QuantiseHalfAway:
-    case Variant::QuantiseHalfDown:
-    case Variant::QuantiseTruncate:
-    case Variant::QuantiseCeil:
-    case Variant::QuantiseFloat:
-    case Variant::QuantiseExactProduct:
-    case Variant::Quantise2To24:
-    case Variant::Quantise2To24Truncate:
-      return Stage::Quantisation;
-    case Variant::IncrWraps:
-    case Variant::DecrWraps:
-    case Variant::IgnoreValueMask:
-      return Stage::Stencil;
-    case Variant::StencilClearIgnoresWriteMask:
-    case Variant::DepthClearIgnoresWriteMask:
-    case Variant::ClearIgnoresScissor:
-      return Stage::Clear;
-    case Variant::SwappedFacing:
-      return Stage::Facing;
-    case Variant::StrictLimits:
-      return Stage::Validation;
-    default:
-      return Stage::DepthValue;  // the anchor, slopes, evaluation, fusion and float readings
-  }
+  return classOf(v).stage;
 }
 
 namespace {

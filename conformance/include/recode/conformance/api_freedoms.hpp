@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,20 +31,58 @@
 
 namespace recode::conformance {
 
+// Every freedom of the APIs once: X(enumerator, bit, name, the clauses that grant it, rank),
+// in the order reports list them; `rank` orders them when one freedom names a choice that
+// several opened (the lowest first). The enum and the table are made from the same list.
+#define RECODE_CONFORMANCE_FREEDOMS(X)                                                          \
+  /* a sample exactly on an edge */                                                             \
+  X(TieRule, 1, "the tie rule",                                                                 \
+    "a sample on an edge shared by two triangles belongs to exactly one of them, which one is " \
+    "the implementation's (Vulkan, Polygon Rasterization; OpenGL 4.5 section 14.6.1; WebGPU, "  \
+    "rasterization)",                                                                           \
+    3)                                                                                          \
+  /* vertices snapped to a coarser grid than the contract's 1/256 pixel */                      \
+  X(SubPixelPrecision, 2, "the sub-pixel precision",                                            \
+    "vertices are snapped to the implementation's sub-pixel grid, at least 4 bits (Vulkan "     \
+    "subPixelPrecisionBits; OpenGL SUBPIXEL_BITS; Direct3D fixes 8)",                           \
+    0)                                                                                          \
+  /* z at the sample computed to the APIs' precision */                                         \
+  X(DepthInterpolation, 4, "the depth interpolation's precision",                               \
+    "z at a sample is interpolated from the vertices' depths at the implementation's "          \
+    "precision (OpenGL 4.5 section 2.3.4.1: about 1 part in 10^5; Vulkan and WebGPU state no "  \
+    "tighter bound)",                                                                           \
+    1)                                                                                          \
+  /* z to 24 bits: either of the two nearest values */                                          \
+  X(DepthConversion, 8, "the rounding of depth to 24 bits",                                     \
+    "a float depth converts to 24-bit fixed point as either of the two nearest values "         \
+    "(Vulkan, Fixed-Point Data Conversions; OpenGL 4.5 section 2.3.5.2)",                       \
+    2)
+
 // One freedom of the APIs, as a bit of a FreedomSet.
 enum class Freedom : std::uint8_t {
-  TieRule = 1,             // a sample exactly on an edge
-  SubPixelPrecision = 2,   // vertices snapped to a coarser grid than the contract's 1/256 pixel
-  DepthInterpolation = 4,  // z at the sample computed to the APIs' precision
-  DepthConversion = 8,     // z to 24 bits: either of the two nearest values
+#define RECODE_FREEDOM_ENUMERATOR(e, bit, name, clause, rank) e = bit,
+  RECODE_CONFORMANCE_FREEDOMS(RECODE_FREEDOM_ENUMERATOR)
+#undef RECODE_FREEDOM_ENUMERATOR
 };
 // A set of freedoms, as the bits of Freedom.
 using FreedomSet = std::uint8_t;
 
+// One freedom's row of the table.
+struct FreedomInfo {
+  Freedom freedom;
+  std::string_view name;    // "the sub-pixel precision"
+  std::string_view clause;  // the clauses of the specifications that grant it, in one line
+  int rank;                 // which freedom names a choice several opened: the lowest
+};
+
+// Every freedom, in the order reports list them.
+[[nodiscard]] std::span<const FreedomInfo> allFreedoms();
 // The freedom's name, e.g. "the sub-pixel precision".
 [[nodiscard]] std::string_view toString(Freedom f);
 // The clauses of the specifications that grant the freedom, in one line.
 [[nodiscard]] std::string_view apiClause(Freedom f);
+// The names of the freedoms in a set, in the table's order.
+[[nodiscard]] std::vector<std::string> namesOf(FreedomSet set);
 // The freedoms in a set, joined with ", ".
 [[nodiscard]] std::string describe(FreedomSet set);
 

@@ -15,26 +15,12 @@
 
 #include "recode/conformance/backend.hpp"
 #include "recode/conformance/pixel_history.hpp"
+#include "recode/conformance/stage.hpp"
 #include "recode/kit/variants.hpp"
 #include "recode/raster/command_stream.hpp"
 
 namespace recode::conformance {
 
-enum class Stage {
-  Validation,    // the back end refused a valid stream (section 2)
-  Coverage,      // which samples a triangle covers: edges and the fill rule (section 4)
-  Facing,        // front or back, culling (section 3)
-  DepthValue,    // the plane's arithmetic (section 5)
-  Quantisation,  // z to 24 bits (section 5)
-  DepthTest,     // which fragment's depth won (section 6, step 2)
-  Stencil,       // the stencil test, ops and masks (section 6)
-  Clear,         // clears: scissor and write masks (section 6)
-};
-
-[[nodiscard]] std::string_view toString(Stage s);  // "coverage", "depth value", ...
-// The contract section that states the stage's rule, e.g. "rasterization.md section 4
-// (coverage and the fill rule)".
-[[nodiscard]] std::string_view contractSection(Stage s);
 // The stage a wrong reading of the kit departs at (top_left_fill: coverage, fma_plane: depth
 // value, quantise_truncate: quantisation, ...).
 [[nodiscard]] Stage stageOf(kit::Variant v);
