@@ -29,8 +29,8 @@ using raster::StencilOp;
 
 using contract::kDepthOne;
 constexpr double kDepthScale = 16777215.0;
-// Clipping against the view volume makes new vertices with single-precision arithmetic: on
-// coordinates up to 2^15 pixels that is within 1/256 pixel, one more unit of the 24.8 grid.
+// What a vertex within the guaranteed bounds may still move besides snapping, in 24.8 units: a
+// unit of the grid for the single-precision arithmetic that carries it to the rasterizer.
 constexpr double kClipUnits = 1.0;
 // What this file's own double arithmetic can be off by, relative to |z| (a few ulps, widened).
 constexpr double kOwnRounding = 1e-12;
@@ -105,8 +105,11 @@ std::uint32_t toDepth(double q) {
 // No freedom taken: the contract's grid and arithmetic, z to 24 bits to nearest. `convert` with
 // these widths gives the values the contract's own rounding reaches, to tell whether a freedom
 // widened a depth.
-constexpr FreedomWidths kRoundToNearest{
-    .subPixelBits = 8, .tieRule = true, .depthPrecision = 0.0, .depthConversion = false};
+constexpr FreedomWidths kRoundToNearest{.subPixelBits = 8,
+                                        .tieRule = true,
+                                        .depthPrecision = 0.0,
+                                        .depthConversion = false,
+                                        .clipping = false};
 
 // The 24-bit values z in [zlo, zhi] may convert to.
 DepthRange convert(double zlo, double zhi, const FreedomWidths& w) {
@@ -169,6 +172,7 @@ struct Triangle {
   float Z[3] = {0, 0, 0};
   long long a2 = 0;
   double snapUnits = 0;  // how far (24.8 units, per axis) snapping and clipping move a vertex
+  bool clipped = false;  // a vertex lies beyond the guaranteed bounds: it may be clipped
   double areaReach = 0;  // a bound on how far that moves A2
   bool facingFixed = true;
   bool front = true;
@@ -234,10 +238,12 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
     const bool tie = onEdge && w.tieRule;
     out.freedom = tie ? Freedom::TieRule : Freedom::SubPixelPrecision;
     out.freedoms = static_cast<FreedomSet>(Freedom::SubPixelPrecision) |
-                   (tie ? static_cast<FreedomSet>(Freedom::TieRule) : 0);
+                   (tie ? static_cast<FreedomSet>(Freedom::TieRule) : 0) |
+                   (t.clipped ? static_cast<FreedomSet>(Freedom::Clipping) : 0);
     if (explain)
       out.how = std::string(tie ? "the sample lies exactly on an edge, and " : "") +
-                "A2 = " + std::to_string(t.a2) + " lies within the reach of snapping (" +
+                "A2 = " + std::to_string(t.a2) + " lies within the reach of snapping" +
+                (t.clipped ? " and clipping" : "") + " (" +
                 std::to_string(static_cast<long long>(t.areaReach)) +
                 "): the triangle may face either way or vanish";
     return out;
@@ -268,6 +274,8 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
       tieOnly = false;
     out.freedoms |= static_cast<FreedomSet>(e == 0 && w.tieRule ? Freedom::TieRule
                                                                 : Freedom::SubPixelPrecision);
+    if (e != 0 && t.clipped)
+      out.freedoms |= static_cast<FreedomSet>(Freedom::Clipping);
     const double dist =
         std::fabs(ed) / std::hypot(static_cast<double>(dx), static_cast<double>(dy));
     if (dist < nearest) {
@@ -289,7 +297,8 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
       out.how = "the sample lies " + pixelsText(nearest) + " pixels from " +
                 edgeText(nearA, nearB) + ", within the " + pixelsText(d) +
                 " pixels a vertex may move when snapped to " + std::to_string(w.subPixelBits) +
-                " sub-pixel bits";
+                " sub-pixel bits" +
+                (t.clipped ? " and clipped in single precision beyond the viewport bounds" : "");
   }
   return out;
 }
@@ -389,6 +398,18 @@ DepthRange fragmentDepth(const Triangle& t, long long xc, long long yc, bool ins
     zlo = 0.0;  // a triangle that may flip or vanish: its plane bounds nothing
     zhi = 1.0;
     widened |= static_cast<FreedomSet>(Freedom::SubPixelPrecision);
+  }
+  if (t.clipped && w.clipping) {
+    // The clipped polygon's fan interpolates, at a sample inside one of its triangles, the
+    // depths its vertices got on the triangle's edges: any value between the vertices' depths,
+    // each off by the float rounding of its interpolation.
+    const double margin = 4.0 * std::ldexp(1.0, -24) * std::max(1.0, t.zMagnitude);
+    const DepthRange before = convert(zlo, zhi, kRoundToNearest);
+    zlo = std::min(zlo, t.zMin - margin);
+    zhi = std::max(zhi, t.zMax + margin);
+    const DepthRange after = convert(zlo, zhi, kRoundToNearest);
+    if (after.lo != before.lo || after.hi != before.hi)
+      widened |= static_cast<FreedomSet>(Freedom::Clipping);
   }
   const DepthRange nearest = convert(zlo, zhi, kRoundToNearest);
   if (w.depthPrecision > 0) {
@@ -539,8 +560,23 @@ class Follower {
               floatBits(v.z));
     }
     t.sym = h | 1;  // never 0
+    if (w_.clipping) {
+      // Beyond the bounds every API rasterizes whole, the clip's new vertices lie off the
+      // triangle's edges by its rounding, relative to the coordinates' size.
+      const ViewportBounds bounds = guaranteedBounds(std::max(stream_.width, stream_.height));
+      double size = std::max(stream_.width, stream_.height);
+      for (std::size_t k = 0; k < 3; ++k) {
+        const raster::WindowVertex& v = d.vertices[d.indices[3 * ti + k]];
+        for (const double c : {static_cast<double>(v.x), static_cast<double>(v.y)}) {
+          t.clipped = t.clipped || c < bounds.lo || c > bounds.hi;
+          size = std::max(size, std::fabs(c));
+        }
+      }
+      if (t.clipped)
+        t.snapUnits += 256.0 * kClipRounding * 2.0 * size;
+    }
     t.a2 = (t.X[1] - t.X[0]) * (t.Y[2] - t.Y[0]) - (t.X[2] - t.X[0]) * (t.Y[1] - t.Y[0]);
-    const double dd = snapUnits_;
+    const double dd = t.snapUnits;
     if (dd > 0) {
       const double e[4] = {
           static_cast<double>(t.X[1] - t.X[0]), static_cast<double>(t.Y[2] - t.Y[0]),
@@ -589,15 +625,29 @@ class Follower {
       xb = std::min(xb, static_cast<int>(std::floor((maxX - 128.0) / 256.0)) + 1);
       ya = std::max(ya, static_cast<int>(std::ceil((minY - 128.0) / 256.0)));
       yb = std::min(yb, static_cast<int>(std::floor((maxY - 128.0) / 256.0)) + 1);
+      // A clipped triangle thin enough for the clip's rounding to turn it over gives a polygon
+      // that may fold over itself: two of its fan's triangles, of either facing, may cover the
+      // sample, each with a depth of its own (no name shared: the second is another triangle).
+      Triangle fold = t;
+      fold.sym = 0;
+      const bool folds = t.clipped && !t.facingFixed;
       for (int y = ya; y < yb; ++y)
-        for (int x = xa; x < xb; ++x)
+        for (int x = xa; x < xb; ++x) {
           fragment(t, facings, x, y);
+          if (folds)
+            fragment(fold, facings, x, y);
+        }
     }
   }
 
   void note(const Triangle& t, Freedom f, std::string how) {
-    if (choices_)
-      choices_->push_back({t.command, t.draw, t.index, f, std::move(how)});
+    if (choices_ == nullptr)
+      return;
+    // A folding clipped triangle's second fragment opens the same choice: told once.
+    if (!choices_->empty() && choices_->back().command == t.command &&
+        choices_->back().triangle == t.index && choices_->back().how == how)
+      return;
+    choices_->push_back({t.command, t.draw, t.index, f, std::move(how)});
   }
 
   void fragment(const Triangle& t, const bool facings[2], int x, int y) {

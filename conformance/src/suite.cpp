@@ -30,13 +30,13 @@ std::vector<SuiteVector> goldenVectors(const fs::path& dir) {
   return out;
 }
 
-std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed) {
+std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed, std::string_view family) {
   if (count < 1)
     throw std::invalid_argument("random streams: expected at least 1, got " +
                                 std::to_string(count));
   std::vector<SuiteVector> out;
   for (int i = 0; i < count; ++i) {
-    kit::KitVector v = kit::randomKitStream(seed, i);
+    kit::KitVector v = kit::randomKitStream(seed, i, family);
     out.push_back({std::move(v.name), std::move(v.golden)});
   }
   return out;
