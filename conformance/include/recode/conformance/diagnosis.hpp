@@ -68,10 +68,12 @@ struct ReadingAnswer {
 // Explains a bad pixel. Its stage is read from its history by ordered rules, the first that
 // applies winning: buffers that hold the pixel's values from just before an event that changes
 // it show no trace of that event (coverage for a fragment, clear for a clear, never a test that
-// went the other way); then clears outside the scissor or through a write mask, rounding ties,
-// edges, culling, the depth value, the depth test and the stencil. A reading that gives the back
-// end's values at the pixel gives the stage instead, except where the pixel shows no trace of
-// an event: a back end that drew nothing matches many readings there.
+// went the other way); then clears outside the scissor or through a write mask; then a stencil
+// or depth test that went the other way, found by replaying the history with the comparisons
+// free (the first fragment whose test must go the other way for the back end's values to be
+// reached); then rounding ties, edges, culling, the depth value, the depth test and the
+// stencil. A reading of the kit that gives the back end's values is named in `why` but does not
+// decide the stage: only a whole run that behaves like it does (attributeToReading).
 [[nodiscard]] PixelExplanation explainPixel(const raster::CommandStream& stream,
                                             const BadPixel& pixel,
                                             const std::vector<ReadingAnswer>& readings);
