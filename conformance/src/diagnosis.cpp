@@ -138,7 +138,8 @@ std::vector<bool> outcomes(bool result, bool canFlip, bool other, bool free) {
 // One event of the history applied to every state of `in`, its comparisons as `how` says;
 // with `ignoreScissor`, a clear the scissor keeps from the pixel is applied all the same.
 std::vector<PixelValues> replay(const HistoryEvent& e, const DrawStates& states, Compare how,
-                                const std::vector<PixelValues>& in, bool ignoreScissor = false) {
+                                const std::vector<PixelValues>& in, bool ignoreScissor = false,
+                                bool drawExcluded = false) {
   std::vector<PixelValues> out;
   if (e.clear) {
     const ClearEvent& c = *e.clear;
@@ -152,7 +153,10 @@ std::vector<PixelValues> replay(const HistoryEvent& e, const DrawStates& states,
     }
     return out;
   }
-  if (!e.triangle || e.triangle->outcome != TriangleOutcome::Fragment)
+  const bool drawn =
+      e.triangle && (e.triangle->outcome == TriangleOutcome::Fragment ||
+                     (drawExcluded && e.triangle->outcome == TriangleOutcome::ExcludedByTie));
+  if (!drawn)
     return in;
   const TriangleEvent& t = *e.triangle;
   const raster::RenderState& st = states.at(t.command);
@@ -210,20 +214,24 @@ bool reaches(const PixelHistory& h, const DrawStates& states, std::size_t k, Com
 }
 
 // Whether the history replayed from its start, its comparisons as the contract runs them, ends
-// in exactly the values `target`, with one change: the fragment `skipped` left out (the back
-// end's fill rule left it out), or every clear applied outside the scissor too
-// (`clearsIgnoreScissor`: the back end cleared outside it).
+// in exactly the values `target`, with one change: the triangle `toggled` on an edge left out
+// if the contract draws it, drawn if the tie rule excludes it (the back end's fill rule is
+// another), or every clear applied outside the scissor too (`clearsIgnoreScissor`: the back
+// end cleared outside it).
 bool contractReplayReaches(const PixelHistory& h, const DrawStates& states, PixelValues target,
-                           const TriangleEvent* skipped, bool clearsIgnoreScissor) {
+                           const TriangleEvent* toggled, bool clearsIgnoreScissor) {
   if (h.events.empty())
     return false;
   const HistoryEvent& first = h.events.front();
   std::vector<PixelValues> set = {
       first.clear ? PixelValues{first.clear->depthBefore, first.clear->stencilBefore}
                   : PixelValues{first.triangle->depthBefore, first.triangle->stencilBefore}};
-  for (const HistoryEvent& e : h.events)
-    if (!e.triangle || &*e.triangle != skipped)
-      set = replay(e, states, Compare::Contract, set, clearsIgnoreScissor);
+  for (const HistoryEvent& e : h.events) {
+    const bool isToggled = e.triangle && &*e.triangle == toggled;
+    if (isToggled && e.triangle->outcome == TriangleOutcome::Fragment)
+      continue;
+    set = replay(e, states, Compare::Contract, set, clearsIgnoreScissor, isToggled);
+  }
   return set.size() == 1 && set.front() == target;
 }
 
@@ -338,13 +346,12 @@ Evidence gather(const PixelHistory& h, const BadPixel& p, const DrawStates* stat
                       p.gotStencil == static_cast<std::uint8_t>(c.value))
       ev.maskedClear = &*e;
   }
-  // With the replay at hand, a sample on an edge that a fragment covers speaks for the fill rule
-  // only where leaving that fragment out gives the back end's values; one the tie rule excludes
-  // is kept (its depth, had it been drawn, is not in the history).
+  // With the replay at hand, a sample on an edge speaks for the fill rule only where the other
+  // owner gives the back end's values: the fragment left out, or the one the tie rule excludes
+  // drawn.
   if (states != nullptr)
     std::erase_if(ev.ties, [&](const TriangleEvent* t) {
-      return t->outcome == TriangleOutcome::Fragment &&
-             !contractReplayReaches(h, *states, {p.gotDepth, p.gotStencil}, t, false);
+      return !contractReplayReaches(h, *states, {p.gotDepth, p.gotStencil}, t, false);
     });
   return ev;
 }

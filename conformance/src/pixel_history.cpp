@@ -457,6 +457,9 @@ PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
           t.outcome = TriangleOutcome::OutsideScissor;
         } else if (!covered) {
           t.outcome = TriangleOutcome::ExcludedByTie;
+          // The depth it would have had, for a diagnosis that asks what drawing it gives.
+          t.plane = planeAt(t, xc, yc);
+          t.quantisation = quantise(t.plane.z);
         } else {
           t.outcome = TriangleOutcome::Fragment;
           t.plane = planeAt(t, xc, yc);
