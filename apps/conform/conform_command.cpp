@@ -32,6 +32,8 @@ struct ConformOptions {
   std::string golden = RECODE_SOURCE_DATA_DIR "/golden";
   int random = 0;
   std::uint64_t seed = 1;
+  std::string family;
+  bool keepGoing = false;
   double timeout = 60.0;
   std::string shard;
   std::string baseline, writeBaseline;
@@ -146,7 +148,7 @@ std::unique_ptr<Backend> startBackend(const ConformOptions& o) {
 
 int runConform(const ConformOptions& o) {
   std::vector<SuiteVector> vectors =
-      o.random > 0 ? randomVectors(o.random, o.seed)
+      o.random > 0 ? randomVectors(o.random, o.seed, o.family)
                    : underOption("--golden", [&] { return goldenVectors(o.golden); });
   if (!o.shard.empty()) {
     const auto [index, count] = parseShard(o.shard);
@@ -154,14 +156,16 @@ int runConform(const ConformOptions& o) {
   }
   SuiteOptions options;
   options.repeat = o.repeat;
-  options.stopAtFirstFailure = o.random > 0;
+  options.stopAtFirstFailure = o.random > 0 && !o.keepGoing;
   options.explainLimit = o.json || !o.html.empty() ? 4096 : o.explain;
   if (!o.baseline.empty())
     options.baseline = underOption("--baseline", [&] { return readBaseline(o.baseline); });
 
   const std::unique_ptr<Backend> backend = startBackend(o);
   const std::string source =
-      o.random > 0 ? std::to_string(o.random) + " random streams of seed " + std::to_string(o.seed)
+      o.random > 0 ? std::to_string(o.random) + " random streams" +
+                         (o.family.empty() ? "" : " of family " + o.family) + " of seed " +
+                         std::to_string(o.seed)
                    : std::to_string(vectors.size()) + " golden vectors under " + o.golden;
   if (!o.json) {
     std::cout << "recode conform: " << (o.exec.empty() ? "device " : "back end ") << backend->name()
@@ -234,6 +238,14 @@ void addConformCommand(CLI::App& app, int& exitCode) {
           ->check(CLI::Range(1, 1000000))
           ->excludes(golden);
   cmd->add_option("--seed", o->seed, "seed of --random")->capture_default_str()->needs(random);
+  cmd->add_option("--family", o->family,
+                  "draw every --random stream from this family of the kit (e.g. limits: "
+                  "vertices 32768 pixels out)")
+      ->needs(random);
+  cmd->add_flag("--keep-going", o->keepGoing,
+                "run all --random streams instead of stopping at the first that fails (for a "
+                "native pipeline: count the departures the graphics APIs forbid)")
+      ->needs(random);
   cmd->add_option("--timeout", o->timeout,
                   "seconds --exec's back end may take per answer before the run ends (the kind "
                   "\"timed out\")")

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "contract_arithmetic.hpp"
+#include "reading_class.hpp"
 
 namespace recode::conformance {
 
@@ -26,12 +27,10 @@ using contract::roundHalfEven;
 using raster::CompareFunc;
 using raster::StencilOp;
 
-constexpr std::uint32_t kDepthOne = 16777215u;  // 2^24 - 1
+using contract::kDepthOne;
 constexpr double kDepthScale = 16777215.0;
-constexpr int kMaxSize = 16384;
-constexpr double kMaxCoordinate = 32768.0;
-// Clipping against the view volume makes new vertices with single-precision arithmetic: on
-// coordinates up to 2^15 pixels that is within 1/256 pixel, one more unit of the 24.8 grid.
+// What a vertex within the guaranteed bounds may still move besides snapping, in 24.8 units: a
+// unit of the grid for the single-precision arithmetic that carries it to the rasterizer.
 constexpr double kClipUnits = 1.0;
 // What this file's own double arithmetic can be off by, relative to |z| (a few ulps, widened).
 constexpr double kOwnRounding = 1e-12;
@@ -103,6 +102,15 @@ std::uint32_t toDepth(double q) {
   return static_cast<std::uint32_t>(std::clamp(q, 0.0, kDepthScale));
 }
 
+// No freedom taken: the contract's grid and arithmetic, z to 24 bits to nearest. `convert` with
+// these widths gives the values the contract's own rounding reaches, to tell whether a freedom
+// widened a depth.
+constexpr FreedomWidths kRoundToNearest{.subPixelBits = 8,
+                                        .tieRule = true,
+                                        .depthPrecision = 0.0,
+                                        .depthConversion = false,
+                                        .clipping = false};
+
 // The 24-bit values z in [zlo, zhi] may convert to.
 DepthRange convert(double zlo, double zhi, const FreedomWidths& w) {
   DepthRange r;
@@ -164,6 +172,7 @@ struct Triangle {
   float Z[3] = {0, 0, 0};
   long long a2 = 0;
   double snapUnits = 0;  // how far (24.8 units, per axis) snapping and clipping move a vertex
+  bool clipped = false;  // a vertex lies beyond the guaranteed bounds: it may be clipped
   double areaReach = 0;  // a bound on how far that moves A2
   bool facingFixed = true;
   bool front = true;
@@ -229,10 +238,12 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
     const bool tie = onEdge && w.tieRule;
     out.freedom = tie ? Freedom::TieRule : Freedom::SubPixelPrecision;
     out.freedoms = static_cast<FreedomSet>(Freedom::SubPixelPrecision) |
-                   (tie ? static_cast<FreedomSet>(Freedom::TieRule) : 0);
+                   (tie ? static_cast<FreedomSet>(Freedom::TieRule) : 0) |
+                   (t.clipped ? static_cast<FreedomSet>(Freedom::Clipping) : 0);
     if (explain)
       out.how = std::string(tie ? "the sample lies exactly on an edge, and " : "") +
-                "A2 = " + std::to_string(t.a2) + " lies within the reach of snapping (" +
+                "A2 = " + std::to_string(t.a2) + " lies within the reach of snapping" +
+                (t.clipped ? " and clipping" : "") + " (" +
                 std::to_string(static_cast<long long>(t.areaReach)) +
                 "): the triangle may face either way or vanish";
     return out;
@@ -263,6 +274,8 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
       tieOnly = false;
     out.freedoms |= static_cast<FreedomSet>(e == 0 && w.tieRule ? Freedom::TieRule
                                                                 : Freedom::SubPixelPrecision);
+    if (e != 0 && t.clipped)
+      out.freedoms |= static_cast<FreedomSet>(Freedom::Clipping);
     const double dist =
         std::fabs(ed) / std::hypot(static_cast<double>(dx), static_cast<double>(dy));
     if (dist < nearest) {
@@ -284,7 +297,8 @@ Coverage coverage(const Triangle& t, long long xc, long long yc, const FreedomWi
       out.how = "the sample lies " + pixelsText(nearest) + " pixels from " +
                 edgeText(nearA, nearB) + ", within the " + pixelsText(d) +
                 " pixels a vertex may move when snapped to " + std::to_string(w.subPixelBits) +
-                " sub-pixel bits";
+                " sub-pixel bits" +
+                (t.clipped ? " and clipped in single precision beyond the viewport bounds" : "");
   }
   return out;
 }
@@ -376,7 +390,7 @@ DepthRange fragmentDepth(const Triangle& t, long long xc, long long yc, bool ins
       zhi = phi + own;
     }
     if (d > 0) {
-      const DepthRange core = convert(zlo, zhi, FreedomWidths{8, true, 0.0, false});
+      const DepthRange core = convert(zlo, zhi, kRoundToNearest);
       if (core.lo != core.hi)
         widened |= static_cast<FreedomSet>(Freedom::SubPixelPrecision);
     }
@@ -385,7 +399,19 @@ DepthRange fragmentDepth(const Triangle& t, long long xc, long long yc, bool ins
     zhi = 1.0;
     widened |= static_cast<FreedomSet>(Freedom::SubPixelPrecision);
   }
-  const DepthRange nearest = convert(zlo, zhi, FreedomWidths{8, true, 0.0, false});
+  if (t.clipped && w.clipping) {
+    // The clipped polygon's fan interpolates, at a sample inside one of its triangles, the
+    // depths its vertices got on the triangle's edges: any value between the vertices' depths,
+    // each off by the float rounding of its interpolation.
+    const double margin = 4.0 * std::ldexp(1.0, -24) * std::max(1.0, t.zMagnitude);
+    const DepthRange before = convert(zlo, zhi, kRoundToNearest);
+    zlo = std::min(zlo, t.zMin - margin);
+    zhi = std::max(zhi, t.zMax + margin);
+    const DepthRange after = convert(zlo, zhi, kRoundToNearest);
+    if (after.lo != before.lo || after.hi != before.hi)
+      widened |= static_cast<FreedomSet>(Freedom::Clipping);
+  }
+  const DepthRange nearest = convert(zlo, zhi, kRoundToNearest);
   if (w.depthPrecision > 0) {
     double reach = 0;
     if (t.facingFixed && arithmeticReach(t, xc, yc, w.depthPrecision, reach)) {
@@ -397,7 +423,7 @@ DepthRange fragmentDepth(const Triangle& t, long long xc, long long yc, bool ins
     }
   }
   DepthRange r = convert(zlo, zhi, w);
-  const DepthRange interpolated = convert(zlo, zhi, FreedomWidths{8, true, 0.0, false});
+  const DepthRange interpolated = convert(zlo, zhi, kRoundToNearest);
   if (interpolated.lo != nearest.lo || interpolated.hi != nearest.hi)
     widened |= static_cast<FreedomSet>(Freedom::DepthInterpolation);
   r.freedoms |= widened;
@@ -412,12 +438,13 @@ std::string depthText(const DepthRange& r) {
   return std::to_string(r.lo) + " .. " + std::to_string(r.hi);
 }
 
+// The freedom that names a choice several opened: the lowest rank of the table.
 Freedom mainFreedom(FreedomSet s) {
-  for (Freedom f : {Freedom::SubPixelPrecision, Freedom::DepthInterpolation,
-                    Freedom::DepthConversion, Freedom::TieRule})
-    if (has(s, f))
-      return f;
-  return Freedom::DepthInterpolation;
+  const FreedomInfo* best = nullptr;
+  for (const FreedomInfo& i : allFreedoms())
+    if (has(s, i.freedom) && (best == nullptr || i.rank < best->rank))
+      best = &i;
+  return best != nullptr ? best->freedom : Freedom::DepthInterpolation;
 }
 
 // Follows a stream over the pixels of one rectangle of the frame.
@@ -517,23 +544,6 @@ class Follower {
       }
   }
 
-  void validate(const raster::cmd::Draw& d, int command) const {
-    const std::string where = "allowedByApis: command " + std::to_string(command) + ": ";
-    if (d.indices.size() % 3 != 0)
-      throw std::invalid_argument(where + "index count is not a multiple of 3");
-    for (std::size_t k = 0; k < d.indices.size(); ++k) {
-      const std::uint32_t i = d.indices[k];
-      if (static_cast<std::size_t>(i) >= d.vertices.size())
-        throw std::invalid_argument(where + "index " + std::to_string(k) + " is out of range");
-      const raster::WindowVertex& v = d.vertices[i];
-      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) ||
-          std::fabs(static_cast<double>(v.x)) > kMaxCoordinate ||
-          std::fabs(static_cast<double>(v.y)) > kMaxCoordinate || !(v.z >= 0.0f && v.z <= 1.0f))
-        throw std::invalid_argument(where + "vertex " + std::to_string(i) +
-                                    " lies outside the contract's limits");
-    }
-  }
-
   Triangle setUp(const raster::cmd::Draw& d, std::size_t ti, int command, int draw) const {
     Triangle t;
     t.command = command;
@@ -543,15 +553,30 @@ class Follower {
     std::uint64_t h = 0x747269ull;
     for (std::size_t k = 0; k < 3; ++k) {
       const raster::WindowVertex& v = d.vertices[d.indices[3 * ti + k]];
-      t.X[k] = static_cast<long long>(roundHalfEven(static_cast<double>(v.x) * 256.0));
-      t.Y[k] = static_cast<long long>(roundHalfEven(static_cast<double>(v.y) * 256.0));
+      t.X[k] = contract::snap(v.x);
+      t.Y[k] = contract::snap(v.y);
       t.Z[k] = v.z;
       h = mix(mix(mix(h, static_cast<std::uint64_t>(t.X[k])), static_cast<std::uint64_t>(t.Y[k])),
               floatBits(v.z));
     }
     t.sym = h | 1;  // never 0
+    if (w_.clipping) {
+      // Beyond the bounds every API rasterizes whole, the clip's new vertices lie off the
+      // triangle's edges by its rounding, relative to the coordinates' size.
+      const ViewportBounds bounds = guaranteedBounds(std::max(stream_.width, stream_.height));
+      double size = std::max(stream_.width, stream_.height);
+      for (std::size_t k = 0; k < 3; ++k) {
+        const raster::WindowVertex& v = d.vertices[d.indices[3 * ti + k]];
+        for (const double c : {static_cast<double>(v.x), static_cast<double>(v.y)}) {
+          t.clipped = t.clipped || c < bounds.lo || c > bounds.hi;
+          size = std::max(size, std::fabs(c));
+        }
+      }
+      if (t.clipped)
+        t.snapUnits += 256.0 * kClipRounding * 2.0 * size;
+    }
     t.a2 = (t.X[1] - t.X[0]) * (t.Y[2] - t.Y[0]) - (t.X[2] - t.X[0]) * (t.Y[1] - t.Y[0]);
-    const double dd = snapUnits_;
+    const double dd = t.snapUnits;
     if (dd > 0) {
       const double e[4] = {
           static_cast<double>(t.X[1] - t.X[0]), static_cast<double>(t.Y[2] - t.Y[0]),
@@ -571,7 +596,7 @@ class Follower {
   }
 
   void drawTriangles(const raster::cmd::Draw& d, int command, int draw) {
-    validate(d, command);
+    contract::validateDraw("allowedByApis", d, command);
     for (std::size_t ti = 0; ti < d.indices.size() / 3; ++ti) {
       const Triangle t = setUp(d, ti, command, draw);
       if (t.a2 == 0 && t.areaReach == 0)
@@ -600,15 +625,29 @@ class Follower {
       xb = std::min(xb, static_cast<int>(std::floor((maxX - 128.0) / 256.0)) + 1);
       ya = std::max(ya, static_cast<int>(std::ceil((minY - 128.0) / 256.0)));
       yb = std::min(yb, static_cast<int>(std::floor((maxY - 128.0) / 256.0)) + 1);
+      // A clipped triangle thin enough for the clip's rounding to turn it over gives a polygon
+      // that may fold over itself: two of its fan's triangles, of either facing, may cover the
+      // sample, each with a depth of its own (no name shared: the second is another triangle).
+      Triangle fold = t;
+      fold.sym = 0;
+      const bool folds = t.clipped && !t.facingFixed;
       for (int y = ya; y < yb; ++y)
-        for (int x = xa; x < xb; ++x)
+        for (int x = xa; x < xb; ++x) {
           fragment(t, facings, x, y);
+          if (folds)
+            fragment(fold, facings, x, y);
+        }
     }
   }
 
   void note(const Triangle& t, Freedom f, std::string how) {
-    if (choices_)
-      choices_->push_back({t.command, t.draw, t.index, f, std::move(how)});
+    if (choices_ == nullptr)
+      return;
+    // A folding clipped triangle's second fragment opens the same choice: told once.
+    if (!choices_->empty() && choices_->back().command == t.command &&
+        choices_->back().triangle == t.index && choices_->back().how == how)
+      return;
+    choices_->push_back({t.command, t.draw, t.index, f, std::move(how)});
   }
 
   void fragment(const Triangle& t, const bool facings[2], int x, int y) {
@@ -697,91 +736,56 @@ class Follower {
 };
 
 void checkFrame(const raster::CommandStream& stream) {
-  if (stream.width < 1 || stream.width > kMaxSize || stream.height < 1 || stream.height > kMaxSize)
-    throw std::invalid_argument("allowedByApis: frame size " + std::to_string(stream.width) +
-                                " x " + std::to_string(stream.height) + " outside 1..16384");
+  contract::checkFrameSize("allowedByApis", stream.width, stream.height);
 }
 
 }  // namespace
 
+namespace {
+
+constexpr FreedomInfo kFreedoms[] = {
+#define RECODE_FREEDOM_ROW(e, bit, name, clause, rank) {Freedom::e, name, clause, rank},
+    RECODE_CONFORMANCE_FREEDOMS(RECODE_FREEDOM_ROW)
+#undef RECODE_FREEDOM_ROW
+};
+
+const FreedomInfo& infoOf(Freedom f) {
+  for (const FreedomInfo& i : kFreedoms)
+    if (i.freedom == f)
+      return i;
+  return kFreedoms[0];  // unreached: every enumerator is a row
+}
+
+}  // namespace
+
+std::span<const FreedomInfo> allFreedoms() {
+  return kFreedoms;
+}
+
 std::string_view toString(Freedom f) {
-  switch (f) {
-    case Freedom::TieRule:
-      return "the tie rule";
-    case Freedom::SubPixelPrecision:
-      return "the sub-pixel precision";
-    case Freedom::DepthInterpolation:
-      return "the depth interpolation's precision";
-    case Freedom::DepthConversion:
-      return "the rounding of depth to 24 bits";
-  }
-  return "?";
+  return infoOf(f).name;
 }
 
 std::string_view apiClause(Freedom f) {
-  switch (f) {
-    case Freedom::TieRule:
-      return "a sample on an edge shared by two triangles belongs to exactly one of them, which "
-             "one is the implementation's (Vulkan, Polygon Rasterization; OpenGL 4.5 section "
-             "14.6.1; WebGPU, rasterization)";
-    case Freedom::SubPixelPrecision:
-      return "vertices are snapped to the implementation's sub-pixel grid, at least 4 bits "
-             "(Vulkan subPixelPrecisionBits; OpenGL SUBPIXEL_BITS; Direct3D fixes 8)";
-    case Freedom::DepthInterpolation:
-      return "z at a sample is interpolated from the vertices' depths at the implementation's "
-             "precision (OpenGL 4.5 section 2.3.4.1: about 1 part in 10^5; Vulkan and WebGPU "
-             "state no tighter bound)";
-    case Freedom::DepthConversion:
-      return "a float depth converts to 24-bit fixed point as either of the two nearest values "
-             "(Vulkan, Fixed-Point Data Conversions; OpenGL 4.5 section 2.3.5.2)";
-  }
-  return "?";
+  return infoOf(f).clause;
+}
+
+std::vector<std::string> namesOf(FreedomSet set) {
+  std::vector<std::string> out;
+  for (const FreedomInfo& i : kFreedoms)
+    if (has(set, i.freedom))
+      out.emplace_back(i.name);
+  return out;
 }
 
 std::optional<Freedom> freedomOf(kit::Variant v) {
-  using kit::Variant;
-  switch (v) {
-    case Variant::Contract:
-    case Variant::IncrWraps:
-    case Variant::DecrWraps:
-    case Variant::IgnoreValueMask:
-    case Variant::StencilClearIgnoresWriteMask:
-    case Variant::DepthClearIgnoresWriteMask:
-    case Variant::ClearIgnoresScissor:
-    case Variant::SwappedFacing:
-    case Variant::StrictLimits:
-      return std::nullopt;
-    case Variant::TopLeftFill:
-      return Freedom::TieRule;
-    case Variant::EdgeFloat:
-    case Variant::SubPixel4Nearest:
-    case Variant::SubPixel4Floor:
-    case Variant::SubPixel4Ceil:
-    case Variant::SubPixel4HalfUp:
-    case Variant::SubPixel6Nearest:
-      return Freedom::SubPixelPrecision;
-    case Variant::QuantiseHalfUp:
-    case Variant::QuantiseHalfAway:
-    case Variant::QuantiseHalfDown:
-    case Variant::QuantiseTruncate:
-    case Variant::QuantiseCeil:
-    case Variant::QuantiseFloat:
-    case Variant::QuantiseExactProduct:
-    case Variant::Quantise2To24:
-    case Variant::Quantise2To24Truncate:
-      return Freedom::DepthConversion;
-    default:
-      return Freedom::DepthInterpolation;  // the anchor, slopes, evaluation, fusion and float
-  }
+  return classOf(v).freedom;
 }
 
 std::string describe(FreedomSet set) {
   std::string out;
-  for (Freedom f : {Freedom::TieRule, Freedom::SubPixelPrecision, Freedom::DepthInterpolation,
-                    Freedom::DepthConversion}) {
-    if (has(set, f))
-      out += (out.empty() ? "" : ", ") + std::string(toString(f));
-  }
+  for (const std::string& name : namesOf(set))
+    out += (out.empty() ? "" : ", ") + name;
   return out;
 }
 

@@ -47,16 +47,8 @@ Requirement requirementOf(const AllowedFrame& frame) {
         stencil |= s.freedoms;
     }
   }
-  const auto names = [](FreedomSet set) {
-    std::vector<std::string> out;
-    for (Freedom f : {Freedom::TieRule, Freedom::SubPixelPrecision, Freedom::DepthInterpolation,
-                      Freedom::DepthConversion})
-      if ((set & static_cast<FreedomSet>(f)) != 0)
-        out.emplace_back(toString(f));
-    return out;
-  };
-  r.depth.latitudes = names(depth);
-  r.stencil.latitudes = names(stencil);
+  r.depth.latitudes = namesOf(depth);
+  r.stencil.latitudes = namesOf(stencil);
   return r;
 }
 
@@ -87,36 +79,7 @@ ApiVerdict judgeByApis(const raster::CommandStream& stream, const BadPixel& pixe
 }
 
 std::string_view apiClause(Stage stage) {
-  switch (stage) {
-    case Stage::Coverage:
-      return "a sample farther from every edge than snapping reaches is inside or outside on "
-             "every allowed grid (Vulkan, Basic Polygon Rasterization; OpenGL 4.5 section "
-             "14.6.1)";
-    case Stage::Facing:
-      return "facing and culling follow the sign of the polygon's area (Vulkan, Basic Polygon "
-             "Rasterization and Culling; OpenGL 4.5 sections 14.6.1 and 14.6.2)";
-    case Stage::DepthValue:
-    case Stage::Quantisation:
-      return "z is interpolated from the vertices' depths to about 1 part in 10^5 and converted "
-             "to one of the two nearest 24-bit values (Vulkan, Depth Interpolation and "
-             "Fixed-Point Data Conversions; OpenGL 4.5 sections 14.6.1, 2.3.4.1 and 2.3.5.2)";
-    case Stage::DepthTest:
-      return "the depth test compares the fragment's depth with the stored one by the depth "
-             "function and writes it through the depth write mask (Vulkan, Depth Test; OpenGL "
-             "4.5 section 17.3.6; WebGPU, depth test)";
-    case Stage::Stencil:
-      return "the stencil test compares (ref & mask) with (stencil & mask) and applies the op "
-             "of its outcome through the write mask (Vulkan, Stencil Test; OpenGL 4.5 section "
-             "17.3.5; WebGPU, stencil test)";
-    case Stage::Clear:
-      return "a clear writes only inside the scissor and through the write masks (OpenGL 4.5 "
-             "sections 17.4.2 and 17.4.3; in Vulkan and WebGPU a draw that does what the "
-             "contract's clear does)";
-    case Stage::Validation:
-      return "a native pipeline has no validation of its own: every vector of the kit is a "
-             "valid stream";
-  }
-  return "";
+  return infoOf(stage).apiClause;
 }
 
 Stage forbiddenStage(const ApiVerdict& v, Stage stage) {

@@ -2,90 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <variant>
+
+#include "contract_arithmetic.hpp"
+#include "reading_class.hpp"
 
 namespace recode::conformance {
 
 using kit::Variant;
 
-std::string_view toString(Stage s) {
-  switch (s) {
-    case Stage::Validation:
-      return "validation";
-    case Stage::Coverage:
-      return "coverage";
-    case Stage::Facing:
-      return "facing";
-    case Stage::DepthValue:
-      return "depth value";
-    case Stage::Quantisation:
-      return "quantisation";
-    case Stage::DepthTest:
-      return "depth test";
-    case Stage::Stencil:
-      return "stencil";
-    case Stage::Clear:
-      return "clear";
-  }
-  return "?";
-}
-
-std::string_view contractSection(Stage s) {
-  switch (s) {
-    case Stage::Validation:
-      return "rasterization.md section 2 (vertices and snapping: what a draw may hold)";
-    case Stage::Coverage:
-      return "rasterization.md section 4 (coverage and the fill rule)";
-    case Stage::Facing:
-      return "rasterization.md section 3 (triangle setup: area, facing, culling)";
-    case Stage::DepthValue:
-      return "rasterization.md section 5 (depth: the plane's arithmetic, in its order)";
-    case Stage::Quantisation:
-      return "rasterization.md section 5 (depth: quantisation to 24 bits, ties to even)";
-    case Stage::DepthTest:
-      return "rasterization.md section 6 (per-fragment operations: the depth test)";
-    case Stage::Stencil:
-      return "rasterization.md section 6 (per-fragment operations: stencil test, ops, masks)";
-    case Stage::Clear:
-      return "rasterization.md section 6 (clears: the scissor and the write masks)";
-  }
-  return "?";
-}
-
 Stage stageOf(Variant v) {
-  switch (v) {
-    case Variant::TopLeftFill:
-    case Variant::EdgeFloat:
-    case Variant::SubPixel4Nearest:
-    case Variant::SubPixel4Floor:
-    case Variant::SubPixel4Ceil:
-    case Variant::SubPixel4HalfUp:
-    case Variant::SubPixel6Nearest:
-      return Stage::Coverage;
-    case Variant::QuantiseHalfUp:
-    case Variant::QuantiseHalfAway:
-    case Variant::QuantiseHalfDown:
-    case Variant::QuantiseTruncate:
-    case Variant::QuantiseCeil:
-    case Variant::QuantiseFloat:
-    case Variant::QuantiseExactProduct:
-    case Variant::Quantise2To24:
-    case Variant::Quantise2To24Truncate:
-      return Stage::Quantisation;
-    case Variant::IncrWraps:
-    case Variant::DecrWraps:
-    case Variant::IgnoreValueMask:
-      return Stage::Stencil;
-    case Variant::StencilClearIgnoresWriteMask:
-    case Variant::DepthClearIgnoresWriteMask:
-    case Variant::ClearIgnoresScissor:
-      return Stage::Clear;
-    case Variant::SwappedFacing:
-      return Stage::Facing;
-    case Variant::StrictLimits:
-      return Stage::Validation;
-    default:
-      return Stage::DepthValue;  // the anchor, slopes, evaluation, fusion and float readings
-  }
+  return classOf(v).stage;
 }
 
 namespace {
@@ -148,6 +76,186 @@ EventState stateOf(const HistoryEvent& e) {
   return {};
 }
 
+// ---- A comparison that went the other way ----
+//
+// The pixel's history replayed with the stencil and depth tests free to go either way: the
+// latest fragment up to which the contract can be followed, and from whose comparison on the
+// back end's values can be reached, is where its first wrong event lies. This reads any wrong
+// reading of the compare operations, listed in the kit or not, from the history alone.
+
+struct PixelValues {
+  std::uint32_t depth = 0;
+  std::uint8_t stencil = 0;
+  bool operator==(const PixelValues&) const = default;
+};
+
+// How a replayed fragment's comparisons go: as the contract runs them, the stencil test's or
+// the depth test's outcome the other way (the other test as the contract runs it), or either
+// test either way.
+enum class Compare { Contract, StencilOther, DepthOther, Free };
+
+// The render state in force at each draw command of the stream, by command index.
+using DrawStates = std::map<int, raster::RenderState>;
+
+DrawStates drawStates(const raster::CommandStream& stream) {
+  DrawStates out;
+  raster::RenderState st = raster::initialRenderState(stream.width, stream.height);
+  for (std::size_t ci = 0; ci < stream.commands.size(); ++ci) {
+    const raster::Command& cmd = stream.commands[ci];
+    if (raster::applyToState(cmd, st, stream.width, stream.height))
+      continue;
+    if (std::holds_alternative<raster::cmd::Draw>(cmd))
+      out[static_cast<int>(ci)] = st;
+  }
+  return out;
+}
+
+// Whether a compare function compares: ALWAYS and NEVER cannot go the other way.
+bool compares(raster::CompareFunc f) {
+  return f != raster::CompareFunc::Always && f != raster::CompareFunc::Never;
+}
+
+// A pixel's states in a replay: too many of them ends it (an answer no replay reaches).
+constexpr std::size_t kMaxReplayStates = 4096;
+// Histories longer than this are not replayed (the search is quadratic in their length).
+constexpr std::size_t kMaxReplayEvents = 256;
+
+void addState(std::vector<PixelValues>& out, PixelValues v) {
+  if (std::find(out.begin(), out.end(), v) == out.end())
+    out.push_back(v);
+}
+
+// The outcomes a comparison may have in a replay: the contract's `result`, its other one, or
+// both; none when it is asked to go the other way and cannot.
+std::vector<bool> outcomes(bool result, bool canFlip, bool other, bool free) {
+  if (other)
+    return canFlip ? std::vector<bool>{!result} : std::vector<bool>{};
+  if (free && canFlip)
+    return {result, !result};
+  return {result};
+}
+
+// One event of the history applied to every state of `in`, its comparisons as `how` says;
+// with `ignoreScissor`, a clear the scissor keeps from the pixel is applied all the same.
+std::vector<PixelValues> replay(const HistoryEvent& e, const DrawStates& states, Compare how,
+                                const std::vector<PixelValues>& in, bool ignoreScissor = false,
+                                bool drawExcluded = false) {
+  std::vector<PixelValues> out;
+  if (e.clear) {
+    const ClearEvent& c = *e.clear;
+    const bool reaches = !c.outsideScissor || ignoreScissor;
+    for (PixelValues v : in) {
+      if (reaches && c.depth && !c.skipped)
+        v.depth = c.quantisation.q;
+      else if (reaches && !c.depth)
+        v.stencil = contract::masked(static_cast<std::uint8_t>(c.value), v.stencil, c.writeMask);
+      addState(out, v);
+    }
+    return out;
+  }
+  const bool drawn =
+      e.triangle && (e.triangle->outcome == TriangleOutcome::Fragment ||
+                     (drawExcluded && e.triangle->outcome == TriangleOutcome::ExcludedByTie));
+  if (!drawn)
+    return in;
+  const TriangleEvent& t = *e.triangle;
+  const raster::RenderState& st = states.at(t.command);
+  const raster::StencilOps& ops = st.opsFor(t.front);
+  // A sample on an edge: whether the fragment exists is the fill rule's, not a comparison's.
+  const bool flippable = !decidedByTie(t);
+  const bool free = how == Compare::Free && flippable;
+  for (const PixelValues& v : in) {
+    const bool stencilResult = contract::compare(
+        st.stencilFunc, static_cast<std::uint32_t>(st.stencilRef & st.stencilValueMask),
+        static_cast<std::uint32_t>(v.stencil & st.stencilValueMask));
+    for (const bool stencilPass : outcomes(stencilResult, flippable && compares(st.stencilFunc),
+                                           how == Compare::StencilOther, free)) {
+      if (!stencilPass) {
+        if (how == Compare::DepthOther)
+          continue;  // the depth test runs only when the stencil test passes
+        addState(out, {v.depth, contract::masked(
+                                    contract::applyOp(ops.stencilFail, v.stencil, st.stencilRef),
+                                    v.stencil, st.stencilWriteMask)});
+        continue;
+      }
+      const bool depthResult = contract::compare(st.depthFunc, t.quantisation.q, v.depth);
+      for (const bool depthPass : outcomes(depthResult, flippable && compares(st.depthFunc),
+                                           how == Compare::DepthOther, free)) {
+        const raster::StencilOp op = depthPass ? ops.depthPass : ops.depthFail;
+        addState(out, {depthPass && st.depthWrite ? t.quantisation.q : v.depth,
+                       contract::masked(contract::applyOp(op, v.stencil, st.stencilRef), v.stencil,
+                                        st.stencilWriteMask)});
+      }
+    }
+  }
+  return out;
+}
+
+// Where the back end's values first need a comparison to go the other way.
+struct ComparisonFlip {
+  const TriangleEvent* at = nullptr;  // the fragment; null when no replay reaches the values
+  bool stencil = false;               // its stencil test the other way reaches them
+  bool depth = false;                 // its depth test the other way reaches them
+};
+
+// Whether the values `target` are reached from event k on, event k's comparisons as `how`
+// says and every later one free.
+bool reaches(const PixelHistory& h, const DrawStates& states, std::size_t k, Compare how,
+             PixelValues target) {
+  const HistoryEvent& e = h.events[k];
+  std::vector<PixelValues> set = {{e.triangle->depthBefore, e.triangle->stencilBefore}};
+  set = replay(e, states, how, set);
+  for (std::size_t j = k + 1; j < h.events.size() && !set.empty(); ++j) {
+    set = replay(h.events[j], states, Compare::Free, set);
+    if (set.size() > kMaxReplayStates)
+      return false;
+  }
+  return std::find(set.begin(), set.end(), target) != set.end();
+}
+
+// Whether the history replayed from its start, its comparisons as the contract runs them, ends
+// in exactly the values `target`, with one change: the triangle `toggled` on an edge left out
+// if the contract draws it, drawn if the tie rule excludes it (the back end's fill rule is
+// another), or every clear applied outside the scissor too (`clearsIgnoreScissor`: the back
+// end cleared outside it).
+bool contractReplayReaches(const PixelHistory& h, const DrawStates& states, PixelValues target,
+                           const TriangleEvent* toggled, bool clearsIgnoreScissor) {
+  if (h.events.empty())
+    return false;
+  const HistoryEvent& first = h.events.front();
+  std::vector<PixelValues> set = {
+      first.clear ? PixelValues{first.clear->depthBefore, first.clear->stencilBefore}
+                  : PixelValues{first.triangle->depthBefore, first.triangle->stencilBefore}};
+  for (const HistoryEvent& e : h.events) {
+    const bool isToggled = e.triangle && &*e.triangle == toggled;
+    if (isToggled && e.triangle->outcome == TriangleOutcome::Fragment)
+      continue;
+    set = replay(e, states, Compare::Contract, set, clearsIgnoreScissor, isToggled);
+  }
+  return set.size() == 1 && set.front() == target;
+}
+
+ComparisonFlip firstWrongComparison(const PixelHistory& h, const DrawStates& states,
+                                    const BadPixel& p) {
+  ComparisonFlip out;
+  if (h.events.size() > kMaxReplayEvents)
+    return out;
+  const PixelValues target{p.gotDepth, p.gotStencil};
+  // The latest fragment first: the contract followed for as long as the values allow.
+  for (std::size_t k = h.events.size(); k-- > 0;) {
+    const HistoryEvent& e = h.events[k];
+    if (!e.triangle || e.triangle->outcome != TriangleOutcome::Fragment)
+      continue;
+    out.stencil = reaches(h, states, k, Compare::StencilOther, target);
+    out.depth = reaches(h, states, k, Compare::DepthOther, target);
+    if (out.stencil || out.depth) {
+      out.at = &*e.triangle;
+      return out;
+    }
+  }
+  return out;
+}
+
 // What the stage rules read: the bad pixel, its history, and the events of the history that the
 // rules name, each found once.
 struct Evidence {
@@ -169,10 +277,20 @@ struct Evidence {
   const TriangleEvent* writer = nullptr;   // the last fragment that wrote the final depth
   // The first fragment whose depth, or the depth before it, is the back end's.
   const TriangleEvent* holder = nullptr;
+  // The fragment whose stencil or depth comparison first goes the other way, if one does.
+  ComparisonFlip flip;
 };
 
-Evidence gather(const PixelHistory& h, const BadPixel& p) {
+Evidence gather(const PixelHistory& h, const BadPixel& p, const DrawStates* states) {
   Evidence ev(p);
+  if (states != nullptr)
+    ev.flip = firstWrongComparison(h, *states, p);
+  // A clear outside the scissor whose value the back end has, with the replay at hand, is
+  // taken only where clearing outside the scissor gives the back end's values: elsewhere the
+  // value is a coincidence.
+  const bool scissorReplays =
+      states == nullptr ||
+      contractReplayReaches(h, *states, {p.gotDepth, p.gotStencil}, nullptr, true);
   for (const HistoryEvent& e : h.events) {
     const EventState s = stateOf(e);
     if (s.changes() && p.gotDepth == s.depthBefore && p.gotStencil == s.stencilBefore)
@@ -202,7 +320,8 @@ Evidence gather(const PixelHistory& h, const BadPixel& p) {
     if (t.outcome == TriangleOutcome::OutsideScissor)
       ev.scissored.push_back(&t);
   }
-  for (auto e = h.events.rbegin(); e != h.events.rend() && !ev.clearOutsideScissor; ++e) {
+  for (auto e = h.events.rbegin();
+       scissorReplays && e != h.events.rend() && !ev.clearOutsideScissor; ++e) {
     if (!e->clear || !e->clear->outsideScissor)
       continue;
     const ClearEvent& c = *e->clear;
@@ -227,6 +346,13 @@ Evidence gather(const PixelHistory& h, const BadPixel& p) {
                       p.gotStencil == static_cast<std::uint8_t>(c.value))
       ev.maskedClear = &*e;
   }
+  // With the replay at hand, a sample on an edge speaks for the fill rule only where the other
+  // owner gives the back end's values: the fragment left out, or the one the tie rule excludes
+  // drawn.
+  if (states != nullptr)
+    std::erase_if(ev.ties, [&](const TriangleEvent* t) {
+      return !contractReplayReaches(h, *states, {p.gotDepth, p.gotStencil}, t, false);
+    });
   return ev;
 }
 
@@ -241,9 +367,6 @@ struct StageRule {
   bool (*applies)(const Evidence&);
   Stage stage;
   std::string (*why)(const Evidence&);
-  // The back end's buffers missed an event: this account stands even where a wrong reading gives
-  // the pixel's values (see explainPixel).
-  bool missedEvent = false;
 };
 
 // The stage from the reference's history alone, in order, the first rule that applies winning:
@@ -265,8 +388,7 @@ const StageRule kStageRules[] = {
               std::string(e.unseen->clear->depth ? "depth" : "stencil") + " clear of command " +
               std::to_string(e.unseen->command) +
               ": its depth and stencil are the values before it";
-     },
-     true},
+     }},
     {"no trace of a fragment",
      [](const Evidence& e) { return e.unseen != nullptr && e.unseen->triangle.has_value(); },
      Stage::Coverage,
@@ -277,8 +399,7 @@ const StageRule kStageRules[] = {
               (decidedByTie(t) ? ", which covers the sample on an inclusive edge (E = 0): the "
                                  "fill rule decides"
                                : ": its depth and stencil are the values before it");
-     },
-     true},
+     }},
     // A clear the contract keeps from the pixel, or from one of its buffers, whose value the
     // back end has: it cleared outside the scissor or through a write mask.
     {"a clear outside the scissor",
@@ -309,6 +430,32 @@ const StageRule kStageRules[] = {
      Stage::Quantisation,
      [](const Evidence& e) {
        return roundingTieWhy("a depth clear leaves d * 16777215", e.depthClear->quantisation);
+     }},
+    // The back end's values follow from the contract up to a fragment whose stencil or depth
+    // test goes the other way there (the tests after it either way): whatever reading made it
+    // do so, the comparison is the first wrong event. Where either test would do, the stencil
+    // test, which runs first. A depth test that leaves a depth the history holds is the later
+    // rule's, which says which fragment's depth it is; here only where another rule would
+    // otherwise read the pixel (the depth agrees, or an edge or a culled triangle is near).
+    {"a stencil test that went the other way",
+     [](const Evidence& e) { return e.flip.at != nullptr && e.flip.stencil; }, Stage::Stencil,
+     [](const Evidence& e) {
+       return "the back end's values follow from the stencil test " + e.flip.at->stencilFunc +
+              " of " + triangleName(*e.flip.at) + " going the other way (" +
+              (e.flip.at->stencilPassed ? "failing" : "passing") + " where the contract's " +
+              (e.flip.at->stencilPassed ? "passes" : "fails") + ")";
+     }},
+    {"a depth test that went the other way",
+     [](const Evidence& e) {
+       return e.flip.at != nullptr && e.flip.depth &&
+              (!e.pixel.depthDiffers() || !e.ties.empty() || !e.culled.empty());
+     },
+     Stage::DepthTest,
+     [](const Evidence& e) {
+       return "the back end's values follow from the depth test " + e.flip.at->depthFunc + " of " +
+              triangleName(*e.flip.at) + " going the other way (" +
+              (e.flip.at->depthPassed ? "failing" : "passing") + " where the contract's " +
+              (e.flip.at->depthPassed ? "passes" : "fails") + ")";
      }},
     {"a sample on an edge",
      [](const Evidence& e) {
@@ -383,8 +530,11 @@ const StageRule kStageRules[] = {
 };
 
 // Reads the stage from the history alone (the rules above) into `out`; returns the rule.
-const StageRule& stageFromHistory(const PixelHistory& h, PixelExplanation& out) {
-  const Evidence evidence = gather(h, out.pixel);
+// `states`: the render state of each draw, for replays of the comparisons; without them no
+// comparison is replayed.
+const StageRule& stageFromHistory(const PixelHistory& h, PixelExplanation& out,
+                                  const DrawStates* states) {
+  const Evidence evidence = gather(h, out.pixel, states);
   for (const StageRule& rule : kStageRules) {
     if (rule.applies(evidence)) {
       out.stage = rule.stage;
@@ -443,20 +593,15 @@ PixelExplanation explainPixel(const raster::CommandStream& stream, const BadPixe
       break;
     }
   }
-  const StageRule& rule = stageFromHistory(out.history, out);
-  if (!out.sameAsReading)
-    return out;
-  // A pixel with no trace of an event keeps that account: a reading that leaves the same values
-  // there (culling the triangle, failing its depth test, ignoring the scissor of a later clear)
-  // matches any back end that drew nothing, so one pixel is no evidence for it. A run that
-  // behaves like the reading throughout still has every pixel attributed to it
+  const DrawStates states = drawStates(stream);
+  stageFromHistory(out.history, out, &states);
+  // The stage is the history's even where one of the kit's readings gives the back end's values
+  // at the pixel: a back end that is not that reading may give them too, for another reason. A
+  // run that behaves like the reading on every vector has every pixel attributed to it
   // (attributeToReading).
-  if (rule.missedEvent) {
+  if (out.sameAsReading)
     out.why += " (so does the kit's wrong reading " +
                std::string(kit::variantName(*out.sameAsReading)) + ")";
-    return out;
-  }
-  attributeToReading(out, *out.sameAsReading);
   return out;
 }
 
@@ -467,7 +612,7 @@ void attributeToReading(PixelExplanation& e, Variant v) {
           " gives the back end's values here";
   // The history still says which event the stage concerns, for the report's reader.
   PixelExplanation fromHistory = e;
-  stageFromHistory(e.history, fromHistory);
+  stageFromHistory(e.history, fromHistory, nullptr);
   e.rule = fromHistory.rule;
   if (fromHistory.stage == e.stage)
     e.why += ": " + fromHistory.why;

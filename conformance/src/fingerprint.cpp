@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 
 #include "recode/conformance/api_freedoms.hpp"
 
@@ -37,6 +38,111 @@ void note(std::vector<std::string>& names, const std::string& name) {
     names.push_back(name);
 }
 
+// Every candidate's answer to the stream, trait by trait, the contract's first.
+std::vector<std::vector<Answer>> candidateAnswers(const std::vector<FingerprintTrait>& traits,
+                                                  const raster::CommandStream& stream,
+                                                  const Answer& expected) {
+  std::vector<std::vector<Answer>> all(traits.size());
+  for (std::size_t ti = 0; ti < traits.size(); ++ti) {
+    all[ti].push_back(expected);
+    for (std::size_t c = 1; c < traits[ti].candidates.size(); ++c)
+      all[ti].push_back(ModelBackend(traits[ti].candidates[c].variant).run(stream));
+  }
+  return all;
+}
+
+// Whether some candidate covers other samples than the contract at pixel p.
+bool coverageMoves(const std::vector<Answer>& answers, const Answer& expected, std::size_t p) {
+  return std::any_of(answers.begin(), answers.end(), [&](const Answer& a) {
+    return !a.wasRefused() && a.stencil[p] != expected.stencil[p];
+  });
+}
+
+// The buffer pixel p tells a trait by: the stencil where a candidate's stencil differs (coverage
+// traits), else the depth; nullopt where the pixel tells nothing of the trait: no candidate
+// differs there, or a coverage trait's candidates differ in depth only (the back end's depth
+// arithmetic would speak instead of its coverage).
+std::optional<bool> judgedByStencil(const std::vector<Answer>& answers, bool stencilFirst,
+                                    std::size_t p) {
+  const Answer& expected = answers.front();
+  bool byStencil = false;
+  bool differs = false;
+  for (std::size_t c = 1; c < answers.size(); ++c) {
+    if (answers[c].wasRefused())
+      continue;
+    if (stencilFirst && answers[c].stencil[p] != expected.stencil[p])
+      byStencil = true;
+    if (answers[c].depth[p] != expected.depth[p] || answers[c].stencil[p] != expected.stencil[p])
+      differs = true;
+  }
+  if (!differs || (stencilFirst && !byStencil))
+    return std::nullopt;
+  return byStencil;
+}
+
+// A pixel tells about one freedom only where no other coverage freedom moves it: a pipeline
+// with another tie rule and another grid would otherwise count against both.
+bool confounded(const std::vector<std::vector<Answer>>& all, std::size_t ti, std::size_t p) {
+  for (std::size_t other = 0; other < all.size(); ++other) {
+    if (other != ti && kTraits[other].buffers == Buffers::StencilFirst &&
+        coverageMoves(all[other], all[other].front(), p))
+      return true;
+  }
+  return false;
+}
+
+// Counts pixel p for or against each candidate of the trait: for where the back end gives its
+// value, against where it gives another candidate's, neither where it gives none of theirs.
+void tally(FingerprintTrait& trait, const std::vector<Answer>& answers, const Answer& got,
+           bool byStencil, std::size_t p, const std::string& name) {
+  const auto value = [&](const Answer& a) -> std::uint32_t {
+    return byStencil ? a.stencil[p] : a.depth[p];
+  };
+  const std::uint32_t mine = value(got);
+  const std::uint32_t contract = value(answers.front());
+  for (std::size_t c = 0; c < answers.size(); ++c) {
+    if (answers[c].wasRefused())
+      continue;
+    const std::uint32_t theirs = value(answers[c]);
+    // Only the pixels where this candidate stands apart from the contract tell about it; for
+    // the contract, the pixels where any reading does.
+    if (c != 0 && theirs == contract)
+      continue;
+    FingerprintCandidate& cand = trait.candidates[c];
+    if (mine == theirs) {
+      ++cand.pixelsFor;
+      note(cand.vectorsFor, name);
+      continue;
+    }
+    const bool other = std::any_of(answers.begin(), answers.end(), [&](const Answer& a) {
+      return !a.wasRefused() && value(a) == mine;
+    });
+    if (other) {
+      ++cand.pixelsAgainst;
+      note(cand.vectorsAgainst, name);
+    } else {
+      ++cand.pixelsNeither;
+    }
+  }
+}
+
+// The candidate taken: sided with, never against, and more often than the back end sides with
+// none of the readings anywhere the trait tells (the contract's "neither" counts those pixels);
+// -1 if none is.
+int takenCandidate(const FingerprintTrait& trait) {
+  int taken = -1;
+  long long best = 0;
+  for (std::size_t c = 0; c < trait.candidates.size(); ++c) {
+    const FingerprintCandidate& cand = trait.candidates[c];
+    if (cand.pixelsAgainst == 0 && cand.pixelsFor > best &&
+        cand.pixelsFor > trait.candidates.front().pixelsNeither) {
+      best = cand.pixelsFor;
+      taken = static_cast<int>(c);
+    }
+  }
+  return taken;
+}
+
 }  // namespace
 
 FingerprintBuilder::FingerprintBuilder() {
@@ -63,92 +169,15 @@ void FingerprintBuilder::add(const std::string& name, const raster::CommandStrea
   const std::size_t n = expected.depth.size();
   if (got.depth.size() != n || got.stencil.size() != n)
     return;
-  // Every candidate's answer, trait by trait (the contract's first).
-  std::vector<std::vector<Answer>> all(traits_.size());
+  const std::vector<std::vector<Answer>> all = candidateAnswers(traits_, stream, expected);
   for (std::size_t ti = 0; ti < traits_.size(); ++ti) {
-    all[ti].push_back(expected);
-    for (std::size_t c = 1; c < traits_[ti].candidates.size(); ++c)
-      all[ti].push_back(ModelBackend(traits_[ti].candidates[c].variant).run(stream));
-  }
-  // Whether some candidate of trait `ti` covers other samples than the contract at pixel p.
-  const auto coverageMoves = [&](std::size_t ti, std::size_t p) {
-    return std::any_of(all[ti].begin(), all[ti].end(), [&](const Answer& a) {
-      return !a.wasRefused() && a.stencil[p] != expected.stencil[p];
-    });
-  };
-  for (std::size_t ti = 0; ti < traits_.size(); ++ti) {
-    FingerprintTrait& trait = traits_[ti];
     const bool stencilFirst = kTraits[ti].buffers == Buffers::StencilFirst;
-    const std::vector<Answer>& answers = all[ti];
     for (std::size_t p = 0; p < n; ++p) {
-      // The buffer this pixel is judged by: the stencil where the candidates' stencils differ
-      // (coverage traits), else the depth.
-      bool byStencil = false;
-      bool differs = false;
-      for (std::size_t c = 1; c < answers.size(); ++c) {
-        if (answers[c].wasRefused())
-          continue;
-        if (stencilFirst && answers[c].stencil[p] != expected.stencil[p])
-          byStencil = true;
-        if (answers[c].depth[p] != expected.depth[p] ||
-            answers[c].stencil[p] != expected.stencil[p])
-          differs = true;
-      }
-      // A coverage trait tells only where a candidate covers other samples: the stencil shows
-      // it whatever the back end's depth arithmetic does.
-      if (!differs || (stencilFirst && !byStencil))
-        continue;
-      // A pixel tells about one freedom only where no other coverage freedom moves it: a
-      // pipeline with another tie rule and another grid would otherwise count against both.
-      bool confounded = false;
-      for (std::size_t other = 0; other < traits_.size(); ++other) {
-        if (other != ti && kTraits[other].buffers == Buffers::StencilFirst &&
-            coverageMoves(other, p))
-          confounded = true;
-      }
-      if (confounded)
-        continue;
-      const auto value = [&](const Answer& a) -> std::uint32_t {
-        return byStencil ? a.stencil[p] : a.depth[p];
-      };
-      const std::uint32_t mine = value(got);
-      for (std::size_t c = 0; c < answers.size(); ++c) {
-        if (answers[c].wasRefused())
-          continue;
-        const std::uint32_t theirs = value(answers[c]);
-        // Only the pixels where this candidate stands apart from the contract tell about it;
-        // for the contract, the pixels where any reading does.
-        if (c != 0 && theirs == value(expected))
-          continue;
-        FingerprintCandidate& cand = trait.candidates[c];
-        if (mine == theirs) {
-          ++cand.pixelsFor;
-          note(cand.vectorsFor, name);
-          continue;
-        }
-        const bool other = std::any_of(answers.begin(), answers.end(), [&](const Answer& a) {
-          return !a.wasRefused() && value(a) == mine;
-        });
-        if (other) {
-          ++cand.pixelsAgainst;
-          note(cand.vectorsAgainst, name);
-        } else {
-          ++cand.pixelsNeither;
-        }
-      }
+      const std::optional<bool> byStencil = judgedByStencil(all[ti], stencilFirst, p);
+      if (byStencil && !confounded(all, ti, p))
+        tally(traits_[ti], all[ti], got, *byStencil, p, name);
     }
-    trait.taken = -1;
-    long long best = 0;
-    for (std::size_t c = 0; c < trait.candidates.size(); ++c) {
-      const FingerprintCandidate& cand = trait.candidates[c];
-      // Taken: sided with, never against, and more often than the back end sides with none of
-      // the readings anywhere the trait tells (the contract's "neither" counts those pixels).
-      if (cand.pixelsAgainst == 0 && cand.pixelsFor > best &&
-          cand.pixelsFor > trait.candidates.front().pixelsNeither) {
-        best = cand.pixelsFor;
-        trait.taken = static_cast<int>(c);
-      }
-    }
+    traits_[ti].taken = takenCandidate(traits_[ti]);
   }
 }
 

@@ -19,15 +19,13 @@ namespace {
 
 using contract::applyOp;
 using contract::compare;
+using contract::kDepthOne;
 using contract::masked;
 using contract::roundHalfEven;
+using contract::snap;
 using raster::CompareFunc;
 using raster::StencilOp;
 using raster::StencilOps;
-
-constexpr std::uint32_t kDepthOne = 16777215u;  // 2^24 - 1
-constexpr int kMaxSize = 16384;
-constexpr double kMaxCoordinate = 32768.0;
 
 // Section 5: q = 0 if z <= 0 (or NaN), 16777215 if z >= 1, else nearbyint(z * 16777215.0).
 Quantisation quantise(double z) {
@@ -75,35 +73,6 @@ bool inside(const raster::PixelRect& r, int x, int y) {
 
 std::string commandText(int command) {
   return "command " + std::to_string(command);
-}
-
-// Section 2: the whole draw is validated before anything is drawn.
-void validateDraw(const raster::cmd::Draw& draw, int command) {
-  const std::string where = "pixelHistory: " + commandText(command) + ": ";
-  if (draw.indices.size() % 3 != 0)
-    throw std::invalid_argument(where + "index count is not a multiple of 3");
-  for (std::size_t k = 0; k < draw.indices.size(); ++k) {
-    const std::uint32_t i = draw.indices[k];
-    if (static_cast<std::size_t>(i) >= draw.vertices.size())
-      throw std::invalid_argument(where + "index " + std::to_string(k) + " is out of range");
-    const raster::WindowVertex& v = draw.vertices[i];
-    const double x = static_cast<double>(v.x);
-    const double y = static_cast<double>(v.y);
-    const double z = static_cast<double>(v.z);
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-      throw std::invalid_argument(where + "vertex " + std::to_string(i) + " is not finite");
-    if (std::fabs(x) > kMaxCoordinate || std::fabs(y) > kMaxCoordinate)
-      throw std::invalid_argument(where + "vertex " + std::to_string(i) +
-                                  " lies outside |x|, |y| <= 32768");
-    if (!(z >= 0.0 && z <= 1.0))
-      throw std::invalid_argument(where + "vertex " + std::to_string(i) +
-                                  " has a depth outside [0, 1]");
-  }
-}
-
-// Section 2: X = nearbyint(x * 256) in double.
-long long snap(float v) {
-  return static_cast<long long>(roundHalfEven(static_cast<double>(v) * 256.0));
 }
 
 // Section 5, in exactly the contract's order, each operation rounded on its own.
@@ -387,9 +356,7 @@ std::string describeTriangle(const HistoryEvent& ev, int x, int y) {
 PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
   const int width = stream.width;
   const int height = stream.height;
-  if (width < 1 || width > kMaxSize || height < 1 || height > kMaxSize)
-    throw std::invalid_argument("pixelHistory: frame size " + std::to_string(width) + " x " +
-                                std::to_string(height) + " outside 1..16384");
+  contract::checkFrameSize("pixelHistory", width, height);
   if (x < 0 || x >= width || y < 0 || y >= height)
     throw std::invalid_argument("pixelHistory: pixel (" + std::to_string(x) + ", " +
                                 std::to_string(y) + ") lies outside the " + std::to_string(width) +
@@ -442,7 +409,7 @@ PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
       clear.stencilAfter = stencil;
       history.events.push_back({command, clear, std::nullopt});
     } else if (const auto* draw = std::get_if<raster::cmd::Draw>(&cmd)) {
-      validateDraw(*draw, command);
+      contract::validateDraw("pixelHistory", *draw, command);
       const std::size_t triangles = draw->indices.size() / 3;
       for (std::size_t ti = 0; ti < triangles; ++ti) {
         TriangleEvent t;
@@ -490,6 +457,9 @@ PixelHistory pixelHistory(const raster::CommandStream& stream, int x, int y) {
           t.outcome = TriangleOutcome::OutsideScissor;
         } else if (!covered) {
           t.outcome = TriangleOutcome::ExcludedByTie;
+          // The depth it would have had, for a diagnosis that asks what drawing it gives.
+          t.plane = planeAt(t, xc, yc);
+          t.quantisation = quantise(t.plane.z);
         } else {
           t.outcome = TriangleOutcome::Fragment;
           t.plane = planeAt(t, xc, yc);

@@ -243,10 +243,8 @@ json historyJson(const PixelHistory& h) {
 
 json freedomNames(FreedomSet set) {
   json out = json::array();
-  for (Freedom f : {Freedom::TieRule, Freedom::SubPixelPrecision, Freedom::DepthInterpolation,
-                    Freedom::DepthConversion})
-    if ((set & static_cast<FreedomSet>(f)) != 0)
-      out.push_back(toString(f));
+  for (const std::string& name : namesOf(set))
+    out.push_back(name);
   return out;
 }
 
@@ -479,13 +477,6 @@ namespace {
 // The colour of a bad pixel that was not explained.
 constexpr const char* kUnexplainedColour = "#bbbbbb";
 
-// One colour per stage, for the error masks and their legend.
-const char* stageColour(Stage s) {
-  static constexpr std::array<const char*, 8> colours = {
-      "#7f7f7f", "#d62728", "#9467bd", "#1f77b4", "#17becf", "#ff7f0e", "#2ca02c", "#8c564b"};
-  return colours[static_cast<std::size_t>(s)];
-}
-
 // The vector's frame as a canvas with every bad pixel coloured by the stage of its explanation
 // (grey where it was not explained), y up as in the buffers. The mask travels as runs of
 // "stage:count" over the pixels in buffer order (-1: a good pixel), which the page's script
@@ -494,7 +485,7 @@ std::string errorMask(const VectorReport& v) {
   std::map<std::pair<int, int>, Stage> stages;
   for (const PixelExplanation& e : v.explained)
     stages[{e.pixel.x, e.pixel.y}] = e.stage;
-  constexpr int kUnexplained = static_cast<int>(Stage::Clear) + 1;  // after every stage
+  const int unexplained = static_cast<int>(allStages().size());  // after every stage
   std::ostringstream runs;
   int current = -1;
   long long length = 0, at = 0;
@@ -510,7 +501,7 @@ std::string errorMask(const VectorReport& v) {
     if (pixel > at)
       flush(-1, at), length = pixel - at;
     const auto it = stages.find({p.x, p.y});
-    const int code = it == stages.end() ? kUnexplained : static_cast<int>(it->second);
+    const int code = it == stages.end() ? unexplained : static_cast<int>(it->second);
     if (code != current)
       flush(code, pixel);
     ++length;
@@ -531,8 +522,8 @@ std::string errorMask(const VectorReport& v) {
 // unexplained pixels'.
 std::string maskColours() {
   std::string colours;
-  for (int s = 0; s <= static_cast<int>(Stage::Clear); ++s)
-    colours += std::string(stageColour(static_cast<Stage>(s))) + " ";
+  for (const StageInfo& s : allStages())
+    colours += std::string(s.colour) + " ";
   return colours + kUnexplainedColour;
 }
 
@@ -552,10 +543,8 @@ std::string toHtml(const SuiteReport& report) {
     o << xmlEscaped(summary.str());
   }
   o << "</pre>\n<p class=\"key\">Error masks by stage:";
-  for (int s = 0; s <= static_cast<int>(Stage::Clear); ++s) {
-    o << "<span style=\"background:" << stageColour(static_cast<Stage>(s)) << "\"></span>"
-      << toString(static_cast<Stage>(s));
-  }
+  for (const StageInfo& s : allStages())
+    o << "<span style=\"background:" << s.colour << "\"></span>" << s.name;
   o << "<span style=\"background:" << kUnexplainedColour << "\"></span>not explained</p>\n";
   for (const VectorReport& v : report.vectors) {
     if (!v.stage && v.status == Status::Passed)

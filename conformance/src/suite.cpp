@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <span>
 #include <stdexcept>
 
 #include "recode/io/printable.hpp"
@@ -29,13 +30,13 @@ std::vector<SuiteVector> goldenVectors(const fs::path& dir) {
   return out;
 }
 
-std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed) {
+std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed, std::string_view family) {
   if (count < 1)
     throw std::invalid_argument("random streams: expected at least 1, got " +
                                 std::to_string(count));
   std::vector<SuiteVector> out;
   for (int i = 0; i < count; ++i) {
-    kit::KitVector v = kit::randomKitStream(seed, i);
+    kit::KitVector v = kit::randomKitStream(seed, i, family);
     out.push_back({std::move(v.name), std::move(v.golden)});
   }
   return out;
@@ -55,18 +56,10 @@ std::vector<SuiteVector> shardOf(const std::vector<SuiteVector>& all, int index,
 
 namespace {
 
-// Every stage, in the order of the enumeration (toString gives "?" past its last one).
-std::vector<Stage> allStages() {
-  std::vector<Stage> stages;
-  for (int s = 0; s < 64 && toString(static_cast<Stage>(s)) != "?"; ++s)
-    stages.push_back(static_cast<Stage>(s));
-  return stages;
-}
-
 std::string stageList() {
   std::string list;
-  for (const Stage s : allStages())
-    list += (list.empty() ? "" : ", ") + std::string(toString(s));
+  for (const StageInfo& s : allStages())
+    list += (list.empty() ? "" : ", ") + std::string(s.name);
   return list;
 }
 
@@ -100,16 +93,16 @@ Baseline readBaseline(const fs::path& file) {
     }
     const std::string name = trimmed(text.substr(0, comma));
     const std::string stageText = trimmed(text.substr(comma + 1));
-    const std::vector<Stage> stages = allStages();
+    const std::span<const StageInfo> stages = allStages();
     const auto stage = std::find_if(stages.begin(), stages.end(),
-                                    [&](Stage s) { return toString(s) == stageText; });
+                                    [&](const StageInfo& s) { return s.name == stageText; });
     if (name.empty())
       throw std::runtime_error(where + "no vector name before the comma: expected NAME,STAGE");
     if (stage == stages.end()) {
       throw std::runtime_error(where + "unknown stage \"" + io::printable(stageText) +
                                "\" (stages: " + stageList() + ")");
     }
-    if (!baseline.emplace(name, *stage).second)
+    if (!baseline.emplace(name, stage->stage).second)
       throw std::runtime_error(where + "\"" + io::printable(name) + "\" is listed twice");
   }
   return baseline;

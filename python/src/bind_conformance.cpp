@@ -194,12 +194,7 @@ std::vector<std::string> readingNames(const std::vector<kit::Variant>& readings)
 }
 
 std::vector<std::string> freedomNames(conf::FreedomSet set) {
-  std::vector<std::string> out;
-  for (const conf::Freedom f : {conf::Freedom::TieRule, conf::Freedom::SubPixelPrecision,
-                                conf::Freedom::DepthInterpolation, conf::Freedom::DepthConversion})
-    if ((set & static_cast<conf::FreedomSet>(f)) != 0)
-      out.emplace_back(conf::toString(f));
-  return out;
+  return conf::namesOf(set);
 }
 
 // None for "" (the report's way of saying "none"), else the text.
@@ -275,11 +270,10 @@ struct Report {
 
 conf::Stage stageFrom(const std::string& name, const std::string& what) {
   std::string stages;
-  for (int s = 0; s <= static_cast<int>(conf::Stage::Clear); ++s) {
-    const auto stage = static_cast<conf::Stage>(s);
-    if (conf::toString(stage) == name)
-      return stage;
-    stages += (s ? ", " : "") + std::string(conf::toString(stage));
+  for (const conf::StageInfo& s : conf::allStages()) {
+    if (s.name == name)
+      return s.stage;
+    stages += (stages.empty() ? "" : ", ") + std::string(s.name);
   }
   throw py::value_error(what + ": unknown stage '" + name + "' (stages: " + stages + ")");
 }

@@ -195,22 +195,30 @@ std::vector<KitVector> generateKit(int count, std::uint64_t seed) {
   return kit;
 }
 
-KitVector randomKitStream(std::uint64_t seed, int index) {
+KitVector randomKitStream(std::uint64_t seed, int index, std::string_view family) {
   if (index < 0)
     throw std::invalid_argument("a random stream's index is at least 0, got " +
                                 std::to_string(index));
   std::vector<std::size_t> families;
+  std::string names;
   for (std::size_t f = 0; f < kFamilies.size(); ++f) {
-    if (kFamilies[f].info.name != "wide")
+    if (kFamilies[f].info.name == "wide")
+      continue;
+    names += (names.empty() ? "" : ", ") + std::string(kFamilies[f].info.name);
+    if (family.empty() || kFamilies[f].info.name == family)
       families.push_back(f);
   }
+  if (families.empty())
+    throw std::invalid_argument("random streams: unknown family \"" + std::string(family) +
+                                "\" (families: " + names + ")");
   const std::size_t f = families[static_cast<std::size_t>(index) % families.size()];
   const int round = index / static_cast<int>(families.size());
   // Another stream of random numbers than the kit's own vectors of the same seed.
   Rng rng = vectorRng(~seed, f, round);
   const Candidate c = kFamilies[f].draw(rng, round);
   const Buffers contract = onCpu(c);
-  KitVector out{"random-" + std::to_string(seed) + "-" + std::to_string(index),
+  KitVector out{"random-" + std::to_string(seed) + "-" +
+                    (family.empty() ? "" : std::string(family) + "-") + std::to_string(index),
                 std::string(kFamilies[f].info.name),
                 {},
                 {}};

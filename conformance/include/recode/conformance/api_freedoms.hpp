@@ -1,12 +1,14 @@
 #pragma once
 // What the graphics APIs (Vulkan, OpenGL, WebGPU) allow a native depth/stencil pipeline to leave
-// in each pixel of a stream, where this contract fixes one answer. The contract decides four
+// in each pixel of a stream, where this contract fixes one answer. The contract decides five
 // things the APIs leave to the implementation:
 //
 //   - the tie rule: which of two triangles sharing an edge owns a sample exactly on it;
 //   - the sub-pixel precision: vertices may be snapped to a grid as coarse as 1/16 pixel;
 //   - the depth interpolation: z at a sample is computed to a stated precision only;
-//   - the depth conversion: z to 24 bits may round to either of the two nearest values.
+//   - the depth conversion: z to 24 bits may round to either of the two nearest values;
+//   - the clipping: a triangle reaching beyond the viewport bounds the APIs guarantee may be
+//     clipped in single precision, its edges and depth carrying the clip's rounding.
 //
 // allowedByApis follows the stream with a set of possible states per pixel instead of one:
 // a sample whose coverage a freedom can change both is and is not covered, a depth is an
@@ -21,6 +23,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,20 +33,65 @@
 
 namespace recode::conformance {
 
+// Every freedom of the APIs once: X(enumerator, bit, name, the clauses that grant it, rank),
+// in the order reports list them; `rank` orders them when one freedom names a choice that
+// several opened (the lowest first). The enum and the table are made from the same list.
+#define RECODE_CONFORMANCE_FREEDOMS(X)                                                          \
+  /* a sample exactly on an edge */                                                             \
+  X(TieRule, 1, "the tie rule",                                                                 \
+    "a sample on an edge shared by two triangles belongs to exactly one of them, which one is " \
+    "the implementation's (Vulkan, Polygon Rasterization; OpenGL 4.5 section 14.6.1; WebGPU, "  \
+    "rasterization)",                                                                           \
+    4)                                                                                          \
+  /* vertices snapped to a coarser grid than the contract's 1/256 pixel */                      \
+  X(SubPixelPrecision, 2, "the sub-pixel precision",                                            \
+    "vertices are snapped to the implementation's sub-pixel grid, at least 4 bits (Vulkan "     \
+    "subPixelPrecisionBits; OpenGL SUBPIXEL_BITS; Direct3D fixes 8)",                           \
+    1)                                                                                          \
+  /* z at the sample computed to the APIs' precision */                                         \
+  X(DepthInterpolation, 4, "the depth interpolation's precision",                               \
+    "z at a sample is interpolated from the vertices' depths at the implementation's "          \
+    "precision (OpenGL 4.5 section 2.3.4.1: about 1 part in 10^5; Vulkan and WebGPU state no "  \
+    "tighter bound)",                                                                           \
+    2)                                                                                          \
+  /* z to 24 bits: either of the two nearest values */                                          \
+  X(DepthConversion, 8, "the rounding of depth to 24 bits",                                     \
+    "a float depth converts to 24-bit fixed point as either of the two nearest values "         \
+    "(Vulkan, Fixed-Point Data Conversions; OpenGL 4.5 section 2.3.5.2)",                       \
+    3)                                                                                          \
+  /* a triangle beyond the guaranteed range clipped in single precision */                      \
+  X(Clipping, 16, "the clipping of a triangle beyond the viewport bounds",                      \
+    "a primitive outside the view volume is clipped to it (or to a guard band) in the "         \
+    "implementation's floating point, and the clipped polygon's new vertices and their "        \
+    "interpolated depths carry its rounding (OpenGL 4.5 section 13.5; Vulkan, Primitive "       \
+    "Clipping, and viewportBoundsRange, at least [-8192, 8191]; WebGPU, rasterization)",        \
+    0)
+
 // One freedom of the APIs, as a bit of a FreedomSet.
 enum class Freedom : std::uint8_t {
-  TieRule = 1,             // a sample exactly on an edge
-  SubPixelPrecision = 2,   // vertices snapped to a coarser grid than the contract's 1/256 pixel
-  DepthInterpolation = 4,  // z at the sample computed to the APIs' precision
-  DepthConversion = 8,     // z to 24 bits: either of the two nearest values
+#define RECODE_FREEDOM_ENUMERATOR(e, bit, name, clause, rank) e = bit,
+  RECODE_CONFORMANCE_FREEDOMS(RECODE_FREEDOM_ENUMERATOR)
+#undef RECODE_FREEDOM_ENUMERATOR
 };
 // A set of freedoms, as the bits of Freedom.
 using FreedomSet = std::uint8_t;
 
+// One freedom's row of the table.
+struct FreedomInfo {
+  Freedom freedom;
+  std::string_view name;    // "the sub-pixel precision"
+  std::string_view clause;  // the clauses of the specifications that grant it, in one line
+  int rank;                 // which freedom names a choice several opened: the lowest
+};
+
+// Every freedom, in the order reports list them.
+[[nodiscard]] std::span<const FreedomInfo> allFreedoms();
 // The freedom's name, e.g. "the sub-pixel precision".
 [[nodiscard]] std::string_view toString(Freedom f);
 // The clauses of the specifications that grant the freedom, in one line.
 [[nodiscard]] std::string_view apiClause(Freedom f);
+// The names of the freedoms in a set, in the table's order.
+[[nodiscard]] std::vector<std::string> namesOf(FreedomSet set);
 // The freedoms in a set, joined with ", ".
 [[nodiscard]] std::string describe(FreedomSet set);
 
@@ -67,7 +115,29 @@ struct FreedomWidths {
   double depthPrecision = 1e-5;
   // Whether z * (2^24 - 1) may round to either neighbour (else to nearest, ties to even).
   bool depthConversion = true;
+  // Whether a triangle with a vertex beyond the viewport bounds every API guarantees
+  // (kGuaranteedBounds) may be clipped in single precision: its edges move by the rounding of
+  // a float clip of its coordinates, and its depth at a sample is any value between its
+  // vertices' (the clipped polygon's fan interpolates depths of points on its edges).
+  bool clipping = true;
 };
+
+// The window coordinates every API rasterizes without clipping on a frame of `size` pixels (its
+// larger side): Vulkan's viewportBoundsRange is at least [-2 s, 2 s - 1] for s its
+// maxViewportDimensions, at least 4096 and at least the frame's size, the range a viewport may
+// be placed in. A triangle with every vertex within it on both axes is taken as rasterized
+// whole; one with a vertex beyond it may be clipped.
+struct ViewportBounds {
+  double lo = -8192.0, hi = 8191.0;
+};
+[[nodiscard]] constexpr ViewportBounds guaranteedBounds(int size) {
+  const double s = size > 4096 ? static_cast<double>(size) : 4096.0;
+  return {-2.0 * s, 2.0 * s - 1.0};
+}
+// A float clip's rounding, relative to the largest coordinate (pixels) of the triangle: the
+// new vertex P0 + t (P1 - P0) after the viewport's transform and its inverse, some ten float
+// operations of 2^-24 each, taken as 16, on coordinates summed over both ends of an edge.
+inline constexpr double kClipRounding = 32.0 / 16777216.0;
 
 // One possible state of a pixel: a stencil value and the interval of depths that go with it,
 // with the freedoms that some path to it took.

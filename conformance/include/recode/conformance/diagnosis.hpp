@@ -15,26 +15,12 @@
 
 #include "recode/conformance/backend.hpp"
 #include "recode/conformance/pixel_history.hpp"
+#include "recode/conformance/stage.hpp"
 #include "recode/kit/variants.hpp"
 #include "recode/raster/command_stream.hpp"
 
 namespace recode::conformance {
 
-enum class Stage {
-  Validation,    // the back end refused a valid stream (section 2)
-  Coverage,      // which samples a triangle covers: edges and the fill rule (section 4)
-  Facing,        // front or back, culling (section 3)
-  DepthValue,    // the plane's arithmetic (section 5)
-  Quantisation,  // z to 24 bits (section 5)
-  DepthTest,     // which fragment's depth won (section 6, step 2)
-  Stencil,       // the stencil test, ops and masks (section 6)
-  Clear,         // clears: scissor and write masks (section 6)
-};
-
-[[nodiscard]] std::string_view toString(Stage s);  // "coverage", "depth value", ...
-// The contract section that states the stage's rule, e.g. "rasterization.md section 4
-// (coverage and the fill rule)".
-[[nodiscard]] std::string_view contractSection(Stage s);
 // The stage a wrong reading of the kit departs at (top_left_fill: coverage, fma_plane: depth
 // value, quantise_truncate: quantisation, ...).
 [[nodiscard]] Stage stageOf(kit::Variant v);
@@ -82,10 +68,12 @@ struct ReadingAnswer {
 // Explains a bad pixel. Its stage is read from its history by ordered rules, the first that
 // applies winning: buffers that hold the pixel's values from just before an event that changes
 // it show no trace of that event (coverage for a fragment, clear for a clear, never a test that
-// went the other way); then clears outside the scissor or through a write mask, rounding ties,
-// edges, culling, the depth value, the depth test and the stencil. A reading that gives the back
-// end's values at the pixel gives the stage instead, except where the pixel shows no trace of
-// an event: a back end that drew nothing matches many readings there.
+// went the other way); then clears outside the scissor or through a write mask; then a stencil
+// or depth test that went the other way, found by replaying the history with the comparisons
+// free (the first fragment whose test must go the other way for the back end's values to be
+// reached); then rounding ties, edges, culling, the depth value, the depth test and the
+// stencil. A reading of the kit that gives the back end's values is named in `why` but does not
+// decide the stage: only a whole run that behaves like it does (attributeToReading).
 [[nodiscard]] PixelExplanation explainPixel(const raster::CommandStream& stream,
                                             const BadPixel& pixel,
                                             const std::vector<ReadingAnswer>& readings);

@@ -81,7 +81,8 @@ struct TriangleEvent {
   EdgeAtSample edges[3];      // counter-clockwise order
   raster::PixelRect scissor;  // the scissor in force (clamped to the frame)
   // Before and after are set for every outcome (equal unless a fragment changed them), so
-  // that events chain; the rest is set for outcome Fragment only.
+  // that events chain; the rest is set for outcome Fragment only, but for the plane and the
+  // quantisation, which ExcludedByTie also has (the depth the fragment would have had).
   std::uint32_t depthBefore = 0, depthAfter = 0;
   std::uint8_t stencilBefore = 0, stencilAfter = 0;
   PlaneTerms plane;

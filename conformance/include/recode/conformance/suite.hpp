@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "recode/conformance/api_verdict.hpp"
@@ -33,8 +34,10 @@ struct SuiteVector {
 
 // `count` random streams from seed `seed`: the kit's families in turn, each candidate drawn as
 // the kit draws it but kept whatever it catches, expected buffers from the reference. The same
-// seed gives the same streams.
-[[nodiscard]] std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed);
+// seed gives the same streams. With `family`, every stream is of that family
+// (kit::randomKitStream).
+[[nodiscard]] std::vector<SuiteVector> randomVectors(int count, std::uint64_t seed,
+                                                     std::string_view family = {});
 
 // Shard `index` of `count` (0-based): every count-th vector from the index-th on, so that shards
 // stay balanced whatever the order. Throws std::invalid_argument unless 0 <= index < count.

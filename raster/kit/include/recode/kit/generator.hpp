@@ -47,7 +47,12 @@ struct KitVector {
 // families in turn (all but `wide`, whose 16384-pixel frames would dominate a run), each
 // candidate drawn as the kit draws it but kept whatever it catches; expected buffers from
 // raster::CpuDevice. `catches` is left empty. The same (seed, index) gives the same stream.
-[[nodiscard]] KitVector randomKitStream(std::uint64_t seed, int index);
+// With `family` (a family's name, e.g. "limits"), every stream is drawn from that family:
+// stream `index` is then the one the families in turn give as their stream index * F + f (F
+// families, f its place), named "random-<seed>-<family>-<index>". Throws std::invalid_argument
+// for an unknown family or "wide".
+[[nodiscard]] KitVector randomKitStream(std::uint64_t seed, int index,
+                                        std::string_view family = {});
 
 // Writes each vector as DIR/<name>.json (GoldenLayout::Rows), creating DIR, after removing the
 // files of an earlier kit there (<family>_<digits>.json of the families above; nothing else).
