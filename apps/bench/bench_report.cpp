@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <set>
 #include <thread>
@@ -105,8 +106,11 @@ void writeTable1(std::ostream& out, const std::vector<const BenchRow*>& rows) {
   }
 }
 
-void writeTimeTable(std::ostream& out, const std::vector<const BenchRow*>& rows) {
-  const std::vector<std::string> algorithms = algorithmsOf(rows);
+// A table with a row per tessellation level (its triangles first) and a column per algorithm,
+// each cell written by `cell` for the row of that level and algorithm (null where none ran).
+void writeLevelTable(std::ostream& out, const std::vector<const BenchRow*>& rows,
+                     const std::vector<std::string>& algorithms,
+                     const std::function<std::string(const BenchRow*)>& cell) {
   out << "| triangles |";
   for (const std::string& a : algorithms)
     out << ' ' << a << " |";
@@ -115,14 +119,18 @@ void writeTimeTable(std::ostream& out, const std::vector<const BenchRow*>& rows)
     out << "---|";
   out << '\n';
   for (int level : levelsOf(rows)) {
-    const BenchRow* any = find(rows, level, algorithms.front());
+    const BenchRow* any = algorithms.empty() ? nullptr : find(rows, level, algorithms.front());
     out << "| " << grouped(any ? any->triangles : 0) << " |";
-    for (const std::string& a : algorithms) {
-      const BenchRow* r = find(rows, level, a);
-      out << ' ' << (r ? milliseconds(r->meanMs) + " (" + milliseconds(r->sdMs) + ")" : "") << " |";
-    }
+    for (const std::string& a : algorithms)
+      out << ' ' << cell(find(rows, level, a)) << " |";
     out << '\n';
   }
+}
+
+void writeTimeTable(std::ostream& out, const std::vector<const BenchRow*>& rows) {
+  writeLevelTable(out, rows, algorithmsOf(rows), [](const BenchRow* r) {
+    return r ? milliseconds(r->meanMs) + " (" + milliseconds(r->sdMs) + ")" : std::string();
+  });
 }
 
 // The layered algorithms' passes per pose and layers (the closed-mesh experiment).
@@ -134,26 +142,12 @@ void writeLayersTable(std::ostream& out, const std::vector<const BenchRow*>& row
         algorithms.push_back(a);
         break;
       }
-  out << "| triangles |";
-  for (const std::string& a : algorithms)
-    out << ' ' << a << " |";
-  out << "\n|---|";
-  for (std::size_t i = 0; i < algorithms.size(); ++i)
-    out << "---|";
-  out << '\n';
-  for (int level : levelsOf(rows)) {
-    const BenchRow* any = find(rows, level, algorithms.empty() ? "" : algorithms.front());
-    out << "| " << grouped(any ? any->triangles : 0) << " |";
-    for (const std::string& a : algorithms) {
-      const BenchRow* r = find(rows, level, a);
-      out << ' ';
-      if (r && r->layered && r->frames > 0)
-        out << fixed(static_cast<double>(r->layered->passes) / r->frames, 1) << " passes, layers "
-            << r->layered->layersA << " / " << r->layered->layersB;
-      out << " |";
-    }
-    out << '\n';
-  }
+  writeLevelTable(out, rows, algorithms, [](const BenchRow* r) {
+    if (!r || !r->layered || r->frames <= 0)
+      return std::string();
+    return fixed(static_cast<double>(r->layered->passes) / r->frames, 1) + " passes, layers " +
+           std::to_string(r->layered->layersA) + " / " + std::to_string(r->layered->layersB);
+  });
 }
 
 void writeAccuracyTable(std::ostream& out, const std::vector<const BenchRow*>& rows) {

@@ -180,6 +180,18 @@ void checkRow(const Row& r) {
     fail(id + ": the judge disagrees with itself");
 }
 
+// The row of `id` (experiment/scene/level/algorithm) with checkRow's checks, or null (and a
+// failure) when the CSV has none.
+const Row* checkedRow(const std::map<std::string, Row>& rows, const std::string& id) {
+  const auto it = rows.find(id);
+  if (it == rows.end()) {
+    fail("bench.csv: no row for " + id);
+    return nullptr;
+  }
+  checkRow(it->second);
+  return &it->second;
+}
+
 // The closed-mesh experiment (docs/benchmarks.md, "Closed meshes against the peers"), its
 // --quick level of 500 triangles a mesh: rows for both paths and every algorithm, 41 poses each.
 // On ball-through-torus the truth follows from the shapes: the ball (radius 0.25) centred at
@@ -198,13 +210,10 @@ std::size_t checkClosedExperiment(const std::map<std::string, Row>& rows, const 
     const std::string prefix = "closed/" + scene + "/500/";
     for (const std::string& algorithm : algorithms) {
       ++expected;
-      const auto it = rows.find(prefix + algorithm);
-      if (it == rows.end()) {
-        fail("bench.csv: no row for " + prefix + algorithm);
+      const Row* row = checkedRow(rows, prefix + algorithm);
+      if (!row)
         continue;
-      }
-      const Row& r = it->second;
-      checkRow(r);
+      const Row& r = *row;
       if (r.count("frames") != 41)
         fail(r.id() + ": " + r.text("frames") + " poses, the path has 41");
       const bool layered = algorithm.rfind("recode-layered-", 0) == 0;
@@ -279,13 +288,10 @@ int main(int argc, char** argv) {
       long long truth = -1;
       for (const std::string& algorithm : e.algorithms) {
         ++expectedRows;
-        const auto it = rows.find(prefix + algorithm);
-        if (it == rows.end()) {
-          fail("bench.csv: no row for " + prefix + algorithm);
+        const Row* row = checkedRow(rows, prefix + algorithm);
+        if (!row)
           continue;
-        }
-        const Row& r = it->second;
-        checkRow(r);
+        const Row& r = *row;
         if (r.count("frames") != frames)
           fail(r.id() + ": " + r.text("frames") + " frames, the scene has " +
                std::to_string(frames));
