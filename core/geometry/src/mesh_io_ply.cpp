@@ -13,6 +13,7 @@
 #endif
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -189,6 +190,26 @@ void checkMeshElements(const fs::path& path, const PlyHeader& header) {
   }
 }
 
+// An ASCII body holds numbers separated by spaces, tabs and line ends: any other byte (a
+// control character, a byte of another encoding) is refused here, before assimp parses it (one
+// such byte after the header made assimp's reader run for seconds). `headerLines` numbers the
+// body's lines after the header's.
+void checkAsciiBody(const fs::path& path, std::string_view body, std::size_t headerLines) {
+  std::size_t line = headerLines + 1;
+  for (const char c : body) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      ++line;
+    } else if (byte < 0x20 ? (c != ' ' && c != '\t' && c != '\r') : byte > 0x7e) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", byte);
+      failAt(path, line,
+             std::string("byte ") + hex +
+                 " in an ASCII PLY body, which holds only numbers, spaces, tabs and line ends");
+    }
+  }
+}
+
 PlyHeader readHeader(const fs::path& path, std::string_view data) {
   PlyHeader header;
   bool sawFormat = false;
@@ -216,6 +237,9 @@ PlyHeader readHeader(const fs::path& path, std::string_view data) {
       continue;
     }
     if (tokens[0] == "end_header") {
+      if (tokens.size() != 1) {
+        failAt(path, line, "expected 'end_header' alone on its line");
+      }
       break;
     }
     readHeaderLine(path, tokens, line, header, sawFormat);
@@ -224,6 +248,9 @@ PlyHeader readHeader(const fs::path& path, std::string_view data) {
     failAt(path, line, "the PLY header has no 'format' line");
   }
   header.bodyOffset = pos;
+  if (header.format == PlyFormat::Ascii) {
+    checkAsciiBody(path, data.substr(pos), line);
+  }
   checkElementsFit(path, header, data.size() - pos);
   checkMeshElements(path, header);
   return header;

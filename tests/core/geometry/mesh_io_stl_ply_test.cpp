@@ -301,6 +301,17 @@ TEST_CASE("PLY: broken files give the file, the line where there is one, and the
   CHECK(message("ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
                 "property float y\nend_header\n12345678") ==
         ":3: the 'vertex' element has no scalar property 'z'");
+  // Only numbers, blanks and line ends in an ASCII body, and nothing after 'end_header' on its
+  // line (a vertical tab there made assimp's reader run for seconds: found by the fuzzer).
+  std::string afterEnd = plyHeader("ascii", 3, 1);
+  afterEnd.replace(afterEnd.size() - 1, 1, "\v0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  CHECK(message(afterEnd) == ":10: expected 'end_header' alone on its line");
+  CHECK(message(plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n0 1\v 0\n3 0 1 2\n") ==
+        ":13: byte 0x0b in an ASCII PLY body, which holds only numbers, spaces, tabs and line "
+        "ends");
+  CHECK(message(plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\xff\n") ==
+        ":14: byte 0xff in an ASCII PLY body, which holds only numbers, spaces, tabs and line "
+        "ends");
   if (!kHavePly) {
     return;
   }
