@@ -16,6 +16,21 @@ namespace recode::explain {
 [[nodiscard]] nlohmann::ordered_json frameJson(const core::FrameSpec& frame, double depthMin,
                                                double depthMax);
 
+// The keys from `mor_mode` to `objects`, in that order, which both pairs' objects have after
+// their own (`Result`: core::PairResult or core::LayeredPairResult, whose fields of these names
+// mean the same).
+template <class Result>
+void addRunKeys(nlohmann::ordered_json& j, const PairSetup& setup, const core::PairRequest& request,
+                const Result& r) {
+  j["mor_mode"] = core::toString(request.mor);
+  j["boxes_overlap"] = r.boxesOverlap;
+  j["stencil_pixels_read"] = r.stencilPixelsRead;
+  j["depth_pixels_read"] = r.depthPixelsRead;
+  j["contact_rect"] = pixelRectJson(r.contactRect);
+  j["frame"] = frameJson(setup.frame, r.depthMin, r.depthMax);
+  j["objects"] = nlohmann::ordered_json::array({setup.nameA, setup.nameB});
+}
+
 // The object printed by `recode pair --json` (keys documented in docs/cli.md).
 [[nodiscard]] nlohmann::ordered_json pairResultToJson(const PairSetup& setup,
                                                       const core::PairRequest& request,

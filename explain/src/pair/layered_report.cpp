@@ -88,13 +88,7 @@ ordered_json layeredResultToJson(const PairSetup& setup, const core::PairRequest
     steps[std::string(core::toString(static_cast<core::LayerStep>(s)))] =
         r.timing.stepUs[static_cast<std::size_t>(s)];
   j["timing_steps_us"] = steps;
-  j["mor_mode"] = core::toString(request.mor);
-  j["boxes_overlap"] = r.boxesOverlap;
-  j["stencil_pixels_read"] = r.stencilPixelsRead;
-  j["depth_pixels_read"] = r.depthPixelsRead;
-  j["contact_rect"] = pixelRectJson(r.contactRect);
-  j["frame"] = frameJson(setup.frame, r.depthMin, r.depthMax);
-  j["objects"] = ordered_json::array({setup.nameA, setup.nameB});
+  addRunKeys(j, setup, request, r);
   j["closed"] = ordered_json::array({setup.closedA, setup.closedB});
   j["source"] = setup.source;
   if (r.pixel)

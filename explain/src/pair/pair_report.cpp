@@ -148,13 +148,7 @@ ordered_json pairResultToJson(const PairSetup& setup, const core::PairRequest& r
         r.timing.stepUs[static_cast<std::size_t>(s)];
   steps["classify"] = r.timing.classifyUs;
   j["timing_steps_us"] = steps;
-  j["mor_mode"] = core::toString(request.mor);
-  j["boxes_overlap"] = r.boxesOverlap;
-  j["stencil_pixels_read"] = r.stencilPixelsRead;
-  j["depth_pixels_read"] = r.depthPixelsRead;
-  j["contact_rect"] = pixelRectJson(r.contactRect);
-  j["frame"] = frameJson(setup.frame, r.depthMin, r.depthMax);
-  j["objects"] = ordered_json::array({setup.nameA, setup.nameB});
+  addRunKeys(j, setup, request, r);
   j["source"] = setup.source;
   return j;
 }
